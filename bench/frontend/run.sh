@@ -1,0 +1,321 @@
+#!/usr/bin/env bash
+# Front-end benchmark: `crtc --check` (parse + evaluate) against the parse
+# phase of POV-Ray 3.7 on four equivalent workloads. See bench/README.md.
+#
+# usage: bench/frontend/run.sh [CRTC]
+#
+#   CRTC        path of the crtc binary (default: $CRTC, else build/lang/crtc
+#               under the repository root)
+#
+# environment:
+#   RUNS        runs per tool and workload, median reported (default 3)
+#   WORKLOADS   space-separated subset of: while_loop nested_spheres
+#               macro_spheres literal_spheres (default: all four)
+#   BENCH_OUT   folder for the generated literal_spheres files and the logs
+#               (default: a temporary folder, removed at exit)
+#   POVRAY      POV-Ray binary (default /usr/bin/povray)
+#   STRICT=1    exit with status 1 when a goal is not met
+#
+# exit status: 0 done; 1 a run failed (or a goal was missed with STRICT=1);
+#              2 bad usage or missing tool; 3 crtc not found (POV-Ray side only).
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$(cd "$here/../.." && pwd)
+
+if [[ ${1:-} == -h || ${1:-} == --help ]]; then
+    sed -n '2,20p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+    exit 0
+fi
+if [[ $# -gt 1 ]]; then
+    echo "usage: $0 [CRTC]" >&2
+    exit 2
+fi
+
+crtc=${1:-${CRTC:-$root/build/lang/crtc}}
+runs=${RUNS:-3}
+povray=${POVRAY:-/usr/bin/povray}
+timebin=/usr/bin/time
+workloads=${WORKLOADS:-while_loop nested_spheres macro_spheres literal_spheres}
+literal_n=100000
+
+if ! [[ $runs =~ ^[1-9][0-9]*$ ]]; then
+    echo "$0: RUNS must be a positive integer, got '$runs'" >&2
+    exit 2
+fi
+for w in $workloads; do
+    case $w in
+        while_loop | nested_spheres | macro_spheres | literal_spheres) ;;
+        *) echo "$0: unknown workload '$w'" >&2; exit 2 ;;
+    esac
+done
+if [[ ! -x $timebin ]]; then
+    echo "$0: $timebin (GNU time) is needed to measure peak memory: apt-get install time" >&2
+    exit 2
+fi
+if ! "$timebin" -f '%M' -o /dev/null true 2>/dev/null; then
+    echo "$0: $timebin is not GNU time (needs -f and -o): apt-get install time" >&2
+    exit 2
+fi
+if [[ ! -x $povray ]]; then
+    echo "$0: POV-Ray not found at $povray: apt-get install povray (or set POVRAY)" >&2
+    exit 2
+fi
+
+have_crtc=1
+if [[ ! -f $crtc ]]; then
+    have_crtc=0
+    echo "$0: crtc not found at '$crtc'." >&2
+    echo "    Build it first (cmake --build build --target crtc) or pass its path:" >&2
+    echo "    $0 path/to/crtc   or   CRTC=path/to/crtc $0" >&2
+    echo "    Measuring the POV-Ray side only; the crtc columns will read 'missing'." >&2
+elif [[ ! -x $crtc ]]; then
+    echo "$0: '$crtc' exists but is not executable" >&2
+    exit 2
+fi
+
+# Output folder: generated literal files, logs, and a private HOME for POV-Ray
+# (so it reads no user povray.ini and does not warn about a missing user
+# povray.conf).
+if [[ -n ${BENCH_OUT:-} ]]; then
+    out=$BENCH_OUT
+    mkdir -p "$out"
+    out=$(cd "$out" && pwd)
+    keep_hint=
+else
+    out=$(mktemp -d "${TMPDIR:-/tmp}/crt-bench-frontend.XXXXXX")
+    trap 'rm -rf "$out"' EXIT
+    keep_hint=" (removed at exit; set BENCH_OUT to keep it)"
+fi
+logs=$out/logs
+povhome=$out/povray-home
+mkdir -p "$logs" "$povhome/.povray/3.7"
+: >"$povhome/.povray/3.7/povray.conf"
+
+# ---------------------------------------------------------------------------
+
+now_ns() { date +%s%N; }
+
+# median of the numbers given as arguments (lower middle for an even count)
+median() {
+    printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'
+}
+
+# seconds between two nanosecond stamps
+elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.4f", (b - a) / 1e9 }'; }
+
+mb() { awk -v k="$1" 'BEGIN { printf "%.1f", k / 1024 }'; }
+
+# file of a workload for a tool (crt | pov)
+script_of() {
+    local w=$1 ext=$2
+    if [[ $w == literal_spheres ]]; then
+        echo "$out/literal_spheres.$ext"
+    else
+        echo "$here/$w.$ext"
+    fi
+}
+
+expected_objects() {
+    if [[ $1 == while_loop ]]; then echo 1; else echo 100000; fi
+}
+
+failed=0
+
+# run_pov WORKLOAD RUN -> sets pov_parse, pov_kb, pov_wall, pov_bound
+run_pov() {
+    local w=$1 r=$2 file log t0 t1 rc
+    file=$(script_of "$w" pov)
+    log=$logs/$w.pov.$r
+    t0=$(now_ns)
+    rc=0
+    (cd "$(dirname "$file")" &&
+        HOME=$povhome "$timebin" -f '%M' -o "$log.mem" \
+            "$povray" +W16 +H16 -D -F +WT2 "+I$(basename "$file")" \
+            >"$log.out" 2>"$log.err") || rc=$?
+    t1=$(now_ns)
+    pov_wall=$(elapsed "$t0" "$t1")
+    pov_kb=$(tail -n 1 "$log.mem")
+    pov_parse=$(sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' "$log.err" | head -n 1)
+    pov_bound=$(sed -n 's/.*Bounding Time:.*(\([0-9.]*\) seconds).*/\1/p' "$log.err" | head -n 1)
+    local objects
+    objects=$(sed -n 's/^Finite Objects: *\([0-9]*\).*/\1/p' "$log.err" | head -n 1)
+    if [[ $rc -ne 0 || -z $pov_parse ]] || grep -q 'Parse Error' "$log.err"; then
+        echo "POV-Ray failed on $file (exit $rc); log: $log.err$keep_hint" >&2
+        grep -m 5 -i -B2 -A2 'error' "$log.err" >&2 || tail -n 20 "$log.err" >&2
+        return 1
+    fi
+    if [[ $objects != "$(expected_objects "$w")" ]]; then
+        echo "POV-Ray made ${objects:-no} objects from $file, expected $(expected_objects "$w")" >&2
+        return 1
+    fi
+}
+
+# run_crtc WORKLOAD RUN -> sets crtc_wall, crtc_kb
+run_crtc() {
+    local w=$1 r=$2 file log t0 t1 rc
+    file=$(script_of "$w" crt)
+    log=$logs/$w.crtc.$r
+    t0=$(now_ns)
+    rc=0
+    "$timebin" -f '%M' -o "$log.mem" "$crtc" --check "$file" >"$log.out" 2>"$log.err" || rc=$?
+    t1=$(now_ns)
+    crtc_wall=$(elapsed "$t0" "$t1")
+    crtc_kb=$(tail -n 1 "$log.mem")
+    if [[ $rc -ne 0 ]]; then
+        echo "crtc --check failed on $file (exit $rc); log: $log.err$keep_hint" >&2
+        head -n 20 "$log.err" >&2
+        return 1
+    fi
+    if [[ -s $log.err && $r -eq 1 ]]; then
+        echo "note: crtc printed diagnostics for $w (the workloads should give none):" >&2
+        head -n 10 "$log.err" >&2
+    fi
+}
+
+# ---------------------------------------------------------------------------
+
+case " $workloads " in
+    *" literal_spheres "*)
+        echo "generating literal_spheres ($literal_n spheres) in $out" >&2
+        "$here/gen_literal.sh" "$out" "$literal_n"
+        ;;
+esac
+
+echo "POV-Ray: $povray ($(HOME=$povhome "$povray" --version 2>&1 | grep -m1 -o 'POV-Ray [0-9][0-9.a-z]*' || echo unknown version))" >&2
+[[ $have_crtc -eq 1 ]] && echo "crtc:    $crtc" >&2
+echo "runs per tool and workload: $runs (median reported)" >&2
+
+declare -A P_PARSE P_KB P_WALL P_BOUND C_WALL C_KB STATUS LINES LINES_POV BYTES_CRT BYTES_POV XCHECK
+
+for w in $workloads; do
+    echo "running $w ..." >&2
+    parses=() pkbs=() pwalls=() pbounds=() cwalls=() ckbs=()
+    status=ok
+    crtc_ok=$have_crtc
+    for ((r = 1; r <= runs; r++)); do
+        if run_pov "$w" "$r"; then
+            parses+=("$pov_parse") pkbs+=("$pov_kb") pwalls+=("$pov_wall") pbounds+=("$pov_bound")
+        else
+            status="pov-error"
+            break
+        fi
+        if [[ $crtc_ok -eq 1 ]]; then
+            if run_crtc "$w" "$r"; then
+                cwalls+=("$crtc_wall") ckbs+=("$crtc_kb")
+            else
+                status="crtc-error"
+                crtc_ok=0
+            fi
+        fi
+    done
+    STATUS[$w]=$status
+    [[ $status != ok ]] && failed=1
+    if [[ ${#parses[@]} -eq $runs ]]; then
+        P_PARSE[$w]=$(median "${parses[@]}")
+        P_KB[$w]=$(median "${pkbs[@]}")
+        P_WALL[$w]=$(median "${pwalls[@]}")
+        P_BOUND[$w]=$(median "${pbounds[@]}")
+    fi
+    if [[ $have_crtc -eq 1 && ${#cwalls[@]} -eq $runs ]]; then
+        C_WALL[$w]=$(median "${cwalls[@]}")
+        C_KB[$w]=$(median "${ckbs[@]}")
+    fi
+    crt_file=$(script_of "$w" crt)
+    pov_file=$(script_of "$w" pov)
+    LINES[$w]=$(wc -l <"$crt_file")
+    LINES_POV[$w]=$(wc -l <"$pov_file")
+    BYTES_CRT[$w]=$(wc -c <"$crt_file")
+    BYTES_POV[$w]=$(wc -c <"$pov_file")
+
+    # while_loop: both tools print the accumulated value; they must agree.
+    if [[ $w == while_loop && $status == ok && $have_crtc -eq 1 ]]; then
+        pov_x=$(sed -n 's/^x = *//p' "$logs/while_loop.pov.1.err" | head -n 1)
+        crtc_x=$(grep -v '^[[:space:]]*$' "$logs/while_loop.crtc.1.out" | tail -n 1 || true)
+        if [[ -z $crtc_x ]]; then
+            XCHECK[$w]="crtc printed no value: result not cross-checked"
+            echo "warning: crtc printed nothing for while_loop; its result is not cross-checked" >&2
+        elif awk -v a="$pov_x" -v b="$crtc_x" 'BEGIN {
+                d = a - b; if (d < 0) d = -d; m = a < 0 ? -a : a; if (m < 1) m = 1
+                exit !(d <= 1e-6 * m) }'; then
+            XCHECK[$w]="x agrees: POV-Ray $pov_x, crtc $crtc_x"
+        else
+            XCHECK[$w]="x DIFFERS: POV-Ray '$pov_x', crtc '$crtc_x'"
+            STATUS[$w]=wrong-result
+            failed=1
+            echo "error: while_loop results differ: POV-Ray '$pov_x', crtc '$crtc_x'" >&2
+        fi
+    fi
+done
+
+# ---------------------------------------------------------------------------
+
+goal_missed=0
+
+fmt_lps() { awk -v n="$1" -v s="$2" 'BEGIN { if (s > 0) printf "%d", n / s; else print "inf" }' | sed ':a;s/\B[0-9]\{3\}\>/,&/;ta'; }
+
+echo
+echo "| workload | POV-Ray parse (s) | POV-Ray peak MB | crtc (s) | crtc peak MB | ratio (POV/crtc) | goal | met? |"
+echo "| --- | ---: | ---: | ---: | ---: | ---: | --- | --- |"
+for w in $workloads; do
+    case $w in
+        while_loop) goal="≥ 20x" ;;
+        nested_spheres) goal="≥ 10x and less memory" ;;
+        macro_spheres) goal="≥ 10x" ;;
+        literal_spheres) goal="crtc ≥ 2,000,000 lines/s" ;;
+    esac
+    pp=${P_PARSE[$w]:-} pk=${P_KB[$w]:-} cw=${C_WALL[$w]:-} ck=${C_KB[$w]:-}
+    pp_cell=${pp:-error} pk_cell=error
+    [[ -n $pk ]] && pk_cell=$(mb "$pk")
+    if [[ $have_crtc -eq 0 ]]; then
+        cw_cell=missing ck_cell=missing ratio=— met=pending
+    elif [[ ${STATUS[$w]} == pov-error ]]; then
+        cw_cell="not run" ck_cell="not run" ratio=— met=no
+    elif [[ -z $cw ]]; then
+        cw_cell=error ck_cell=error ratio=— met=no
+    else
+        cw_cell=$cw ck_cell=$(mb "$ck")
+        ratio=—
+        [[ -n $pp ]] && ratio=$(awk -v a="$pp" -v b="$cw" 'BEGIN { if (b > 0) printf "%.1fx", a / b; else print "inf" }')
+        met=no
+        case $w in
+            while_loop) awk -v a="$pp" -v b="$cw" 'BEGIN { exit !(a != "" && a >= 20 * b) }' && met=yes ;;
+            macro_spheres) awk -v a="$pp" -v b="$cw" 'BEGIN { exit !(a != "" && a >= 10 * b) }' && met=yes ;;
+            nested_spheres)
+                awk -v a="$pp" -v b="$cw" -v pm="$pk" -v cm="$ck" \
+                    'BEGIN { exit !(a != "" && a >= 10 * b && cm < pm) }' && met=yes ;;
+            literal_spheres)
+                awk -v n="${LINES[$w]}" -v s="$cw" 'BEGIN { exit !(s > 0 && n / s >= 2000000) }' && met=yes ;;
+        esac
+        [[ ${STATUS[$w]} == wrong-result ]] && met="no (wrong result)"
+        [[ $met != yes ]] && goal_missed=1
+    fi
+    if [[ $w == literal_spheres ]]; then
+        [[ -n $pp ]] && pp_cell="$pp ($(fmt_lps "${LINES_POV[$w]}" "$pp") lines/s)"
+        [[ -n $cw ]] && cw_cell="$cw ($(fmt_lps "${LINES[$w]}" "$cw") lines/s)"
+    fi
+    echo "| $w | $pp_cell | $pk_cell | $cw_cell | $ck_cell | $ratio | $goal | $met |"
+done
+
+echo
+echo "Details (medians of $runs run(s); POV-Ray wall time includes its start-up, bounding and a 16x16 render):"
+echo
+echo "| workload | POV-Ray wall (s) | POV-Ray bounding (s) | .crt size | .pov size | notes |"
+echo "| --- | ---: | ---: | ---: | ---: | --- |"
+for w in $workloads; do
+    note=${XCHECK[$w]:-}
+    [[ ${STATUS[$w]} != ok ]] && note="${STATUS[$w]}${note:+; $note}"
+    size_crt=$(awk -v b="${BYTES_CRT[$w]}" -v l="${LINES[$w]}" 'BEGIN { if (b > 1e6) printf "%.1f MB, %d lines", b / 1e6, l; else printf "%d B", b }')
+    size_pov=$(awk -v b="${BYTES_POV[$w]}" 'BEGIN { if (b > 1e6) printf "%.1f MB", b / 1e6; else printf "%d B", b }')
+    echo "| $w | ${P_WALL[$w]:-—} | ${P_BOUND[$w]:-—} | $size_crt | $size_pov | $note |"
+done
+
+if [[ -n ${BENCH_OUT:-} ]]; then
+    echo
+    echo "logs: $logs"
+fi
+
+if [[ $failed -ne 0 ]]; then exit 1; fi
+if [[ ${STRICT:-0} == 1 && $goal_missed -ne 0 ]]; then exit 1; fi
+if [[ $have_crtc -eq 0 ]]; then exit 3; fi
+exit 0

@@ -1,0 +1,7 @@
+# Finds the packages every part of crt builds against (Debian 12 versions).
+find_package(BISON 3.8 REQUIRED)
+find_program(RE2C_EXECUTABLE re2c REQUIRED)
+find_package(fmt REQUIRED)
+find_package(glm REQUIRED)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(Catch2 2 REQUIRED)

@@ -1,0 +1,44 @@
+// Spellings of AST operators.
+#include "ast.hpp"
+
+namespace crt::lang {
+
+std::string_view opSpelling(UnaryOp op) {
+    switch (op) {
+    case UnaryOp::Plus: return "+";
+    case UnaryOp::Minus: return "-";
+    case UnaryOp::Not: return "!";
+    }
+    return "?";
+}
+
+std::string_view opSpelling(BinaryOp op) {
+    switch (op) {
+    case BinaryOp::Add: return "+";
+    case BinaryOp::Sub: return "-";
+    case BinaryOp::Intersect: return "^";
+    case BinaryOp::Mul: return "*";
+    case BinaryOp::Div: return "/";
+    case BinaryOp::Mod: return "%";
+    case BinaryOp::Less: return "<";
+    case BinaryOp::Greater: return ">";
+    case BinaryOp::LessEqual: return "<=";
+    case BinaryOp::GreaterEqual: return ">=";
+    case BinaryOp::Equal: return "==";
+    case BinaryOp::NotEqual: return "!=";
+    case BinaryOp::And: return "&&";
+    case BinaryOp::Or: return "||";
+    }
+    return "?";
+}
+
+std::string_view opSpelling(ModifierOp op) {
+    switch (op) {
+    case ModifierOp::Translate: return "translate";
+    case ModifierOp::Rotate: return "rotate";
+    case ModifierOp::Scale: return "scale";
+    }
+    return "?";
+}
+
+} // namespace crt::lang

@@ -1,0 +1,211 @@
+// The abstract syntax tree. Every node carries its source range; nodes live in an Arena and
+// are never destroyed one by one, so they hold only trivially destructible members.
+#pragma once
+
+#include "arena.hpp"
+#include "object_schema.hpp"
+#include "source_file.hpp"
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace crt::lang {
+
+enum class NodeKind : uint8_t {
+    // expressions
+    IntLit,
+    FloatLit,
+    StringLit,
+    BoolLit,
+    Var,
+    Assign,
+    Unary,
+    Binary,
+    Ternary,
+    Call,
+    Index,
+    Modify,
+    List,
+    Object,
+    Macro,
+    // statements
+    While,
+    For,
+    If,
+    Block,
+    Settings,
+    Scene,
+    Include,
+    Error, ///< what a syntax error left behind
+};
+
+enum class UnaryOp : uint8_t { Plus, Minus, Not };
+enum class BinaryOp : uint8_t {
+    Add, Sub, Intersect, Mul, Div, Mod, Less, Greater, LessEqual, GreaterEqual, Equal, NotEqual,
+    And, Or,
+};
+enum class ModifierOp : uint8_t { Translate, Rotate, Scale };
+
+std::string_view opSpelling(UnaryOp op);
+std::string_view opSpelling(BinaryOp op);
+std::string_view opSpelling(ModifierOp op);
+
+/// Where a name's value lives, decided once by the resolver.
+enum class Binding : uint8_t {
+    Unresolved,
+    Global,    ///< slot in the global table
+    Local,     ///< slot in the current macro frame
+    Enclosing, ///< slot in the frame `depth` macro levels out
+    Builtin,   ///< slot in the prelude (functions, t, clock)
+};
+
+struct Resolution {
+    Binding binding = Binding::Unresolved;
+    uint16_t depth = 0;
+    uint32_t slot = 0;
+};
+
+struct Node {
+    NodeKind kind;
+    SourceRange range;
+};
+
+struct Expr : Node {};
+
+struct IntLit : Expr { int64_t value; };
+struct FloatLit : Expr { double value; };
+struct StringLit : Expr { std::string_view value; }; ///< escapes already decoded
+struct BoolLit : Expr { bool value; };
+
+struct VarExpr : Expr {
+    std::string_view name;
+    Resolution resolution;
+};
+
+struct AssignExpr : Expr {
+    std::string_view name;
+    SourceRange nameRange;
+    Expr* value;
+    Resolution resolution;
+};
+
+struct UnaryExpr : Expr {
+    UnaryOp op;
+    SourceRange opRange;
+    Expr* operand;
+};
+
+struct BinaryExpr : Expr {
+    BinaryOp op;
+    SourceRange opRange;
+    Expr* left;
+    Expr* right;
+};
+
+struct TernaryExpr : Expr {
+    Expr* condition;
+    Expr* then;
+    Expr* otherwise;
+};
+
+struct CallExpr : Expr {
+    Expr* callee;
+    std::span<Expr*> args;
+};
+
+struct IndexExpr : Expr {
+    Expr* object;
+    Expr* index;
+};
+
+struct Modifier {
+    ModifierOp op;
+    SourceRange range; ///< the keyword and its argument
+    Expr* argument;
+};
+
+struct ModifyExpr : Expr {
+    Expr* target;
+    std::span<Modifier> modifiers;
+};
+
+struct ListExpr : Expr {
+    std::span<Expr*> items;
+};
+
+struct Attribute {
+    std::string_view name;
+    SourceRange nameRange;
+    SourceRange range; ///< name through value
+    Expr* value;
+    int16_t slot;      ///< index in the object type's attribute table; -1 if unknown (resolver)
+    bool overridden;   ///< a later attribute of the same name wins over this one (resolver)
+};
+
+struct ObjectExpr : Expr {
+    std::string_view typeName;
+    SourceRange typeRange;
+    ObjectType type; ///< ObjectType::Count when the name is unknown
+    std::span<Attribute> attributes;
+};
+
+struct Block;
+
+struct Param {
+    std::string_view name;
+    SourceRange range;
+};
+
+struct MacroExpr : Expr {
+    std::span<Param> params;
+    Block* body;
+    // Filled by the resolver:
+    uint32_t localCount;  ///< params first, then other locals
+    bool capturesFrame;   ///< a nested macro reads this frame's locals: it must outlive the call
+};
+
+struct Block : Node {
+    std::span<Node*> statements;
+};
+
+struct WhileStmt : Node {
+    Expr* condition;
+    Block* body;
+};
+
+struct ForStmt : Node {
+    std::string_view variable;
+    SourceRange variableRange;
+    Resolution resolution;
+    Expr* iterable;
+    Block* body;
+};
+
+struct IfStmt : Node {
+    Expr* condition;
+    Block* then;
+    Node* otherwise; ///< a Block, an IfStmt, or null
+};
+
+struct SettingsStmt : Node {
+    std::span<Attribute> attributes;
+};
+
+struct SceneStmt : Node {
+    std::span<Node*> statements;
+};
+
+struct IncludeStmt : Node {
+    StringLit* path;
+};
+
+/// One parsed file.
+struct Script {
+    std::span<Node*> items;
+    uint32_t file = 0;
+};
+
+inline bool isExpression(const Node* node) { return node->kind <= NodeKind::Macro; }
+
+} // namespace crt::lang

@@ -1,0 +1,43 @@
+// The prelude: built-in functions and the predefined names t and clock (spec §4).
+#pragma once
+
+#include "value.hpp"
+
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace crt::lang {
+
+class Interpreter;
+struct CallExpr;
+
+/// What a built-in sees of its call.
+struct BuiltinCall {
+    Interpreter& interpreter;
+    const CallExpr* site;
+    std::span<const Value> args;
+};
+
+using BuiltinFunction = Value (*)(BuiltinCall& call);
+
+struct BuiltinInfo {
+    std::string_view name;
+    int minArgs;
+    int maxArgs; ///< -1: any number
+    std::string_view signature;
+    std::string_view doc;
+    BuiltinFunction function;
+};
+
+std::span<const BuiltinInfo> builtinFunctions();
+
+/// Prelude slots: the functions in table order, then t, then clock.
+uint32_t preludeSize();
+uint32_t preludeSlotOfT();
+uint32_t preludeSlotOfClock();
+/// The prelude slot called `name`, if any.
+std::optional<uint32_t> findPreludeSlot(std::string_view name);
+std::string_view preludeName(uint32_t slot);
+
+} // namespace crt::lang

@@ -1,0 +1,94 @@
+// crtc: checks, dumps and renders CRT scene scripts.
+#include "ast_dump.hpp"
+#include "diagnostic_printer.hpp"
+#include "interpreter.hpp"
+#include "options.hpp"
+#include "scene_json.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using namespace crt::lang;
+
+namespace {
+
+/// The standard library next to an installed crtc, else the one in the source tree.
+std::string findStdlib(const char* argv0) {
+    std::error_code error;
+    fs::path exe = fs::canonical("/proc/self/exe", error);
+    if (error) exe = fs::absolute(argv0, error);
+    fs::path installed = exe.parent_path().parent_path() / "share" / "crt" / "stdlib";
+    if (fs::is_directory(installed, error)) return installed.string();
+    return CRT_SOURCE_STDLIB_DIR;
+}
+
+bool useColour(driver::ColourWhen when) {
+    if (when == driver::ColourWhen::Always) return true;
+    if (when == driver::ColourWhen::Never) return false;
+    const char* term = std::getenv("TERM");
+    return isatty(STDERR_FILENO) && !std::getenv("NO_COLOR") && term && std::string_view(term) != "dumb";
+}
+
+/// Prints the diagnostics of one compilation; returns whether it had errors.
+bool report(Compilation& c, const driver::Options& options) {
+    if (options.werror) c.diagnostics.promoteWarnings();
+    PrintOptions print;
+    print.colour = useColour(options.colour);
+    printDiagnostics(std::cerr, c.sources, c.diagnostics, print);
+    return c.diagnostics.hasErrors();
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    driver::ParsedOptions parsed = driver::parseOptions(argc, argv);
+    if (!parsed.options) {
+        (parsed.status == 0 ? std::cout : std::cerr) << parsed.message << (parsed.message.ends_with('\n') ? "" : "\n");
+        return parsed.status;
+    }
+    driver::Options& options = *parsed.options;
+    options.eval.stdlibDir = findStdlib(argv[0]);
+
+    std::ifstream in(options.script, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    if (!in || fs::is_directory(options.script)) {
+        std::cerr << "crtc: cannot read '" << options.script << "'\n";
+        return 2;
+    }
+    std::string text = buffer.str();
+
+    if (options.mode == driver::Mode::DumpAst) {
+        Compilation c = compile(options.script, text, options.eval, false);
+        std::cout << dumpAst(c.main, c.sources.file(0));
+        return report(c, options) ? 1 : 0;
+    }
+
+    int frames = std::max(options.frames, 1);
+    options.eval.frameCount = frames;
+    std::string json;
+    for (int frame = 0; frame < frames; ++frame) {
+        options.eval.frame = frame;
+        Compilation c = compile(options.script, text, options.eval);
+        bool failed = report(c, options);
+        if (failed) {
+            if (frames > 1) std::cerr << "crtc: frame " << frame << " has errors\n";
+            return 1;
+        }
+        if (options.mode == driver::Mode::DumpScene && c.scene) {
+            json += frames > 1 ? (frame == 0 ? "[\n" : ",\n") : "";
+            json += sceneToJson(*c.scene);
+        }
+    }
+    if (options.mode == driver::Mode::DumpScene) {
+        std::cout << json << (frames > 1 ? "]\n" : "");
+        return 0;
+    }
+    if (options.mode == driver::Mode::Check) return 0;
+    std::cerr << "crtc: this build cannot render yet; use --check, --dump-ast or --dump-scene\n";
+    return 2;
+}

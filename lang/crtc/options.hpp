@@ -1,0 +1,36 @@
+// Command-line options of crtc.
+#pragma once
+
+#include "interpreter.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace crt::lang::driver {
+
+enum class Mode { Render, Check, DumpAst, DumpScene };
+enum class ColourWhen { Auto, Always, Never };
+
+struct Options {
+    Mode mode = Mode::Render;
+    std::string script;
+    std::string output;
+    EvalOptions eval;
+    int frames = 0; ///< --frames N; 0: a single evaluation
+    bool werror = false;
+    ColourWhen colour = ColourWhen::Auto;
+    bool quiet = false;
+};
+
+/// The result of reading argv: options, or a message and exit status (0 for --help).
+struct ParsedOptions {
+    std::optional<Options> options;
+    std::string message;
+    int status = 0;
+};
+
+ParsedOptions parseOptions(int argc, char** argv);
+std::string usage();
+
+} // namespace crt::lang::driver

@@ -1,0 +1,125 @@
+// GCC/Clang-style rendering of diagnostics.
+#include "diagnostic_printer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <ostream>
+
+namespace crt::lang {
+namespace {
+
+constexpr const char* kBold = "\033[1m";
+constexpr const char* kReset = "\033[0m";
+constexpr const char* kRed = "\033[1;31m";
+constexpr const char* kMagenta = "\033[1;35m";
+constexpr const char* kCyan = "\033[1;36m";
+constexpr const char* kGreen = "\033[1;32m";
+
+const char* severityName(Severity severity) {
+    switch (severity) {
+    case Severity::Error: return "error";
+    case Severity::Warning: return "warning";
+    case Severity::Note: return "note";
+    }
+    return "error";
+}
+
+const char* severityColour(Severity severity) {
+    switch (severity) {
+    case Severity::Error: return kRed;
+    case Severity::Warning: return kMagenta;
+    case Severity::Note: return kCyan;
+    }
+    return kRed;
+}
+
+/// The source line of `range` with a caret under its start and tildes under the rest
+/// (clipped to the first line).
+void appendSnippet(std::string& out, const SourceFile& file, SourceRange range,
+                   const PrintOptions& options, const std::string* replacement) {
+    LineColumn start = file.lineColumn(range.begin);
+    std::string_view line = file.lineText(start.line);
+    uint32_t lineEnd = file.lineStart(start.line) + static_cast<uint32_t>(line.size());
+    uint32_t width = range.end > range.begin
+                         ? codePointCount(file.text().substr(range.begin,
+                                                             std::min(range.end, lineEnd) -
+                                                                 std::min(range.begin, lineEnd)))
+                         : 0;
+    out += fmt::format("    {}\n    ", line);
+    // Tabs in the prefix are copied so the caret lines up in a terminal.
+    uint32_t lineBegin = file.lineStart(start.line);
+    std::string_view prefix = line.substr(0, std::min<uint32_t>(range.begin, lineEnd) - lineBegin);
+    uint32_t column = 1;
+    for (char c : prefix) {
+        if ((static_cast<unsigned char>(c) & 0xC0) == 0x80) continue; // continuation byte
+        out += c == '\t' ? '\t' : ' ';
+        ++column;
+    }
+    if (options.colour) out += kGreen;
+    out += '^';
+    for (uint32_t i = 1; i < width; ++i) out += '~';
+    if (options.colour) out += kReset;
+    out += '\n';
+    if (replacement) {
+        out += "    ";
+        out.append(column - 1, ' ');
+        if (options.colour) out += kGreen;
+        out += *replacement;
+        if (options.colour) out += kReset;
+        out += '\n';
+    }
+}
+
+void appendHeader(std::string& out, const SourceManager& sources, SourceRange range,
+                  Severity severity, const std::string& message, const PrintOptions& options) {
+    if (options.colour) out += kBold;
+    out += formatLocation(sources, range);
+    out += ": ";
+    if (options.colour) out += severityColour(severity);
+    out += severityName(severity);
+    out += ": ";
+    if (options.colour) out += kReset, out += kBold;
+    out += message;
+    if (options.colour) out += kReset;
+    out += '\n';
+}
+
+} // namespace
+
+std::string formatLocation(const SourceManager& sources, SourceRange range) {
+    if (range.file >= sources.fileCount()) return "<unknown>";
+    const SourceFile& file = sources.file(range.file);
+    LineColumn position = file.lineColumn(range.begin);
+    return fmt::format("{}:{}:{}", file.path(), position.line, position.column);
+}
+
+std::string formatDiagnostic(const SourceManager& sources, const Diagnostic& diagnostic,
+                             const PrintOptions& options) {
+    std::string out;
+    bool known = diagnostic.range.file < sources.fileCount();
+    appendHeader(out, sources, diagnostic.range, diagnostic.severity, diagnostic.message,
+                 options);
+    if (known && options.sourceLines) {
+        const std::string* replacement =
+            diagnostic.fixits.empty() ? nullptr : &diagnostic.fixits.front().replacement;
+        appendSnippet(out, sources.file(diagnostic.range.file), diagnostic.range, options,
+                      replacement);
+    }
+    for (const DiagnosticNote& note : diagnostic.notes) {
+        appendHeader(out, sources, note.range, Severity::Note, note.message, options);
+        if (note.range.file < sources.fileCount() && options.sourceLines) {
+            appendSnippet(out, sources.file(note.range.file), note.range, options, nullptr);
+        }
+    }
+    return out;
+}
+
+void printDiagnostics(std::ostream& out, const SourceManager& sources,
+                      const DiagnosticBag& diagnostics, const PrintOptions& options) {
+    for (const Diagnostic& diagnostic : diagnostics.items()) {
+        out << formatDiagnostic(sources, diagnostic, options);
+    }
+}
+
+} // namespace crt::lang

@@ -1,0 +1,462 @@
+// Statements, variables, macro calls and includes.
+#include "interpreter_impl.hpp"
+
+#include "builtins.hpp"
+#include "parser.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace crt::lang {
+
+namespace fs = std::filesystem;
+
+Interpreter::Interpreter(Compilation& compilation, const EvalOptions& options)
+    : compilation_(compilation), options_(options), diagnostics_(compilation.diagnostics),
+      randomState_(options.seed) {
+    prelude_.resize(preludeSize());
+    for (uint32_t slot = 0; slot + 2 < preludeSize(); ++slot) {
+        prelude_[slot] = Value::object(ValueKind::Builtin, ObjectType::Count, slot);
+        prelude_[slot].kind = ValueKind::Builtin;
+    }
+    if (options.time) {
+        prelude_[preludeSlotOfT()] = Value::number(*options.time);
+    } else {
+        prelude_[preludeSlotOfT()] = Value::integer(options.frame);
+    }
+    double clock = options.frameCount > 1
+                       ? static_cast<double>(options.frame) / (options.frameCount - 1)
+                       : (options.time ? *options.time : 0.0);
+    if (options.frameCount <= 1 && options.time) clock = 0.0;
+    prelude_[preludeSlotOfClock()] = Value::number(clock);
+}
+
+void Interpreter::fail(SourceRange where, std::string message) {
+    Diagnostic& d = diagnostics_.error(where, std::move(message));
+    for (auto it = callSites_.rbegin(); it != callSites_.rend(); ++it) {
+        d.notes.push_back({*it, "in the macro called here"});
+    }
+    throw EvalError{};
+}
+
+const std::string* Interpreter::newString(std::string text) {
+    return &strings_.emplace_back(std::move(text));
+}
+
+const std::vector<Value>* Interpreter::newList(std::vector<Value> items) {
+    return &lists_.emplace_back(std::move(items));
+}
+
+uint64_t Interpreter::nextRandom() {
+    // SplitMix64: one stream per evaluation, so every frame sees the same numbers.
+    uint64_t z = (randomState_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+std::ostream& Interpreter::printOut() { return options_.printOut ? *options_.printOut : std::cout; }
+
+SourceRange Interpreter::argRange(const CallExpr* site, size_t index) const {
+    return index < site->args.size() ? site->args[index]->range : site->range;
+}
+
+void Interpreter::step(SourceRange where) {
+    if (++steps_ > options_.limits.maxSteps) {
+        fail(where, fmt::format("evaluation exceeded {} steps (loop iterations and macro "
+                                "calls); raise the limit with --max-steps",
+                                options_.limits.maxSteps));
+    }
+}
+
+void Interpreter::run(bool evaluate) {
+    animated_ = resolve(compilation_.main, globals_, diagnostics_, true).readsTime;
+    if (diagnostics_.hasErrors() || !evaluate) return;
+    std::error_code error;
+    const SourceFile& main = compilation_.sources.file(compilation_.main.file);
+    fs::path canonical = fs::weakly_canonical(fs::absolute(main.path(), error), error);
+    includedFiles_.push_back(canonical.string());
+    includeStack_.push_back(canonical.string());
+    globalValues_.resize(globals_.size());
+    try {
+        execStatements(compilation_.main.items);
+        assembleScene();
+        reportUnused();
+        compilation_.scene = std::move(scene_);
+    } catch (const EvalError&) {
+        // reported already
+    }
+}
+
+// ---------------------------------------------------------------- statements
+
+void Interpreter::execStatements(std::span<Node* const> statements) {
+    for (const Node* statement : statements) exec(statement);
+}
+
+Value Interpreter::exec(const Node* node) {
+    switch (node->kind) {
+    case NodeKind::While: {
+        auto* w = static_cast<const WhileStmt*>(node);
+        while (condition(w->condition, "while")) {
+            step(w->condition->range);
+            execStatements(w->body->statements);
+        }
+        return Value::none();
+    }
+    case NodeKind::For: execFor(static_cast<const ForStmt*>(node)); return Value::none();
+    case NodeKind::If: {
+        auto* i = static_cast<const IfStmt*>(node);
+        if (condition(i->condition, "if")) {
+            execStatements(i->then->statements);
+        } else if (i->otherwise) {
+            exec(i->otherwise);
+        }
+        return Value::none();
+    }
+    case NodeKind::Block: execStatements(static_cast<const Block*>(node)->statements); return Value::none();
+    case NodeKind::Settings: execSettings(static_cast<const SettingsStmt*>(node)); return Value::none();
+    case NodeKind::Scene: execScene(static_cast<const SceneStmt*>(node)); return Value::none();
+    case NodeKind::Include: execInclude(static_cast<const IncludeStmt*>(node)); return Value::none();
+    case NodeKind::Error: return Value::none();
+    case NodeKind::Assign: eval(static_cast<const Expr*>(node)); return Value::none();
+    default: {
+        Value value = eval(static_cast<const Expr*>(node));
+        if (emitMode_ != EmitMode::None) emit(value, node);
+        return value;
+    }
+    }
+}
+
+void Interpreter::execFor(const ForStmt* node) {
+    Value iterable = eval(node->iterable);
+    if (iterable.kind != ValueKind::List) {
+        fail(node->iterable->range,
+             fmt::format("'for' needs a list or a range, not {}", typeName(iterable)));
+    }
+    // The list is immutable, so iterating it while the body runs is safe.
+    const std::vector<Value>& items = *iterable.list;
+    for (const Value& item : items) {
+        step(node->iterable->range);
+        store(node->resolution, item, node->variableRange);
+        execStatements(node->body->statements);
+    }
+}
+
+void Interpreter::execScene(const SceneStmt* node) {
+    EmitMode savedMode = emitMode_;
+    emitMode_ = EmitMode::Scene;
+    execStatements(node->statements);
+    emitMode_ = savedMode;
+}
+
+bool Interpreter::condition(const Expr* node, std::string_view what) {
+    Value value = eval(node);
+    if (value.kind != ValueKind::Bool) {
+        fail(node->range, fmt::format("the condition of '{}' must be a bool, not {}", what,
+                                      typeName(value)));
+    }
+    return value.b;
+}
+
+void Interpreter::emit(const Value& value, const Node* where) {
+    if (emitMode_ == EmitMode::Scene) {
+        draw(value, where);
+        return;
+    }
+    // In a macro body: entities and lists made only of entities are emitted.
+    if (value.kind == ValueKind::Entity) {
+        emitted_->push_back(value);
+    } else if (value.kind == ValueKind::List) {
+        std::vector<Value> flat;
+        std::vector<const std::vector<Value>*> pending{value.list};
+        bool allEntities = true;
+        while (!pending.empty() && allEntities) {
+            const std::vector<Value>* list = pending.back();
+            pending.pop_back();
+            for (auto it = list->rbegin(); it != list->rend(); ++it) {
+                if (it->kind == ValueKind::List) pending.push_back(it->list);
+                else if (it->kind == ValueKind::Entity) flat.push_back(*it);
+                else allEntities = false;
+            }
+        }
+        if (allEntities) {
+            // Lists were walked back to front; restore source order.
+            emitted_->insert(emitted_->end(), flat.rbegin(), flat.rend());
+        }
+    }
+}
+
+void Interpreter::draw(const Value& value, const Node* where) {
+    switch (value.kind) {
+    case ValueKind::Entity:
+        if (scene_.drawn.size() >= options_.limits.maxEntities) {
+            fail(where->range, fmt::format("the scene draws more than {} entities; raise the "
+                                           "limit with --max-entities",
+                                           options_.limits.maxEntities));
+        }
+        markUsed(static_cast<int32_t>(value.index));
+        scene_.drawn.push_back(static_cast<int32_t>(value.index));
+        return;
+    case ValueKind::List:
+        for (const Value& item : *value.list) {
+            if (item.kind != ValueKind::Entity && item.kind != ValueKind::List) {
+                fail(where->range, fmt::format("cannot draw a list holding {}; only entities "
+                                               "can be drawn",
+                                               typeName(item)));
+            }
+            draw(item, where);
+        }
+        return;
+    case ValueKind::None:
+    case ValueKind::Unset: return;
+    default:
+        diagnostics_.warning(WarningKind::ValueNotDrawn, where->range,
+                             fmt::format("this {} is not drawn; only entities are",
+                                         typeName(value)));
+        return;
+    }
+}
+
+void Interpreter::execInclude(const IncludeStmt* node) {
+    const std::string& name = std::string(node->path->value);
+    const SourceFile& including = compilation_.sources.file(node->range.file);
+    std::vector<fs::path> searched;
+    searched.push_back(fs::absolute(fs::path(including.path()).parent_path()));
+    for (const std::string& dir : options_.includeDirs) searched.push_back(fs::absolute(dir));
+    if (const char* crtPath = std::getenv("CRT_PATH")) {
+        std::stringstream folders(crtPath);
+        for (std::string dir; std::getline(folders, dir, ':');) {
+            if (!dir.empty()) searched.push_back(fs::absolute(dir));
+        }
+    }
+    if (!options_.stdlibDir.empty()) searched.push_back(fs::absolute(options_.stdlibDir));
+
+    std::error_code error;
+    fs::path found;
+    if (fs::path(name).is_absolute()) {
+        if (fs::is_regular_file(name, error)) found = name;
+        searched = {fs::path(name).parent_path()};
+    } else {
+        for (const fs::path& dir : searched) {
+            if (fs::is_regular_file(dir / name, error)) {
+                found = dir / name;
+                break;
+            }
+        }
+    }
+    if (found.empty()) {
+        std::string folders;
+        for (const fs::path& dir : searched) folders += fmt::format("\n  {}", dir.lexically_normal().string());
+        fail(node->path->range, fmt::format("cannot find include file \"{}\"; searched:{}", name, folders));
+    }
+    std::string canonical = fs::weakly_canonical(found, error).string();
+    for (size_t i = 0; i < includeStack_.size(); ++i) {
+        if (includeStack_[i] != canonical) continue;
+        std::string chain;
+        for (size_t j = i; j < includeStack_.size(); ++j) chain += includeStack_[j] + " -> ";
+        fail(node->range, fmt::format("include cycle: {}{}", chain, canonical));
+    }
+    for (const std::string& done : includedFiles_) {
+        if (done == canonical) return; // include-once
+    }
+
+    std::ifstream in(found, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    if (!in) fail(node->path->range, fmt::format("cannot read include file \"{}\"", found.string()));
+
+    uint32_t fileIndex = compilation_.sources.add(found.lexically_normal().string(), buffer.str());
+    size_t errorsBefore = diagnostics_.errorCount();
+    Script script = parse(compilation_.sources.file(fileIndex), fileIndex, *compilation_.arena,
+                          diagnostics_);
+    ResolveResult resolution = resolve(script, globals_, diagnostics_, false);
+    animated_ |= resolution.readsTime;
+    if (diagnostics_.errorCount() > errorsBefore) {
+        fail(node->range, fmt::format("included file \"{}\" has errors", name));
+    }
+    globalValues_.resize(globals_.size());
+    includedFiles_.push_back(canonical);
+    includeStack_.push_back(canonical);
+    // An included file runs at the top level, whatever the caller was doing.
+    EmitMode savedMode = emitMode_;
+    std::vector<Value>* savedEmitted = emitted_;
+    if (emitMode_ == EmitMode::Macro) emitMode_ = EmitMode::None;
+    execStatements(script.items);
+    emitMode_ = savedMode;
+    emitted_ = savedEmitted;
+    includeStack_.pop_back();
+}
+
+// ---------------------------------------------------------------- variables
+
+Value Interpreter::evalVar(const VarExpr* node) {
+    const Resolution& r = node->resolution;
+    const Value* slot = nullptr;
+    switch (r.binding) {
+    case Binding::Local: slot = &locals_[r.slot]; break;
+    case Binding::Global:
+        slot = r.slot < globalValues_.size() ? &globalValues_[r.slot] : nullptr;
+        break;
+    case Binding::Builtin: return prelude_[r.slot];
+    case Binding::Enclosing: {
+        Frame* frame = enclosing_;
+        for (uint16_t d = 1; d < r.depth; ++d) frame = frame->enclosing;
+        slot = &frame->slots[r.slot];
+        break;
+    }
+    case Binding::Unresolved: break;
+    }
+    if (!slot || slot->kind == ValueKind::Unset) {
+        if (r.binding == Binding::Local || r.binding == Binding::Enclosing) {
+            fail(node->range, fmt::format("variable '{}' is read before it is assigned", node->name));
+        }
+        std::vector<std::string_view> names;
+        for (uint32_t i = 0; i < globals_.size(); ++i) {
+            if (globals_.entry(i).assigned) names.push_back(globals_.entry(i).name);
+        }
+        for (uint32_t i = 0; i < preludeSize(); ++i) names.push_back(preludeName(i));
+        std::string suggestion = closestMatch(node->name, names);
+        const GlobalTable::Entry* entry = globals_.find(node->name);
+        if (entry && entry->assigned) {
+            fail(node->range, fmt::format("variable '{}' is read before it is assigned", node->name));
+        }
+        Diagnostic& d = diagnostics_.error(
+            node->range, suggestion.empty()
+                             ? fmt::format("undefined variable '{}'", node->name)
+                             : fmt::format("undefined variable '{}'; did you mean '{}'?",
+                                           node->name, suggestion));
+        if (!suggestion.empty()) d.fixits.push_back({node->range, suggestion});
+        for (auto it = callSites_.rbegin(); it != callSites_.rend(); ++it) {
+            d.notes.push_back({*it, "in the macro called here"});
+        }
+        throw EvalError{};
+    }
+    return *slot;
+}
+
+void Interpreter::store(const Resolution& r, const Value& value, SourceRange) {
+    switch (r.binding) {
+    case Binding::Local: locals_[r.slot] = value; return;
+    case Binding::Global:
+        if (r.slot >= globalValues_.size()) globalValues_.resize(globals_.size());
+        globalValues_[r.slot] = value;
+        return;
+    default: return; // the resolver only assigns locals and globals
+    }
+}
+
+// ---------------------------------------------------------------- macros
+
+Value Interpreter::evalMacro(const MacroExpr* node) {
+    Closure& closure = closures_.emplace_back(Closure{node, heapFrame_});
+    Value value;
+    value.kind = ValueKind::Macro;
+    value.closure = &closure;
+    return value;
+}
+
+Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
+                             std::span<const Value> args) {
+    const MacroExpr* macro = closure->macro;
+    if (args.size() != macro->params.size()) {
+        fail(site->range, fmt::format("this macro takes {} argument{}, but {} {} given",
+                                      macro->params.size(), macro->params.size() == 1 ? "" : "s",
+                                      args.size(), args.size() == 1 ? "was" : "were"));
+    }
+    step(site->range);
+    if (depth_ >= options_.limits.maxDepth) {
+        fail(site->range, fmt::format("macro calls nested deeper than {}; raise the limit with "
+                                      "--max-depth",
+                                      options_.limits.maxDepth));
+    }
+
+    // Save the caller's frame; stack frames are found again by offset after the call,
+    // since the stack may grow and move.
+    Value* savedLocals = locals_;
+    bool savedOnStack = locals_ && !heapFrame_;
+    size_t savedBase = savedOnStack ? static_cast<size_t>(locals_ - stack_.data()) : 0;
+    Frame* savedHeapFrame = heapFrame_;
+    Frame* savedEnclosing = enclosing_;
+    EmitMode savedMode = emitMode_;
+    std::vector<Value>* savedEmitted = emitted_;
+
+    size_t base = stack_.size();
+    if (macro->capturesFrame) {
+        Frame& frame = frames_.emplace_back(Frame{std::vector<Value>(macro->localCount), closure->enclosing});
+        heapFrame_ = &frame;
+        locals_ = frame.slots.data();
+    } else {
+        stack_.resize(base + macro->localCount);
+        heapFrame_ = nullptr;
+        locals_ = stack_.data() + base;
+    }
+    for (size_t i = 0; i < args.size(); ++i) locals_[i] = args[i];
+    enclosing_ = closure->enclosing;
+
+    std::vector<Value> emitted;
+    emitMode_ = EmitMode::Macro;
+    emitted_ = &emitted;
+    ++depth_;
+    callSites_.push_back(site->range);
+
+    Value last = Value::none();
+    const auto& statements = macro->body->statements;
+    for (size_t i = 0; i < statements.size(); ++i) {
+        Value value = exec(statements[i]);
+        if (i + 1 == statements.size() && isExpression(statements[i]) &&
+            statements[i]->kind != NodeKind::Assign) {
+            last = value;
+        }
+    }
+
+    callSites_.pop_back();
+    --depth_;
+    if (!macro->capturesFrame) stack_.resize(base);
+    locals_ = savedOnStack ? stack_.data() + savedBase : savedLocals;
+    heapFrame_ = savedHeapFrame;
+    enclosing_ = savedEnclosing;
+    emitMode_ = savedMode;
+    emitted_ = savedEmitted;
+
+    if (emitted.empty()) return last;
+    if (emitted.size() == 1) return emitted.front();
+    tracer::GroupNode group;
+    bool solid = true;
+    group.members.reserve(emitted.size());
+    for (const Value& member : emitted) {
+        group.members.push_back(static_cast<int32_t>(member.index));
+        solid = solid && scene_.entities[member.index].solid;
+    }
+    tracer::EntityDesc entity{std::move(group), -1, solid, span(site->range)};
+    int32_t index = addEntity(std::move(entity), EntityInfo{ObjectType::Count, site->range, false, false, false});
+    return Value::object(ValueKind::Entity, ObjectType::Count, static_cast<uint32_t>(index));
+}
+
+// ---------------------------------------------------------------- compile
+
+Compilation compile(std::string path, std::string text, const EvalOptions& options,
+                    bool evaluate) {
+    Compilation c;
+    c.sources.add(std::move(path), std::move(text));
+    c.main = parse(c.sources.file(0), 0, *c.arena, c.diagnostics, &c.comments);
+    if (c.diagnostics.hasErrors()) return c; // a script with syntax errors is not evaluated
+    Interpreter(c, options).run(evaluate);
+    return c;
+}
+
+Compilation compileFile(const std::string& path, const EvalOptions& options, bool evaluate) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    if (!in) {
+        Compilation c;
+        c.diagnostics.error({1u << 31, 0, 0}, fmt::format("cannot read '{}'", path));
+        return c;
+    }
+    return compile(path, buffer.str(), options, evaluate);
+}
+
+} // namespace crt::lang

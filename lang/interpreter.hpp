@@ -1,0 +1,62 @@
+// The tree-walking interpreter (spec §3-§5): evaluates resolved scripts into a SceneDesc.
+#pragma once
+
+#include "ast.hpp"
+#include "diagnostic.hpp"
+#include "resolver.hpp"
+#include "token.hpp"
+#include "value.hpp"
+
+#include "tracer/scene_desc.hpp"
+
+#include <cstdint>
+#include <deque>
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace crt::lang {
+
+/// Limits of one evaluation (spec §4), each with a crtc option.
+struct Limits {
+    uint64_t maxSteps = 50'000'000; ///< loop iterations plus macro calls
+    uint32_t maxDepth = 1'000;      ///< nested macro calls
+    uint64_t maxEntities = 10'000'000; ///< drawn entities, and the length of any list
+    uint32_t maxSize = 16'384;      ///< image width and height
+};
+
+struct EvalOptions {
+    Limits limits;
+    std::vector<std::string> includeDirs; ///< -I, in order
+    std::vector<std::string> assetRoots;  ///< --assets; empty: the script's folder and parents
+    std::string stdlibDir;                ///< the installed standard library
+    uint64_t seed = 0;                    ///< seeds rand()
+    int frame = 0;                        ///< t with --frames
+    int frameCount = 1;
+    std::optional<double> time;           ///< --time T: t is this float
+    std::ostream* printOut = nullptr;     ///< where print() writes; null: standard output
+    bool checkFiles = true;               ///< look up images and meshes on disk
+};
+
+class Interpreter;
+
+/// The result of running the front end on one script.
+struct Compilation {
+    SourceManager sources;
+    DiagnosticBag diagnostics;
+    std::unique_ptr<Arena> arena = std::make_unique<Arena>();
+    Script main;
+    std::vector<Token> comments;
+    std::optional<tracer::SceneDesc> scene; ///< set when evaluation finished without errors
+};
+
+/// Parses, resolves and (unless `evaluate` is false or there are errors) evaluates the
+/// script `path` with contents `text`.
+Compilation compile(std::string path, std::string text, const EvalOptions& options,
+                    bool evaluate = true);
+/// Reads `path` and compiles it; an unreadable file is an error diagnostic.
+Compilation compileFile(const std::string& path, const EvalOptions& options, bool evaluate = true);
+
+} // namespace crt::lang

@@ -1,0 +1,141 @@
+// The interpreter's internals, shared by its source files (not a public header).
+#pragma once
+
+#include "interpreter.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace crt::lang {
+
+/// Thrown after a run-time error has been reported; evaluation stops at the first one.
+struct EvalError {};
+
+/// Per-entity facts the scene description does not carry, for warnings and str().
+struct EntityInfo {
+    ObjectType type = ObjectType::Count; ///< Count for CSG, transforms and groups
+    SourceRange range{};
+    bool literal = false; ///< built by an object literal (so "never drawn" is worth saying)
+    bool used = false;
+    bool zeroSize = false;
+};
+
+struct LightInfo {
+    ObjectType type;
+    SourceRange range;
+    bool listed = false;
+};
+
+/// What a statement's value is used for.
+enum class EmitMode : uint8_t { None, Scene, Macro };
+
+class Interpreter {
+public:
+    Interpreter(Compilation& compilation, const EvalOptions& options);
+    /// Resolves the main script and, if `evaluate` and there are no errors, evaluates it;
+    /// fills compilation.scene unless an error occurred.
+    void run(bool evaluate);
+
+    // --- services for built-ins and object builders ---
+    [[noreturn]] void fail(SourceRange where, std::string message);
+    const std::string* newString(std::string text);
+    const std::vector<Value>* newList(std::vector<Value> items);
+    uint64_t nextRandom();
+    std::ostream& printOut();
+    std::string str(const Value& value) const;
+    const Limits& limits() const { return options_.limits; }
+    SourceRange argRange(const CallExpr* site, size_t index) const;
+
+private:
+    friend struct ObjectBuilder;
+
+    // statements
+    void execStatements(std::span<Node* const> statements);
+    Value exec(const Node* node);
+    void execInclude(const IncludeStmt* node);
+    void execSettings(const SettingsStmt* node);
+    void execScene(const SceneStmt* node);
+    void execFor(const ForStmt* node);
+    void emit(const Value& value, const Node* where);
+    void draw(const Value& value, const Node* where);
+    void collectEmitted(const Value& value);
+
+    // expressions
+    Value eval(const Expr* node);
+    Value evalVar(const VarExpr* node);
+    void store(const Resolution& resolution, const Value& value, SourceRange where);
+    Value evalBinary(const BinaryExpr* node);
+    Value evalUnary(const UnaryExpr* node);
+    Value evalCall(const CallExpr* node);
+    Value evalIndex(const IndexExpr* node);
+    Value evalModify(const ModifyExpr* node);
+    Value evalList(const ListExpr* node);
+    Value evalMacro(const MacroExpr* node);
+    Value callMacro(const Closure* closure, const CallExpr* site, std::span<const Value> args);
+    Value csg(BinaryOp op, const Value& left, const Value& right, const BinaryExpr* node);
+    bool condition(const Expr* node, std::string_view what);
+    void step(SourceRange where);
+
+    // objects (object_builder.cpp)
+    Value evalObject(const ObjectExpr* node);
+    int32_t defaultMaterial();
+    int32_t addEntity(tracer::EntityDesc entity, EntityInfo info);
+    void markUsed(int32_t entity);
+
+    // the end (scene_assembly.cpp)
+    void assembleScene();
+    void reportUnused();
+    tracer::SourceSpan span(SourceRange range) const;
+
+    Compilation& compilation_;
+    const EvalOptions& options_;
+    DiagnosticBag& diagnostics_;
+
+    GlobalTable globals_;
+    std::vector<Value> globalValues_;
+    std::vector<Value> prelude_;
+
+    std::vector<Value> stack_; ///< frames of macros whose locals are not captured
+    Value* locals_ = nullptr;
+    Frame* heapFrame_ = nullptr; ///< the running macro's frame if heap-allocated
+    Frame* enclosing_ = nullptr; ///< the running macro's closure environment
+    uint32_t depth_ = 0;
+    uint64_t steps_ = 0;
+    std::vector<SourceRange> callSites_; ///< for notes on errors inside macros
+
+    EmitMode emitMode_ = EmitMode::None;
+    std::vector<Value>* emitted_ = nullptr;
+
+    std::deque<std::string> strings_;
+    std::deque<std::vector<Value>> lists_;
+    std::deque<Closure> closures_;
+    std::deque<Frame> frames_;
+
+    uint64_t randomState_ = 0;
+    bool animated_ = false; ///< the script reads t or clock
+
+    // scene under construction
+    tracer::SceneDesc scene_;
+    std::vector<EntityInfo> entityInfo_;
+    std::vector<tracer::LightDesc> lights_;
+    std::vector<LightInfo> lightInfo_;
+    std::vector<tracer::CameraDesc> cameras_;
+    std::vector<tracer::BackgroundDesc> backgrounds_;
+    int32_t defaultMaterial_ = -1;
+    const SettingsStmt* settings_ = nullptr;
+    std::array<Value, 32> settingsValues_{};
+    std::array<const Attribute*, 32> settingsAttributes_{};
+
+    // include bookkeeping
+    std::vector<std::string> includedFiles_; ///< canonical paths, in order
+    std::vector<std::string> includeStack_;  ///< canonical paths being run
+};
+
+/// "cannot apply '-' to string and vec3"
+std::string operandError(std::string_view op, const Value& left, const Value& right);
+
+} // namespace crt::lang

@@ -1,0 +1,271 @@
+// The re2c lexer for CRT scripts (spec §1). Compiled by re2c into the build tree.
+#include "lexer.hpp"
+
+#include <fmt/format.h>
+
+namespace crt::lang {
+
+Lexer::Lexer(const SourceFile& file, uint32_t fileIndex, DiagnosticBag& diagnostics)
+    : begin_(file.data()), end_(file.data() + file.size()), cursor_(file.data()),
+      fileIndex_(fileIndex), diagnostics_(diagnostics) {}
+
+void Lexer::reportInvalid(const char* start, const char* end) {
+    std::string_view text(start, static_cast<size_t>(end - start));
+    if (text.size() == 1 && static_cast<unsigned char>(text[0]) < 0x20) {
+        diagnostics_.error(range(start, end),
+                           fmt::format("unexpected character U+{:04X}",
+                                       static_cast<unsigned>(static_cast<unsigned char>(text[0]))));
+    } else if (text == "_") {
+        diagnostics_.error(range(start, end),
+                           "unexpected character '_'; names start with a letter");
+    } else if (text == ";") {
+        diagnostics_.error(range(start, end),
+                           "unexpected character ';'; statements need no terminator")
+            .fixits.push_back({range(start, end), ""});
+    } else {
+        diagnostics_.error(range(start, end), fmt::format("unexpected character '{}'", text));
+    }
+}
+
+Token Lexer::scanString(const char* start) {
+    const char* p = start + 1;
+    for (;;) {
+        char c = *p;
+        if (c == '"') {
+            return {TokenKind::String, offset(start), offset(p + 1), false};
+        }
+        if (c == '\n' || c == '\r' || p >= end_) {
+            diagnostics_.error(range(start, p), "unterminated string; strings end on their line");
+            return {TokenKind::String, offset(start), offset(p), false};
+        }
+        if (c == '\\') {
+            char escaped = p + 1 < end_ ? p[1] : '\0';
+            if (escaped == '"' || escaped == '\\' || escaped == 'n' || escaped == 't') {
+                p += 2;
+                continue;
+            }
+            if (escaped == '\n' || escaped == '\r' || p + 1 >= end_) {
+                ++p;
+                continue; // reported as unterminated on the next turn
+            }
+            const char* escapeEnd = p + 2;
+            while (escapeEnd < end_ && (static_cast<unsigned char>(*escapeEnd) & 0xC0) == 0x80) {
+                ++escapeEnd;
+            }
+            diagnostics_.error(range(p, escapeEnd),
+                               fmt::format("unknown escape sequence '{}'; use \\\" \\\\ \\n or \\t",
+                                           std::string_view(p, escapeEnd - p)));
+            p = escapeEnd;
+            continue;
+        }
+        ++p;
+    }
+}
+
+/*!re2c
+    re2c:api:style = free-form;
+    re2c:define:YYCTYPE = "unsigned char";
+    re2c:define:YYCURSOR = "cursor";
+    re2c:define:YYMARKER = "marker";
+    re2c:yyfill:enable = 0;
+    re2c:flags:utf-8 = 0;
+
+    digits = [0-9]+;
+    exponent = [eE] [+-]? digits;
+    float = digits "." [0-9]* exponent? | "." digits exponent? | digits exponent;
+    wordtail = [a-zA-Z0-9_]*;
+    utf8lead2 = [\xC2-\xDF];
+    utf8lead3 = [\xE0-\xEF];
+    utf8lead4 = [\xF0-\xF4];
+    cont = [\x80-\xBF];
+*/
+
+Token Lexer::scan() {
+    for (;;) {
+        const unsigned char* cursor = reinterpret_cast<const unsigned char*>(cursor_);
+        const unsigned char* marker = cursor;
+        const char* start = cursor_;
+        auto make = [&](TokenKind kind) {
+            cursor_ = reinterpret_cast<const char*>(cursor);
+            Token token{kind, offset(start), offset(cursor_), lineStart_};
+            lineStart_ = false;
+            return token;
+        };
+        (void)marker;
+        /*!re2c
+        "\x00" {
+            if (start >= end_) { cursor_ = end_; return {TokenKind::EndOfFile, offset(end_), offset(end_), lineStart_}; }
+            cursor_ = reinterpret_cast<const char*>(cursor);
+            reportInvalid(start, cursor_);
+            continue;
+        }
+        "\n" { cursor_ = reinterpret_cast<const char*>(cursor); lineStart_ = true; continue; }
+        [ \t\r]+ { cursor_ = reinterpret_cast<const char*>(cursor); continue; }
+        "--" [^\n\x00]* {
+            cursor_ = reinterpret_cast<const char*>(cursor);
+            if (comments_) comments_->push_back({TokenKind::Comment, offset(start), offset(cursor_), lineStart_});
+            continue;
+        }
+
+        "Settings"  { return make(TokenKind::KwSettings); }
+        "Scene"     { return make(TokenKind::KwScene); }
+        "Macro"     { return make(TokenKind::KwMacro); }
+        "scale"     { return make(TokenKind::KwScale); }
+        "translate" { return make(TokenKind::KwTranslate); }
+        "rotate"    { return make(TokenKind::KwRotate); }
+        "true"      { return make(TokenKind::KwTrue); }
+        "false"     { return make(TokenKind::KwFalse); }
+        "while"     { return make(TokenKind::KwWhile); }
+        "for"       { return make(TokenKind::KwFor); }
+        "in"        { return make(TokenKind::KwIn); }
+        "if"        { return make(TokenKind::KwIf); }
+        "else"      { return make(TokenKind::KwElse); }
+        "include"   { return make(TokenKind::KwInclude); }
+
+        [a-z] wordtail { return make(TokenKind::Identifier); }
+        [A-Z] wordtail { return make(TokenKind::Name); }
+
+        float { return make(TokenKind::Float); }
+        digits { return make(TokenKind::Integer); }
+        (digits ("." [0-9]*)? | "." digits) [eE] [+-]? {
+            Token token = make(TokenKind::Invalid);
+            diagnostics_.error(range(start, cursor_), "malformed number: the exponent has no digits");
+            return token;
+        }
+        (float | digits) [a-zA-Z_] wordtail {
+            Token token = make(TokenKind::Invalid);
+            diagnostics_.error(range(start, cursor_),
+                fmt::format("malformed number '{}'", std::string_view(start, cursor_ - start)));
+            return token;
+        }
+
+        ["] { Token token = scanString(start); cursor_ = begin_ + token.end; token.atLineStart = lineStart_; lineStart_ = false; return token; }
+
+        "("  { return make(lineStart_ ? TokenKind::LParenLine : TokenKind::LParen); }
+        ")"  { return make(TokenKind::RParen); }
+        "{"  { return make(TokenKind::LBrace); }
+        "}"  { return make(TokenKind::RBrace); }
+        "["  { return make(lineStart_ ? TokenKind::LBracketLine : TokenKind::LBracket); }
+        "]"  { return make(TokenKind::RBracket); }
+        ","  { return make(TokenKind::Comma); }
+        "->" { return make(TokenKind::Arrow); }
+        "="  { return make(TokenKind::Assign); }
+        "+"  { return make(TokenKind::Plus); }
+        "-"  { return make(TokenKind::Minus); }
+        "^"  { return make(TokenKind::Caret); }
+        "*"  { return make(TokenKind::Star); }
+        "/"  { return make(TokenKind::Slash); }
+        "%"  { return make(TokenKind::Percent); }
+        "!"  { return make(TokenKind::Bang); }
+        "<"  { return make(TokenKind::Less); }
+        ">"  { return make(TokenKind::Greater); }
+        "<=" { return make(TokenKind::LessEqual); }
+        ">=" { return make(TokenKind::GreaterEqual); }
+        "==" { return make(TokenKind::EqualEqual); }
+        "!=" { return make(TokenKind::NotEqual); }
+        "&&" { return make(TokenKind::AndAnd); }
+        "||" { return make(TokenKind::OrOr); }
+        "?"  { return make(TokenKind::Question); }
+        ":"  { return make(TokenKind::Colon); }
+
+        utf8lead2 cont | utf8lead3 cont cont | utf8lead4 cont cont cont | [^] {
+            cursor_ = reinterpret_cast<const char*>(cursor);
+            reportInvalid(start, cursor_);
+            continue;
+        }
+        */
+    }
+}
+
+Token Lexer::next() {
+    if (pending_) {
+        Token token = *pending_;
+        pending_.reset();
+        return token;
+    }
+    Token token = scan();
+    if (token.kind == TokenKind::Less) {
+        // A '<' opens a modifier list exactly when the next token is a modifier keyword.
+        Token following = scan();
+        if (following.kind == TokenKind::KwScale || following.kind == TokenKind::KwTranslate ||
+            following.kind == TokenKind::KwRotate) {
+            token.kind = TokenKind::ModifierOpen;
+        }
+        pending_ = following;
+    }
+    return token;
+}
+
+std::vector<Token> lexAll(const SourceFile& file, uint32_t fileIndex, DiagnosticBag& diagnostics,
+                          std::vector<Token>* comments) {
+    Lexer lexer(file, fileIndex, diagnostics);
+    lexer.collectComments(comments);
+    std::vector<Token> tokens;
+    for (Token token = lexer.next(); token.kind != TokenKind::EndOfFile; token = lexer.next()) {
+        tokens.push_back(token);
+    }
+    return tokens;
+}
+
+std::string_view tokenDescription(TokenKind kind) {
+    switch (kind) {
+    case TokenKind::EndOfFile: return "end of file";
+    case TokenKind::Invalid: return "invalid token";
+    case TokenKind::Identifier: return "identifier";
+    case TokenKind::Name: return "type name";
+    case TokenKind::Integer: return "integer";
+    case TokenKind::Float: return "float";
+    case TokenKind::String: return "string";
+    case TokenKind::KwSettings: return "'Settings'";
+    case TokenKind::KwScene: return "'Scene'";
+    case TokenKind::KwMacro: return "'Macro'";
+    case TokenKind::KwScale: return "'scale'";
+    case TokenKind::KwTranslate: return "'translate'";
+    case TokenKind::KwRotate: return "'rotate'";
+    case TokenKind::KwTrue: return "'true'";
+    case TokenKind::KwFalse: return "'false'";
+    case TokenKind::KwWhile: return "'while'";
+    case TokenKind::KwFor: return "'for'";
+    case TokenKind::KwIn: return "'in'";
+    case TokenKind::KwIf: return "'if'";
+    case TokenKind::KwElse: return "'else'";
+    case TokenKind::KwInclude: return "'include'";
+    case TokenKind::LParen:
+    case TokenKind::LParenLine: return "'('";
+    case TokenKind::RParen: return "')'";
+    case TokenKind::LBrace: return "'{'";
+    case TokenKind::RBrace: return "'}'";
+    case TokenKind::LBracket:
+    case TokenKind::LBracketLine: return "'['";
+    case TokenKind::RBracket: return "']'";
+    case TokenKind::Comma: return "','";
+    case TokenKind::Arrow: return "'->'";
+    case TokenKind::Assign: return "'='";
+    case TokenKind::Plus: return "'+'";
+    case TokenKind::Minus: return "'-'";
+    case TokenKind::Caret: return "'^'";
+    case TokenKind::Star: return "'*'";
+    case TokenKind::Slash: return "'/'";
+    case TokenKind::Percent: return "'%'";
+    case TokenKind::Bang: return "'!'";
+    case TokenKind::Less: return "'<'";
+    case TokenKind::ModifierOpen: return "'<'";
+    case TokenKind::Greater: return "'>'";
+    case TokenKind::LessEqual: return "'<='";
+    case TokenKind::GreaterEqual: return "'>='";
+    case TokenKind::EqualEqual: return "'=='";
+    case TokenKind::NotEqual: return "'!='";
+    case TokenKind::AndAnd: return "'&&'";
+    case TokenKind::OrOr: return "'||'";
+    case TokenKind::Question: return "'?'";
+    case TokenKind::Colon: return "':'";
+    case TokenKind::Comment: return "comment";
+    }
+    return "token";
+}
+
+bool isKeyword(TokenKind kind) {
+    return kind >= TokenKind::KwSettings && kind <= TokenKind::KwInclude;
+}
+
+} // namespace crt::lang

@@ -1,0 +1,298 @@
+// The attribute tables of spec §5.
+#include "object_schema.hpp"
+
+#include <array>
+
+namespace crt::lang {
+namespace {
+
+using A = AttrType;
+
+constexpr std::string_view kAntialiasChoices[] = {"grid", "adaptive", "showadaptive"};
+constexpr std::string_view kProjectionChoices[] = {"pinhole", "spherical"};
+constexpr std::string_view kApertureChoices[] = {"circle",  "triangle", "square",   "pentagon",
+                                                 "hexagon", "octagon",  "gaussian", "line"};
+constexpr std::string_view kMappingChoices[] = {"uv", "planar", "spherical", "cylindrical",
+                                                "cubic"};
+
+constexpr AttributeInfo kSettings[] = {
+    {"title", A::String, false, "\"\"", "The scene's title."},
+    {"author", A::String, false, "\"\"", "Who made the scene."},
+    {"date", A::String, false, "\"\"", "When the scene was made."},
+    {"notes", A::String, false, "\"\"", "Free-form notes."},
+    {"width", A::Int, false, "800", "Image width in pixels."},
+    {"height", A::Int, false, "600", "Image height in pixels."},
+    {"camera", A::Camera, false, "Camera { position -> vec3(0,0,-1) pointing -> vec3(0,0,0) }",
+     "The camera the scene is seen through."},
+    {"lights", A::LightList, false, "[]", "The lights that shine; others are ignored."},
+    {"background", A::Background, false, "rgb(1,1,1)",
+     "What rays that hit nothing see: a Background or a colour."},
+    {"gamma", A::Gamma, false, "1.0",
+     "Output encoding: c^(1/gamma) per channel, or \"srgb\" for the sRGB curve."},
+    {"supersampling", A::Int, false, "1", "n: an n x n grid of samples per pixel."},
+    {"dofsamples", A::Int, false, "1", "Lens samples per pixel sample (depth of field needs > 1)."},
+    {"recursiondepth", A::Int, false, "3", "How many reflections and refractions deep rays go."},
+    {"antialias", A::Choice, false, "\"grid\"", "Anti-aliasing: grid, adaptive or showadaptive.",
+     kAntialiasChoices},
+    {"aathreshold", A::Float, false, "0.1", "Adaptive anti-aliasing: colour difference that subdivides."},
+    {"aadepth", A::Int, false, "2", "Adaptive anti-aliasing: maximum subdivision levels."},
+    {"shadowsamples", A::Int, false, "16", "Samples per area light."},
+    {"glossysamples", A::Int, false, "16", "Rays per glossy reflection."},
+    {"seed", A::Int, false, "0", "Seed of the renderer's sampling."},
+    {"ambient", A::Colour, false, "rgb(0,0,0)", "Global ambient light."},
+};
+
+constexpr AttributeInfo kCamera[] = {
+    {"position", A::Vec3, true, "", "Where the camera is."},
+    {"pointing", A::Vec3, true, "", "The point the camera looks at."},
+    {"fov", A::Float, false, "60", "Vertical field of view in degrees, in (0, 180)."},
+    {"aperture", A::Float, false, "0", "Lens size; the lens radius is aperture / 1000 units."},
+    {"focaldistance", A::Float, false, "|pointing - position|", "Distance of the sharp plane."},
+    {"apertureshape", A::Aperture, false, "\"circle\"",
+     "Lens (bokeh) shape: circle, triangle, square, pentagon, hexagon, octagon, gaussian, line, "
+     "or a number of polygon sides.",
+     kApertureChoices},
+    {"up", A::Vec3, false, "vec3(0,1,0)", "Which way is up."},
+    {"roll", A::Float, false, "0", "Rotation about the view axis, degrees."},
+    {"projection", A::Choice, false, "\"pinhole\"", "pinhole or spherical.", kProjectionChoices},
+};
+
+constexpr AttributeInfo kPointLight[] = {
+    {"origin", A::Vec3, true, "", "Where the light is."},
+    {"color", A::Colour, true, "", "The light's colour and intensity."},
+    {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2, d the whole ray path."},
+    {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
+};
+
+constexpr AttributeInfo kParallelLight[] = {
+    {"from", A::Vec3, true, "", "A point the light comes from."},
+    {"pointing", A::Vec3, true, "", "A point the light travels towards."},
+    {"color", A::Colour, true, "", "The light's colour and intensity."},
+    {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
+};
+
+constexpr AttributeInfo kSpotLight[] = {
+    {"origin", A::Vec3, true, "", "Where the light is."},
+    {"pointing", A::Vec3, true, "", "The point the spot aims at."},
+    {"color", A::Colour, true, "", "The light's colour and intensity."},
+    {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2."},
+    {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
+    {"angle", A::Float, false, "30", "Full cone angle, degrees."},
+    {"softness", A::Float, false, "0.2", "Outer fraction of the cone that fades to dark."},
+};
+
+constexpr AttributeInfo kAreaLight[] = {
+    {"corner", A::Vec3, true, "", "One corner of the emitting parallelogram."},
+    {"edgeA", A::Vec3, true, "", "First edge from the corner."},
+    {"edgeB", A::Vec3, true, "", "Second edge from the corner."},
+    {"color", A::Colour, true, "", "Total colour and intensity."},
+    {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2."},
+    {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
+};
+
+constexpr AttributeInfo kMaterial[] = {
+    {"color", A::Colour, false, "rgb(0.5,0.5,0.5)", "Surface colour."},
+    {"reflectivity", A::Float, false, "0", "Mirror reflection, 0 to 1."},
+    {"transparency", A::Float, false, "0", "Refracted light, 0 to 1."},
+    {"ior", A::Float, false, "1.0", "Index of refraction."},
+    {"diffuse", A::Float, false, "max(0, 1 - reflectivity - transparency)", "Diffuse factor."},
+    {"specular", A::Float, false, "0", "Highlight strength."},
+    {"shininess", A::Float, false, "3", "Highlight exponent."},
+    {"metallic", A::Bool, false, "false", "Tint highlights and reflections by the colour."},
+    {"glossiness", A::Float, false, "0", "0: sharp mirror; up to 1: blurrier."},
+    {"fresnel", A::Bool, false, "false", "Angle-dependent reflection (Fresnel)."},
+    {"absorption", A::Colour, false, "rgb(0,0,0)", "Beer-Lambert absorption per unit inside."},
+    {"texture", A::Texture, false, "none", "A texture that replaces the colour."},
+    {"bump", A::Bump, false, "none", "A bump texture that perturbs the normal."},
+    {"emission", A::Colour, false, "rgb(0,0,0)", "Light the surface gives off."},
+    // `refractiveindex` is a synonym of `ior`, handled by findAttribute.
+};
+
+constexpr AttributeInfo kBackground[] = {
+    {"color", A::Colour, false, "", "A solid colour."},
+    {"horizon", A::Colour, false, "", "Gradient colour at the horizon (with sky)."},
+    {"sky", A::Colour, false, "", "Gradient colour straight up and down (with horizon)."},
+    {"image", A::String, false, "", "An equirectangular panorama."},
+    {"angle", A::Float, false, "0", "Yaw of the panorama, radians."},
+};
+
+#define CRT_MATERIAL_ATTR {"material", A::Material, false, "Material {}", "The surface material."}
+
+constexpr AttributeInfo kSphere[] = {
+    {"center", A::Vec3, true, "", "Centre of the sphere."},
+    {"radius", A::Float, true, "", "Radius (>= 0)."},
+    CRT_MATERIAL_ATTR,
+};
+constexpr AttributeInfo kBox[] = {
+    {"cornerA", A::Vec3, true, "", "One corner."},
+    {"cornerB", A::Vec3, true, "", "The opposite corner."},
+    CRT_MATERIAL_ATTR,
+};
+constexpr AttributeInfo kPlane[] = {
+    {"normal", A::Vec3, true, "", "Normal; as a solid, the half-space behind it."},
+    {"position", A::Vec3, true, "", "A point on the plane."},
+    CRT_MATERIAL_ATTR,
+};
+constexpr AttributeInfo kCylinder[] = {
+    {"base", A::Vec3, true, "", "Centre of the base."},
+    {"top", A::Vec3, true, "", "Centre of the top."},
+    {"radius", A::Float, true, "", "Radius (>= 0)."},
+    {"open", A::Bool, false, "false", "No caps."},
+    CRT_MATERIAL_ATTR,
+};
+constexpr AttributeInfo kCone[] = {
+    {"base", A::Vec3, true, "", "Centre of the base."},
+    {"baseradius", A::Float, true, "", "Radius at the base."},
+    {"top", A::Vec3, true, "", "Centre of the top."},
+    {"topradius", A::Float, false, "0", "Radius at the top."},
+    {"open", A::Bool, false, "false", "No caps."},
+    CRT_MATERIAL_ATTR,
+};
+constexpr AttributeInfo kTorus[] = {
+    {"center", A::Vec3, true, "", "Centre."},
+    {"major", A::Float, true, "", "Radius of the ring."},
+    {"minor", A::Float, true, "", "Radius of the tube."},
+    {"axis", A::Vec3, false, "vec3(0,1,0)", "Axis of the ring."},
+    CRT_MATERIAL_ATTR,
+};
+constexpr AttributeInfo kDisc[] = {
+    {"center", A::Vec3, true, "", "Centre."},
+    {"normal", A::Vec3, true, "", "Normal."},
+    {"radius", A::Float, true, "", "Outer radius."},
+    {"hole", A::Float, false, "0", "Inner radius."},
+    CRT_MATERIAL_ATTR,
+};
+constexpr AttributeInfo kQuad[] = {
+    {"corner", A::Vec3, true, "", "One corner."},
+    {"edgeA", A::Vec3, true, "", "First edge from the corner."},
+    {"edgeB", A::Vec3, true, "", "Second edge from the corner."},
+    CRT_MATERIAL_ATTR,
+};
+constexpr AttributeInfo kTriangle[] = {
+    {"a", A::Vec3, true, "", "First vertex."},
+    {"b", A::Vec3, true, "", "Second vertex."},
+    {"c", A::Vec3, true, "", "Third vertex."},
+    CRT_MATERIAL_ATTR,
+};
+constexpr AttributeInfo kMesh[] = {
+    {"file", A::String, true, "", "A Wavefront OBJ file."},
+    CRT_MATERIAL_ATTR,
+};
+
+#define CRT_PATTERN_AB                                                                          \
+    {"a", A::Colour, false, "rgb(1,1,1)", "First colour."},                                     \
+        {"b", A::Colour, false, "rgb(0,0,0)", "Second colour."},                                \
+        {"size", A::Float, false, "1", "Size of the pattern."}
+
+constexpr AttributeInfo kChecker[] = {CRT_PATTERN_AB};
+constexpr AttributeInfo kStripes[] = {
+    CRT_PATTERN_AB,
+    {"axis", A::Vec3, false, "vec3(1,0,0)", "Direction across the stripes."},
+};
+constexpr AttributeInfo kNoise[] = {
+    CRT_PATTERN_AB,
+    {"octaves", A::Int, false, "4", "Layers of Perlin noise."},
+};
+constexpr AttributeInfo kMarble[] = {
+    CRT_PATTERN_AB,
+    {"turbulence", A::Float, false, "1", "How much the veins wander."},
+    {"octaves", A::Int, false, "4", "Layers of noise."},
+};
+constexpr AttributeInfo kWood[] = {
+    CRT_PATTERN_AB,
+    {"turbulence", A::Float, false, "0.1", "How much the rings wander."},
+    {"rings", A::Float, false, "8", "Rings per unit."},
+};
+constexpr AttributeInfo kImage[] = {
+    {"file", A::String, true, "", "The image."},
+    {"mapping", A::Choice, false, "\"uv\"", "uv, planar, spherical, cylindrical or cubic.",
+     kMappingChoices},
+};
+constexpr AttributeInfo kNoiseBump[] = {
+    {"size", A::Float, false, "1", "Size of the bumps."},
+    {"strength", A::Float, false, "0.5", "Height of the bumps."},
+    {"octaves", A::Int, false, "4", "Layers of noise."},
+};
+constexpr AttributeInfo kImageBump[] = {
+    {"file", A::String, true, "", "A grey-level height image."},
+    {"strength", A::Float, false, "0.5", "Height of the bumps."},
+    {"mapping", A::Choice, false, "\"uv\"", "uv, planar, spherical, cylindrical or cubic.",
+     kMappingChoices},
+};
+
+using C = ObjectCategory;
+using T = ObjectType;
+
+constexpr ObjectInfo kObjects[] = {
+    {T::Settings, "Settings", C::Settings, false, "How to render: camera, lights, image size.", kSettings},
+    {T::Camera, "Camera", C::Camera, false, "A camera (pinhole, lens or spherical).", kCamera},
+    {T::PointLight, "PointLight", C::Light, false, "A light shining from a point.", kPointLight},
+    {T::ParallelLight, "ParallelLight", C::Light, false, "Parallel light, like the sun.", kParallelLight},
+    {T::SpotLight, "SpotLight", C::Light, false, "A point light limited to a cone.", kSpotLight},
+    {T::AreaLight, "AreaLight", C::Light, false, "A parallelogram that emits light (soft shadows).", kAreaLight},
+    {T::Material, "Material", C::Material, false, "How a surface looks.", kMaterial},
+    {T::Background, "Background", C::Background, false, "What rays that hit nothing see.", kBackground},
+    {T::Sphere, "Sphere", C::Entity, true, "A sphere (solid).", kSphere},
+    {T::Box, "Box", C::Entity, true, "An axis-aligned box (solid).", kBox},
+    {T::Plane, "Plane", C::Entity, true, "An infinite plane; as a solid, the half-space behind its normal.", kPlane},
+    {T::Cylinder, "Cylinder", C::Entity, true, "A cylinder between two points (solid).", kCylinder},
+    {T::Cone, "Cone", C::Entity, true, "A cone or truncated cone (solid).", kCone},
+    {T::Torus, "Torus", C::Entity, true, "A torus (solid).", kTorus},
+    {T::Disc, "Disc", C::Entity, false, "A flat disc, optionally with a hole.", kDisc},
+    {T::Quad, "Quad", C::Entity, false, "A flat parallelogram.", kQuad},
+    {T::Triangle, "Triangle", C::Entity, false, "A triangle.", kTriangle},
+    {T::Mesh, "Mesh", C::Entity, false, "A triangle mesh from a Wavefront OBJ file.", kMesh},
+    {T::Checker, "Checker", C::Texture, false, "A 3D checker pattern.", kChecker},
+    {T::Stripes, "Stripes", C::Texture, false, "Stripes across an axis.", kStripes},
+    {T::Noise, "Noise", C::Texture, false, "Perlin noise between two colours.", kNoise},
+    {T::Marble, "Marble", C::Texture, false, "Marble veins.", kMarble},
+    {T::Wood, "Wood", C::Texture, false, "Wood rings.", kWood},
+    {T::Image, "Image", C::Texture, false, "An image mapped onto the surface.", kImage},
+    {T::NoiseBump, "NoiseBump", C::Texture, false, "Bumps from Perlin noise.", kNoiseBump},
+    {T::ImageBump, "ImageBump", C::Texture, false, "Bumps from an image's grey levels.", kImageBump},
+};
+static_assert(std::size(kObjects) == static_cast<size_t>(ObjectType::Count));
+
+} // namespace
+
+const ObjectInfo& objectInfo(ObjectType type) { return kObjects[static_cast<size_t>(type)]; }
+
+ObjectType findObjectType(std::string_view name) {
+    for (const ObjectInfo& info : kObjects) {
+        if (info.name == name && info.type != ObjectType::Settings) return info.type;
+    }
+    return ObjectType::Count;
+}
+
+int findAttribute(const ObjectInfo& info, std::string_view name) {
+    if (info.type == ObjectType::Material && name == "refractiveindex") name = "ior";
+    for (size_t i = 0; i < info.attributes.size(); ++i) {
+        if (info.attributes[i].name == name) return static_cast<int>(i);
+    }
+    return -1;
+}
+
+std::span<const ObjectInfo> allObjectTypes() { return kObjects; }
+
+std::string_view attrTypeName(AttrType type) {
+    switch (type) {
+    case A::Float: return "float";
+    case A::Int: return "int";
+    case A::Bool: return "bool";
+    case A::String: return "string";
+    case A::Vec3: return "vec3";
+    case A::Colour: return "colour";
+    case A::Choice: return "string";
+    case A::Material: return "material";
+    case A::Camera: return "camera";
+    case A::Background: return "background or colour";
+    case A::LightList: return "list of lights";
+    case A::Texture: return "texture";
+    case A::Bump: return "bump texture";
+    case A::Gamma: return "float or \"srgb\"";
+    case A::Aperture: return "aperture shape";
+    }
+    return "value";
+}
+
+} // namespace crt::lang

@@ -1,0 +1,90 @@
+// The object types of spec §5 and their attributes: names, types, defaults and documentation.
+//
+// One table serves the interpreter (checking), the language server (hover, completion) and
+// the documentation.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace crt::lang {
+
+enum class ObjectType : uint8_t {
+    Settings,
+    Camera,
+    PointLight,
+    ParallelLight,
+    SpotLight,
+    AreaLight,
+    Material,
+    Background,
+    Sphere,
+    Box,
+    Plane,
+    Cylinder,
+    Cone,
+    Torus,
+    Disc,
+    Quad,
+    Triangle,
+    Mesh,
+    Checker,
+    Stripes,
+    Noise,
+    Marble,
+    Wood,
+    Image,
+    NoiseBump,
+    ImageBump,
+    Count,
+};
+
+enum class ObjectCategory : uint8_t { Settings, Camera, Light, Material, Background, Entity, Texture };
+
+/// What an attribute accepts.
+enum class AttrType : uint8_t {
+    Float,       ///< a float or an int
+    Int,         ///< an int (a float is an error with a fix-it)
+    Bool,
+    String,
+    Vec3,
+    Colour,
+    Choice,      ///< a string from `choices` (case-insensitive)
+    Material,
+    Camera,
+    Background,  ///< a Background or a colour
+    LightList,   ///< a list of lights
+    Texture,     ///< a pattern or Image texture
+    Bump,        ///< a NoiseBump or ImageBump
+    Gamma,       ///< a float > 0, or "srgb"
+    Aperture,    ///< a shape name, or an int >= 3 (polygon sides)
+};
+
+struct AttributeInfo {
+    std::string_view name;
+    AttrType type;
+    bool required;
+    std::string_view defaultText; ///< as written in the spec, "" when required
+    std::string_view doc;
+    std::span<const std::string_view> choices = {};
+};
+
+struct ObjectInfo {
+    ObjectType type;
+    std::string_view name;
+    ObjectCategory category;
+    bool solid; ///< entities usable in CSG
+    std::string_view doc;
+    std::span<const AttributeInfo> attributes;
+};
+
+const ObjectInfo& objectInfo(ObjectType type);
+/// The object type called `name`, or ObjectType::Count.
+ObjectType findObjectType(std::string_view name);
+/// Index of attribute `name` in `info.attributes`, or -1 (synonyms map to their canonical).
+int findAttribute(const ObjectInfo& info, std::string_view name);
+std::span<const ObjectInfo> allObjectTypes();
+std::string_view attrTypeName(AttrType type);
+
+} // namespace crt::lang

@@ -1,0 +1,430 @@
+// Expression evaluation: arithmetic, comparison, logic, indexing, lists and CSG (spec §3).
+#include "interpreter_impl.hpp"
+
+#include "builtins.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace crt::lang {
+
+std::string_view kindName(ValueKind kind) {
+    switch (kind) {
+    case ValueKind::Unset: return "unset";
+    case ValueKind::None: return "none";
+    case ValueKind::Int: return "int";
+    case ValueKind::Float: return "float";
+    case ValueKind::Bool: return "bool";
+    case ValueKind::String: return "string";
+    case ValueKind::Vec3: return "vec3";
+    case ValueKind::Colour: return "colour";
+    case ValueKind::List: return "list";
+    case ValueKind::Entity: return "entity";
+    case ValueKind::Material: return "material";
+    case ValueKind::Light: return "light";
+    case ValueKind::Camera: return "camera";
+    case ValueKind::Background: return "background";
+    case ValueKind::Texture: return "texture";
+    case ValueKind::Macro: return "macro";
+    case ValueKind::Builtin: return "function";
+    }
+    return "value";
+}
+
+std::string typeName(const Value& value) {
+    if (value.isObject() && value.objectType != ObjectType::Count) {
+        return std::string(objectInfo(value.objectType).name);
+    }
+    return std::string(kindName(value.kind));
+}
+
+std::string operandError(std::string_view op, const Value& left, const Value& right) {
+    return fmt::format("cannot apply '{}' to {} and {}", op, typeName(left), typeName(right));
+}
+
+namespace {
+
+bool isVector(const Value& v) { return v.kind == ValueKind::Vec3 || v.kind == ValueKind::Colour; }
+
+/// Component-wise a (op) b on vec3 or colour; the alpha comes from the colour operand.
+Value componentWise(const Value& a, const Value& b, char op) {
+    Value r = a.kind == ValueKind::Vec3 || a.kind == ValueKind::Colour ? a : b;
+    for (int k = 0; k < 3; ++k) {
+        double x = isVector(a) ? a.v[k] : a.asDouble();
+        double y = isVector(b) ? b.v[k] : b.asDouble();
+        switch (op) {
+        case '+': r.v[k] = x + y; break;
+        case '-': r.v[k] = x - y; break;
+        case '*': r.v[k] = x * y; break;
+        default: r.v[k] = x / y; break;
+        }
+    }
+    return r;
+}
+
+bool checkedInt(BinaryOp op, int64_t a, int64_t b, int64_t& out) {
+    switch (op) {
+    case BinaryOp::Add: return !__builtin_add_overflow(a, b, &out);
+    case BinaryOp::Sub: return !__builtin_sub_overflow(a, b, &out);
+    case BinaryOp::Mul: return !__builtin_mul_overflow(a, b, &out);
+    default: return false;
+    }
+}
+
+} // namespace
+
+bool valuesEqual(const Value& a, const Value& b) {
+    if (a.isNumber() && b.isNumber()) {
+        if (a.kind == ValueKind::Int && b.kind == ValueKind::Int) return a.i == b.i;
+        return a.asDouble() == b.asDouble();
+    }
+    switch (a.kind) {
+    case ValueKind::None: return true;
+    case ValueKind::Bool: return a.b == b.b;
+    case ValueKind::String: return *a.s == *b.s;
+    case ValueKind::Vec3: return a.v[0] == b.v[0] && a.v[1] == b.v[1] && a.v[2] == b.v[2];
+    case ValueKind::Colour:
+        return a.v[0] == b.v[0] && a.v[1] == b.v[1] && a.v[2] == b.v[2] && a.v[3] == b.v[3];
+    case ValueKind::List: {
+        if (a.list->size() != b.list->size()) return false;
+        for (size_t i = 0; i < a.list->size(); ++i) {
+            const Value& x = (*a.list)[i];
+            const Value& y = (*b.list)[i];
+            bool comparable = x.kind == y.kind || (x.isNumber() && y.isNumber());
+            if (!comparable || !valuesEqual(x, y)) return false;
+        }
+        return true;
+    }
+    case ValueKind::Macro: return a.closure == b.closure;
+    default: return a.index == b.index && a.objectType == b.objectType; // objects: identity
+    }
+}
+
+Value Interpreter::eval(const Expr* node) {
+    switch (node->kind) {
+    case NodeKind::IntLit: return Value::integer(static_cast<const IntLit*>(node)->value);
+    case NodeKind::FloatLit: return Value::number(static_cast<const FloatLit*>(node)->value);
+    case NodeKind::BoolLit: return Value::boolean(static_cast<const BoolLit*>(node)->value);
+    case NodeKind::StringLit: {
+        auto* s = static_cast<const StringLit*>(node);
+        return Value::string(newString(std::string(s->value)));
+    }
+    case NodeKind::Var: return evalVar(static_cast<const VarExpr*>(node));
+    case NodeKind::Assign: {
+        auto* a = static_cast<const AssignExpr*>(node);
+        Value value = eval(a->value);
+        if (value.kind == ValueKind::Unset) value = Value::none();
+        store(a->resolution, value, a->nameRange);
+        return value;
+    }
+    case NodeKind::Unary: return evalUnary(static_cast<const UnaryExpr*>(node));
+    case NodeKind::Binary: return evalBinary(static_cast<const BinaryExpr*>(node));
+    case NodeKind::Ternary: {
+        auto* t = static_cast<const TernaryExpr*>(node);
+        Value c = eval(t->condition);
+        if (c.kind != ValueKind::Bool) {
+            fail(t->condition->range,
+                 fmt::format("the condition of '?:' must be a bool, not {}", typeName(c)));
+        }
+        return eval(c.b ? t->then : t->otherwise);
+    }
+    case NodeKind::Call: return evalCall(static_cast<const CallExpr*>(node));
+    case NodeKind::Index: return evalIndex(static_cast<const IndexExpr*>(node));
+    case NodeKind::Modify: return evalModify(static_cast<const ModifyExpr*>(node));
+    case NodeKind::List: return evalList(static_cast<const ListExpr*>(node));
+    case NodeKind::Object: return evalObject(static_cast<const ObjectExpr*>(node));
+    case NodeKind::Macro: return evalMacro(static_cast<const MacroExpr*>(node));
+    default: fail(node->range, "this is not an expression");
+    }
+}
+
+Value Interpreter::evalUnary(const UnaryExpr* node) {
+    Value v = eval(node->operand);
+    switch (node->op) {
+    case UnaryOp::Not:
+        if (v.kind == ValueKind::Bool) return Value::boolean(!v.b);
+        break;
+    case UnaryOp::Plus:
+        if (v.isNumber() || isVector(v)) return v;
+        break;
+    case UnaryOp::Minus:
+        if (v.kind == ValueKind::Int) {
+            if (v.i == std::numeric_limits<int64_t>::min()) fail(node->range, "integer overflow in '-'");
+            return Value::integer(-v.i);
+        }
+        if (v.kind == ValueKind::Float) return Value::number(-v.f);
+        if (isVector(v)) {
+            for (int k = 0; k < 3; ++k) v.v[k] = -v.v[k];
+            return v;
+        }
+        break;
+    }
+    fail(node->opRange, fmt::format("cannot apply '{}' to {}", opSpelling(node->op), typeName(v)));
+}
+
+Value Interpreter::evalBinary(const BinaryExpr* node) {
+    BinaryOp op = node->op;
+    if (op == BinaryOp::And || op == BinaryOp::Or) {
+        Value left = eval(node->left);
+        if (left.kind != ValueKind::Bool) {
+            fail(node->left->range, fmt::format("the operands of '{}' must be bools, not {}",
+                                                opSpelling(op), typeName(left)));
+        }
+        if (left.b == (op == BinaryOp::Or)) return left; // short-circuit
+        Value right = eval(node->right);
+        if (right.kind != ValueKind::Bool) {
+            fail(node->right->range, fmt::format("the operands of '{}' must be bools, not {}",
+                                                 opSpelling(op), typeName(right)));
+        }
+        return right;
+    }
+
+    Value a = eval(node->left);
+    Value b = eval(node->right);
+
+    // The hot path: two floats, or a float and an int.
+    if (a.isNumber() && b.isNumber()) {
+        if (a.kind == ValueKind::Int && b.kind == ValueKind::Int) {
+            int64_t result = 0;
+            switch (op) {
+            case BinaryOp::Add:
+            case BinaryOp::Sub:
+            case BinaryOp::Mul:
+                if (!checkedInt(op, a.i, b.i, result)) {
+                    fail(node->opRange, fmt::format("integer overflow in '{}'", opSpelling(op)));
+                }
+                return Value::integer(result);
+            case BinaryOp::Div:
+            case BinaryOp::Mod:
+                if (b.i == 0) {
+                    fail(node->opRange, op == BinaryOp::Div ? "integer division by zero"
+                                                            : "integer modulo by zero");
+                }
+                if (a.i == std::numeric_limits<int64_t>::min() && b.i == -1) {
+                    fail(node->opRange, fmt::format("integer overflow in '{}'", opSpelling(op)));
+                }
+                return Value::integer(op == BinaryOp::Div ? a.i / b.i : a.i % b.i);
+            case BinaryOp::Less: return Value::boolean(a.i < b.i);
+            case BinaryOp::Greater: return Value::boolean(a.i > b.i);
+            case BinaryOp::LessEqual: return Value::boolean(a.i <= b.i);
+            case BinaryOp::GreaterEqual: return Value::boolean(a.i >= b.i);
+            case BinaryOp::Equal: return Value::boolean(a.i == b.i);
+            case BinaryOp::NotEqual: return Value::boolean(a.i != b.i);
+            default: break;
+            }
+        } else {
+            double x = a.asDouble(), y = b.asDouble();
+            switch (op) {
+            case BinaryOp::Add: return Value::number(x + y);
+            case BinaryOp::Sub: return Value::number(x - y);
+            case BinaryOp::Mul: return Value::number(x * y);
+            case BinaryOp::Div: return Value::number(x / y);
+            case BinaryOp::Mod: return Value::number(std::fmod(x, y));
+            case BinaryOp::Less: return Value::boolean(x < y);
+            case BinaryOp::Greater: return Value::boolean(x > y);
+            case BinaryOp::LessEqual: return Value::boolean(x <= y);
+            case BinaryOp::GreaterEqual: return Value::boolean(x >= y);
+            case BinaryOp::Equal: return Value::boolean(x == y);
+            case BinaryOp::NotEqual: return Value::boolean(x != y);
+            default: break;
+            }
+        }
+        fail(node->opRange, operandError(opSpelling(op), a, b));
+    }
+
+    switch (op) {
+    case BinaryOp::Equal:
+    case BinaryOp::NotEqual:
+        if (a.kind != b.kind) {
+            fail(node->opRange, fmt::format("cannot compare {} and {} with '{}'", typeName(a),
+                                            typeName(b), opSpelling(op)));
+        }
+        return Value::boolean(valuesEqual(a, b) == (op == BinaryOp::Equal));
+    case BinaryOp::Add:
+        if (a.kind == ValueKind::String || b.kind == ValueKind::String) {
+            bool printable = [](const Value& v) {
+                return v.kind == ValueKind::String || v.isNumber() || v.kind == ValueKind::Bool;
+            }(a.kind == ValueKind::String ? b : a);
+            if (printable) return Value::string(newString(str(a) + str(b)));
+        }
+        [[fallthrough]];
+    case BinaryOp::Sub:
+        if (a.kind == ValueKind::Entity && b.kind == ValueKind::Entity) return csg(op, a, b, node);
+        if (isVector(a) && a.kind == b.kind) {
+            return componentWise(a, b, op == BinaryOp::Add ? '+' : '-');
+        }
+        break;
+    case BinaryOp::Intersect:
+        if (a.kind == ValueKind::Entity && b.kind == ValueKind::Entity) return csg(op, a, b, node);
+        break;
+    case BinaryOp::Mul:
+        if (isVector(a) && (b.isNumber() || b.kind == a.kind)) return componentWise(a, b, '*');
+        if (isVector(b) && a.isNumber()) return componentWise(a, b, '*');
+        break;
+    case BinaryOp::Div:
+        if (isVector(a) && b.isNumber()) return componentWise(a, b, '/');
+        if (isVector(a) && b.kind == a.kind) return componentWise(a, b, '/');
+        break;
+    default: break;
+    }
+    fail(node->opRange, operandError(opSpelling(op), a, b));
+}
+
+Value Interpreter::evalIndex(const IndexExpr* node) {
+    Value object = eval(node->object);
+    Value index = eval(node->index);
+    if (object.kind != ValueKind::List) {
+        fail(node->object->range, fmt::format("cannot index {}; only lists can be indexed", typeName(object)));
+    }
+    if (index.kind != ValueKind::Int) {
+        Diagnostic& d = diagnostics_.error(node->index->range,
+                                           fmt::format("a list index must be an int, not {}", typeName(index)));
+        if (index.kind == ValueKind::Float && std::isfinite(index.f)) {
+            d.fixits.push_back({node->index->range, fmt::format("{}", static_cast<int64_t>(index.f))});
+        }
+        throw EvalError{};
+    }
+    int64_t length = static_cast<int64_t>(object.list->size());
+    if (index.i < 0 || index.i >= length) {
+        fail(node->index->range, fmt::format("index {} is out of range for a list of length {}",
+                                             index.i, length));
+    }
+    return (*object.list)[static_cast<size_t>(index.i)];
+}
+
+Value Interpreter::evalList(const ListExpr* node) {
+    if (node->items.size() > options_.limits.maxEntities) {
+        fail(node->range, fmt::format("a list longer than {} items; raise the limit with --max-entities",
+                                      options_.limits.maxEntities));
+    }
+    std::vector<Value> items;
+    items.reserve(node->items.size());
+    for (const Expr* item : node->items) {
+        Value v = eval(item);
+        if (v.kind == ValueKind::None) fail(item->range, "a list item has no value (none)");
+        items.push_back(v);
+    }
+    return Value::listOf(newList(std::move(items)));
+}
+
+Value Interpreter::csg(BinaryOp op, const Value& left, const Value& right, const BinaryExpr* node) {
+    for (const Value* operand : {&left, &right}) {
+        if (!scene_.entities[operand->index].solid) {
+            const Expr* where = operand == &left ? node->left : node->right;
+            fail(where->range, fmt::format("{} is not a solid, so it cannot be used in CSG ('{}'); "
+                                           "solids are Sphere, Box, Plane, Cylinder, Cone and Torus",
+                                           typeName(*operand), opSpelling(op)));
+        }
+    }
+    tracer::CsgNode csg;
+    csg.op = op == BinaryOp::Add   ? tracer::CsgOp::Union
+             : op == BinaryOp::Sub ? tracer::CsgOp::Difference
+                                   : tracer::CsgOp::Intersection;
+    csg.left = static_cast<int32_t>(left.index);
+    csg.right = static_cast<int32_t>(right.index);
+    markUsed(csg.left);
+    markUsed(csg.right);
+    int32_t index = addEntity(tracer::EntityDesc{csg, -1, true, span(node->range)},
+                              EntityInfo{ObjectType::Count, node->range, false, false, false});
+    return Value::object(ValueKind::Entity, ObjectType::Count, static_cast<uint32_t>(index));
+}
+
+Value Interpreter::evalModify(const ModifyExpr* node) {
+    Value target = eval(node->target);
+    if (target.kind != ValueKind::Entity && target.kind != ValueKind::Texture) {
+        fail(node->target->range,
+             fmt::format("cannot apply modifiers to {}; only entities and textures move", typeName(target)));
+    }
+    std::vector<tracer::Modifier> modifiers;
+    for (const Modifier& m : node->modifiers) {
+        Value arg = eval(m.argument);
+        tracer::Modifier mod;
+        mod.kind = m.op == ModifierOp::Translate ? tracer::ModifierKind::Translate
+                   : m.op == ModifierOp::Rotate  ? tracer::ModifierKind::Rotate
+                                                 : tracer::ModifierKind::Scale;
+        if (arg.kind == ValueKind::Vec3) {
+            mod.value = {arg.v[0], arg.v[1], arg.v[2]};
+        } else if (m.op == ModifierOp::Scale && arg.isNumber()) {
+            mod.value = glm::dvec3(arg.asDouble());
+        } else {
+            fail(m.argument->range, fmt::format("'{}' takes a {}, not {}", opSpelling(m.op),
+                                                m.op == ModifierOp::Scale ? "number or a vec3" : "vec3",
+                                                typeName(arg)));
+        }
+        for (int k = 0; k < 3; ++k) {
+            if (!std::isfinite(mod.value[k])) {
+                fail(m.argument->range, fmt::format("'{}' has a component that is not finite", opSpelling(m.op)));
+            }
+            if (m.op == ModifierOp::Scale && mod.value[k] == 0.0) {
+                fail(m.argument->range, "'scale' by zero flattens the object; use a non-zero scale");
+            }
+        }
+        modifiers.push_back(mod);
+    }
+    if (target.kind == ValueKind::Texture) {
+        tracer::TextureDesc texture = scene_.textures[target.index];
+        texture.modifiers.insert(texture.modifiers.end(), modifiers.begin(), modifiers.end());
+        texture.source = span(node->range);
+        scene_.textures.push_back(std::move(texture));
+        return Value::object(ValueKind::Texture, target.objectType,
+                             static_cast<uint32_t>(scene_.textures.size() - 1));
+    }
+    // Modifying a transformed entity extends its list rather than nesting transforms.
+    int32_t child = static_cast<int32_t>(target.index);
+    if (auto* inner = std::get_if<tracer::TransformNode>(&scene_.entities[target.index].shape)) {
+        std::vector<tracer::Modifier> combined = inner->modifiers;
+        combined.insert(combined.end(), modifiers.begin(), modifiers.end());
+        modifiers = std::move(combined);
+        child = inner->child;
+    }
+    markUsed(static_cast<int32_t>(target.index));
+    bool solid = scene_.entities[static_cast<size_t>(child)].solid;
+    int32_t index = addEntity(tracer::EntityDesc{tracer::TransformNode{child, std::move(modifiers)}, -1,
+                                                 solid, span(node->range)},
+                              EntityInfo{target.objectType, node->range, false, false, false});
+    return Value::object(ValueKind::Entity, target.objectType, static_cast<uint32_t>(index));
+}
+
+Value Interpreter::evalCall(const CallExpr* node) {
+    Value callee = eval(node->callee);
+    if (callee.kind != ValueKind::Builtin && callee.kind != ValueKind::Macro) {
+        fail(node->callee->range, fmt::format("cannot call {}; only macros and functions can be called",
+                                              typeName(callee)));
+    }
+    // Arguments evaluate left to right, before the call.
+    Value small[8];
+    std::vector<Value> large;
+    std::span<Value> args;
+    if (node->args.size() <= 8) {
+        args = std::span<Value>(small, node->args.size());
+    } else {
+        large.resize(node->args.size());
+        args = large;
+    }
+    for (size_t i = 0; i < node->args.size(); ++i) {
+        args[i] = eval(node->args[i]);
+        if (args[i].kind == ValueKind::None) {
+            fail(node->args[i]->range, "this argument has no value (none)");
+        }
+    }
+    if (callee.kind == ValueKind::Macro) return callMacro(callee.closure, node, args);
+
+    const BuiltinInfo& info = builtinFunctions()[callee.index];
+    int count = static_cast<int>(args.size());
+    if (count < info.minArgs || (info.maxArgs >= 0 && count > info.maxArgs)) {
+        std::string expected = info.minArgs == info.maxArgs
+                                   ? fmt::format("{}", info.minArgs)
+                                   : info.maxArgs < 0 ? fmt::format("at least {}", info.minArgs)
+                                                      : fmt::format("{} to {}", info.minArgs, info.maxArgs);
+        Diagnostic& d = diagnostics_.error(node->range, fmt::format("{} takes {} argument{}, but {} {} given",
+                                                                    info.name, expected,
+                                                                    expected == "1" ? "" : "s", count,
+                                                                    count == 1 ? "was" : "were"));
+        d.notes.push_back({node->callee->range, fmt::format("signature: {}", info.signature)});
+        throw EvalError{};
+    }
+    BuiltinCall call{*this, node, args};
+    return info.function(call);
+}
+
+} // namespace crt::lang

@@ -1,0 +1,221 @@
+// The token source of the Bison parser, its error messages and error recovery.
+#include "parser.hpp"
+
+#include "grammar.hpp"
+#include "parser_support.hpp"
+
+namespace crt::lang {
+namespace {
+
+bool canStartStatement(TokenKind kind) {
+    switch (kind) {
+    case TokenKind::Identifier:
+    case TokenKind::Name:
+    case TokenKind::Integer:
+    case TokenKind::Float:
+    case TokenKind::String:
+    case TokenKind::KwSettings:
+    case TokenKind::KwScene:
+    case TokenKind::KwMacro:
+    case TokenKind::KwTrue:
+    case TokenKind::KwFalse:
+    case TokenKind::KwWhile:
+    case TokenKind::KwFor:
+    case TokenKind::KwIf:
+    case TokenKind::KwInclude:
+    case TokenKind::LParen:
+    case TokenKind::LParenLine:
+    case TokenKind::LBracket:
+    case TokenKind::LBracketLine:
+    case TokenKind::Plus:
+    case TokenKind::Minus:
+    case TokenKind::Bang: return true;
+    default: return false;
+    }
+}
+
+/// Where the parser may pick up again after an error: a statement that starts a line, a
+/// closing brace, or the end of the file.
+bool isResumePoint(const Token& token) {
+    return token.kind == TokenKind::RBrace || token.kind == TokenKind::EndOfFile ||
+           (token.atLineStart && canStartStatement(token.kind));
+}
+
+} // namespace
+
+Token ParseContext::nextToken() {
+    Token token = lexer.next();
+    if (!skipping) return token;
+    int depth = skipDepth;
+    skipDepth = 0;
+    for (;; token = lexer.next()) {
+        if (token.kind == TokenKind::EndOfFile) break;
+        if (token.kind == TokenKind::LBrace) {
+            ++depth;
+        } else if (token.kind == TokenKind::RBrace && depth > 0) {
+            --depth;
+        } else if (depth == 0 && isResumePoint(token)) {
+            break;
+        }
+    }
+    skipping = false;
+    return token;
+}
+
+std::string_view ParseContext::decodeString(const Token& token) {
+    std::string_view raw = text(token);
+    raw.remove_prefix(1);
+    if (!raw.empty() && raw.back() == '"' && token.end - token.begin >= 2) raw.remove_suffix(1);
+    if (raw.find('\\') == std::string_view::npos) return raw; // points into the source
+    std::string decoded;
+    decoded.reserve(raw.size());
+    for (size_t i = 0; i < raw.size(); ++i) {
+        if (raw[i] != '\\' || i + 1 == raw.size()) {
+            decoded += raw[i];
+            continue;
+        }
+        switch (raw[++i]) {
+        case 'n': decoded += '\n'; break;
+        case 't': decoded += '\t'; break;
+        case '"': decoded += '"'; break;
+        case '\\': decoded += '\\'; break;
+        default: break; // already reported by the lexer
+        }
+    }
+    return arena.copy(decoded);
+}
+
+namespace grammar {
+
+Parser::symbol_type yylex(ParseContext& ctx) {
+    Token token = ctx.nextToken();
+    ctx.lastToken = token;
+    SourceRange where = ctx.range(token.begin, token.end);
+    switch (token.kind) {
+    case TokenKind::EndOfFile: return Parser::make_END(where);
+    case TokenKind::Identifier: return Parser::make_IDENT(ctx.text(token), where);
+    case TokenKind::Name: return Parser::make_NAME(ctx.text(token), where);
+    case TokenKind::Integer: {
+        std::string_view text = ctx.text(token);
+        int64_t value = 0;
+        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc()) {
+            ctx.diagnostics.error(where, "integer literal does not fit in 64 bits; write it "
+                                         "as a float");
+        }
+        return Parser::make_INT(value, where);
+    }
+    case TokenKind::Float: {
+        std::string_view text = ctx.text(token);
+        double value = 0;
+        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc()) {
+            ctx.diagnostics.error(where, "float literal is out of range");
+        }
+        return Parser::make_FLOAT(value, where);
+    }
+    case TokenKind::Invalid: return Parser::make_FLOAT(0.0, where); // reported by the lexer
+    case TokenKind::String: return Parser::make_STRING(ctx.decodeString(token), where);
+    case TokenKind::KwSettings: return Parser::make_SETTINGS(where);
+    case TokenKind::KwScene: return Parser::make_SCENE(where);
+    case TokenKind::KwMacro: return Parser::make_MACRO(where);
+    case TokenKind::KwScale: return Parser::make_SCALE(where);
+    case TokenKind::KwTranslate: return Parser::make_TRANSLATE(where);
+    case TokenKind::KwRotate: return Parser::make_ROTATE(where);
+    case TokenKind::KwTrue: return Parser::make_TRUE(where);
+    case TokenKind::KwFalse: return Parser::make_FALSE(where);
+    case TokenKind::KwWhile: return Parser::make_WHILE(where);
+    case TokenKind::KwFor: return Parser::make_FOR(where);
+    case TokenKind::KwIn: return Parser::make_IN(where);
+    case TokenKind::KwIf: return Parser::make_IF(where);
+    case TokenKind::KwElse: return Parser::make_ELSE(where);
+    case TokenKind::KwInclude: return Parser::make_INCLUDE(where);
+    case TokenKind::LParen: return Parser::make_LPAREN(where);
+    case TokenKind::LParenLine: return Parser::make_LPAREN_LINE(where);
+    case TokenKind::RParen: return Parser::make_RPAREN(where);
+    case TokenKind::LBrace: return Parser::make_LBRACE(where);
+    case TokenKind::RBrace: return Parser::make_RBRACE(where);
+    case TokenKind::LBracket: return Parser::make_LBRACKET(where);
+    case TokenKind::LBracketLine: return Parser::make_LBRACKET_LINE(where);
+    case TokenKind::RBracket: return Parser::make_RBRACKET(where);
+    case TokenKind::Comma: return Parser::make_COMMA(where);
+    case TokenKind::Arrow: return Parser::make_ARROW(where);
+    case TokenKind::Assign: return Parser::make_ASSIGN(where);
+    case TokenKind::Plus: return Parser::make_PLUS(where);
+    case TokenKind::Minus: return Parser::make_MINUS(where);
+    case TokenKind::Caret: return Parser::make_CARET(where);
+    case TokenKind::Star: return Parser::make_STAR(where);
+    case TokenKind::Slash: return Parser::make_SLASH(where);
+    case TokenKind::Percent: return Parser::make_PERCENT(where);
+    case TokenKind::Bang: return Parser::make_BANG(where);
+    case TokenKind::Less: return Parser::make_LT(where);
+    case TokenKind::ModifierOpen: return Parser::make_MOD_OPEN(where);
+    case TokenKind::Greater: return Parser::make_GT(where);
+    case TokenKind::LessEqual: return Parser::make_LE(where);
+    case TokenKind::GreaterEqual: return Parser::make_GE(where);
+    case TokenKind::EqualEqual: return Parser::make_EQ(where);
+    case TokenKind::NotEqual: return Parser::make_NE(where);
+    case TokenKind::AndAnd: return Parser::make_AND(where);
+    case TokenKind::OrOr: return Parser::make_OR(where);
+    case TokenKind::Question: return Parser::make_QUESTION(where);
+    case TokenKind::Colon: return Parser::make_COLON(where);
+    case TokenKind::Comment: break;
+    }
+    return Parser::make_END(where);
+}
+
+void Parser::error(const location_type& where, const std::string& message) {
+    ctx.diagnostics.error(where, message);
+}
+
+void Parser::report_syntax_error(const context& yyctx) const {
+    const Token& found = ctx.lastToken;
+    SourceRange where = ctx.range(found.begin, found.end);
+    std::string foundText;
+    switch (found.kind) {
+    case TokenKind::Identifier:
+    case TokenKind::Name:
+    case TokenKind::Integer:
+    case TokenKind::Float:
+        foundText = fmt::format("{} '{}'", tokenDescription(found.kind), ctx.text(found));
+        break;
+    default: foundText = std::string(tokenDescription(found.kind)); break;
+    }
+
+    constexpr int kMaxExpected = 5;
+    symbol_kind_type expected[kMaxExpected];
+    int count = yyctx.expected_tokens(expected, kMaxExpected);
+    std::string message = fmt::format("unexpected {}", foundText);
+    bool expectsArrow = false;
+    if (count > 0 && count < kMaxExpected) {
+        message += "; expected ";
+        for (int i = 0; i < count; ++i) {
+            if (i > 0) message += i + 1 == count ? " or " : ", ";
+            message += symbol_name(expected[i]);
+            expectsArrow |= expected[i] == symbol_kind::S_ARROW;
+        }
+    }
+    Diagnostic& d = ctx.diagnostics.error(where, std::move(message));
+    if (expectsArrow && found.kind == TokenKind::Assign) {
+        d.message += "; attributes are written 'name -> value'";
+        d.fixits.push_back({where, "->"});
+    }
+    // Skip the rest of the broken statement unless the parser can resume right here.
+    bool resumeHere = found.kind == TokenKind::RBrace || found.kind == TokenKind::EndOfFile ||
+                      (found.atLineStart && canStartStatement(found.kind));
+    ctx.skipping = !resumeHere;
+    ctx.skipDepth = found.kind == TokenKind::LBrace ? 1 : 0;
+}
+
+} // namespace grammar
+
+Script parse(const SourceFile& file, uint32_t fileIndex, Arena& arena, DiagnosticBag& diagnostics,
+             std::vector<Token>* comments) {
+    ParseContext ctx(file, fileIndex, arena, diagnostics);
+    ctx.lexer.collectComments(comments);
+    grammar::Parser parser(ctx);
+    parser.parse();
+    return Script{arena.copy(ctx.items), fileIndex};
+}
+
+} // namespace crt::lang

@@ -1,0 +1,55 @@
+// Helpers for the grammar's actions and its token source; included only by the parser.
+#pragma once
+
+#include "parse_context.hpp"
+
+#include <charconv>
+#include <fmt/format.h>
+
+namespace crt::lang::grammar {
+
+Parser::symbol_type yylex(ParseContext& ctx);
+
+inline Expr* makeBinary(ParseContext& ctx, BinaryOp op, Expr* left, SourceRange opRange,
+                        Expr* right) {
+    auto* n = ctx.node<BinaryExpr>(NodeKind::Binary,
+                                   {left->range.file, left->range.begin, right->range.end});
+    n->op = op;
+    n->opRange = opRange;
+    n->left = left;
+    n->right = right;
+    return n;
+}
+
+inline Expr* makeUnary(ParseContext& ctx, UnaryOp op, SourceRange opRange, Expr* operand,
+                       SourceRange whole) {
+    auto* n = ctx.node<UnaryExpr>(NodeKind::Unary, whole);
+    n->op = op;
+    n->opRange = opRange;
+    n->operand = operand;
+    return n;
+}
+
+inline Expr* makeBool(ParseContext& ctx, bool value, SourceRange where) {
+    auto* n = ctx.node<BoolLit>(NodeKind::BoolLit, where);
+    n->value = value;
+    return n;
+}
+
+inline Expr* makeAssign(ParseContext& ctx, Expr* target, SourceRange equals, Expr* value,
+                        SourceRange whole) {
+    if (target->kind != NodeKind::Var) {
+        ctx.diagnostics.error(target->range,
+                              "cannot assign to this expression; the left of '=' must be a "
+                              "variable name");
+        (void)equals;
+        return value;
+    }
+    auto* n = ctx.node<AssignExpr>(NodeKind::Assign, whole);
+    n->name = static_cast<VarExpr*>(target)->name;
+    n->nameRange = target->range;
+    n->value = value;
+    return n;
+}
+
+} // namespace crt::lang::grammar

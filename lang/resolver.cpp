@@ -1,0 +1,378 @@
+// Name resolution: Python-like static scopes with macro closures.
+#include "resolver.hpp"
+
+#include "builtins.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace crt::lang {
+
+uint32_t GlobalTable::slotFor(std::string_view name) {
+    auto it = slots_.find(std::string(name));
+    if (it != slots_.end()) return it->second;
+    uint32_t slot = size();
+    slots_.emplace(std::string(name), slot);
+    entries_.push_back(Entry{std::string(name)});
+    return slot;
+}
+
+const GlobalTable::Entry* GlobalTable::find(std::string_view name) const {
+    auto it = slots_.find(std::string(name));
+    return it == slots_.end() ? nullptr : &entries_[it->second];
+}
+
+namespace {
+
+/// A macro body's scope: its parameters, then every name assigned in it.
+struct MacroScope {
+    MacroExpr* macro;
+    struct Local {
+        std::string_view name;
+        SourceRange firstAssignment;
+        bool isParameter = false;
+        bool isLoopVariable = false;
+        bool read = false;
+    };
+    std::vector<Local> locals;
+
+    int find(std::string_view name) const {
+        for (size_t i = 0; i < locals.size(); ++i) {
+            if (locals[i].name == name) return static_cast<int>(i);
+        }
+        return -1;
+    }
+    void declare(std::string_view name, SourceRange where, bool loopVariable) {
+        if (find(name) >= 0) return;
+        locals.push_back({name, where, false, loopVariable, false});
+    }
+};
+
+class Resolver {
+public:
+    Resolver(GlobalTable& globals, DiagnosticBag& diagnostics, bool isMainFile)
+        : globals_(globals), diagnostics_(diagnostics), isMainFile_(isMainFile) {}
+
+    ResolveResult run(Script& script) {
+        // Top-level assignments are known before any use so a macro defined early can
+        // read a global assigned later, and so a global shadows a built-in everywhere.
+        for (Node* item : script.items) collectAssignments(item, nullptr);
+        for (Node* item : script.items) statement(item);
+        return result_;
+    }
+
+private:
+    /// Declares the names `node` assigns, without entering nested macros. `scope` is null
+    /// at the top level.
+    void collectAssignments(Node* node, MacroScope* scope) {
+        if (!node) return;
+        switch (node->kind) {
+        case NodeKind::Assign: {
+            auto* a = static_cast<AssignExpr*>(node);
+            declare(a->name, a->nameRange, scope, false);
+            collectAssignments(a->value, scope);
+            break;
+        }
+        case NodeKind::For: {
+            auto* f = static_cast<ForStmt*>(node);
+            declare(f->variable, f->variableRange, scope, true);
+            collectAssignments(f->iterable, scope);
+            collectAssignments(f->body, scope);
+            break;
+        }
+        case NodeKind::While: {
+            auto* w = static_cast<WhileStmt*>(node);
+            collectAssignments(w->condition, scope);
+            collectAssignments(w->body, scope);
+            break;
+        }
+        case NodeKind::If: {
+            auto* i = static_cast<IfStmt*>(node);
+            collectAssignments(i->condition, scope);
+            collectAssignments(i->then, scope);
+            collectAssignments(i->otherwise, scope);
+            break;
+        }
+        case NodeKind::Block:
+            for (Node* s : static_cast<Block*>(node)->statements) collectAssignments(s, scope);
+            break;
+        case NodeKind::Scene:
+            for (Node* s : static_cast<SceneStmt*>(node)->statements) collectAssignments(s, scope);
+            break;
+        case NodeKind::Settings:
+            for (Attribute& a : static_cast<SettingsStmt*>(node)->attributes) collectAssignments(a.value, scope);
+            break;
+        case NodeKind::Unary: collectAssignments(static_cast<UnaryExpr*>(node)->operand, scope); break;
+        case NodeKind::Binary:
+            collectAssignments(static_cast<BinaryExpr*>(node)->left, scope);
+            collectAssignments(static_cast<BinaryExpr*>(node)->right, scope);
+            break;
+        case NodeKind::Ternary: {
+            auto* t = static_cast<TernaryExpr*>(node);
+            collectAssignments(t->condition, scope);
+            collectAssignments(t->then, scope);
+            collectAssignments(t->otherwise, scope);
+            break;
+        }
+        case NodeKind::Call: {
+            auto* c = static_cast<CallExpr*>(node);
+            collectAssignments(c->callee, scope);
+            for (Expr* arg : c->args) collectAssignments(arg, scope);
+            break;
+        }
+        case NodeKind::Index:
+            collectAssignments(static_cast<IndexExpr*>(node)->object, scope);
+            collectAssignments(static_cast<IndexExpr*>(node)->index, scope);
+            break;
+        case NodeKind::Modify: {
+            auto* m = static_cast<ModifyExpr*>(node);
+            collectAssignments(m->target, scope);
+            for (Modifier& mod : m->modifiers) collectAssignments(mod.argument, scope);
+            break;
+        }
+        case NodeKind::List:
+            for (Expr* item : static_cast<ListExpr*>(node)->items) collectAssignments(item, scope);
+            break;
+        case NodeKind::Object:
+            for (Attribute& a : static_cast<ObjectExpr*>(node)->attributes) collectAssignments(a.value, scope);
+            break;
+        default: break; // literals, names, nested macros (their own scope), include, error
+        }
+    }
+
+    void declare(std::string_view name, SourceRange where, MacroScope* scope, bool loopVariable) {
+        if (scope) {
+            scope->declare(name, where, loopVariable);
+            return;
+        }
+        uint32_t slot = globals_.slotFor(name);
+        GlobalTable::Entry& entry = globals_.entry(slot);
+        if (!entry.assigned) {
+            entry.assigned = true;
+            entry.firstAssignment = where;
+            entry.reportUnused = isMainFile_ && !loopVariable;
+        }
+    }
+
+    void warnIfShadowsBuiltin(std::string_view name, SourceRange where) {
+        if (!findPreludeSlot(name)) return;
+        for (std::string_view reported : shadowReported_) {
+            if (reported == name) return;
+        }
+        shadowReported_.push_back(name);
+        diagnostics_.warning(WarningKind::ShadowedBuiltin, where,
+                             fmt::format("'{}' shadows the built-in of the same name", name));
+    }
+
+    Resolution lookup(std::string_view name, bool forRead) {
+        for (size_t depth = 0; depth < scopes_.size(); ++depth) {
+            MacroScope& scope = *scopes_[scopes_.size() - 1 - depth];
+            int slot = scope.find(name);
+            if (slot < 0) continue;
+            if (forRead) scope.locals[static_cast<size_t>(slot)].read = true;
+            // Every frame between here and the binding must outlive its call.
+            for (size_t k = 1; k <= depth; ++k) scopes_[scopes_.size() - 1 - k]->macro->capturesFrame = true;
+            return {depth == 0 ? Binding::Local : Binding::Enclosing, static_cast<uint16_t>(depth),
+                    static_cast<uint32_t>(slot)};
+        }
+        const GlobalTable::Entry* global = globals_.find(name);
+        if (!(global && global->assigned)) {
+            if (auto prelude = findPreludeSlot(name)) {
+                if (*prelude == preludeSlotOfT() || *prelude == preludeSlotOfClock()) {
+                    result_.readsTime = true;
+                }
+                return {Binding::Builtin, 0, *prelude};
+            }
+        }
+        uint32_t slot = globals_.slotFor(name);
+        if (forRead) globals_.entry(slot).read = true;
+        return {Binding::Global, 0, slot};
+    }
+
+    void statements(std::span<Node*> items) {
+        for (Node* item : items) statement(item);
+    }
+
+    void statement(Node* node) {
+        if (!node) return;
+        switch (node->kind) {
+        case NodeKind::While: {
+            auto* w = static_cast<WhileStmt*>(node);
+            expr(w->condition);
+            statements(w->body->statements);
+            break;
+        }
+        case NodeKind::For: {
+            auto* f = static_cast<ForStmt*>(node);
+            expr(f->iterable);
+            f->resolution = lookup(f->variable, false);
+            statements(f->body->statements);
+            break;
+        }
+        case NodeKind::If: {
+            auto* i = static_cast<IfStmt*>(node);
+            expr(i->condition);
+            statements(i->then->statements);
+            statement(i->otherwise);
+            break;
+        }
+        case NodeKind::Block: statements(static_cast<Block*>(node)->statements); break;
+        case NodeKind::Settings:
+            attributes(objectInfo(ObjectType::Settings), static_cast<SettingsStmt*>(node)->attributes);
+            break;
+        case NodeKind::Scene: statements(static_cast<SceneStmt*>(node)->statements); break;
+        case NodeKind::Include:
+        case NodeKind::Error: break;
+        default: expr(static_cast<Expr*>(node)); break;
+        }
+    }
+
+    void expr(Expr* node) {
+        if (!node) return;
+        switch (node->kind) {
+        case NodeKind::IntLit:
+        case NodeKind::FloatLit:
+        case NodeKind::StringLit:
+        case NodeKind::BoolLit: break;
+        case NodeKind::Var: {
+            auto* v = static_cast<VarExpr*>(node);
+            v->resolution = lookup(v->name, true);
+            break;
+        }
+        case NodeKind::Assign: {
+            auto* a = static_cast<AssignExpr*>(node);
+            expr(a->value);
+            a->resolution = lookup(a->name, false);
+            if (a->resolution.binding != Binding::Enclosing) warnIfShadowsBuiltin(a->name, a->nameRange);
+            break;
+        }
+        case NodeKind::Unary: expr(static_cast<UnaryExpr*>(node)->operand); break;
+        case NodeKind::Binary:
+            expr(static_cast<BinaryExpr*>(node)->left);
+            expr(static_cast<BinaryExpr*>(node)->right);
+            break;
+        case NodeKind::Ternary: {
+            auto* t = static_cast<TernaryExpr*>(node);
+            expr(t->condition);
+            expr(t->then);
+            expr(t->otherwise);
+            break;
+        }
+        case NodeKind::Call: {
+            auto* c = static_cast<CallExpr*>(node);
+            expr(c->callee);
+            for (Expr* arg : c->args) expr(arg);
+            break;
+        }
+        case NodeKind::Index:
+            expr(static_cast<IndexExpr*>(node)->object);
+            expr(static_cast<IndexExpr*>(node)->index);
+            break;
+        case NodeKind::Modify: {
+            auto* m = static_cast<ModifyExpr*>(node);
+            expr(m->target);
+            for (Modifier& mod : m->modifiers) expr(mod.argument);
+            break;
+        }
+        case NodeKind::List:
+            for (Expr* item : static_cast<ListExpr*>(node)->items) expr(item);
+            break;
+        case NodeKind::Object: object(static_cast<ObjectExpr*>(node)); break;
+        case NodeKind::Macro: macro(static_cast<MacroExpr*>(node)); break;
+        default: break;
+        }
+    }
+
+    void object(ObjectExpr* node) {
+        if (node->type == ObjectType::Count) {
+            std::vector<std::string_view> names;
+            for (const ObjectInfo& info : allObjectTypes()) {
+                if (info.type != ObjectType::Settings) names.push_back(info.name);
+            }
+            std::string suggestion = closestMatch(node->typeName, names);
+            Diagnostic& d = diagnostics_.error(
+                node->typeRange, suggestion.empty()
+                                     ? fmt::format("unknown object type '{}'", node->typeName)
+                                     : fmt::format("unknown object type '{}'; did you mean '{}'?",
+                                                   node->typeName, suggestion));
+            if (!suggestion.empty()) d.fixits.push_back({node->typeRange, suggestion});
+            for (Attribute& a : node->attributes) expr(a.value);
+            return;
+        }
+        attributes(objectInfo(node->type), node->attributes);
+    }
+
+    void attributes(const ObjectInfo& info, std::span<Attribute> attrs) {
+        for (size_t i = 0; i < attrs.size(); ++i) {
+            Attribute& a = attrs[i];
+            expr(a.value);
+            a.slot = static_cast<int16_t>(findAttribute(info, a.name));
+            if (a.slot < 0) {
+                reportUnknownAttribute(info, a);
+                continue;
+            }
+            for (size_t j = 0; j < i; ++j) {
+                if (attrs[j].slot == a.slot && !attrs[j].overridden) {
+                    attrs[j].overridden = true;
+                    Diagnostic& d = diagnostics_.warning(
+                        WarningKind::DuplicateAttribute, a.nameRange,
+                        fmt::format("attribute '{}' of {} is given twice; this one wins", a.name,
+                                    info.name));
+                    d.notes.push_back({attrs[j].nameRange, "first given here"});
+                }
+            }
+        }
+    }
+
+    void reportUnknownAttribute(const ObjectInfo& info, const Attribute& a) {
+        std::vector<std::string_view> names;
+        for (const AttributeInfo& attr : info.attributes) names.push_back(attr.name);
+        std::string suggestion = closestMatch(a.name, names);
+        std::string message = fmt::format("unknown attribute '{}' of {}", a.name, info.name);
+        if (!suggestion.empty()) message += fmt::format("; did you mean '{}'?", suggestion);
+        Diagnostic& d = diagnostics_.error(a.nameRange, std::move(message));
+        if (!suggestion.empty()) d.fixits.push_back({a.nameRange, suggestion});
+    }
+
+    void macro(MacroExpr* node) {
+        MacroScope scope{node, {}};
+        for (const Param& p : node->params) {
+            if (scope.find(p.name) >= 0) {
+                diagnostics_.error(p.range, fmt::format("parameter '{}' is listed twice", p.name));
+                continue;
+            }
+            scope.locals.push_back({p.name, p.range, true, false, false});
+        }
+        uint32_t paramCount = static_cast<uint32_t>(scope.locals.size());
+        for (Node* s : node->body->statements) collectAssignments(s, &scope);
+        node->localCount = static_cast<uint32_t>(scope.locals.size());
+        (void)paramCount;
+        scopes_.push_back(&scope);
+        statements(node->body->statements);
+        scopes_.pop_back();
+        for (const MacroScope::Local& local : scope.locals) {
+            if (!local.read && !local.isParameter && !local.isLoopVariable) {
+                diagnostics_.warning(WarningKind::UnusedVariable, local.firstAssignment,
+                                     fmt::format("variable '{}' is assigned but never used",
+                                                 local.name));
+            }
+        }
+    }
+
+    GlobalTable& globals_;
+    DiagnosticBag& diagnostics_;
+    bool isMainFile_;
+    std::vector<MacroScope*> scopes_;
+    std::vector<std::string_view> shadowReported_;
+    ResolveResult result_;
+};
+
+} // namespace
+
+ResolveResult resolve(Script& script, GlobalTable& globals, DiagnosticBag& diagnostics,
+                      bool isMainFile) {
+    return Resolver(globals, diagnostics, isMainFile).run(script);
+}
+
+} // namespace crt::lang

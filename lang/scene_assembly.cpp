@@ -1,0 +1,190 @@
+// The end of an evaluation: Settings applied, unused objects dropped, warnings for what was
+// defined but never used.
+#include "interpreter_impl.hpp"
+
+#include "builtins.hpp"
+
+#include <algorithm>
+
+namespace crt::lang {
+
+namespace {
+
+/// Removes what `keep` does not mark from `items`, returning old index -> new index.
+template <typename T> std::vector<int32_t> compact(std::vector<T>& items, const std::vector<bool>& keep) {
+    std::vector<int32_t> remap(items.size(), -1);
+    size_t next = 0;
+    for (size_t i = 0; i < items.size(); ++i) {
+        if (!keep[i]) continue;
+        remap[i] = static_cast<int32_t>(next);
+        if (next != i) items[next] = std::move(items[i]);
+        ++next;
+    }
+    items.resize(next);
+    return remap;
+}
+
+/// Calls `visit` on every entity index a node refers to.
+template <typename F> void forEachChild(tracer::EntityDesc& entity, F&& visit) {
+    if (auto* csg = std::get_if<tracer::CsgNode>(&entity.shape)) {
+        visit(csg->left);
+        visit(csg->right);
+    } else if (auto* transform = std::get_if<tracer::TransformNode>(&entity.shape)) {
+        visit(transform->child);
+    } else if (auto* group = std::get_if<tracer::GroupNode>(&entity.shape)) {
+        for (int32_t& member : group->members) visit(member);
+    }
+}
+
+} // namespace
+
+void Interpreter::assembleScene() {
+    tracer::SettingsDesc& s = scene_.settings;
+    const ObjectInfo& info = objectInfo(ObjectType::Settings);
+    auto value = [&](std::string_view name) -> const Value* {
+        int slot = findAttribute(info, name);
+        return settingsAttributes_[static_cast<size_t>(slot)] ? &settingsValues_[static_cast<size_t>(slot)] : nullptr;
+    };
+    auto where = [&](std::string_view name) {
+        return settingsAttributes_[static_cast<size_t>(findAttribute(info, name))]->value->range;
+    };
+    auto text = [&](std::string_view name) { return value(name) ? *value(name)->s : std::string(); };
+    auto integer = [&](std::string_view name, int64_t fallback) { return value(name) ? value(name)->i : fallback; };
+    auto number = [&](std::string_view name, double fallback) {
+        return value(name) ? value(name)->asDouble() : fallback;
+    };
+    auto atLeast = [&](std::string_view name, int64_t fallback, int64_t minimum, int64_t maximum) {
+        int64_t v = integer(name, fallback);
+        if (v < minimum || v > maximum) {
+            fail(where(name), fmt::format("{} must be between {} and {}, not {}", name, minimum, maximum, v));
+        }
+        return static_cast<int>(v);
+    };
+
+    s.title = text("title");
+    s.author = text("author");
+    s.date = text("date");
+    s.notes = text("notes");
+    uint32_t maxSize = options_.limits.maxSize;
+    for (std::string_view name : {"width", "height"}) {
+        int64_t v = integer(name, name == "width" ? 800 : 600);
+        if (v < 1 || v > maxSize) {
+            fail(where(name), fmt::format("{} must be between 1 and {} pixels, not {}{}", name, maxSize, v,
+                                          v > maxSize ? "; raise the limit with --max-size" : ""));
+        }
+    }
+    s.width = static_cast<int>(integer("width", 800));
+    s.height = static_cast<int>(integer("height", 600));
+    if (const Value* gamma = value("gamma")) {
+        if (gamma->kind == ValueKind::String) s.srgb = true;
+        else s.gamma = gamma->asDouble();
+    }
+    s.supersampling = atLeast("supersampling", 1, 1, 64);
+    s.dofSamples = atLeast("dofsamples", 1, 1, 100000);
+    s.recursionDepth = atLeast("recursiondepth", 3, 0, 1000);
+    std::string antialias = value("antialias") ? text("antialias") : "grid";
+    for (char& c : antialias) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    s.antialias = antialias == "adaptive"       ? tracer::Antialias::Adaptive
+                  : antialias == "showadaptive" ? tracer::Antialias::ShowAdaptive
+                                                : tracer::Antialias::Grid;
+    s.aaThreshold = number("aathreshold", 0.1);
+    if (s.aaThreshold < 0) fail(where("aathreshold"), "aathreshold must not be negative");
+    s.aaDepth = atLeast("aadepth", 2, 0, 8);
+    s.shadowSamples = atLeast("shadowsamples", 16, 1, 4096);
+    s.glossySamples = atLeast("glossysamples", 16, 1, 4096);
+    if (integer("seed", 0) < 0) fail(where("seed"), "seed must not be negative");
+    s.seed = static_cast<uint64_t>(integer("seed", 0));
+    if (const Value* ambient = value("ambient")) s.ambient = {ambient->v[0], ambient->v[1], ambient->v[2], ambient->v[3]};
+
+    if (const Value* camera = value("camera")) scene_.camera = cameras_[camera->index];
+    if (const Value* lights = value("lights")) {
+        for (const Value& light : *lights->list) {
+            lightInfo_[light.index].listed = true;
+            scene_.lights.push_back(lights_[light.index]);
+        }
+    }
+    if (const Value* background = value("background")) {
+        if (background->kind == ValueKind::Colour) {
+            scene_.background.kind = tracer::BackgroundKind::Solid;
+            scene_.background.color = {background->v[0], background->v[1], background->v[2], background->v[3]};
+            scene_.background.source = span(where("background"));
+        } else {
+            scene_.background = backgrounds_[background->index];
+        }
+    }
+
+    // Keep only what the drawn entities reach, so consumers see no dead objects.
+    std::vector<bool> keepEntity(scene_.entities.size(), false);
+    std::vector<int32_t> pending(scene_.drawn.begin(), scene_.drawn.end());
+    while (!pending.empty()) {
+        int32_t index = pending.back();
+        pending.pop_back();
+        if (keepEntity[static_cast<size_t>(index)]) continue;
+        keepEntity[static_cast<size_t>(index)] = true;
+        forEachChild(scene_.entities[static_cast<size_t>(index)], [&](int32_t child) { pending.push_back(child); });
+    }
+    std::vector<bool> keepMaterial(scene_.materials.size(), false);
+    for (size_t i = 0; i < scene_.entities.size(); ++i) {
+        if (keepEntity[i] && scene_.entities[i].material >= 0) keepMaterial[static_cast<size_t>(scene_.entities[i].material)] = true;
+    }
+    std::vector<bool> keepTexture(scene_.textures.size(), false);
+    for (size_t i = 0; i < scene_.materials.size(); ++i) {
+        if (!keepMaterial[i]) continue;
+        for (int32_t t : {scene_.materials[i].texture, scene_.materials[i].bump}) {
+            if (t >= 0) keepTexture[static_cast<size_t>(t)] = true;
+        }
+    }
+    std::vector<int32_t> entityMap = compact(scene_.entities, keepEntity);
+    std::vector<int32_t> materialMap = compact(scene_.materials, keepMaterial);
+    std::vector<int32_t> textureMap = compact(scene_.textures, keepTexture);
+    for (tracer::EntityDesc& entity : scene_.entities) {
+        if (entity.material >= 0) entity.material = materialMap[static_cast<size_t>(entity.material)];
+        forEachChild(entity, [&](int32_t& child) { child = entityMap[static_cast<size_t>(child)]; });
+    }
+    for (int32_t& root : scene_.drawn) root = entityMap[static_cast<size_t>(root)];
+    for (tracer::MaterialDesc& material : scene_.materials) {
+        if (material.texture >= 0) material.texture = textureMap[static_cast<size_t>(material.texture)];
+        if (material.bump >= 0) material.bump = textureMap[static_cast<size_t>(material.bump)];
+    }
+
+    for (uint32_t i = 0; i < compilation_.sources.fileCount(); ++i) {
+        scene_.files.push_back(compilation_.sources.file(i).path());
+    }
+    scene_.time = prelude_[preludeSlotOfT()].asDouble();
+    scene_.frame = options_.frame;
+    scene_.frameCount = options_.frameCount;
+}
+
+void Interpreter::reportUnused() {
+    for (uint32_t slot = 0; slot < globals_.size(); ++slot) {
+        const GlobalTable::Entry& entry = globals_.entry(slot);
+        if (entry.assigned && entry.reportUnused && !entry.read) {
+            diagnostics_.warning(WarningKind::UnusedVariable, entry.firstAssignment,
+                                 fmt::format("variable '{}' is assigned but never used", entry.name));
+        }
+    }
+    // One warning per literal, however many times a macro ran it.
+    std::vector<uint32_t> reported;
+    for (const EntityInfo& info : entityInfo_) {
+        if (info.literal && !info.used && info.range.file == 0 &&
+            std::find(reported.begin(), reported.end(), info.range.begin) == reported.end()) {
+            reported.push_back(info.range.begin);
+            diagnostics_.warning(WarningKind::EntityNeverDrawn, info.range,
+                                 fmt::format("this {} is defined but never drawn nor used",
+                                             objectInfo(info.type).name));
+        }
+    }
+    for (const LightInfo& info : lightInfo_) {
+        if (!info.listed && info.range.file == 0) {
+            diagnostics_.warning(WarningKind::UnusedLight, info.range,
+                                 fmt::format("this {} does not shine: it is not in Settings.lights",
+                                             objectInfo(info.type).name));
+        }
+    }
+    if (scene_.drawn.empty()) {
+        diagnostics_.warning(WarningKind::EmptyScene, {0, 0, 0},
+                             "the script draws nothing; only the background will be rendered");
+    }
+}
+
+} // namespace crt::lang

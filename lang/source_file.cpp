@@ -1,0 +1,112 @@
+// Line tables and position conversions for source buffers.
+#include "source_file.hpp"
+
+#include <algorithm>
+
+namespace crt::lang {
+namespace {
+
+/// Length of the UTF-8 sequence starting with `lead` (1 for invalid lead bytes).
+uint32_t sequenceLength(unsigned char lead) {
+    if (lead < 0x80) return 1;
+    if ((lead >> 5) == 0x6) return 2;
+    if ((lead >> 4) == 0xE) return 3;
+    if ((lead >> 3) == 0x1E) return 4;
+    return 1;
+}
+
+} // namespace
+
+uint32_t codePointCount(std::string_view text) {
+    uint32_t count = 0;
+    for (size_t i = 0; i < text.size(); ++count) {
+        i += std::min<size_t>(sequenceLength(static_cast<unsigned char>(text[i])), text.size() - i);
+    }
+    return count;
+}
+
+SourceFile::SourceFile(std::string path, std::string text)
+    : path_(std::move(path)), data_(std::move(text)) {
+    data_.push_back('\0');
+    lineStarts_.push_back(0);
+    for (uint32_t i = 0; i + 1 < data_.size(); ++i) {
+        if (data_[i] == '\n') lineStarts_.push_back(i + 1);
+    }
+}
+
+uint32_t SourceFile::lineStart(uint32_t line) const {
+    if (line == 0) return 0;
+    if (line > lineStarts_.size()) return size();
+    return lineStarts_[line - 1];
+}
+
+std::string_view SourceFile::lineText(uint32_t line) const {
+    uint32_t begin = lineStart(line);
+    uint32_t end = line < lineStarts_.size() ? lineStarts_[line] : size();
+    std::string_view text = this->text().substr(begin, end - begin);
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.remove_suffix(1);
+    return text;
+}
+
+uint32_t SourceFile::lineIndexOf(uint32_t offset) const {
+    offset = std::min(offset, size());
+    auto it = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), offset);
+    return static_cast<uint32_t>(it - lineStarts_.begin()) - 1;
+}
+
+LineColumn SourceFile::lineColumn(uint32_t offset) const {
+    offset = std::min(offset, size());
+    uint32_t index = lineIndexOf(offset);
+    std::string_view prefix = text().substr(lineStarts_[index], offset - lineStarts_[index]);
+    return {index + 1, codePointCount(prefix) + 1};
+}
+
+uint32_t SourceFile::offsetOf(LineColumn position) const {
+    if (position.line == 0 || position.line > lineStarts_.size()) return size();
+    uint32_t offset = lineStarts_[position.line - 1];
+    std::string_view line = lineText(position.line);
+    uint32_t end = offset + static_cast<uint32_t>(line.size());
+    for (uint32_t column = 1; column < position.column && offset < end; ++column) {
+        offset += sequenceLength(static_cast<unsigned char>(data_[offset]));
+    }
+    return std::min(offset, end);
+}
+
+Utf16Position SourceFile::utf16(uint32_t offset) const {
+    offset = std::min(offset, size());
+    uint32_t index = lineIndexOf(offset);
+    uint32_t units = 0;
+    for (uint32_t i = lineStarts_[index]; i < offset;) {
+        uint32_t length = sequenceLength(static_cast<unsigned char>(data_[i]));
+        units += length == 4 ? 2 : 1; // code points past U+FFFF take a surrogate pair
+        i += length;
+    }
+    return {index, units};
+}
+
+uint32_t SourceFile::offsetOf(Utf16Position position) const {
+    if (position.line >= lineStarts_.size()) return size();
+    uint32_t offset = lineStarts_[position.line];
+    std::string_view line = lineText(position.line + 1);
+    uint32_t end = offset + static_cast<uint32_t>(line.size());
+    uint32_t units = 0;
+    while (offset < end && units < position.character) {
+        uint32_t length = sequenceLength(static_cast<unsigned char>(data_[offset]));
+        units += length == 4 ? 2 : 1;
+        offset += length;
+    }
+    return std::min(offset, end);
+}
+
+uint32_t SourceFile::offsetOfUtf8(uint32_t line, uint32_t byteInLine) const {
+    if (line >= lineStarts_.size()) return size();
+    std::string_view text = lineText(line + 1);
+    return lineStarts_[line] + std::min<uint32_t>(byteInLine, static_cast<uint32_t>(text.size()));
+}
+
+uint32_t SourceManager::add(std::string path, std::string text) {
+    files_.push_back(std::make_unique<SourceFile>(std::move(path), std::move(text)));
+    return static_cast<uint32_t>(files_.size() - 1);
+}
+
+} // namespace crt::lang

@@ -1,0 +1,199 @@
+// The plain-data scene description: what the renderer accepts and what the front end builds.
+//
+// Every field has the default of spec §5, so a default-constructed description is a valid
+// (empty) scene. Indices refer to the vectors of SceneDesc; -1 means "none".
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace crt::tracer {
+
+/// Where a script built an object: file index into SceneDesc::files, 1-based line/column.
+struct SourceSpan {
+    uint32_t file = 0;
+    uint32_t line = 0;
+    uint32_t column = 0;
+    uint32_t endLine = 0;
+    uint32_t endColumn = 0;
+};
+
+/// A linear RGB colour with alpha (alpha is carried, not used for shading).
+struct Color {
+    double r = 0, g = 0, b = 0, a = 1;
+};
+
+enum class ModifierKind : uint8_t { Translate, Rotate, Scale };
+
+/// One modifier of `<translate v, rotate v, scale s>`, applied about the world origin.
+struct Modifier {
+    ModifierKind kind = ModifierKind::Translate;
+    glm::dvec3 value{0.0}; ///< a uniform scale s is stored as (s, s, s)
+};
+
+enum class TextureKind : uint8_t {
+    Checker, Stripes, Noise, Marble, Wood, Image, NoiseBump, ImageBump
+};
+enum class TextureMapping : uint8_t { Uv, Planar, Spherical, Cylindrical, Cubic };
+
+struct TextureDesc {
+    TextureKind kind = TextureKind::Checker;
+    Color a{1, 1, 1, 1};
+    Color b{0, 0, 0, 1};
+    double size = 1;
+    glm::dvec3 axis{1, 0, 0};  ///< Stripes
+    int octaves = 4;           ///< Noise, Marble, NoiseBump
+    double turbulence = 1;     ///< Marble (1), Wood (0.1)
+    double rings = 8;          ///< Wood
+    double strength = 0.5;     ///< bump textures
+    std::string file;          ///< Image, ImageBump: as written in the script
+    std::string resolvedFile;  ///< the path found on disk, or "" if not found yet
+    TextureMapping mapping = TextureMapping::Uv;
+    std::vector<Modifier> modifiers;
+    SourceSpan source;
+};
+
+struct MaterialDesc {
+    Color color{0.5, 0.5, 0.5, 1};
+    double reflectivity = 0;
+    double transparency = 0;
+    double ior = 1;
+    double diffuse = 1; ///< default max(0, 1 - reflectivity - transparency)
+    double specular = 0;
+    double shininess = 3;
+    bool metallic = false;
+    double glossiness = 0;
+    bool fresnel = false;
+    Color absorption{0, 0, 0, 1};
+    Color emission{0, 0, 0, 1};
+    int32_t texture = -1; ///< replaces color
+    int32_t bump = -1;
+    SourceSpan source;
+};
+
+struct SphereShape { glm::dvec3 center{0.0}; double radius = 0; };
+struct BoxShape { glm::dvec3 cornerA{0.0}; glm::dvec3 cornerB{0.0}; };
+struct PlaneShape { glm::dvec3 normal{0, 1, 0}; glm::dvec3 position{0.0}; };
+struct CylinderShape { glm::dvec3 base{0.0}; glm::dvec3 top{0.0}; double radius = 0; bool open = false; };
+struct ConeShape {
+    glm::dvec3 base{0.0}; double baseRadius = 0; glm::dvec3 top{0.0}; double topRadius = 0; bool open = false;
+};
+struct TorusShape { glm::dvec3 center{0.0}; double major = 0; double minor = 0; glm::dvec3 axis{0, 1, 0}; };
+struct DiscShape { glm::dvec3 center{0.0}; glm::dvec3 normal{0, 1, 0}; double radius = 0; double hole = 0; };
+struct QuadShape { glm::dvec3 corner{0.0}; glm::dvec3 edgeA{0.0}; glm::dvec3 edgeB{0.0}; };
+struct TriangleShape { glm::dvec3 a{0.0}; glm::dvec3 b{0.0}; glm::dvec3 c{0.0}; };
+struct MeshShape {
+    std::string file;         ///< as written in the script
+    std::string resolvedFile; ///< the path found on disk, or "" if not found
+};
+
+enum class CsgOp : uint8_t { Union, Difference, Intersection };
+/// A CSG combination of two entities (each a solid or a group of solids).
+struct CsgNode { CsgOp op = CsgOp::Union; int32_t left = -1; int32_t right = -1; };
+/// An entity moved by modifiers.
+struct TransformNode { int32_t child = -1; std::vector<Modifier> modifiers; };
+/// What a macro emitting several entities returns: drawn as its members; in CSG, their union.
+struct GroupNode { std::vector<int32_t> members; };
+
+using Shape = std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape,
+                           DiscShape, QuadShape, TriangleShape, MeshShape, CsgNode, TransformNode,
+                           GroupNode>;
+
+/// A node of the entity graph. Nodes may be shared (an entity drawn twice is one node).
+struct EntityDesc {
+    Shape shape;
+    int32_t material = -1; ///< index into materials; -1 for CSG, transform and group nodes
+    bool solid = true;     ///< usable as a CSG operand (and inside/outside is defined)
+    SourceSpan source;
+};
+
+enum class LightKind : uint8_t { Point, Parallel, Spot, Area };
+
+struct LightDesc {
+    LightKind kind = LightKind::Point;
+    glm::dvec3 origin{0.0};   ///< Point, Spot; Area: corner
+    glm::dvec3 from{0.0};     ///< Parallel
+    glm::dvec3 pointing{0.0}; ///< Parallel, Spot
+    glm::dvec3 edgeA{0.0};    ///< Area
+    glm::dvec3 edgeB{0.0};    ///< Area
+    Color color{1, 1, 1, 1};
+    double falloff = 0;
+    double ambient = 0;
+    double angle = 30;     ///< Spot: full cone, degrees
+    double softness = 0.2; ///< Spot
+    SourceSpan source;
+};
+
+enum class Projection : uint8_t { Pinhole, Spherical };
+enum class ApertureShape : uint8_t { Circle, Polygon, Gaussian, Line };
+
+struct CameraDesc {
+    glm::dvec3 position{0, 0, -1};
+    glm::dvec3 pointing{0, 0, 0};
+    double fov = 60; ///< vertical, degrees
+    double aperture = 0;
+    double focalDistance = 1; ///< default: distance from position to pointing
+    ApertureShape apertureShape = ApertureShape::Circle;
+    int apertureBlades = 0; ///< polygon sides
+    glm::dvec3 up{0, 1, 0};
+    double roll = 0; ///< degrees
+    Projection projection = Projection::Pinhole;
+    SourceSpan source;
+};
+
+enum class BackgroundKind : uint8_t { Solid, Gradient, Image };
+
+struct BackgroundDesc {
+    BackgroundKind kind = BackgroundKind::Solid;
+    Color color{1, 1, 1, 1};
+    Color horizon{1, 1, 1, 1};
+    Color sky{1, 1, 1, 1};
+    std::string image;         ///< as written in the script
+    std::string resolvedImage; ///< the path found on disk, or "" if not found
+    double angle = 0;          ///< yaw, radians
+    SourceSpan source;
+};
+
+enum class Antialias : uint8_t { Grid, Adaptive, ShowAdaptive };
+
+struct SettingsDesc {
+    std::string title, author, date, notes;
+    int width = 800;
+    int height = 600;
+    double gamma = 1.0;
+    bool srgb = false; ///< gamma -> "srgb"
+    int supersampling = 1;
+    int dofSamples = 1;
+    int recursionDepth = 3;
+    Antialias antialias = Antialias::Grid;
+    double aaThreshold = 0.1;
+    int aaDepth = 2;
+    int shadowSamples = 16;
+    int glossySamples = 16;
+    uint64_t seed = 0;
+    Color ambient{0, 0, 0, 1};
+};
+
+/// The evaluated scene.
+struct SceneDesc {
+    static constexpr int kSchemaVersion = 1;
+
+    std::vector<std::string> files; ///< script paths, indexed by SourceSpan::file
+    SettingsDesc settings;
+    CameraDesc camera;
+    std::vector<LightDesc> lights; ///< the lights of Settings.lights, in order
+    BackgroundDesc background;
+    std::vector<MaterialDesc> materials;
+    std::vector<TextureDesc> textures;
+    std::vector<EntityDesc> entities;
+    std::vector<int32_t> drawn; ///< roots: entities drawn by Scene blocks, in order
+    double time = 0;            ///< t of this evaluation
+    int frame = 0;
+    int frameCount = 1;
+};
+
+} // namespace crt::tracer
