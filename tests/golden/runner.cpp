@@ -1,0 +1,161 @@
+// Runs one golden language test: a .crt file whose comments state what it must print and
+// which diagnostics it must produce, optionally with a --dump-scene snapshot beside it.
+//
+//   -- expect: TEXT            a line print() must write, in order
+//   -- error: LINE:COL TEXT    an error at LINE:COL with message TEXT
+//   -- warning: LINE:COL TEXT  a warning
+//   -- note: LINE:COL TEXT     a note attached to the diagnostic listed just before
+//   -- args: OPTIONS           crtc options for this test (--max-steps, --time, --frames ...)
+//   NAME.scene.json            the expected --dump-scene output
+//
+// Usage: golden_runner ROOT FILE.crt [--update]
+#include "diagnostic_printer.hpp"
+#include "interpreter.hpp"
+#include "options.hpp"
+#include "scene_json.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace crt::lang;
+
+namespace {
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+struct Expectations {
+    std::vector<std::string> printed;
+    std::vector<std::string> diagnostics; ///< "error 3:7 message", notes as "  note 3:7 message"
+    std::vector<std::string> args;
+};
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\r' || s.back() == '\t')) s.remove_suffix(1);
+    return s;
+}
+
+Expectations readExpectations(const std::string& text) {
+    Expectations e;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        size_t comment = line.find("-- ");
+        if (comment == std::string::npos) continue;
+        std::string_view rest = std::string_view(line).substr(comment + 3);
+        for (std::string_view kind : {"expect:", "error:", "warning:", "note:", "args:"}) {
+            if (!rest.starts_with(kind)) continue;
+            std::string_view body = kind == "expect:" ? rest.substr(kind.size()) : trim(rest.substr(kind.size()));
+            if (kind == "expect:") {
+                if (!body.empty() && body.front() == ' ') body.remove_prefix(1);
+                e.printed.emplace_back(trim(body));
+            } else if (kind == "args:") {
+                std::istringstream words{std::string(body)};
+                for (std::string word; words >> word;) e.args.push_back(word);
+            } else {
+                std::string severity(kind.substr(0, kind.size() - 1));
+                e.diagnostics.push_back((severity == "note" ? "  " : "") + severity + " " + std::string(body));
+            }
+        }
+    }
+    return e;
+}
+
+std::vector<std::string> describe(const Compilation& c) {
+    std::vector<std::string> out;
+    auto where = [&](SourceRange range) {
+        if (range.file >= c.sources.fileCount()) return std::string("?");
+        LineColumn at = c.sources.file(range.file).lineColumn(range.begin);
+        // Positions in other files (includes) carry the file name.
+        std::string prefix = range.file == 0 ? "" : fs::path(c.sources.file(range.file).path()).filename().string() + ":";
+        return fmt::format("{}{}:{}", prefix, at.line, at.column);
+    };
+    for (const Diagnostic& d : c.diagnostics.items()) {
+        const char* severity = d.severity == Severity::Error ? "error" : d.severity == Severity::Warning ? "warning" : "note";
+        out.push_back(fmt::format("{} {} {}", severity, where(d.range), d.message));
+        for (const DiagnosticNote& n : d.notes) out.push_back(fmt::format("  note {} {}", where(n.range), n.message));
+    }
+    return out;
+}
+
+bool compareLists(std::string_view what, const std::vector<std::string>& expected,
+                  const std::vector<std::string>& actual) {
+    if (expected == actual) return true;
+    std::cerr << fmt::format("{} differ.\n  expected:\n", what);
+    for (const std::string& s : expected) std::cerr << "    " << s << "\n";
+    std::cerr << "  actual:\n";
+    for (const std::string& s : actual) std::cerr << "    " << s << "\n";
+    return false;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 3) {
+        std::cerr << "usage: golden_runner ROOT FILE.crt [--update]\n";
+        return 2;
+    }
+    fs::path root = argv[1];
+    fs::path file = argv[2];
+    bool update = argc > 3 && std::string_view(argv[3]) == "--update";
+    fs::current_path(root);
+    std::string text = readFile(file);
+    Expectations expected = readExpectations(text);
+
+    std::vector<std::string> argStrings = {"crtc"};
+    argStrings.insert(argStrings.end(), expected.args.begin(), expected.args.end());
+    argStrings.push_back(file.string());
+    std::vector<char*> args;
+    for (std::string& s : argStrings) args.push_back(s.data());
+    driver::ParsedOptions parsed = driver::parseOptions(static_cast<int>(args.size()), args.data());
+    if (!parsed.options) {
+        std::cerr << parsed.message << "\n";
+        return 2;
+    }
+    driver::Options& options = *parsed.options;
+    std::ostringstream printed;
+    options.eval.printOut = &printed;
+    options.eval.stdlibDir = CRT_SOURCE_STDLIB_DIR;
+    options.eval.frameCount = std::max(options.frames, 1);
+    options.eval.frame = options.eval.frameCount - 1; // the last frame, where t is largest
+
+    Compilation c = compile(file.string(), text, options.eval);
+    if (options.werror) c.diagnostics.promoteWarnings();
+
+    std::vector<std::string> printedLines;
+    std::istringstream printedStream(printed.str());
+    for (std::string line; std::getline(printedStream, line);) printedLines.emplace_back(trim(line));
+
+    bool ok = compareLists("printed lines", expected.printed, printedLines);
+    std::vector<std::string> actualDiagnostics = describe(c);
+    std::vector<std::string> expectedDiagnostics = expected.diagnostics;
+    ok = compareLists("diagnostics", expectedDiagnostics, actualDiagnostics) && ok;
+
+    fs::path snapshot = fs::path(file).replace_extension(".scene.json");
+    if (fs::exists(snapshot) || update) {
+        std::string actual = c.scene ? sceneToJson(*c.scene) : std::string("null\n");
+        if (update) {
+            std::ofstream(snapshot) << actual;
+        } else if (readFile(snapshot) != actual) {
+            std::cerr << fmt::format("--dump-scene differs from {}; to accept the new output after "
+                                     "reviewing it, run: golden_runner {} {} --update\n",
+                                     snapshot.string(), root.string(), file.string());
+            ok = false;
+        }
+    }
+    if (!ok) {
+        PrintOptions print;
+        std::cerr << "\nfull diagnostics:\n";
+        printDiagnostics(std::cerr, c.sources, c.diagnostics, print);
+    }
+    return ok ? 0 : 1;
+}

@@ -1,0 +1,58 @@
+// Line tables and position conversions, including UTF-16 with non-ASCII text.
+#include <catch2/catch.hpp>
+
+#include "source_file.hpp"
+
+using namespace crt::lang;
+
+TEST_CASE("line and column of byte offsets") {
+    SourceFile file("a.crt", "ab\ncd\n\nx");
+    CHECK(file.lineCount() == 4);
+    CHECK(file.lineColumn(0) == LineColumn{1, 1});
+    CHECK(file.lineColumn(1) == LineColumn{1, 2});
+    CHECK(file.lineColumn(2) == LineColumn{1, 3}); // the newline itself
+    CHECK(file.lineColumn(3) == LineColumn{2, 1});
+    CHECK(file.lineColumn(6) == LineColumn{3, 1});
+    CHECK(file.lineColumn(7) == LineColumn{4, 1});
+    CHECK(file.lineColumn(8) == LineColumn{4, 2}); // end of file
+    CHECK(file.lineColumn(1000) == LineColumn{4, 2});
+    CHECK(file.lineText(2) == "cd");
+    CHECK(file.lineText(3) == "");
+}
+
+TEST_CASE("columns count code points, not bytes") {
+    // "é" is 2 bytes, "€" 3 bytes, "𝄞" 4 bytes (outside the BMP).
+    SourceFile file("u.crt", "x = \"é€𝄞\" + y");
+    size_t y = file.text().find('y');
+    CHECK(file.lineColumn(static_cast<uint32_t>(y)) == LineColumn{1, 13});
+    CHECK(file.offsetOf(LineColumn{1, 13}) == y);
+    CHECK(codePointCount("é€𝄞") == 3);
+}
+
+TEST_CASE("UTF-16 positions for the language server") {
+    SourceFile file("u.crt", "a\n\"é𝄞\" b\r\nc");
+    size_t b = file.text().find('b');
+    // é is one UTF-16 unit, 𝄞 two (a surrogate pair).
+    CHECK(file.utf16(static_cast<uint32_t>(b)) == Utf16Position{1, 6});
+    CHECK(file.offsetOf(Utf16Position{1, 6}) == b);
+    CHECK(file.offsetOf(Utf16Position{2, 0}) == file.text().find('c'));
+    // Past the end of a line clamps to its end; past the last line, to the end of file.
+    CHECK(file.offsetOf(Utf16Position{0, 99}) == 1);
+    CHECK(file.offsetOf(Utf16Position{9, 0}) == file.size());
+    CHECK(file.lineText(2) == "\"é𝄞\" b");
+}
+
+TEST_CASE("UTF-8 positions") {
+    SourceFile file("u.crt", "é = 1\nb");
+    CHECK(file.offsetOfUtf8(0, 2) == 2);
+    CHECK(file.offsetOfUtf8(1, 0) == file.text().find('b'));
+    CHECK(file.offsetOfUtf8(0, 100) == 6);
+}
+
+TEST_CASE("the buffer ends with a NUL the lexer can stop on") {
+    SourceFile file("e.crt", "");
+    CHECK(file.size() == 0);
+    CHECK(file.data()[0] == '\0');
+    CHECK(file.lineCount() == 1);
+    CHECK(file.lineColumn(0) == LineColumn{1, 1});
+}
