@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs everything crt needs to build and test, from Debian 12's packages.
+# Quick and quiet when everything is already installed. Run as root.
+#   scripts/setup.sh          build and test dependencies
+#   scripts/setup.sh --bench  also POV-Ray and the tools the benchmarks use
+set -euo pipefail
+
+packages=(
+    g++ cmake ninja-build re2c bison
+    libfmt-dev libglm-dev nlohmann-json3-dev catch2
+    clang libclang-rt-14-dev
+)
+if [ "${1:-}" = "--bench" ]; then
+    packages+=(povray time)
+fi
+
+missing=()
+for package in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$package")
+    fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+if [ "$(id -u)" -ne 0 ]; then
+    echo "setup: missing packages: ${missing[*]}; run this script as root" >&2
+    exit 1
+fi
+echo "setup: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
