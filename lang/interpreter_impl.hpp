@@ -90,6 +90,11 @@ private:
     void assembleScene();
     void reportUnused();
     tracer::SourceSpan span(SourceRange range) const;
+    struct SpanCacheEntry {
+        SourceRange range{~0u, 0, 0};
+        tracer::SourceSpan span;
+    };
+    mutable std::array<SpanCacheEntry, 16> spanCache_{};
 
     Compilation& compilation_;
     const EvalOptions& options_;
@@ -127,8 +132,8 @@ private:
     std::vector<tracer::BackgroundDesc> backgrounds_;
     int32_t defaultMaterial_ = -1;
     const SettingsStmt* settings_ = nullptr;
-    std::array<Value, 32> settingsValues_{};
-    std::array<const Attribute*, 32> settingsAttributes_{};
+    std::array<Value, kMaxAttributes> settingsValues_{};
+    std::array<const Attribute*, kMaxAttributes> settingsAttributes_{};
 
     // include bookkeeping
     std::vector<std::string> includedFiles_; ///< canonical paths, in order

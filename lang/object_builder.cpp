@@ -35,19 +35,29 @@ glm::dvec3 toVec(const Value& v) { return {v.v[0], v.v[1], v.v[2]}; }
 
 /// Checks the attributes of one object literal and reads them with their defaults.
 struct ObjectBuilder {
+    ObjectBuilder(Interpreter& interpreter, const ObjectInfo& objectInfo, SourceRange whole,
+                  SourceRange type)
+        : in(interpreter), info(objectInfo), range(whole), typeRange(type) {}
+
     Interpreter& in;
     const ObjectInfo& info;
     SourceRange range;     ///< the whole literal
     SourceRange typeRange; ///< its type name
-    std::array<Value, 32> values{};
-    std::array<const Attribute*, 32> given{};
+    /// Storage for the given attributes' values; a slot is valid where `given` is set.
+    /// Left uninitialised: building an object must not pay for clearing 32 values.
+    union RawValue {
+        Value value;
+        RawValue() {}
+    };
+    std::array<RawValue, kMaxAttributes> values;
+    std::array<const Attribute*, kMaxAttributes> given{};
 
     void evaluate(std::span<const Attribute> attributes) {
         for (const Attribute& a : attributes) {
             Value v = in.eval(a.value);
             if (a.slot < 0) continue; // reported by the resolver
             check(a, v);
-            values[static_cast<size_t>(a.slot)] = v;
+            new (&values[static_cast<size_t>(a.slot)].value) Value(v);
             given[static_cast<size_t>(a.slot)] = &a;
         }
         for (size_t i = 0; i < info.attributes.size(); ++i) {
@@ -202,10 +212,27 @@ struct ObjectBuilder {
     }
 
     // --- reading with defaults ---
-    int slot(std::string_view name) const { return findAttribute(info, name); }
+    int slot(std::string_view name) const { return cachedSlot(info, name); }
+
+    /// findAttribute memoised on the name's address: the builder asks for the same literal
+    /// names for every object, and string comparisons were most of the cost of building.
+    static int cachedSlot(const ObjectInfo& info, std::string_view name) {
+        struct Entry {
+            const char* name = nullptr;
+            ObjectType type = ObjectType::Count;
+            int slot = -1;
+        };
+        thread_local std::array<Entry, 256> cache{};
+        uint64_t key = (reinterpret_cast<uintptr_t>(name.data()) << 5) ^ static_cast<uint64_t>(info.type);
+        Entry& entry = cache[(key * 0x9E3779B97F4A7C15ull) >> 56];
+        if (entry.name != name.data() || entry.type != info.type) {
+            entry = {name.data(), info.type, findAttribute(info, name)};
+        }
+        return entry.slot;
+    }
     const Value* get(std::string_view name) const {
         int s = slot(name);
-        return s >= 0 && given[static_cast<size_t>(s)] ? &values[static_cast<size_t>(s)] : nullptr;
+        return s >= 0 && given[static_cast<size_t>(s)] ? &values[static_cast<size_t>(s)].value : nullptr;
     }
     SourceRange where(std::string_view name) const {
         int s = slot(name);
@@ -257,10 +284,14 @@ struct ObjectBuilder {
 };
 
 tracer::SourceSpan Interpreter::span(SourceRange range) const {
+    // Literals in a loop are converted over and over: remember recent ones.
+    SpanCacheEntry& entry = spanCache_[(range.begin * 2654435761u) >> 28];
+    if (entry.range == range) return entry.span;
     const SourceFile& file = compilation_.sources.file(range.file);
     LineColumn begin = file.lineColumn(range.begin);
     LineColumn end = file.lineColumn(range.end);
-    return {range.file, begin.line, begin.column, end.line, end.column};
+    entry = {range, {range.file, begin.line, begin.column, end.line, end.column}};
+    return entry.span;
 }
 
 int32_t Interpreter::addEntity(tracer::EntityDesc entity, EntityInfo info) {
@@ -411,7 +442,7 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
         return entity(tracer::MeshShape{b.text("file"), resolved}, false);
     }
     case ObjectType::Material: {
-        tracer::MaterialDesc m;
+        tracer::MaterialDesc& m = scene_.materials.emplace_back();
         m.color = b.colour("color", m.color);
         m.reflectivity = b.number("reflectivity", 0);
         m.transparency = b.number("transparency", 0);
@@ -429,7 +460,6 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
         if (m.ior <= 0) fail(b.where("ior"), "the index of refraction must be positive");
         if (m.glossiness < 0 || m.glossiness > 1) fail(b.where("glossiness"), "glossiness must be between 0 and 1");
         m.source = span(node->range);
-        scene_.materials.push_back(std::move(m));
         return Value::object(ValueKind::Material, node->type, static_cast<uint32_t>(scene_.materials.size() - 1));
     }
     case ObjectType::Camera: {
@@ -583,8 +613,10 @@ void Interpreter::execSettings(const SettingsStmt* node) {
     SourceRange keyword{node->range.file, node->range.begin, node->range.begin + 8};
     ObjectBuilder b{*this, objectInfo(ObjectType::Settings), node->range, keyword};
     b.evaluate(node->attributes);
-    settingsValues_ = b.values;
     settingsAttributes_ = b.given;
+    for (size_t i = 0; i < kMaxAttributes; ++i) {
+        if (b.given[i]) settingsValues_[i] = b.values[i].value;
+    }
 }
 
 } // namespace crt::lang

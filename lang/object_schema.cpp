@@ -252,6 +252,7 @@ constexpr ObjectInfo kObjects[] = {
     {T::ImageBump, "ImageBump", C::Texture, false, "Bumps from an image's grey levels.", kImageBump},
 };
 static_assert(std::size(kObjects) == static_cast<size_t>(ObjectType::Count));
+static_assert(std::size(kSettings) <= kMaxAttributes && std::size(kMaterial) <= kMaxAttributes);
 
 } // namespace
 
@@ -265,9 +266,14 @@ ObjectType findObjectType(std::string_view name) {
 }
 
 int findAttribute(const ObjectInfo& info, std::string_view name) {
+    if (name.empty()) return -1;
     if (info.type == ObjectType::Material && name == "refractiveindex") name = "ior";
+    // Called for every attribute read while building objects: compare the cheap parts first.
     for (size_t i = 0; i < info.attributes.size(); ++i) {
-        if (info.attributes[i].name == name) return static_cast<int>(i);
+        std::string_view candidate = info.attributes[i].name;
+        if (candidate.size() == name.size() && candidate[0] == name[0] && candidate == name) {
+            return static_cast<int>(i);
+        }
     }
     return -1;
 }

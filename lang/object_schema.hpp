@@ -79,6 +79,9 @@ struct ObjectInfo {
     std::span<const AttributeInfo> attributes;
 };
 
+/// No object type has more attributes than this (Settings has the most).
+inline constexpr size_t kMaxAttributes = 24;
+
 const ObjectInfo& objectInfo(ObjectType type);
 /// The object type called `name`, or ObjectType::Count.
 ObjectType findObjectType(std::string_view name);

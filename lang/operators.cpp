@@ -391,12 +391,15 @@ Value Interpreter::evalCall(const CallExpr* node) {
         fail(node->callee->range, fmt::format("cannot call {}; only macros and functions can be called",
                                               typeName(callee)));
     }
-    // Arguments evaluate left to right, before the call.
-    Value small[8];
+    // Arguments evaluate left to right, before the call. Most calls have a few: keep
+    // them on the C++ stack, uninitialised until evaluated.
+    alignas(Value) std::byte small[8 * sizeof(Value)];
     std::vector<Value> large;
     std::span<Value> args;
     if (node->args.size() <= 8) {
-        args = std::span<Value>(small, node->args.size());
+        Value* first = reinterpret_cast<Value*>(small);
+        for (size_t i = 0; i < node->args.size(); ++i) new (first + i) Value();
+        args = std::span<Value>(first, node->args.size());
     } else {
         large.resize(node->args.size());
         args = large;

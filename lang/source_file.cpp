@@ -29,9 +29,12 @@ SourceFile::SourceFile(std::string path, std::string text)
     : path_(std::move(path)), data_(std::move(text)) {
     data_.push_back('\0');
     lineStarts_.push_back(0);
+    unsigned char high = 0;
     for (uint32_t i = 0; i + 1 < data_.size(); ++i) {
+        high |= static_cast<unsigned char>(data_[i]);
         if (data_[i] == '\n') lineStarts_.push_back(i + 1);
     }
+    ascii_ = high < 0x80;
 }
 
 uint32_t SourceFile::lineStart(uint32_t line) const {
@@ -50,15 +53,23 @@ std::string_view SourceFile::lineText(uint32_t line) const {
 
 uint32_t SourceFile::lineIndexOf(uint32_t offset) const {
     offset = std::min(offset, size());
+    uint32_t last = lastLineIndex_;
+    auto contains = [&](uint32_t index) {
+        return lineStarts_[index] <= offset &&
+               (index + 1 == lineStarts_.size() || offset < lineStarts_[index + 1]);
+    };
+    if (contains(last)) return last;
+    if (last + 1 < lineStarts_.size() && contains(last + 1)) return lastLineIndex_ = last + 1;
     auto it = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), offset);
-    return static_cast<uint32_t>(it - lineStarts_.begin()) - 1;
+    return lastLineIndex_ = static_cast<uint32_t>(it - lineStarts_.begin()) - 1;
 }
 
 LineColumn SourceFile::lineColumn(uint32_t offset) const {
     offset = std::min(offset, size());
     uint32_t index = lineIndexOf(offset);
-    std::string_view prefix = text().substr(lineStarts_[index], offset - lineStarts_[index]);
-    return {index + 1, codePointCount(prefix) + 1};
+    uint32_t bytes = offset - lineStarts_[index];
+    if (ascii_) return {index + 1, bytes + 1};
+    return {index + 1, codePointCount(text().substr(lineStarts_[index], bytes)) + 1};
 }
 
 uint32_t SourceFile::offsetOf(LineColumn position) const {

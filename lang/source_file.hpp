@@ -61,6 +61,8 @@ private:
     std::string path_;
     std::string data_;
     std::vector<uint32_t> lineStarts_;
+    bool ascii_ = true;                 ///< columns are then byte offsets
+    mutable uint32_t lastLineIndex_ = 0; ///< lookups tend to move forward through the file
 };
 
 /// Owns every source file of one evaluation; SourceRange::file indexes it.
