@@ -298,7 +298,7 @@ Value Interpreter::evalVar(const VarExpr* node) {
     switch (r.binding) {
     case Binding::Local: slot = &locals_[r.slot]; break;
     case Binding::Global:
-        slot = r.slot < globalValues_.size() ? &globalValues_[r.slot] : nullptr;
+        if (r.slot < globalValues_.size()) slot = &globalValues_[r.slot];
         break;
     case Binding::Builtin: return prelude_[r.slot];
     case Binding::Enclosing: {
@@ -309,32 +309,32 @@ Value Interpreter::evalVar(const VarExpr* node) {
     }
     case Binding::Unresolved: break;
     }
-    if (!slot || slot->kind == ValueKind::Unset) {
-        if (r.binding == Binding::Local || r.binding == Binding::Enclosing) {
-            fail(node->range, fmt::format("variable '{}' is read before it is assigned", node->name));
-        }
-        std::vector<std::string_view> names;
-        for (uint32_t i = 0; i < globals_.size(); ++i) {
-            if (globals_.entry(i).assigned) names.push_back(globals_.entry(i).name);
-        }
-        for (uint32_t i = 0; i < preludeSize(); ++i) names.push_back(preludeName(i));
-        std::string suggestion = closestMatch(node->name, names);
-        const GlobalTable::Entry* entry = globals_.find(node->name);
-        if (entry && entry->assigned) {
-            fail(node->range, fmt::format("variable '{}' is read before it is assigned", node->name));
-        }
-        Diagnostic& d = diagnostics_.error(
-            node->range, suggestion.empty()
-                             ? fmt::format("undefined variable '{}'", node->name)
-                             : fmt::format("undefined variable '{}'; did you mean '{}'?",
-                                           node->name, suggestion));
-        if (!suggestion.empty()) d.fixits.push_back({node->range, suggestion});
-        for (auto it = callSites_.rbegin(); it != callSites_.rend(); ++it) {
-            d.notes.push_back({*it, "in the macro called here"});
-        }
-        throw EvalError{};
-    }
+    if (!slot || slot->kind == ValueKind::Unset) unboundVariable(node);
     return *slot;
+}
+
+void Interpreter::unboundVariable(const VarExpr* node) {
+    const Resolution& r = node->resolution;
+    const GlobalTable::Entry* entry = globals_.find(node->name);
+    if (r.binding == Binding::Local || r.binding == Binding::Enclosing || (entry && entry->assigned)) {
+        fail(node->range, fmt::format("variable '{}' is read before it is assigned", node->name));
+    }
+    std::vector<std::string_view> names;
+    for (uint32_t i = 0; i < globals_.size(); ++i) {
+        if (globals_.entry(i).assigned) names.push_back(globals_.entry(i).name);
+    }
+    for (uint32_t i = 0; i < preludeSize(); ++i) names.push_back(preludeName(i));
+    std::string suggestion = closestMatch(node->name, names);
+    Diagnostic& d = diagnostics_.error(
+        node->range, suggestion.empty()
+                         ? fmt::format("undefined variable '{}'", node->name)
+                         : fmt::format("undefined variable '{}'; did you mean '{}'?", node->name,
+                                       suggestion));
+    if (!suggestion.empty()) d.fixits.push_back({node->range, suggestion});
+    for (auto it = callSites_.rbegin(); it != callSites_.rend(); ++it) {
+        d.notes.push_back({*it, "in the macro called here"});
+    }
+    throw EvalError{};
 }
 
 void Interpreter::store(const Resolution& r, const Value& value, SourceRange) {

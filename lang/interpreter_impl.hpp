@@ -41,7 +41,7 @@ public:
     void run(bool evaluate);
 
     // --- services for built-ins and object builders ---
-    [[noreturn]] void fail(SourceRange where, std::string message);
+    [[noreturn, gnu::cold, gnu::noinline]] void fail(SourceRange where, std::string message);
     const std::string* newString(std::string text);
     const std::vector<Value>* newList(std::vector<Value> items);
     uint64_t nextRandom();
@@ -67,8 +67,15 @@ private:
     // expressions
     Value eval(const Expr* node);
     Value evalVar(const VarExpr* node);
+    Value evalString(const StringLit* node);
+    Value evalAssign(const AssignExpr* node);
+    Value evalTernary(const TernaryExpr* node);
+    [[noreturn, gnu::cold, gnu::noinline]] Value notAnExpression(const Expr* node);
+    [[noreturn, gnu::cold, gnu::noinline]] void unboundVariable(const VarExpr* node);
     void store(const Resolution& resolution, const Value& value, SourceRange where);
     Value evalBinary(const BinaryExpr* node);
+    Value evalLogical(const BinaryExpr* node);
+    [[gnu::noinline]] Value binaryOnValues(const BinaryExpr* node, const Value& a, const Value& b);
     Value evalUnary(const UnaryExpr* node);
     Value evalCall(const CallExpr* node);
     Value evalIndex(const IndexExpr* node);

@@ -100,42 +100,49 @@ bool valuesEqual(const Value& a, const Value& b) {
     }
 }
 
+// Kept to a bare dispatch so that every case is a tail call: the interpreter's time goes
+// into this function's prologue otherwise.
 Value Interpreter::eval(const Expr* node) {
     switch (node->kind) {
     case NodeKind::IntLit: return Value::integer(static_cast<const IntLit*>(node)->value);
     case NodeKind::FloatLit: return Value::number(static_cast<const FloatLit*>(node)->value);
     case NodeKind::BoolLit: return Value::boolean(static_cast<const BoolLit*>(node)->value);
-    case NodeKind::StringLit: {
-        auto* s = static_cast<const StringLit*>(node);
-        return Value::string(newString(std::string(s->value)));
-    }
+    case NodeKind::StringLit: return evalString(static_cast<const StringLit*>(node));
     case NodeKind::Var: return evalVar(static_cast<const VarExpr*>(node));
-    case NodeKind::Assign: {
-        auto* a = static_cast<const AssignExpr*>(node);
-        Value value = eval(a->value);
-        if (value.kind == ValueKind::Unset) value = Value::none();
-        store(a->resolution, value, a->nameRange);
-        return value;
-    }
+    case NodeKind::Assign: return evalAssign(static_cast<const AssignExpr*>(node));
     case NodeKind::Unary: return evalUnary(static_cast<const UnaryExpr*>(node));
     case NodeKind::Binary: return evalBinary(static_cast<const BinaryExpr*>(node));
-    case NodeKind::Ternary: {
-        auto* t = static_cast<const TernaryExpr*>(node);
-        Value c = eval(t->condition);
-        if (c.kind != ValueKind::Bool) {
-            fail(t->condition->range,
-                 fmt::format("the condition of '?:' must be a bool, not {}", typeName(c)));
-        }
-        return eval(c.b ? t->then : t->otherwise);
-    }
+    case NodeKind::Ternary: return evalTernary(static_cast<const TernaryExpr*>(node));
     case NodeKind::Call: return evalCall(static_cast<const CallExpr*>(node));
     case NodeKind::Index: return evalIndex(static_cast<const IndexExpr*>(node));
     case NodeKind::Modify: return evalModify(static_cast<const ModifyExpr*>(node));
     case NodeKind::List: return evalList(static_cast<const ListExpr*>(node));
     case NodeKind::Object: return evalObject(static_cast<const ObjectExpr*>(node));
     case NodeKind::Macro: return evalMacro(static_cast<const MacroExpr*>(node));
-    default: fail(node->range, "this is not an expression");
+    default: return notAnExpression(node);
     }
+}
+
+Value Interpreter::notAnExpression(const Expr* node) { fail(node->range, "this is not an expression"); }
+
+Value Interpreter::evalString(const StringLit* node) {
+    return Value::string(newString(std::string(node->value)));
+}
+
+Value Interpreter::evalAssign(const AssignExpr* node) {
+    Value value = eval(node->value);
+    if (value.kind == ValueKind::Unset) value = Value::none();
+    store(node->resolution, value, node->nameRange);
+    return value;
+}
+
+Value Interpreter::evalTernary(const TernaryExpr* node) {
+    Value c = eval(node->condition);
+    if (c.kind != ValueKind::Bool) {
+        fail(node->condition->range,
+             fmt::format("the condition of '?:' must be a bool, not {}", typeName(c)));
+    }
+    return eval(c.b ? node->then : node->otherwise);
 }
 
 Value Interpreter::evalUnary(const UnaryExpr* node) {
@@ -162,25 +169,62 @@ Value Interpreter::evalUnary(const UnaryExpr* node) {
     fail(node->opRange, fmt::format("cannot apply '{}' to {}", opSpelling(node->op), typeName(v)));
 }
 
+Value Interpreter::evalLogical(const BinaryExpr* node) {
+    BinaryOp op = node->op;
+    Value left = eval(node->left);
+    if (left.kind != ValueKind::Bool) {
+        fail(node->left->range, fmt::format("the operands of '{}' must be bools, not {}",
+                                            opSpelling(op), typeName(left)));
+    }
+    if (left.b == (op == BinaryOp::Or)) return left; // short-circuit
+    Value right = eval(node->right);
+    if (right.kind != ValueKind::Bool) {
+        fail(node->right->range, fmt::format("the operands of '{}' must be bools, not {}",
+                                             opSpelling(op), typeName(right)));
+    }
+    return right;
+}
+
 Value Interpreter::evalBinary(const BinaryExpr* node) {
     BinaryOp op = node->op;
-    if (op == BinaryOp::And || op == BinaryOp::Or) {
-        Value left = eval(node->left);
-        if (left.kind != ValueKind::Bool) {
-            fail(node->left->range, fmt::format("the operands of '{}' must be bools, not {}",
-                                                opSpelling(op), typeName(left)));
-        }
-        if (left.b == (op == BinaryOp::Or)) return left; // short-circuit
-        Value right = eval(node->right);
-        if (right.kind != ValueKind::Bool) {
-            fail(node->right->range, fmt::format("the operands of '{}' must be bools, not {}",
-                                                 opSpelling(op), typeName(right)));
-        }
-        return right;
-    }
-
+    if (op == BinaryOp::And || op == BinaryOp::Or) return evalLogical(node);
     Value a = eval(node->left);
     Value b = eval(node->right);
+    // The hot paths of loops: numbers. Everything else, errors included, is out of line.
+    if (a.kind == ValueKind::Int && b.kind == ValueKind::Int) {
+        int64_t result;
+        switch (op) {
+        case BinaryOp::Add:
+            if (__builtin_add_overflow(a.i, b.i, &result)) break;
+            return Value::integer(result);
+        case BinaryOp::Sub:
+            if (__builtin_sub_overflow(a.i, b.i, &result)) break;
+            return Value::integer(result);
+        case BinaryOp::Less: return Value::boolean(a.i < b.i);
+        case BinaryOp::Greater: return Value::boolean(a.i > b.i);
+        case BinaryOp::LessEqual: return Value::boolean(a.i <= b.i);
+        case BinaryOp::GreaterEqual: return Value::boolean(a.i >= b.i);
+        default: break;
+        }
+    } else if (a.isNumber() && b.isNumber()) {
+        double x = a.asDouble(), y = b.asDouble();
+        switch (op) {
+        case BinaryOp::Add: return Value::number(x + y);
+        case BinaryOp::Sub: return Value::number(x - y);
+        case BinaryOp::Mul: return Value::number(x * y);
+        case BinaryOp::Div: return Value::number(x / y);
+        case BinaryOp::Less: return Value::boolean(x < y);
+        case BinaryOp::Greater: return Value::boolean(x > y);
+        case BinaryOp::LessEqual: return Value::boolean(x <= y);
+        case BinaryOp::GreaterEqual: return Value::boolean(x >= y);
+        default: break;
+        }
+    }
+    return binaryOnValues(node, a, b);
+}
+
+Value Interpreter::binaryOnValues(const BinaryExpr* node, const Value& a, const Value& b) {
+    BinaryOp op = node->op;
 
     // The hot path: two floats, or a float and an int.
     if (a.isNumber() && b.isNumber()) {
