@@ -8,6 +8,11 @@
 //   -- args: OPTIONS           crtc options for this test (--max-steps, --time, --frames ...)
 //   NAME.scene.json            the expected --dump-scene output
 //
+// So that expectations do not depend on where the checkout lives, diagnostic messages are
+// compared after replacing the absolute path of ROOT with <golden> and that of the standard
+// library with <stdlib> (so are --dump-scene snapshots); a line break inside a message is
+// written \n. CRT_PATH is ignored.
+//
 // Usage: golden_runner ROOT FILE.crt [--update]
 #include "diagnostic_printer.hpp"
 #include "interpreter.hpp"
@@ -15,6 +20,7 @@
 #include "scene_json.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
@@ -70,7 +76,28 @@ Expectations readExpectations(const std::string& text) {
     return e;
 }
 
-std::vector<std::string> describe(const Compilation& c) {
+using PathPlaceholders = std::vector<std::pair<std::string, std::string>>;
+
+/// `text` with machine-specific paths replaced by placeholders.
+std::string replacePaths(std::string text, const PathPlaceholders& paths) {
+    for (const auto& [path, placeholder] : paths) {
+        for (size_t at = text.find(path); at != std::string::npos; at = text.find(path, at + placeholder.size())) {
+            text.replace(at, path.size(), placeholder);
+        }
+    }
+    return text;
+}
+
+/// `message` with machine-specific paths replaced and line breaks written as \n.
+std::string portable(std::string message, const PathPlaceholders& paths) {
+    message = replacePaths(std::move(message), paths);
+    for (size_t at = message.find('\n'); at != std::string::npos; at = message.find('\n', at + 2)) {
+        message.replace(at, 1, "\\n");
+    }
+    return message;
+}
+
+std::vector<std::string> describe(const Compilation& c, const PathPlaceholders& paths) {
     std::vector<std::string> out;
     auto where = [&](SourceRange range) {
         if (range.file >= c.sources.fileCount()) return std::string("?");
@@ -81,8 +108,10 @@ std::vector<std::string> describe(const Compilation& c) {
     };
     for (const Diagnostic& d : c.diagnostics.items()) {
         const char* severity = d.severity == Severity::Error ? "error" : d.severity == Severity::Warning ? "warning" : "note";
-        out.push_back(fmt::format("{} {} {}", severity, where(d.range), d.message));
-        for (const DiagnosticNote& n : d.notes) out.push_back(fmt::format("  note {} {}", where(n.range), n.message));
+        out.push_back(fmt::format("{} {} {}", severity, where(d.range), portable(d.message, paths)));
+        for (const DiagnosticNote& n : d.notes) {
+            out.push_back(fmt::format("  note {} {}", where(n.range), portable(n.message, paths)));
+        }
     }
     return out;
 }
@@ -108,6 +137,19 @@ int main(int argc, char** argv) {
     fs::path file = argv[2];
     bool update = argc > 3 && std::string_view(argv[3]) == "--update";
     fs::current_path(root);
+    unsetenv("CRT_PATH"); // include lookup must not depend on the environment
+    PathPlaceholders paths;
+    for (const fs::path& dir : {fs::path(CRT_SOURCE_STDLIB_DIR), fs::current_path()}) {
+        std::string placeholder = dir == fs::current_path() ? "<golden>" : "<stdlib>";
+        std::error_code error;
+        for (fs::path form : {fs::absolute(dir).lexically_normal(), fs::weakly_canonical(dir, error)}) {
+            std::string text = form.string();
+            while (text.size() > 1 && text.back() == '/') text.pop_back();
+            if (!text.empty()) paths.emplace_back(text, placeholder);
+        }
+    }
+    // Longest first, so a path inside another is not half-replaced.
+    std::stable_sort(paths.begin(), paths.end(), [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
     std::string text = readFile(file);
     Expectations expected = readExpectations(text);
 
@@ -136,13 +178,13 @@ int main(int argc, char** argv) {
     for (std::string line; std::getline(printedStream, line);) printedLines.emplace_back(trim(line));
 
     bool ok = compareLists("printed lines", expected.printed, printedLines);
-    std::vector<std::string> actualDiagnostics = describe(c);
+    std::vector<std::string> actualDiagnostics = describe(c, paths);
     std::vector<std::string> expectedDiagnostics = expected.diagnostics;
     ok = compareLists("diagnostics", expectedDiagnostics, actualDiagnostics) && ok;
 
     fs::path snapshot = fs::path(file).replace_extension(".scene.json");
     if (fs::exists(snapshot) || update) {
-        std::string actual = c.scene ? sceneToJson(*c.scene) : std::string("null\n");
+        std::string actual = c.scene ? replacePaths(sceneToJson(*c.scene), paths) : std::string("null\n");
         if (update) {
             std::ofstream(snapshot) << actual;
         } else if (readFile(snapshot) != actual) {
