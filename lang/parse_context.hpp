@@ -5,10 +5,19 @@
 #include "diagnostic.hpp"
 #include "lexer.hpp"
 
+#include <algorithm>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace crt::lang {
+
+/// A list under construction: `count` items from `start` in one of ParseContext's scratch
+/// stacks. Lists nest, so each kind of list shares one stack, used last-in first-out.
+struct ListMark {
+    uint32_t start = 0;
+    uint32_t count = 0;
+};
 
 struct ParseContext {
     const SourceFile& file;
@@ -17,6 +26,13 @@ struct ParseContext {
     DiagnosticBag& diagnostics;
     Lexer lexer;
     std::vector<Node*> items; ///< top-level items parsed so far
+    // Scratch stacks for lists being parsed; semantic values stay small and trivially
+    // copyable, with no allocation per list.
+    std::vector<Node*> statementScratch;
+    std::vector<Expr*> exprScratch;
+    std::vector<Attribute> attributeScratch;
+    std::vector<Modifier> modifierScratch;
+    std::vector<Param> paramScratch;
     Token lastToken;          ///< the token most recently handed to the parser
     bool skipping = false;    ///< after a syntax error: drop tokens up to a resume point
     int skipDepth = 0;        ///< braces already open when skipping starts
@@ -36,6 +52,27 @@ struct ParseContext {
         result->range = where;
         return result;
     }
+    template <typename T> ListMark beginList(const std::vector<T>& scratch) {
+        return {static_cast<uint32_t>(scratch.size()), 0};
+    }
+    /// Appends `item`, first dropping anything a syntax error left above the list's items.
+    template <typename T> ListMark append(std::vector<T>& scratch, ListMark list, const T& item) {
+        scratch.resize(list.start + list.count);
+        scratch.push_back(item);
+        return {list.start, list.count + 1};
+    }
+    /// Moves the list's items into the arena and pops them.
+    template <typename T> std::span<T> finishList(std::vector<T>& scratch, ListMark list) {
+        std::span<T> items;
+        if (list.count > 0) {
+            T* data = static_cast<T*>(arena.allocate(sizeof(T) * list.count, alignof(T)));
+            std::copy_n(scratch.begin() + list.start, list.count, data);
+            items = {data, list.count};
+        }
+        scratch.resize(list.start);
+        return items;
+    }
+
     /// The next token for the parser, after error recovery's skipping.
     Token nextToken();
     /// Decodes the escapes of a string token into the arena.
