@@ -85,6 +85,39 @@ std::string_view ParseContext::decodeString(const Token& token) {
     return arena.copy(decoded);
 }
 
+namespace {
+
+/// Reads a float literal. Plain decimals of up to 15 significant digits (nearly all in
+/// scene files) are exact as an integer divided by a power of ten, one correctly rounded
+/// division (Clinger's fast path); anything else goes to std::from_chars.
+bool parseFloat(std::string_view text, double& value) {
+    static constexpr double kPowersOfTen[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                              1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    uint64_t mantissa = 0;
+    int digits = 0;
+    int fraction = -1;
+    for (char c : text) {
+        if (c >= '0' && c <= '9') {
+            mantissa = mantissa * 10 + static_cast<uint64_t>(c - '0');
+            if (mantissa != 0 && ++digits > 15) break;
+            if (fraction >= 0) ++fraction;
+        } else if (c == '.' && fraction < 0) {
+            fraction = 0;
+        } else {
+            digits = 99; // an exponent: not the fast path
+            break;
+        }
+    }
+    if (digits <= 15 && fraction <= 15) {
+        value = static_cast<double>(mantissa) / kPowersOfTen[std::max(fraction, 0)];
+        return true;
+    }
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return error == std::errc();
+}
+
+} // namespace
+
 namespace grammar {
 
 Parser::symbol_type yylex(ParseContext& ctx) {
@@ -108,8 +141,7 @@ Parser::symbol_type yylex(ParseContext& ctx) {
     case TokenKind::Float: {
         std::string_view text = ctx.text(token);
         double value = 0;
-        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (error != std::errc()) {
+        if (!parseFloat(text, value)) {
             ctx.diagnostics.error(where, "float literal is out of range");
         }
         return Parser::make_FLOAT(value, where);

@@ -2,6 +2,7 @@
 #include "source_file.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 namespace crt::lang {
 namespace {
@@ -29,12 +30,12 @@ SourceFile::SourceFile(std::string path, std::string text)
     : path_(std::move(path)), data_(std::move(text)) {
     data_.push_back('\0');
     lineStarts_.push_back(0);
-    unsigned char high = 0;
-    for (uint32_t i = 0; i + 1 < data_.size(); ++i) {
-        high |= static_cast<unsigned char>(data_[i]);
-        if (data_[i] == '\n') lineStarts_.push_back(i + 1);
+    const char* begin = data_.data();
+    const char* end = begin + data_.size() - 1;
+    for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<size_t>(end - p))));) {
+        lineStarts_.push_back(static_cast<uint32_t>(++p - begin));
     }
-    ascii_ = high < 0x80;
+    ascii_ = std::all_of(begin, end, [](char c) { return static_cast<unsigned char>(c) < 0x80; });
 }
 
 uint32_t SourceFile::lineStart(uint32_t line) const {
