@@ -13,8 +13,6 @@
 
 namespace crt::lang {
 
-bool valuesEqual(const Value& a, const Value& b);
-
 std::string Interpreter::str(const Value& value) const {
     switch (value.kind) {
     case ValueKind::Unset:
@@ -38,7 +36,7 @@ std::string Interpreter::str(const Value& value) const {
         for (size_t i = 0; i < value.list->size(); ++i) {
             if (i) out += ", ";
             const Value& item = (*value.list)[i];
-            out += item.kind == ValueKind::String ? quoted(*item.s) : str(item);
+            out += item.kind == ValueKind::String ? lang::quoted(*item.s) : str(item);
         }
         return out + "]";
     }
@@ -269,7 +267,10 @@ Value b_range(BuiltinCall& call) {
                                               static_cast<uint64_t>(count), limit));
         }
         items.reserve(static_cast<size_t>(count));
-        for (int64_t i = 0; i < static_cast<int64_t>(count); ++i) items.push_back(Value::integer(a + i * s));
+        // a + i·s stays between a and b, so it fits, but i·s alone may not.
+        for (int64_t i = 0; i < static_cast<int64_t>(count); ++i) {
+            items.push_back(Value::integer(static_cast<int64_t>(a + static_cast<__int128>(i) * s)));
+        }
     } else {
         if (!std::isfinite(start) || !std::isfinite(stop) || !std::isfinite(stride)) {
             call.interpreter.fail(call.site->range, "range: the bounds and step must be finite");

@@ -34,10 +34,7 @@ Interpreter::Interpreter(Compilation& compilation, const EvalOptions& options)
 }
 
 void Interpreter::fail(SourceRange where, std::string message) {
-    Diagnostic& d = diagnostics_.error(where, std::move(message));
-    for (auto it = callSites_.rbegin(); it != callSites_.rend(); ++it) {
-        d.notes.push_back({*it, "in the macro called here"});
-    }
+    diagnostics_.error(where, std::move(message));
     throw EvalError{};
 }
 
@@ -171,28 +168,44 @@ void Interpreter::emit(const Value& value, const Node* where) {
         emitted_->push_back(value);
     } else if (value.kind == ValueKind::List) {
         std::vector<Value> flat;
-        std::vector<const std::vector<Value>*> pending{value.list};
-        bool allEntities = true;
-        while (!pending.empty() && allEntities) {
-            const std::vector<Value>* list = pending.back();
-            pending.pop_back();
-            for (auto it = list->rbegin(); it != list->rend(); ++it) {
-                if (it->kind == ValueKind::List) pending.push_back(it->list);
-                else if (it->kind == ValueKind::Entity) flat.push_back(*it);
-                else allEntities = false;
-            }
+        if (flattenEntities(value, flat)) emitted_->insert(emitted_->end(), flat.begin(), flat.end());
+    }
+}
+
+uint64_t Interpreter::countMembers(int32_t entity) const {
+    const auto* group = std::get_if<tracer::GroupNode>(&scene_.entities[static_cast<size_t>(entity)].shape);
+    if (!group) return 1;
+    uint64_t count = 0;
+    for (int32_t member : group->members) count += countMembers(member);
+    return count;
+}
+
+bool Interpreter::flattenEntities(const Value& list, std::vector<Value>& out) {
+    // Depth-first in source order, without recursion: lists can nest deeply.
+    std::vector<std::pair<const std::vector<Value>*, size_t>> stack{{list.list, 0}};
+    while (!stack.empty()) {
+        auto& [items, next] = stack.back();
+        if (next == items->size()) {
+            stack.pop_back();
+            continue;
         }
-        if (allEntities) {
-            // Lists were walked back to front; restore source order.
-            emitted_->insert(emitted_->end(), flat.rbegin(), flat.rend());
+        const Value& item = (*items)[next++];
+        if (item.kind == ValueKind::List) {
+            stack.emplace_back(item.list, 0);
+        } else if (item.kind == ValueKind::Entity) {
+            out.push_back(item);
+        } else {
+            return false;
         }
     }
+    return true;
 }
 
 void Interpreter::draw(const Value& value, const Node* where) {
     switch (value.kind) {
     case ValueKind::Entity:
-        if (scene_.drawn.size() >= options_.limits.maxEntities) {
+        drawnCount_ += countMembers(static_cast<int32_t>(value.index));
+        if (drawnCount_ > options_.limits.maxEntities) {
             fail(where->range, fmt::format("the scene draws more than {} entities; raise the "
                                            "limit with --max-entities",
                                            options_.limits.maxEntities));
@@ -224,7 +237,7 @@ void Interpreter::execInclude(const IncludeStmt* node) {
     const std::string& name = std::string(node->path->value);
     const SourceFile& including = compilation_.sources.file(node->range.file);
     std::vector<fs::path> searched;
-    searched.push_back(fs::absolute(fs::path(including.path()).parent_path()));
+    searched.push_back(folderOf(including.path()));
     for (const std::string& dir : options_.includeDirs) searched.push_back(fs::absolute(dir));
     if (const char* crtPath = std::getenv("CRT_PATH")) {
         std::stringstream folders(crtPath);
@@ -331,9 +344,6 @@ void Interpreter::unboundVariable(const VarExpr* node) {
                          : fmt::format("undefined variable '{}'; did you mean '{}'?", node->name,
                                        suggestion));
     if (!suggestion.empty()) d.fixits.push_back({node->range, suggestion});
-    for (auto it = callSites_.rbegin(); it != callSites_.rend(); ++it) {
-        d.notes.push_back({*it, "in the macro called here"});
-    }
     throw EvalError{};
 }
 
@@ -400,19 +410,24 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
     emitMode_ = EmitMode::Macro;
     emitted_ = &emitted;
     ++depth_;
-    callSites_.push_back(site->range);
 
     Value last = Value::none();
     const auto& statements = macro->body->statements;
-    for (size_t i = 0; i < statements.size(); ++i) {
-        Value value = exec(statements[i]);
-        if (i + 1 == statements.size() && isExpression(statements[i]) &&
-            statements[i]->kind != NodeKind::Assign) {
-            last = value;
+    try {
+        for (size_t i = 0; i < statements.size(); ++i) {
+            Value value = exec(statements[i]);
+            if (i + 1 == statements.size() && isExpression(statements[i]) &&
+                statements[i]->kind != NodeKind::Assign) {
+                last = value;
+            }
         }
+    } catch (const EvalError&) {
+        // Every run-time error inside a macro gets a note at each call site of the chain,
+        // innermost first, whichever code raised it.
+        diagnostics_.items().back().notes.push_back({site->range, "in the macro called here"});
+        throw;
     }
 
-    callSites_.pop_back();
     --depth_;
     if (!macro->capturesFrame) stack_.resize(base);
     locals_ = savedOnStack ? stack_.data() + savedBase : savedLocals;

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <filesystem>
+#include <compare>
 #include <span>
 #include <string>
 #include <string_view>
@@ -62,7 +64,11 @@ private:
     void execFor(const ForStmt* node);
     void emit(const Value& value, const Node* where);
     void draw(const Value& value, const Node* where);
-    void collectEmitted(const Value& value);
+    /// Appends the entities of a (nested) list in order; false if it holds anything else.
+    static bool flattenEntities(const Value& list, std::vector<Value>& out);
+    /// How many entities drawing `entity` draws: a group draws its members.
+    uint64_t countMembers(int32_t entity) const;
+    uint64_t drawnCount_ = 0;
 
     // expressions
     Value eval(const Expr* node);
@@ -117,7 +123,6 @@ private:
     Frame* enclosing_ = nullptr; ///< the running macro's closure environment
     uint32_t depth_ = 0;
     uint64_t steps_ = 0;
-    std::vector<SourceRange> callSites_; ///< for notes on errors inside macros
 
     EmitMode emitMode_ = EmitMode::None;
     std::vector<Value>* emitted_ = nullptr;
@@ -147,7 +152,15 @@ private:
     std::vector<std::string> includeStack_;  ///< canonical paths being run
 };
 
+/// The absolute folder of `path` ("." for a bare file name).
+std::filesystem::path folderOf(const std::string& path);
+
 /// "cannot apply '-' to string and vec3"
 std::string operandError(std::string_view op, const Value& left, const Value& right);
+/// Orders two numbers exactly, an int against a float included.
+std::partial_ordering compareNumbers(const Value& a, const Value& b);
+bool valuesEqual(const Value& a, const Value& b);
+/// For a float given where an int is needed: "; use N" and a fix-it, when N is exact enough.
+void addIntFixIt(Diagnostic& diagnostic, const Value& given, SourceRange where);
 
 } // namespace crt::lang

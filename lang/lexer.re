@@ -7,11 +7,18 @@ namespace crt::lang {
 
 Lexer::Lexer(const SourceFile& file, uint32_t fileIndex, DiagnosticBag& diagnostics)
     : begin_(file.data()), end_(file.data() + file.size()), cursor_(file.data()),
-      fileIndex_(fileIndex), diagnostics_(diagnostics) {}
+      fileIndex_(fileIndex), diagnostics_(diagnostics) {
+    // Some editors start UTF-8 files with a byte-order mark: it is not part of the script.
+    if (file.text().starts_with("\xEF\xBB\xBF")) cursor_ += 3;
+}
 
 void Lexer::reportInvalid(const char* start, const char* end) {
     std::string_view text(start, static_cast<size_t>(end - start));
-    if (text.size() == 1 && static_cast<unsigned char>(text[0]) < 0x20) {
+    unsigned char first = static_cast<unsigned char>(text[0]);
+    if (text.size() == 1 && first >= 0x80) {
+        // Not UTF-8: name the byte rather than copy it into the message.
+        diagnostics_.error(range(start, end), fmt::format("invalid UTF-8 byte 0x{:02X}", first));
+    } else if (text.size() == 1 && first < 0x20) {
         diagnostics_.error(range(start, end),
                            fmt::format("unexpected character U+{:04X}",
                                        static_cast<unsigned>(static_cast<unsigned char>(text[0]))));
@@ -101,8 +108,11 @@ Token Lexer::scan() {
         }
         "\n" { cursor_ = reinterpret_cast<const char*>(cursor); lineStart_ = true; continue; }
         [ \t\r]+ { cursor_ = reinterpret_cast<const char*>(cursor); continue; }
-        "--" [^\n\x00]* {
-            cursor_ = reinterpret_cast<const char*>(cursor);
+        "--" {
+            // A comment runs to the end of the line, whatever bytes it holds.
+            const char* p = reinterpret_cast<const char*>(cursor);
+            while (p < end_ && *p != '\n') ++p;
+            cursor_ = p;
             if (comments_) comments_->push_back({TokenKind::Comment, offset(start), offset(cursor_), lineStart_});
             continue;
         }
@@ -178,12 +188,13 @@ Token Lexer::scan() {
 }
 
 Token Lexer::next() {
+    Token token;
     if (pending_) {
-        Token token = *pending_;
+        token = *pending_;
         pending_.reset();
-        return token;
+    } else {
+        token = scan();
     }
-    Token token = scan();
     if (token.kind == TokenKind::Less) {
         // A '<' opens a modifier list exactly when the next token is a modifier keyword.
         Token following = scan();

@@ -69,9 +69,6 @@ struct ObjectBuilder {
                 d.fixits.push_back({{range.file, closing, closing},
                                     fmt::format("{} -> {} ", info.attributes[i].name,
                                                 placeholder(info.attributes[i].type))});
-                for (auto it = in.callSites_.rbegin(); it != in.callSites_.rend(); ++it) {
-                    d.notes.push_back({*it, "in the macro called here"});
-                }
                 throw EvalError{};
             }
         }
@@ -114,11 +111,7 @@ struct ObjectBuilder {
                 Diagnostic& d = in.diagnostics_.error(
                     a.value->range, fmt::format("attribute '{}' of {} must be an int, not float",
                                                 a.name, info.name));
-                if (std::isfinite(v.f) && std::abs(v.f) < 9e18) {
-                    std::string fixed = fmt::format("{}", static_cast<int64_t>(std::llround(v.f)));
-                    d.message += fmt::format("; use {}", fixed);
-                    d.fixits.push_back({a.value->range, fixed});
-                }
+                addIntFixIt(d, v, a.value->range);
                 throw EvalError{};
             }
             if (v.kind != ValueKind::Int) wrongType(a, v, "an int");
@@ -187,6 +180,14 @@ struct ObjectBuilder {
             if (v.kind == ValueKind::Int) {
                 if (v.i < 3) in.fail(a.value->range, "a polygonal aperture needs at least 3 sides");
                 return;
+            }
+            if (v.kind == ValueKind::Float) {
+                Diagnostic& d = in.diagnostics_.error(
+                    a.value->range, fmt::format("attribute '{}' of {} must be a shape name or a "
+                                                "number of sides, not float",
+                                                a.name, info.name));
+                addIntFixIt(d, v, a.value->range);
+                throw EvalError{};
             }
             if (v.kind != ValueKind::String) wrongType(a, v, "a shape name or a number of sides");
             checkChoice(a, v, attr);
@@ -283,6 +284,20 @@ struct ObjectBuilder {
     }
 };
 
+fs::path folderOf(const std::string& path) {
+    std::error_code error;
+    fs::path parent = fs::path(path).parent_path();
+    fs::path folder = fs::absolute(parent.empty() ? fs::path(".") : parent, error);
+    return folder.lexically_normal();
+}
+
+void addIntFixIt(Diagnostic& diagnostic, const Value& given, SourceRange where) {
+    if (given.kind != ValueKind::Float || !std::isfinite(given.f) || std::abs(given.f) >= 9e15) return;
+    std::string fixed = fmt::format("{}", static_cast<int64_t>(std::llround(given.f)));
+    diagnostic.message += fmt::format("; use {}", fixed);
+    diagnostic.fixits.push_back({where, fixed});
+}
+
 tracer::SourceSpan Interpreter::span(SourceRange range) const {
     // Literals in a loop are converted over and over: remember recent ones.
     SpanCacheEntry& entry = spanCache_[(range.begin * 2654435761u) >> 28];
@@ -323,7 +338,7 @@ namespace {
 std::string findAsset(const std::string& name, const std::string& scriptPath,
                       const std::vector<std::string>& assetRoots, std::vector<std::string>& searched) {
     std::error_code error;
-    fs::path scriptDir = fs::absolute(fs::path(scriptPath).parent_path(), error);
+    fs::path scriptDir = folderOf(scriptPath);
     if (!name.empty() && name[0] == '/') {
         std::vector<fs::path> roots;
         if (!assetRoots.empty()) {

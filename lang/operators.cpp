@@ -46,10 +46,17 @@ namespace {
 
 bool isVector(const Value& v) { return v.kind == ValueKind::Vec3 || v.kind == ValueKind::Colour; }
 
-/// Component-wise a (op) b on vec3 or colour; the alpha comes from the colour operand.
+/// Component-wise a (op) b on vec3 or colour. For two colours, '*' and '/' combine the
+/// alphas too and '+' and '-' keep the smaller one, so every operation treats its operands
+/// alike; a colour and a number keep the colour's alpha (scaling does not fade it).
 Value componentWise(const Value& a, const Value& b, char op) {
     Value r = a.kind == ValueKind::Vec3 || a.kind == ValueKind::Colour ? a : b;
-    for (int k = 0; k < 3; ++k) {
+    int components = 3;
+    if (a.kind == ValueKind::Colour && b.kind == ValueKind::Colour) {
+        if (op == '+' || op == '-') r.v[3] = std::min(a.v[3], b.v[3]);
+        else components = 4;
+    }
+    for (int k = 0; k < components; ++k) {
         double x = isVector(a) ? a.v[k] : a.asDouble();
         double y = isVector(b) ? b.v[k] : b.asDouble();
         switch (op) {
@@ -73,11 +80,32 @@ bool checkedInt(BinaryOp op, int64_t a, int64_t b, int64_t& out) {
 
 } // namespace
 
-bool valuesEqual(const Value& a, const Value& b) {
-    if (a.isNumber() && b.isNumber()) {
-        if (a.kind == ValueKind::Int && b.kind == ValueKind::Int) return a.i == b.i;
-        return a.asDouble() == b.asDouble();
+std::partial_ordering compareNumbers(const Value& a, const Value& b) {
+    if (a.kind == ValueKind::Int && b.kind == ValueKind::Int) return a.i <=> b.i;
+    if (a.kind == ValueKind::Float && b.kind == ValueKind::Float) return a.f <=> b.f;
+    // An int against a float, without rounding the int to a double.
+    bool flipped = a.kind == ValueKind::Float;
+    int64_t i = flipped ? b.i : a.i;
+    double f = flipped ? a.f : b.f;
+    std::partial_ordering order = std::partial_ordering::unordered;
+    if (std::isnan(f)) return order;
+    if (f >= 9223372036854775808.0) {
+        order = std::partial_ordering::less;
+    } else if (f < -9223372036854775808.0) {
+        order = std::partial_ordering::greater;
+    } else {
+        double whole = std::floor(f);
+        auto w = static_cast<int64_t>(whole);
+        order = i != w ? (i <=> w) : (whole == f ? std::partial_ordering::equivalent : std::partial_ordering::less);
     }
+    if (!flipped) return order;
+    return order == std::partial_ordering::less ? std::partial_ordering::greater
+           : order == std::partial_ordering::greater ? std::partial_ordering::less
+                                                     : order;
+}
+
+bool valuesEqual(const Value& a, const Value& b) {
+    if (a.isNumber() && b.isNumber()) return compareNumbers(a, b) == 0;
     switch (a.kind) {
     case ValueKind::None: return true;
     case ValueKind::Bool: return a.b == b.b;
@@ -213,10 +241,6 @@ Value Interpreter::evalBinary(const BinaryExpr* node) {
         case BinaryOp::Sub: return Value::number(x - y);
         case BinaryOp::Mul: return Value::number(x * y);
         case BinaryOp::Div: return Value::number(x / y);
-        case BinaryOp::Less: return Value::boolean(x < y);
-        case BinaryOp::Greater: return Value::boolean(x > y);
-        case BinaryOp::LessEqual: return Value::boolean(x <= y);
-        case BinaryOp::GreaterEqual: return Value::boolean(x >= y);
         default: break;
         }
     }
@@ -244,8 +268,12 @@ Value Interpreter::binaryOnValues(const BinaryExpr* node, const Value& a, const 
                     fail(node->opRange, op == BinaryOp::Div ? "integer division by zero"
                                                             : "integer modulo by zero");
                 }
-                if (a.i == std::numeric_limits<int64_t>::min() && b.i == -1) {
-                    fail(node->opRange, fmt::format("integer overflow in '{}'", opSpelling(op)));
+                if (b.i == -1) {
+                    // x / -1 overflows for the smallest int; x % -1 is always 0.
+                    if (op == BinaryOp::Mod) return Value::integer(0);
+                    if (a.i == std::numeric_limits<int64_t>::min()) {
+                        fail(node->opRange, "integer overflow in '/'");
+                    }
                 }
                 return Value::integer(op == BinaryOp::Div ? a.i / b.i : a.i % b.i);
             case BinaryOp::Less: return Value::boolean(a.i < b.i);
@@ -258,24 +286,29 @@ Value Interpreter::binaryOnValues(const BinaryExpr* node, const Value& a, const 
             }
         } else {
             double x = a.asDouble(), y = b.asDouble();
+            // Comparisons are exact: 2^53 + 1 is not equal to the float 2^53.
+            std::partial_ordering order = compareNumbers(a, b);
             switch (op) {
             case BinaryOp::Add: return Value::number(x + y);
             case BinaryOp::Sub: return Value::number(x - y);
             case BinaryOp::Mul: return Value::number(x * y);
             case BinaryOp::Div: return Value::number(x / y);
             case BinaryOp::Mod: return Value::number(std::fmod(x, y));
-            case BinaryOp::Less: return Value::boolean(x < y);
-            case BinaryOp::Greater: return Value::boolean(x > y);
-            case BinaryOp::LessEqual: return Value::boolean(x <= y);
-            case BinaryOp::GreaterEqual: return Value::boolean(x >= y);
-            case BinaryOp::Equal: return Value::boolean(x == y);
-            case BinaryOp::NotEqual: return Value::boolean(x != y);
+            case BinaryOp::Less: return Value::boolean(order < 0);
+            case BinaryOp::Greater: return Value::boolean(order > 0);
+            case BinaryOp::LessEqual: return Value::boolean(order <= 0);
+            case BinaryOp::GreaterEqual: return Value::boolean(order >= 0);
+            case BinaryOp::Equal: return Value::boolean(order == 0);
+            case BinaryOp::NotEqual: return Value::boolean(order != 0);
             default: break;
             }
         }
         fail(node->opRange, operandError(opSpelling(op), a, b));
     }
 
+    if (a.kind == ValueKind::None || b.kind == ValueKind::None) {
+        fail(node->opRange, operandError(opSpelling(op), a, b));
+    }
     switch (op) {
     case BinaryOp::Equal:
     case BinaryOp::NotEqual:
@@ -323,9 +356,7 @@ Value Interpreter::evalIndex(const IndexExpr* node) {
     if (index.kind != ValueKind::Int) {
         Diagnostic& d = diagnostics_.error(node->index->range,
                                            fmt::format("a list index must be an int, not {}", typeName(index)));
-        if (index.kind == ValueKind::Float && std::isfinite(index.f)) {
-            d.fixits.push_back({node->index->range, fmt::format("{}", static_cast<int64_t>(index.f))});
-        }
+        addIntFixIt(d, index, node->index->range);
         throw EvalError{};
     }
     int64_t length = static_cast<int64_t>(object.list->size());
@@ -463,9 +494,10 @@ Value Interpreter::evalCall(const CallExpr* node) {
                                    ? fmt::format("{}", info.minArgs)
                                    : info.maxArgs < 0 ? fmt::format("at least {}", info.minArgs)
                                                       : fmt::format("{} to {}", info.minArgs, info.maxArgs);
+        bool singular = info.maxArgs == 1 || (info.maxArgs < 0 && info.minArgs == 1);
         Diagnostic& d = diagnostics_.error(node->range, fmt::format("{} takes {} argument{}, but {} {} given",
                                                                     info.name, expected,
-                                                                    expected == "1" ? "" : "s", count,
+                                                                    singular ? "" : "s", count,
                                                                     count == 1 ? "was" : "were"));
         d.notes.push_back({node->callee->range, fmt::format("signature: {}", info.signature)});
         throw EvalError{};

@@ -6,6 +6,7 @@
 #include "lexer.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -34,8 +35,14 @@ struct ParseContext {
     std::vector<Modifier> modifierScratch;
     std::vector<Param> paramScratch;
     Token lastToken;          ///< the token most recently handed to the parser
-    bool skipping = false;    ///< after a syntax error: drop tokens up to a resume point
-    int skipDepth = 0;        ///< braces already open when skipping starts
+    // Error recovery: after a syntax error the token source skips to a resume point and
+    // hands the parser RECOVERED before the token found there.
+    bool recovering = false;
+    bool skipping = false;           ///< drop tokens up to a resume point first
+    int skipDepth = 0;               ///< braces already open when skipping starts
+    std::vector<Token> queued;       ///< tokens to hand out (after RECOVERED) before lexing on
+    uint32_t lastResumedAt = ~0u;    ///< never resume twice at one token: no endless loop
+    uint32_t lastReportedAt = ~0u;   ///< never report twice at one token
 
     ParseContext(const SourceFile& f, uint32_t index, Arena& a, DiagnosticBag& d)
         : file(f), fileIndex(index), arena(a), diagnostics(d), lexer(f, index, d) {}

@@ -113,6 +113,18 @@ bool parseFloat(std::string_view text, double& value) {
         return true;
     }
     auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error == std::errc::result_out_of_range) {
+        // Too small to represent is zero, as in C; too large is an error.
+        size_t exponent = text.find_first_of("eE");
+        std::string_view integerPart = text.substr(0, std::min(text.find('.'), exponent));
+        bool underflow = exponent != std::string_view::npos
+                             ? text.find('-', exponent) != std::string_view::npos
+                             : integerPart.find_first_not_of('0') == std::string_view::npos;
+        if (underflow) {
+            value = 0.0;
+            return true;
+        }
+    }
     return error == std::errc();
 }
 
@@ -121,7 +133,19 @@ bool parseFloat(std::string_view text, double& value) {
 namespace grammar {
 
 Parser::symbol_type yylex(ParseContext& ctx) {
-    Token token = ctx.nextToken();
+    if (ctx.recovering) {
+        ctx.recovering = false;
+        if (ctx.queued.empty()) ctx.queued.push_back(ctx.nextToken());
+        uint32_t at = ctx.queued.front().begin;
+        return Parser::make_RECOVERED(ctx.range(at, at));
+    }
+    Token token;
+    if (!ctx.queued.empty()) {
+        token = ctx.queued.front();
+        ctx.queued.erase(ctx.queued.begin());
+    } else {
+        token = ctx.nextToken();
+    }
     ctx.lastToken = token;
     SourceRange where = ctx.range(token.begin, token.end);
     switch (token.kind) {
@@ -214,29 +238,58 @@ void Parser::report_syntax_error(const context& yyctx) const {
     default: foundText = std::string(tokenDescription(found.kind)); break;
     }
 
-    constexpr int kMaxExpected = 5;
+    constexpr int kMaxExpected = 8;
     symbol_kind_type expected[kMaxExpected];
     int count = yyctx.expected_tokens(expected, kMaxExpected);
+    // Line-start brackets are the same character to a reader: name each once.
+    std::vector<symbol_kind_type> names;
+    for (int i = 0; i < count; ++i) {
+        symbol_kind_type kind = expected[i];
+        if (kind == symbol_kind::S_LPAREN_LINE) kind = symbol_kind::S_LPAREN;
+        if (kind == symbol_kind::S_LBRACKET_LINE) kind = symbol_kind::S_LBRACKET;
+        if (std::find(names.begin(), names.end(), kind) == names.end()) names.push_back(kind);
+    }
     std::string message = fmt::format("unexpected {}", foundText);
     bool expectsArrow = false;
-    if (count > 0 && count < kMaxExpected) {
+    bool expectsBrace = std::find(names.begin(), names.end(), symbol_kind::S_RBRACE) != names.end();
+    if (count > 0 && count < kMaxExpected && names.size() <= 4) {
         message += "; expected ";
-        for (int i = 0; i < count; ++i) {
-            if (i > 0) message += i + 1 == count ? " or " : ", ";
-            message += symbol_name(expected[i]);
-            expectsArrow |= expected[i] == symbol_kind::S_ARROW;
+        for (size_t i = 0; i < names.size(); ++i) {
+            if (i > 0) message += i + 1 == names.size() ? " or " : ", ";
+            message += symbol_name(names[i]);
+            expectsArrow |= names[i] == symbol_kind::S_ARROW;
         }
     }
-    Diagnostic& d = ctx.diagnostics.error(where, std::move(message));
-    if (expectsArrow && found.kind == TokenKind::Assign) {
-        d.message += "; attributes are written 'name -> value'";
-        d.fixits.push_back({where, "->"});
+    if (found.begin != ctx.lastReportedAt) {
+        ctx.lastReportedAt = found.begin;
+        Diagnostic& d = ctx.diagnostics.error(where, std::move(message));
+        if (expectsArrow && found.kind == TokenKind::Assign) {
+            d.message += "; attributes are written 'name -> value'";
+            d.fixits.push_back({where, "->"});
+        }
     }
-    // Skip the rest of the broken statement unless the parser can resume right here.
-    bool resumeHere = found.kind == TokenKind::RBrace || found.kind == TokenKind::EndOfFile ||
-                      (found.atLineStart && canStartStatement(found.kind));
-    ctx.skipping = !resumeHere;
-    ctx.skipDepth = found.kind == TokenKind::LBrace ? 1 : 0;
+    // Skip the rest of the broken statement unless the parser can resume right here (and
+    // has not already tried to resume at this very token).
+    ctx.recovering = true;
+    // A top-level keyword starting a line where a '}' would do: the '}' was forgotten.
+    // Supplying it closes the open block or object, so one mistake is one diagnostic.
+    bool topLevelKeyword = found.kind == TokenKind::KwScene || found.kind == TokenKind::KwSettings ||
+                           found.kind == TokenKind::KwInclude;
+    if (found.begin != ctx.lastResumedAt && found.atLineStart && topLevelKeyword && expectsBrace) {
+        ctx.lastResumedAt = found.begin;
+        ctx.queued = {Token{TokenKind::RBrace, found.begin, found.begin, false}, found};
+        ctx.skipping = false;
+    } else if (isResumePoint(found) && found.begin != ctx.lastResumedAt &&
+               found.kind != TokenKind::LParenLine && found.kind != TokenKind::LBracketLine) {
+        // (A line-start bracket the parser rejects sits inside an unclosed bracket: the
+        // rest of that line belongs to the broken statement.)
+        ctx.lastResumedAt = found.begin;
+        ctx.queued = {found};
+        ctx.skipping = false;
+    } else {
+        ctx.skipping = true;
+        ctx.skipDepth = found.kind == TokenKind::LBrace ? 1 : 0;
+    }
 }
 
 } // namespace grammar

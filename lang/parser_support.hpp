@@ -11,9 +11,8 @@ namespace crt::lang::grammar {
 Parser::symbol_type yylex(ParseContext& ctx);
 
 inline Expr* makeBinary(ParseContext& ctx, BinaryOp op, Expr* left, SourceRange opRange,
-                        Expr* right) {
-    auto* n = ctx.node<BinaryExpr>(NodeKind::Binary,
-                                   {left->range.file, left->range.begin, right->range.end});
+                        Expr* right, SourceRange whole) {
+    auto* n = ctx.node<BinaryExpr>(NodeKind::Binary, whole);
     n->op = op;
     n->opRange = opRange;
     n->left = left;

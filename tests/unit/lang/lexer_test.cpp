@@ -265,7 +265,7 @@ TEST_CASE("lexer: the last token is followed by EndOfFile forever") {
     }
 }
 
-TEST_CASE("lexer: '(' and '[' first on their line cannot be calls or indexes") {
+TEST_CASE("lexer: a paren or bracket first on its line cannot be a call or an index") {
     CHECK(lex("f (x)").kinds().at(1) == K::LParen);
     CHECK(lex("f(x)").kinds().at(1) == K::LParen);
     CHECK(lex("f\n(x)").kinds().at(1) == K::LParenLine);
@@ -373,7 +373,7 @@ TEST_CASE("lexer: a bad character is one error, and lexing goes on") {
     }
 }
 
-TEST_CASE("lexer: ';' and '_' get specific messages") {
+TEST_CASE("lexer: semicolon and underscore get specific messages") {
     Lexed semi = lex("x = 1;\ny");
     REQUIRE(semi.diagnostics.size() == 1);
     CHECK(semi.diagnostics[0].range == at(5, 6));

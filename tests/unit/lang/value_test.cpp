@@ -232,7 +232,7 @@ TEST_CASE("values: conditions must be bools") {
     CHECK(show("false && 1, true || 1") == "false true"); // short-circuit: 1 never checked
 }
 
-TEST_CASE("values: assignment copies; changing a never changes b") {
+TEST_CASE("values: assignment copies, so changing a never changes b") {
     CHECK(run("a = vec3(1, 2, 3)\nb = a\na = a * 2\nprint(a, b)\n").out ==
           "vec3(2.0, 4.0, 6.0) vec3(1.0, 2.0, 3.0)\n");
     CHECK(run("a = [1, 2]\nb = a\na = [a, 3]\nprint(a, b)\n").out == "[[1, 2], 3] [1, 2]\n");
@@ -240,7 +240,7 @@ TEST_CASE("values: assignment copies; changing a never changes b") {
     CHECK(run("s = \"x\"\nt2 = s\ns = s + \"y\"\nprint(s, t2)\n").out == "xy x\n");
 }
 
-TEST_CASE("values: lists are values; a macro cannot change its caller's list") {
+TEST_CASE("values: lists are values, so a macro cannot change its caller's list") {
     Run r = run("l = [1, 2]\n"
                 "m = Macro (x) { x = [x, 0]\n x }\n"
                 "r = m(l)\n"
