@@ -210,7 +210,6 @@ void Interpreter::draw(const Value& value, const Node* where) {
                                            "limit with --max-entities",
                                            options_.limits.maxEntities));
         }
-        markUsed(static_cast<int32_t>(value.index));
         scene_.drawn.push_back(static_cast<int32_t>(value.index));
         return;
     case ValueKind::List:
@@ -446,7 +445,7 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
         solid = solid && scene_.entities[member.index].solid;
     }
     tracer::EntityDesc entity{std::move(group), -1, solid, span(site->range)};
-    int32_t index = addEntity(std::move(entity), EntityInfo{ObjectType::Count, site->range, false, false, false});
+    int32_t index = addEntity(std::move(entity), EntityInfo{ObjectType::Count, site->range, false});
     return Value::object(ValueKind::Entity, ObjectType::Count, static_cast<uint32_t>(index));
 }
 

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <set>
+#include <tuple>
 #include <filesystem>
 #include <compare>
 #include <span>
@@ -22,8 +24,6 @@ struct EntityInfo {
     ObjectType type = ObjectType::Count; ///< Count for CSG, transforms and groups
     SourceRange range{};
     bool literal = false; ///< built by an object literal (so "never drawn" is worth saying)
-    bool used = false;
-    bool zeroSize = false;
 };
 
 struct LightInfo {
@@ -97,7 +97,8 @@ private:
     Value evalObject(const ObjectExpr* node);
     int32_t defaultMaterial();
     int32_t addEntity(tracer::EntityDesc entity, EntityInfo info);
-    void markUsed(int32_t entity);
+    /// A warning reported once per construct, however often evaluation passes it.
+    void warnOnce(WarningKind kind, SourceRange where, std::string message);
 
     // the end (scene_assembly.cpp)
     void assembleScene();
@@ -138,6 +139,8 @@ private:
     // scene under construction
     tracer::SceneDesc scene_;
     std::vector<EntityInfo> entityInfo_;
+    std::vector<bool> reachable_; ///< per entity: drawn, or part of something drawn
+    std::set<std::tuple<WarningKind, uint32_t, uint32_t>> warnedOnce_;
     std::vector<tracer::LightDesc> lights_;
     std::vector<LightInfo> lightInfo_;
     std::vector<tracer::CameraDesc> cameras_;

@@ -315,12 +315,9 @@ int32_t Interpreter::addEntity(tracer::EntityDesc entity, EntityInfo info) {
     return static_cast<int32_t>(scene_.entities.size() - 1);
 }
 
-void Interpreter::markUsed(int32_t entity) {
-    // Members of a group or operands are marked when the group or CSG node is made, so
-    // only this node needs the flag.
-    entityInfo_[static_cast<size_t>(entity)].used = true;
-    if (auto* group = std::get_if<tracer::GroupNode>(&scene_.entities[static_cast<size_t>(entity)].shape)) {
-        for (int32_t member : group->members) entityInfo_[static_cast<size_t>(member)].used = true;
+void Interpreter::warnOnce(WarningKind kind, SourceRange where, std::string message) {
+    if (warnedOnce_.emplace(kind, where.file, where.begin).second) {
+        diagnostics_.warning(kind, where, std::move(message));
     }
 }
 
@@ -386,10 +383,11 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
     auto entity = [&](tracer::Shape shape, bool zeroSize) {
         int32_t material = b.get("material") ? static_cast<int32_t>(b.get("material")->index) : defaultMaterial();
         int32_t index = addEntity(tracer::EntityDesc{std::move(shape), material, info.solid, span(node->range)},
-                                  EntityInfo{node->type, node->range, true, false, zeroSize});
+                                  EntityInfo{node->type, node->range, true});
+        // An animated script (one reading t or clock) often starts from zero size.
         if (zeroSize && !animated_) {
-            diagnostics_.warning(WarningKind::ZeroSizeEntity, node->typeRange,
-                                 fmt::format("this {} has zero size and draws nothing", info.name));
+            warnOnce(WarningKind::ZeroSizeEntity, node->typeRange,
+                     fmt::format("this {} has zero size and draws nothing", info.name));
         }
         return Value::object(ValueKind::Entity, node->type, static_cast<uint32_t>(index));
     };
@@ -401,7 +399,8 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
     }
     case ObjectType::Box: {
         glm::dvec3 a = b.vec("cornerA"), c = b.vec("cornerB");
-        if (a == c) fail(b.where("cornerB"), "the corners of this Box are the same point");
+        // Identical corners are a mistake, except in an animation growing a box from a point.
+        if (a == c && !animated_) fail(b.where("cornerB"), "the corners of this Box are the same point");
         bool zero = a.x == c.x || a.y == c.y || a.z == c.z;
         return entity(tracer::BoxShape{a, c}, zero);
     }
@@ -440,17 +439,13 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
                       zero || b.number("hole", 0) == b.number("radius", 0));
     }
     case ObjectType::Quad: {
-        if (glm::length(glm::cross(b.vec("edgeA"), b.vec("edgeB"))) == 0) {
-            fail(b.where("edgeB"), "the edges of this Quad are parallel or zero; it has no area");
-        }
-        return entity(tracer::QuadShape{b.vec("corner"), b.vec("edgeA"), b.vec("edgeB")}, false);
+        bool zero = glm::length(glm::cross(b.vec("edgeA"), b.vec("edgeB"))) == 0;
+        return entity(tracer::QuadShape{b.vec("corner"), b.vec("edgeA"), b.vec("edgeB")}, zero);
     }
     case ObjectType::Triangle: {
         glm::dvec3 p = b.vec("a"), q = b.vec("b"), r = b.vec("c");
-        if (glm::length(glm::cross(q - p, r - p)) == 0) {
-            fail(node->typeRange, "the corners of this Triangle are on one line; it has no area");
-        }
-        return entity(tracer::TriangleShape{p, q, r}, false);
+        bool zero = glm::length(glm::cross(q - p, r - p)) == 0;
+        return entity(tracer::TriangleShape{p, q, r}, zero);
     }
     case ObjectType::Mesh: {
         std::string resolved = resolveFile("file", "mesh");

@@ -397,10 +397,8 @@ Value Interpreter::csg(BinaryOp op, const Value& left, const Value& right, const
                                    : tracer::CsgOp::Intersection;
     csg.left = static_cast<int32_t>(left.index);
     csg.right = static_cast<int32_t>(right.index);
-    markUsed(csg.left);
-    markUsed(csg.right);
     int32_t index = addEntity(tracer::EntityDesc{csg, -1, true, span(node->range)},
-                              EntityInfo{ObjectType::Count, node->range, false, false, false});
+                              EntityInfo{ObjectType::Count, node->range, false});
     return Value::object(ValueKind::Entity, ObjectType::Count, static_cast<uint32_t>(index));
 }
 
@@ -452,11 +450,10 @@ Value Interpreter::evalModify(const ModifyExpr* node) {
         modifiers = std::move(combined);
         child = inner->child;
     }
-    markUsed(static_cast<int32_t>(target.index));
     bool solid = scene_.entities[static_cast<size_t>(child)].solid;
     int32_t index = addEntity(tracer::EntityDesc{tracer::TransformNode{child, std::move(modifiers)}, -1,
                                                  solid, span(node->range)},
-                              EntityInfo{target.objectType, node->range, false, false, false});
+                              EntityInfo{target.objectType, node->range, false});
     return Value::object(ValueKind::Entity, target.objectType, static_cast<uint32_t>(index));
 }
 

@@ -5,6 +5,7 @@
 #include "builtins.hpp"
 
 #include <algorithm>
+#include <map>
 
 namespace crt::lang {
 
@@ -134,6 +135,7 @@ void Interpreter::assembleScene() {
             if (t >= 0) keepTexture[static_cast<size_t>(t)] = true;
         }
     }
+    reachable_ = keepEntity;
     std::vector<int32_t> entityMap = compact(scene_.entities, keepEntity);
     std::vector<int32_t> materialMap = compact(scene_.materials, keepMaterial);
     std::vector<int32_t> textureMap = compact(scene_.textures, keepTexture);
@@ -163,23 +165,36 @@ void Interpreter::reportUnused() {
                                  fmt::format("variable '{}' is assigned but never used", entry.name));
         }
     }
-    // One warning per literal, however many times a macro ran it.
-    std::vector<uint32_t> reported;
-    for (const EntityInfo& info : entityInfo_) {
-        if (info.literal && !info.used && info.range.file == 0 &&
-            std::find(reported.begin(), reported.end(), info.range.begin) == reported.end()) {
-            reported.push_back(info.range.begin);
-            diagnostics_.warning(WarningKind::EntityNeverDrawn, info.range,
-                                 fmt::format("this {} is defined but never drawn nor used",
-                                             objectInfo(info.type).name));
-        }
+    // A literal run many times (in a loop or a macro) is used if any of its values is:
+    // one warning per literal of the main script, in source order.
+    std::map<uint32_t, std::pair<bool, ObjectType>> entityLiterals;
+    for (size_t i = 0; i < entityInfo_.size(); ++i) {
+        const EntityInfo& info = entityInfo_[i];
+        if (!info.literal || info.range.file != 0) continue;
+        auto& [used, type] = entityLiterals.try_emplace(info.range.begin, false, info.type).first->second;
+        used = used || reachable_[i];
     }
+    for (const auto& [begin, literal] : entityLiterals) {
+        if (literal.first) continue;
+        const EntityInfo& info = *std::find_if(entityInfo_.begin(), entityInfo_.end(), [&](const EntityInfo& e) {
+            return e.literal && e.range.file == 0 && e.range.begin == begin;
+        });
+        diagnostics_.warning(WarningKind::EntityNeverDrawn, info.range,
+                             fmt::format("this {} is defined but never drawn nor used",
+                                         objectInfo(literal.second).name));
+    }
+    std::map<uint32_t, const LightInfo*> lightLiterals;
+    std::map<uint32_t, bool> lightListed;
     for (const LightInfo& info : lightInfo_) {
-        if (!info.listed && info.range.file == 0) {
-            diagnostics_.warning(WarningKind::UnusedLight, info.range,
-                                 fmt::format("this {} does not shine: it is not in Settings.lights",
-                                             objectInfo(info.type).name));
-        }
+        if (info.range.file != 0) continue;
+        lightLiterals.try_emplace(info.range.begin, &info);
+        lightListed[info.range.begin] = lightListed[info.range.begin] || info.listed;
+    }
+    for (const auto& [begin, info] : lightLiterals) {
+        if (lightListed[begin]) continue;
+        diagnostics_.warning(WarningKind::UnusedLight, info->range,
+                             fmt::format("this {} does not shine: it is not in Settings.lights",
+                                         objectInfo(info->type).name));
     }
     if (scene_.drawn.empty()) {
         diagnostics_.warning(WarningKind::EmptyScene, {0, 0, 0},
