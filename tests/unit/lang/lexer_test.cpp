@@ -322,8 +322,7 @@ TEST_CASE("lexer: any other '<' is less-than") {
     CHECK(lex("a < (scale)").kinds().at(1) == K::Less);
 }
 
-TEST_CASE("lexer: a '<' directly after another '<' is still decided by its next token",
-          "[!mayfail]") {
+TEST_CASE("lexer: a '<' directly after another '<' is still decided by its next token") {
     // The lookahead token of the first '<' is itself a '<' followed by 'scale'.
     CHECK(lex("a < <scale 2>").kinds() ==
           std::vector<K>{K::Identifier, K::Less, K::ModifierOpen, K::KwScale, K::Integer,
