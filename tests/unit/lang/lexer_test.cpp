@@ -246,7 +246,7 @@ TEST_CASE("lexer: comments are only reported to the collector") {
 
 TEST_CASE("lexer: a comment hides everything up to the line end") {
     // Spec §1: '--' to the end of the line, always; a stray NUL byte in a comment must not
-    // end it (today the rest of the comment is lexed as code after an error).
+    // end it.
     Lexed l = lex(std::string("-- note\0 a b\nz", 14));
     CHECK(l.texts() == std::vector<std::string>{"z"});
 }

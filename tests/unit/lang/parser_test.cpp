@@ -448,9 +448,8 @@ TEST_CASE("parser: three independent syntax errors give three diagnostics") {
 }
 
 TEST_CASE("parser: errors on consecutive lines are each reported") {
-    // Each line is an independent mistake (spec §2: one diagnostic per mistake), but only the
-    // first is reported today: Bison suppresses errors until three tokens have been shifted
-    // after a recovery.
+    // Each line is an independent mistake (spec §2: one diagnostic per mistake), even though
+    // Bison on its own would stay silent until three tokens are shifted after a recovery.
     auto p = parseText("a = )\nb = )\nc = )\nd = 1\n");
     CHECK(p->errorCount() == 3);
     REQUIRE_FALSE(p->script.items.empty());
@@ -587,7 +586,7 @@ TEST_CASE("parser: every node's range covers exactly its source text") {
 }
 
 TEST_CASE("parser: a binary node's range covers parenthesised operands") {
-    // The range of '(a + b) * c' starts at 'a' today, so it covers "a + b) * c".
+    // The range of '(a + b) * c' includes the parentheses, not just "a + b) * c".
     auto p = parseOk("x = (a + b) * c\ny = a * (b + c)\nz = (a) + (b)");
     CHECK(textsOf(*p, NodeKind::Binary) ==
           std::vector<std::string>{"(a + b) * c", "a + b", "a * (b + c)", "b + c", "(a) + (b)"});
