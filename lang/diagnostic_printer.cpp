@@ -46,10 +46,27 @@ void appendSnippet(std::string& out, const SourceFile& file, SourceRange range,
                                                              std::min(range.end, lineEnd) -
                                                                  std::min(range.begin, lineEnd)))
                          : 0;
-    out += fmt::format("    {}\n    ", line);
-    // Tabs in the prefix are copied so the caret lines up in a terminal.
+    // A very long line (generated code) is shown as a window around the caret.
     uint32_t lineBegin = file.lineStart(start.line);
-    std::string_view prefix = line.substr(0, std::min<uint32_t>(range.begin, lineEnd) - lineBegin);
+    constexpr uint32_t kWindow = 120;
+    std::string_view shown = line;
+    std::string_view lead, trail;
+    uint32_t caretByte = std::min<uint32_t>(range.begin, lineEnd) - lineBegin;
+    if (line.size() > 2 * kWindow) {
+        uint32_t from = caretByte > kWindow / 2 ? caretByte - kWindow / 2 : 0;
+        while (from > 0 && (static_cast<unsigned char>(line[from]) & 0xC0) == 0x80) --from;
+        uint32_t to = std::min<uint32_t>(static_cast<uint32_t>(line.size()), from + kWindow);
+        while (to < line.size() && (static_cast<unsigned char>(line[to]) & 0xC0) == 0x80) ++to;
+        shown = line.substr(from, to - from);
+        lead = from > 0 ? "..." : "";
+        trail = to < line.size() ? "..." : "";
+        lineBegin += from;
+        caretByte -= from;
+        width = std::min(width, to - caretByte - from);
+    }
+    out += fmt::format("    {}{}{}\n    {}", lead, shown, trail, std::string(lead.size(), ' '));
+    // Tabs in the prefix are copied so the caret lines up in a terminal.
+    std::string_view prefix = shown.substr(0, caretByte);
     uint32_t column = 1;
     for (char c : prefix) {
         if ((static_cast<unsigned char>(c) & 0xC0) == 0x80) continue; // continuation byte

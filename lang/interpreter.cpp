@@ -2,6 +2,7 @@
 #include "interpreter_impl.hpp"
 
 #include "builtins.hpp"
+#include "large_stack.hpp"
 #include "parser.hpp"
 
 #include <filesystem>
@@ -455,9 +456,11 @@ Compilation compile(std::string path, std::string text, const EvalOptions& optio
                     bool evaluate) {
     Compilation c;
     c.sources.add(std::move(path), std::move(text));
-    c.main = parse(c.sources.file(0), 0, *c.arena, c.diagnostics, &c.comments);
-    if (c.diagnostics.hasErrors()) return c; // a script with syntax errors is not evaluated
-    Interpreter(c, options).run(evaluate);
+    runOnLargeStack([&] {
+        c.main = parse(c.sources.file(0), 0, *c.arena, c.diagnostics, &c.comments);
+        if (c.diagnostics.hasErrors()) return; // a script with syntax errors is not evaluated
+        Interpreter(c, options).run(evaluate);
+    });
     return c;
 }
 

@@ -2,6 +2,7 @@
 #include "ast_dump.hpp"
 #include "diagnostic_printer.hpp"
 #include "interpreter.hpp"
+#include "large_stack.hpp"
 #include "options.hpp"
 #include "scene_json.hpp"
 
@@ -62,9 +63,15 @@ int main(int argc, char** argv) {
     }
     std::string text = buffer.str();
 
+    // The dumps own standard output: print() goes to standard error beside them.
+    if (options.mode == driver::Mode::DumpAst || options.mode == driver::Mode::DumpScene) {
+        options.eval.printOut = &std::cerr;
+    }
     if (options.mode == driver::Mode::DumpAst) {
         Compilation c = compile(options.script, text, options.eval, false);
-        std::cout << dumpAst(c.main, c.sources.file(0));
+        std::string dump;
+        runOnLargeStack([&] { dump = dumpAst(c.main, c.sources.file(0)); });
+        std::cout << dump;
         return report(c, options) ? 1 : 0;
     }
 

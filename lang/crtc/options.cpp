@@ -39,6 +39,8 @@ exit status: 0 success, 1 errors in the script, 2 bad usage or I/O failure
 
 namespace {
 
+constexpr uint32_t kMaxSupportedDepth = 200'000;
+
 template <typename T> bool parseNumber(std::string_view text, T& out) {
     auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), out);
     return error == std::errc() && end == text.data() + text.size();
@@ -104,6 +106,10 @@ ParsedOptions parseOptions(int argc, char** argv) {
             if (!value(v) || !parseNumber(v, o.eval.limits.maxSteps)) return bad("--max-steps needs a non-negative integer");
         } else if (arg == "--max-depth") {
             if (!value(v) || !parseNumber(v, o.eval.limits.maxDepth)) return bad("--max-depth needs a non-negative integer");
+            // Each nested call takes about 2 KB of the front end's 1 GB stack.
+            if (o.eval.limits.maxDepth > kMaxSupportedDepth) {
+                return bad(fmt::format("--max-depth above {} is not supported", kMaxSupportedDepth));
+            }
         } else if (arg == "--max-entities") {
             if (!value(v) || !parseNumber(v, o.eval.limits.maxEntities)) return bad("--max-entities needs a non-negative integer");
         } else if (arg == "--max-size") {
