@@ -16,8 +16,15 @@ namespace crt::lang {
 /// A list under construction: `count` items from `start` in one of ParseContext's scratch
 /// stacks. Lists nest, so each kind of list shares one stack, used last-in first-out.
 struct ListMark {
-    uint32_t start = 0;
-    uint32_t count = 0;
+    uint32_t start;
+    uint32_t count;
+};
+
+/// A token's text as the parser's semantic value (a plain pair, unlike string_view).
+struct TextRef {
+    const char* data;
+    uint32_t size;
+    operator std::string_view() const { return {data, size}; }
 };
 
 struct ParseContext {

@@ -132,12 +132,14 @@ bool parseFloat(std::string_view text, double& value) {
 
 namespace grammar {
 
-Parser::symbol_type yylex(ParseContext& ctx) {
+int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseContext& ctx) {
+    using T = Parser::token;
     if (ctx.recovering) {
         ctx.recovering = false;
         if (ctx.queued.empty()) ctx.queued.push_back(ctx.nextToken());
         uint32_t at = ctx.queued.front().begin;
-        return Parser::make_RECOVERED(ctx.range(at, at));
+        *location = ctx.range(at, at);
+        return T::TOK_RECOVERED;
     }
     Token token;
     if (!ctx.queued.empty()) {
@@ -147,77 +149,78 @@ Parser::symbol_type yylex(ParseContext& ctx) {
         token = ctx.nextToken();
     }
     ctx.lastToken = token;
-    SourceRange where = ctx.range(token.begin, token.end);
+    *location = ctx.range(token.begin, token.end);
+    auto text = [&](std::string_view s) {
+        value->text = TextRef{s.data(), static_cast<uint32_t>(s.size())};
+    };
     switch (token.kind) {
-    case TokenKind::EndOfFile: return Parser::make_END(where);
-    case TokenKind::Identifier: return Parser::make_IDENT(ctx.text(token), where);
-    case TokenKind::Name: return Parser::make_NAME(ctx.text(token), where);
+    case TokenKind::EndOfFile: return T::TOK_END;
+    case TokenKind::Identifier: text(ctx.text(token)); return T::TOK_IDENT;
+    case TokenKind::Name: text(ctx.text(token)); return T::TOK_NAME;
     case TokenKind::Integer: {
-        std::string_view text = ctx.text(token);
-        int64_t value = 0;
-        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        std::string_view digits = ctx.text(token);
+        value->integer = 0;
+        auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value->integer);
         if (error != std::errc()) {
-            ctx.diagnostics.error(where, "integer literal does not fit in 64 bits; write it "
-                                         "as a float");
+            ctx.diagnostics.error(*location, "integer literal does not fit in 64 bits; write it "
+                                             "as a float");
         }
-        return Parser::make_INT(value, where);
+        return T::TOK_INT;
     }
-    case TokenKind::Float: {
-        std::string_view text = ctx.text(token);
-        double value = 0;
-        if (!parseFloat(text, value)) {
-            ctx.diagnostics.error(where, "float literal is out of range");
+    case TokenKind::Float:
+        value->number = 0;
+        if (!parseFloat(ctx.text(token), value->number)) {
+            ctx.diagnostics.error(*location, "float literal is out of range");
         }
-        return Parser::make_FLOAT(value, where);
-    }
-    case TokenKind::Invalid: return Parser::make_FLOAT(0.0, where); // reported by the lexer
-    case TokenKind::String: return Parser::make_STRING(ctx.decodeString(token), where);
-    case TokenKind::KwSettings: return Parser::make_SETTINGS(where);
-    case TokenKind::KwScene: return Parser::make_SCENE(where);
-    case TokenKind::KwMacro: return Parser::make_MACRO(where);
-    case TokenKind::KwScale: return Parser::make_SCALE(where);
-    case TokenKind::KwTranslate: return Parser::make_TRANSLATE(where);
-    case TokenKind::KwRotate: return Parser::make_ROTATE(where);
-    case TokenKind::KwTrue: return Parser::make_TRUE(where);
-    case TokenKind::KwFalse: return Parser::make_FALSE(where);
-    case TokenKind::KwWhile: return Parser::make_WHILE(where);
-    case TokenKind::KwFor: return Parser::make_FOR(where);
-    case TokenKind::KwIn: return Parser::make_IN(where);
-    case TokenKind::KwIf: return Parser::make_IF(where);
-    case TokenKind::KwElse: return Parser::make_ELSE(where);
-    case TokenKind::KwInclude: return Parser::make_INCLUDE(where);
-    case TokenKind::LParen: return Parser::make_LPAREN(where);
-    case TokenKind::LParenLine: return Parser::make_LPAREN_LINE(where);
-    case TokenKind::RParen: return Parser::make_RPAREN(where);
-    case TokenKind::LBrace: return Parser::make_LBRACE(where);
-    case TokenKind::RBrace: return Parser::make_RBRACE(where);
-    case TokenKind::LBracket: return Parser::make_LBRACKET(where);
-    case TokenKind::LBracketLine: return Parser::make_LBRACKET_LINE(where);
-    case TokenKind::RBracket: return Parser::make_RBRACKET(where);
-    case TokenKind::Comma: return Parser::make_COMMA(where);
-    case TokenKind::Arrow: return Parser::make_ARROW(where);
-    case TokenKind::Assign: return Parser::make_ASSIGN(where);
-    case TokenKind::Plus: return Parser::make_PLUS(where);
-    case TokenKind::Minus: return Parser::make_MINUS(where);
-    case TokenKind::Caret: return Parser::make_CARET(where);
-    case TokenKind::Star: return Parser::make_STAR(where);
-    case TokenKind::Slash: return Parser::make_SLASH(where);
-    case TokenKind::Percent: return Parser::make_PERCENT(where);
-    case TokenKind::Bang: return Parser::make_BANG(where);
-    case TokenKind::Less: return Parser::make_LT(where);
-    case TokenKind::ModifierOpen: return Parser::make_MOD_OPEN(where);
-    case TokenKind::Greater: return Parser::make_GT(where);
-    case TokenKind::LessEqual: return Parser::make_LE(where);
-    case TokenKind::GreaterEqual: return Parser::make_GE(where);
-    case TokenKind::EqualEqual: return Parser::make_EQ(where);
-    case TokenKind::NotEqual: return Parser::make_NE(where);
-    case TokenKind::AndAnd: return Parser::make_AND(where);
-    case TokenKind::OrOr: return Parser::make_OR(where);
-    case TokenKind::Question: return Parser::make_QUESTION(where);
-    case TokenKind::Colon: return Parser::make_COLON(where);
+        return T::TOK_FLOAT;
+    case TokenKind::Invalid: value->number = 0; return T::TOK_FLOAT; // reported by the lexer
+    case TokenKind::String: text(ctx.decodeString(token)); return T::TOK_STRING;
+    case TokenKind::KwSettings: return T::TOK_SETTINGS;
+    case TokenKind::KwScene: return T::TOK_SCENE;
+    case TokenKind::KwMacro: return T::TOK_MACRO;
+    case TokenKind::KwScale: return T::TOK_SCALE;
+    case TokenKind::KwTranslate: return T::TOK_TRANSLATE;
+    case TokenKind::KwRotate: return T::TOK_ROTATE;
+    case TokenKind::KwTrue: return T::TOK_TRUE;
+    case TokenKind::KwFalse: return T::TOK_FALSE;
+    case TokenKind::KwWhile: return T::TOK_WHILE;
+    case TokenKind::KwFor: return T::TOK_FOR;
+    case TokenKind::KwIn: return T::TOK_IN;
+    case TokenKind::KwIf: return T::TOK_IF;
+    case TokenKind::KwElse: return T::TOK_ELSE;
+    case TokenKind::KwInclude: return T::TOK_INCLUDE;
+    case TokenKind::LParen: return T::TOK_LPAREN;
+    case TokenKind::LParenLine: return T::TOK_LPAREN_LINE;
+    case TokenKind::RParen: return T::TOK_RPAREN;
+    case TokenKind::LBrace: return T::TOK_LBRACE;
+    case TokenKind::RBrace: return T::TOK_RBRACE;
+    case TokenKind::LBracket: return T::TOK_LBRACKET;
+    case TokenKind::LBracketLine: return T::TOK_LBRACKET_LINE;
+    case TokenKind::RBracket: return T::TOK_RBRACKET;
+    case TokenKind::Comma: return T::TOK_COMMA;
+    case TokenKind::Arrow: return T::TOK_ARROW;
+    case TokenKind::Assign: return T::TOK_ASSIGN;
+    case TokenKind::Plus: return T::TOK_PLUS;
+    case TokenKind::Minus: return T::TOK_MINUS;
+    case TokenKind::Caret: return T::TOK_CARET;
+    case TokenKind::Star: return T::TOK_STAR;
+    case TokenKind::Slash: return T::TOK_SLASH;
+    case TokenKind::Percent: return T::TOK_PERCENT;
+    case TokenKind::Bang: return T::TOK_BANG;
+    case TokenKind::Less: return T::TOK_LT;
+    case TokenKind::ModifierOpen: return T::TOK_MOD_OPEN;
+    case TokenKind::Greater: return T::TOK_GT;
+    case TokenKind::LessEqual: return T::TOK_LE;
+    case TokenKind::GreaterEqual: return T::TOK_GE;
+    case TokenKind::EqualEqual: return T::TOK_EQ;
+    case TokenKind::NotEqual: return T::TOK_NE;
+    case TokenKind::AndAnd: return T::TOK_AND;
+    case TokenKind::OrOr: return T::TOK_OR;
+    case TokenKind::Question: return T::TOK_QUESTION;
+    case TokenKind::Colon: return T::TOK_COLON;
     case TokenKind::Comment: break;
     }
-    return Parser::make_END(where);
+    return T::TOK_END;
 }
 
 void Parser::error(const location_type& where, const std::string& message) {

@@ -8,7 +8,7 @@
 
 namespace crt::lang::grammar {
 
-Parser::symbol_type yylex(ParseContext& ctx);
+int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseContext& ctx);
 
 inline Expr* makeBinary(ParseContext& ctx, BinaryOp op, Expr* left, SourceRange opRange,
                         Expr* right, SourceRange whole) {
