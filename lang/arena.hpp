@@ -22,7 +22,7 @@ public:
         size_t offset = (used_ + align - 1) & ~(align - 1);
         if (chunks_.empty() || offset + size > capacity_) {
             capacity_ = std::max(kChunkSize, size + align);
-            chunks_.push_back(std::make_unique<std::byte[]>(capacity_));
+            chunks_.push_back(std::unique_ptr<std::byte[]>(new std::byte[capacity_])); // not zeroed
             offset = 0;
             used_ = 0;
         }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <map>
+#include <unordered_map>
 
 namespace crt::lang {
 
@@ -167,21 +168,26 @@ void Interpreter::reportUnused() {
     }
     // A literal run many times (in a loop or a macro) is used if any of its values is:
     // one warning per literal of the main script, in source order.
-    std::map<uint32_t, std::pair<bool, ObjectType>> entityLiterals;
+    std::unordered_map<uint32_t, bool> literalUsed;
+    literalUsed.reserve(entityInfo_.size());
     for (size_t i = 0; i < entityInfo_.size(); ++i) {
         const EntityInfo& info = entityInfo_[i];
-        if (!info.literal || info.range.file != 0) continue;
-        auto& [used, type] = entityLiterals.try_emplace(info.range.begin, false, info.type).first->second;
-        used = used || reachable_[i];
+        if (info.literal && info.range.file == 0) literalUsed[info.range.begin] |= reachable_[i];
     }
-    for (const auto& [begin, literal] : entityLiterals) {
-        if (literal.first) continue;
-        const EntityInfo& info = *std::find_if(entityInfo_.begin(), entityInfo_.end(), [&](const EntityInfo& e) {
-            return e.literal && e.range.file == 0 && e.range.begin == begin;
-        });
-        diagnostics_.warning(WarningKind::EntityNeverDrawn, info.range,
+    std::vector<const EntityInfo*> unused;
+    for (const EntityInfo& info : entityInfo_) {
+        if (!info.literal || info.range.file != 0) continue;
+        bool& used = literalUsed[info.range.begin];
+        if (used) continue;
+        used = true; // report each literal once
+        unused.push_back(&info);
+    }
+    std::sort(unused.begin(), unused.end(),
+              [](const EntityInfo* a, const EntityInfo* b) { return a->range.begin < b->range.begin; });
+    for (const EntityInfo* info : unused) {
+        diagnostics_.warning(WarningKind::EntityNeverDrawn, info->range,
                              fmt::format("this {} is defined but never drawn nor used",
-                                         objectInfo(literal.second).name));
+                                         objectInfo(info->type).name));
     }
     std::map<uint32_t, const LightInfo*> lightLiterals;
     std::map<uint32_t, bool> lightListed;
