@@ -55,7 +55,12 @@ std::string Interpreter::str(const Value& value) const {
     case ValueKind::Entity: {
         where = scene_.entities[value.index].source;
         if (value.objectType == ObjectType::Count) {
-            const tracer::Shape& shape = scene_.entities[value.index].shape;
+            // A moved CSG result or group is named after what was moved.
+            const tracer::Shape* moved = &scene_.entities[value.index].shape;
+            while (auto* transform = std::get_if<tracer::TransformNode>(moved)) {
+                moved = &scene_.entities[static_cast<size_t>(transform->child)].shape;
+            }
+            const tracer::Shape& shape = *moved;
             if (auto* csg = std::get_if<tracer::CsgNode>(&shape)) {
                 type = csg->op == tracer::CsgOp::Union        ? "Union"
                        : csg->op == tracer::CsgOp::Difference ? "Difference"
@@ -131,13 +136,16 @@ Value fromVector(glm::dvec3 v) { return Value::vec3(v.x, v.y, v.z); }
     }
 
 Value b_vec3(BuiltinCall& call) {
-    return Value::vec3(number(call, 0), number(call, 1), number(call, 2));
+    double x = number(call, 0), y = number(call, 1), z = number(call, 2);
+    return Value::vec3(x, y, z);
 }
 Value b_rgb(BuiltinCall& call) {
-    return Value::colour(number(call, 0), number(call, 1), number(call, 2));
+    double r = number(call, 0), g = number(call, 1), b = number(call, 2);
+    return Value::colour(r, g, b);
 }
 Value b_rgba(BuiltinCall& call) {
-    return Value::colour(number(call, 0), number(call, 1), number(call, 2), number(call, 3));
+    double r = number(call, 0), g = number(call, 1), b = number(call, 2), a = number(call, 3);
+    return Value::colour(r, g, b, a);
 }
 MATH1(b_sin, std::sin(x))
 MATH1(b_cos, std::cos(x))
@@ -167,11 +175,18 @@ Value b_log(BuiltinCall& call) {
     if (x <= 0) call.interpreter.fail(call.site->range, "log of a number that is not positive");
     return Value::number(std::log(x));
 }
-Value b_atan2(BuiltinCall& call) { return Value::number(std::atan2(number(call, 0), number(call, 1))); }
-Value b_pow(BuiltinCall& call) { return checked(call, std::pow(number(call, 0), number(call, 1)), "pow"); }
+Value b_atan2(BuiltinCall& call) {
+    double y = number(call, 0);
+    return Value::number(std::atan2(y, number(call, 1)));
+}
+Value b_pow(BuiltinCall& call) {
+    double x = number(call, 0);
+    return checked(call, std::pow(x, number(call, 1)), "pow");
+}
 
 Value b_rand(BuiltinCall& call) {
-    double a = number(call, 0), b = number(call, 1);
+    double a = number(call, 0);
+    double b = number(call, 1);
     double u = static_cast<double>(call.interpreter.nextRandom() >> 11) * 0x1.0p-53;
     return Value::number(std::min(a, b) + u * std::abs(b - a));
 }
@@ -201,7 +216,9 @@ Value b_min(BuiltinCall& call) { return minMax(call, false); }
 Value b_max(BuiltinCall& call) { return minMax(call, true); }
 
 Value b_clamp(BuiltinCall& call) {
-    double x = number(call, 0), lo = number(call, 1), hi = number(call, 2);
+    double x = number(call, 0);
+    double lo = number(call, 1);
+    double hi = number(call, 2);
     if (lo > hi) call.interpreter.fail(call.site->range, "clamp: the lower bound is above the upper bound");
     if (allInts(call)) return Value::integer(std::clamp(call.args[0].i, call.args[1].i, call.args[2].i));
     return Value::number(std::clamp(x, lo, hi));
@@ -233,8 +250,15 @@ Value b_normalize(BuiltinCall& call) {
     if (length == 0 || !std::isfinite(length)) call.interpreter.fail(call.site->range, "normalize of a zero vector");
     return fromVector(v / length);
 }
-Value b_dot(BuiltinCall& call) { return Value::number(glm::dot(vector(call, 0), vector(call, 1))); }
-Value b_cross(BuiltinCall& call) { return fromVector(glm::cross(vector(call, 0), vector(call, 1))); }
+// Arguments are read one statement at a time, so the first bad one is the one reported.
+Value b_dot(BuiltinCall& call) {
+    glm::dvec3 a = vector(call, 0);
+    return Value::number(glm::dot(a, vector(call, 1)));
+}
+Value b_cross(BuiltinCall& call) {
+    glm::dvec3 a = vector(call, 0);
+    return fromVector(glm::cross(a, vector(call, 1)));
+}
 
 Value b_len(BuiltinCall& call) {
     const Value& v = call.args[0];

@@ -118,8 +118,12 @@ std::string formatDiagnostic(const SourceManager& sources, const Diagnostic& dia
     appendHeader(out, sources, diagnostic.range, diagnostic.severity, diagnostic.message,
                  options);
     if (known && options.sourceLines) {
-        const std::string* replacement =
-            diagnostic.fixits.empty() ? nullptr : &diagnostic.fixits.front().replacement;
+        // A replacement is shown under the caret only when it applies right there.
+        const std::string* replacement = nullptr;
+        if (!diagnostic.fixits.empty() && diagnostic.fixits.front().range.begin == diagnostic.range.begin &&
+            !diagnostic.fixits.front().replacement.empty()) {
+            replacement = &diagnostic.fixits.front().replacement;
+        }
         appendSnippet(out, sources.file(diagnostic.range.file), diagnostic.range, options,
                       replacement);
     }

@@ -226,7 +226,7 @@ void Interpreter::draw(const Value& value, const Node* where) {
     case ValueKind::None:
     case ValueKind::Unset: return;
     default:
-        diagnostics_.warning(WarningKind::ValueNotDrawn, where->range,
+        warnOnce(WarningKind::ValueNotDrawn, where->range,
                              fmt::format("this {} is not drawn; only entities are",
                                          typeName(value)));
         return;

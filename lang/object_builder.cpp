@@ -341,6 +341,7 @@ std::string findAsset(const std::string& name, const std::string& scriptPath,
         if (!assetRoots.empty()) {
             for (const std::string& root : assetRoots) roots.push_back(fs::absolute(root, error));
         } else {
+            if (!scriptDir.has_filename()) scriptDir = scriptDir.parent_path(); // "/dir/" -> "/dir"
             for (fs::path dir = scriptDir;; dir = dir.parent_path()) {
                 roots.push_back(dir);
                 if (dir == dir.parent_path()) break;

@@ -241,9 +241,10 @@ void Parser::report_syntax_error(const context& yyctx) const {
     default: foundText = std::string(tokenDescription(found.kind)); break;
     }
 
+    // Ask for every expected token (a statement list allows many), list a few.
     constexpr int kMaxExpected = 8;
-    symbol_kind_type expected[kMaxExpected];
-    int count = yyctx.expected_tokens(expected, kMaxExpected);
+    symbol_kind_type expected[YYNTOKENS];
+    int count = yyctx.expected_tokens(expected, YYNTOKENS);
     // Line-start brackets are the same character to a reader: name each once.
     std::vector<symbol_kind_type> names;
     for (int i = 0; i < count; ++i) {
@@ -281,6 +282,9 @@ void Parser::report_syntax_error(const context& yyctx) const {
     if (found.begin != ctx.lastResumedAt && found.atLineStart && topLevelKeyword && expectsBrace) {
         ctx.lastResumedAt = found.begin;
         ctx.queued = {Token{TokenKind::RBrace, found.begin, found.begin, false}, found};
+        if (!ctx.diagnostics.items().empty() && ctx.lastReportedAt == found.begin) {
+            ctx.diagnostics.items().back().message += "; is a '}' missing before it?";
+        }
         ctx.skipping = false;
     } else if (isResumePoint(found) && found.begin != ctx.lastResumedAt &&
                found.kind != TokenKind::LParenLine && found.kind != TokenKind::LBracketLine) {

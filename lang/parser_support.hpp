@@ -35,13 +35,11 @@ inline Expr* makeBool(ParseContext& ctx, bool value, SourceRange where) {
     return n;
 }
 
-inline Expr* makeAssign(ParseContext& ctx, Expr* target, SourceRange equals, Expr* value,
-                        SourceRange whole) {
+inline Expr* makeAssign(ParseContext& ctx, Expr* target, Expr* value, SourceRange whole) {
     if (target->kind != NodeKind::Var) {
         ctx.diagnostics.error(target->range,
                               "cannot assign to this expression; the left of '=' must be a "
                               "variable name");
-        (void)equals;
         return value;
     }
     auto* n = ctx.node<AssignExpr>(NodeKind::Assign, whole);

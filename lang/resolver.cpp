@@ -207,6 +207,7 @@ private:
             auto* f = static_cast<ForStmt*>(node);
             expr(f->iterable);
             f->resolution = lookup(f->variable, false);
+            if (f->resolution.binding != Binding::Enclosing) warnIfShadowsBuiltin(f->variable, f->variableRange);
             statements(f->body->statements);
             break;
         }
@@ -344,10 +345,8 @@ private:
             }
             scope.locals.push_back({p.name, p.range, true, false, false});
         }
-        uint32_t paramCount = static_cast<uint32_t>(scope.locals.size());
         for (Node* s : node->body->statements) collectAssignments(s, &scope);
         node->localCount = static_cast<uint32_t>(scope.locals.size());
-        (void)paramCount;
         scopes_.push_back(&scope);
         statements(node->body->statements);
         scopes_.pop_back();

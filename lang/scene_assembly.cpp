@@ -47,8 +47,12 @@ void Interpreter::assembleScene() {
         int slot = findAttribute(info, name);
         return settingsAttributes_[static_cast<size_t>(slot)] ? &settingsValues_[static_cast<size_t>(slot)] : nullptr;
     };
+    // Where a setting was given, or the Settings keyword (or the file start) for a default.
     auto where = [&](std::string_view name) {
-        return settingsAttributes_[static_cast<size_t>(findAttribute(info, name))]->value->range;
+        const Attribute* given = settingsAttributes_[static_cast<size_t>(findAttribute(info, name))];
+        if (given) return given->value->range;
+        return settings_ ? SourceRange{settings_->range.file, settings_->range.begin, settings_->range.begin + 8}
+                         : SourceRange{0, 0, 0};
     };
     auto text = [&](std::string_view name) { return value(name) ? *value(name)->s : std::string(); };
     auto integer = [&](std::string_view name, int64_t fallback) { return value(name) ? value(name)->i : fallback; };

@@ -36,6 +36,8 @@ SourceFile::SourceFile(std::string path, std::string text)
         lineStarts_.push_back(static_cast<uint32_t>(++p - begin));
     }
     ascii_ = std::all_of(begin, end, [](char c) { return static_cast<unsigned char>(c) < 0x80; });
+    // A byte-order mark is not text: columns of the first line count from after it.
+    if (std::string_view(begin, static_cast<size_t>(end - begin)).starts_with("\xEF\xBB\xBF")) lineStarts_[0] = 3;
 }
 
 uint32_t SourceFile::lineStart(uint32_t line) const {
@@ -53,7 +55,7 @@ std::string_view SourceFile::lineText(uint32_t line) const {
 }
 
 uint32_t SourceFile::lineIndexOf(uint32_t offset) const {
-    offset = std::min(offset, size());
+    offset = std::clamp(offset, lineStarts_[0], size());
     uint32_t last = lastLineIndex_;
     auto contains = [&](uint32_t index) {
         return lineStarts_[index] <= offset &&
@@ -66,7 +68,7 @@ uint32_t SourceFile::lineIndexOf(uint32_t offset) const {
 }
 
 LineColumn SourceFile::lineColumn(uint32_t offset) const {
-    offset = std::min(offset, size());
+    offset = std::clamp(offset, lineStarts_[0], size());
     uint32_t index = lineIndexOf(offset);
     uint32_t bytes = offset - lineStarts_[index];
     if (ascii_) return {index + 1, bytes + 1};
@@ -85,7 +87,7 @@ uint32_t SourceFile::offsetOf(LineColumn position) const {
 }
 
 Utf16Position SourceFile::utf16(uint32_t offset) const {
-    offset = std::min(offset, size());
+    offset = std::clamp(offset, lineStarts_[0], size());
     uint32_t index = lineIndexOf(offset);
     uint32_t units = 0;
     for (uint32_t i = lineStarts_[index]; i < offset;) {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -34,12 +35,16 @@ bool useColour(driver::ColourWhen when) {
     return isatty(STDERR_FILENO) && !std::getenv("NO_COLOR") && term && std::string_view(term) != "dumb";
 }
 
-/// Prints the diagnostics of one compilation; returns whether it had errors.
-bool report(Compilation& c, const driver::Options& options) {
+/// Prints the diagnostics of one compilation, except those already printed for an
+/// earlier frame; returns whether it had errors.
+bool report(Compilation& c, const driver::Options& options, std::set<std::string>& printed) {
     if (options.werror) c.diagnostics.promoteWarnings();
     PrintOptions print;
     print.colour = useColour(options.colour);
-    printDiagnostics(std::cerr, c.sources, c.diagnostics, print);
+    for (const Diagnostic& diagnostic : c.diagnostics.items()) {
+        std::string text = formatDiagnostic(c.sources, diagnostic, print);
+        if (printed.insert(text).second) std::cerr << text;
+    }
     return c.diagnostics.hasErrors();
 }
 
@@ -72,16 +77,18 @@ int main(int argc, char** argv) {
         std::string dump;
         runOnLargeStack([&] { dump = dumpAst(c.main, c.sources.file(0)); });
         std::cout << dump;
-        return report(c, options) ? 1 : 0;
+        std::set<std::string> printed;
+        return report(c, options, printed) ? 1 : 0;
     }
 
     int frames = std::max(options.frames, 1);
     options.eval.frameCount = frames;
     std::string json;
+    std::set<std::string> printed;
     for (int frame = 0; frame < frames; ++frame) {
         options.eval.frame = frame;
         Compilation c = compile(options.script, text, options.eval);
-        bool failed = report(c, options);
+        bool failed = report(c, options, printed);
         if (failed) {
             if (frames > 1) std::cerr << "crtc: frame " << frame << " has errors\n";
             return 1;

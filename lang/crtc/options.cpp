@@ -113,7 +113,9 @@ ParsedOptions parseOptions(int argc, char** argv) {
         } else if (arg == "--max-entities") {
             if (!value(v) || !parseNumber(v, o.eval.limits.maxEntities)) return bad("--max-entities needs a non-negative integer");
         } else if (arg == "--max-size") {
-            if (!value(v) || !parseNumber(v, o.eval.limits.maxSize)) return bad("--max-size needs a positive integer");
+            if (!value(v) || !parseNumber(v, o.eval.limits.maxSize) || o.eval.limits.maxSize == 0) {
+                return bad("--max-size needs a positive integer");
+            }
         } else if (arg == "--color" || arg.starts_with("--color=")) {
             if (arg == "--color") {
                 if (!value(v)) return bad("--color needs auto, always or never");
