@@ -33,6 +33,15 @@ glm::dvec3 toVec(const Value& v) { return {v.v[0], v.v[1], v.v[2]}; }
 
 } // namespace
 
+/// A short list of attribute slots, kept on the stack.
+struct SmallSlots {
+    std::array<uint8_t, kMaxAttributes> items;
+    uint8_t count = 0;
+    void push_back(uint8_t slot) { items[count++] = slot; }
+    const uint8_t* begin() const { return items.data(); }
+    const uint8_t* end() const { return items.data() + count; }
+};
+
 /// Checks the attributes of one object literal and reads them with their defaults.
 struct ObjectBuilder {
     ObjectBuilder(Interpreter& interpreter, const ObjectInfo& objectInfo, SourceRange whole,
@@ -51,6 +60,7 @@ struct ObjectBuilder {
     };
     std::array<RawValue, kMaxAttributes> values;
     std::array<const Attribute*, kMaxAttributes> given{};
+    SmallSlots givenSlots; ///< the slots in `given` that are set
 
     void evaluate(std::span<const Attribute> attributes) {
         for (const Attribute& a : attributes) {
@@ -58,6 +68,7 @@ struct ObjectBuilder {
             if (a.slot < 0) continue; // reported by the resolver
             check(a, v);
             new (&values[static_cast<size_t>(a.slot)].value) Value(v);
+            if (!given[static_cast<size_t>(a.slot)]) givenSlots.push_back(static_cast<uint8_t>(a.slot));
             given[static_cast<size_t>(a.slot)] = &a;
         }
         for (size_t i = 0; i < info.attributes.size(); ++i) {
@@ -213,31 +224,23 @@ struct ObjectBuilder {
     }
 
     // --- reading with defaults ---
-    int slot(std::string_view name) const { return cachedSlot(info, name); }
-
-    /// findAttribute memoised on the name's address: the builder asks for the same literal
-    /// names for every object, and string comparisons were most of the cost of building.
-    static int cachedSlot(const ObjectInfo& info, std::string_view name) {
-        struct Entry {
-            const char* name = nullptr;
-            ObjectType type = ObjectType::Count;
-            int slot = -1;
-        };
-        thread_local std::array<Entry, 256> cache{};
-        uint64_t key = (reinterpret_cast<uintptr_t>(name.data()) << 5) ^ static_cast<uint64_t>(info.type);
-        Entry& entry = cache[(key * 0x9E3779B97F4A7C15ull) >> 56];
-        if (entry.name != name.data() || entry.type != info.type) {
-            entry = {name.data(), info.type, findAttribute(info, name)};
+    /// The slot of attribute `name` if the literal gives it, else -1. Only the given
+    /// attributes (usually a few) are compared, shortest test first: building objects
+    /// asks for every attribute by name, and most are not given.
+    int slot(std::string_view name) const {
+        for (uint8_t given : givenSlots) {
+            std::string_view candidate = info.attributes[given].name;
+            if (candidate.size() == name.size() && candidate == name) return given;
         }
-        return entry.slot;
+        return -1;
     }
     const Value* get(std::string_view name) const {
         int s = slot(name);
-        return s >= 0 && given[static_cast<size_t>(s)] ? &values[static_cast<size_t>(s)].value : nullptr;
+        return s >= 0 ? &values[static_cast<size_t>(s)].value : nullptr;
     }
     SourceRange where(std::string_view name) const {
         int s = slot(name);
-        return s >= 0 && given[static_cast<size_t>(s)] ? given[static_cast<size_t>(s)]->value->range : typeRange;
+        return s >= 0 ? given[static_cast<size_t>(s)]->value->range : typeRange;
     }
     double number(std::string_view name, double fallback) const {
         const Value* v = get(name);
