@@ -208,4 +208,66 @@ struct Script {
 
 inline bool isExpression(const Node* node) { return node->kind <= NodeKind::Macro; }
 
+/// Calls `visit` on each direct child of `node` in source order: operands, arguments,
+/// attribute values, modifier arguments, statements, and a macro's body.
+template <typename F> void forEachChild(Node* node, F&& visit) {
+    auto each = [&](auto items) {
+        for (Node* item : items) visit(item);
+    };
+    switch (node->kind) {
+    case NodeKind::Assign: visit(static_cast<AssignExpr*>(node)->value); break;
+    case NodeKind::Unary: visit(static_cast<UnaryExpr*>(node)->operand); break;
+    case NodeKind::Binary:
+        visit(static_cast<BinaryExpr*>(node)->left);
+        visit(static_cast<BinaryExpr*>(node)->right);
+        break;
+    case NodeKind::Ternary: {
+        auto* t = static_cast<TernaryExpr*>(node);
+        visit(t->condition);
+        visit(t->then);
+        visit(t->otherwise);
+        break;
+    }
+    case NodeKind::Call:
+        visit(static_cast<CallExpr*>(node)->callee);
+        each(static_cast<CallExpr*>(node)->args);
+        break;
+    case NodeKind::Index:
+        visit(static_cast<IndexExpr*>(node)->object);
+        visit(static_cast<IndexExpr*>(node)->index);
+        break;
+    case NodeKind::Modify:
+        visit(static_cast<ModifyExpr*>(node)->target);
+        for (Modifier& m : static_cast<ModifyExpr*>(node)->modifiers) visit(m.argument);
+        break;
+    case NodeKind::List: each(static_cast<ListExpr*>(node)->items); break;
+    case NodeKind::Object:
+        for (Attribute& a : static_cast<ObjectExpr*>(node)->attributes) visit(a.value);
+        break;
+    case NodeKind::Macro: visit(static_cast<MacroExpr*>(node)->body); break;
+    case NodeKind::While:
+        visit(static_cast<WhileStmt*>(node)->condition);
+        visit(static_cast<WhileStmt*>(node)->body);
+        break;
+    case NodeKind::For:
+        visit(static_cast<ForStmt*>(node)->iterable);
+        visit(static_cast<ForStmt*>(node)->body);
+        break;
+    case NodeKind::If: {
+        auto* i = static_cast<IfStmt*>(node);
+        visit(i->condition);
+        visit(i->then);
+        if (i->otherwise) visit(i->otherwise);
+        break;
+    }
+    case NodeKind::Block: each(static_cast<Block*>(node)->statements); break;
+    case NodeKind::Settings:
+        for (Attribute& a : static_cast<SettingsStmt*>(node)->attributes) visit(a.value);
+        break;
+    case NodeKind::Scene: each(static_cast<SceneStmt*>(node)->statements); break;
+    case NodeKind::Include: visit(static_cast<IncludeStmt*>(node)->path); break;
+    default: break; // literals, names, errors
+    }
+}
+
 } // namespace crt::lang

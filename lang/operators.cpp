@@ -165,12 +165,7 @@ Value Interpreter::evalAssign(const AssignExpr* node) {
 }
 
 Value Interpreter::evalTernary(const TernaryExpr* node) {
-    Value c = eval(node->condition);
-    if (c.kind != ValueKind::Bool) {
-        fail(node->condition->range,
-             fmt::format("the condition of '?:' must be a bool, not {}", typeName(c)));
-    }
-    return eval(c.b ? node->then : node->otherwise);
+    return eval(condition(node->condition, "?:") ? node->then : node->otherwise);
 }
 
 Value Interpreter::evalUnary(const UnaryExpr* node) {

@@ -66,79 +66,15 @@ private:
     /// Declares the names `node` assigns, without entering nested macros. `scope` is null
     /// at the top level.
     void collectAssignments(Node* node, MacroScope* scope) {
-        if (!node) return;
-        switch (node->kind) {
-        case NodeKind::Assign: {
+        if (node->kind == NodeKind::Macro) return; // a nested macro is a scope of its own
+        if (node->kind == NodeKind::Assign) {
             auto* a = static_cast<AssignExpr*>(node);
             declare(a->name, a->nameRange, scope, false);
-            collectAssignments(a->value, scope);
-            break;
-        }
-        case NodeKind::For: {
+        } else if (node->kind == NodeKind::For) {
             auto* f = static_cast<ForStmt*>(node);
             declare(f->variable, f->variableRange, scope, true);
-            collectAssignments(f->iterable, scope);
-            collectAssignments(f->body, scope);
-            break;
         }
-        case NodeKind::While: {
-            auto* w = static_cast<WhileStmt*>(node);
-            collectAssignments(w->condition, scope);
-            collectAssignments(w->body, scope);
-            break;
-        }
-        case NodeKind::If: {
-            auto* i = static_cast<IfStmt*>(node);
-            collectAssignments(i->condition, scope);
-            collectAssignments(i->then, scope);
-            collectAssignments(i->otherwise, scope);
-            break;
-        }
-        case NodeKind::Block:
-            for (Node* s : static_cast<Block*>(node)->statements) collectAssignments(s, scope);
-            break;
-        case NodeKind::Scene:
-            for (Node* s : static_cast<SceneStmt*>(node)->statements) collectAssignments(s, scope);
-            break;
-        case NodeKind::Settings:
-            for (Attribute& a : static_cast<SettingsStmt*>(node)->attributes) collectAssignments(a.value, scope);
-            break;
-        case NodeKind::Unary: collectAssignments(static_cast<UnaryExpr*>(node)->operand, scope); break;
-        case NodeKind::Binary:
-            collectAssignments(static_cast<BinaryExpr*>(node)->left, scope);
-            collectAssignments(static_cast<BinaryExpr*>(node)->right, scope);
-            break;
-        case NodeKind::Ternary: {
-            auto* t = static_cast<TernaryExpr*>(node);
-            collectAssignments(t->condition, scope);
-            collectAssignments(t->then, scope);
-            collectAssignments(t->otherwise, scope);
-            break;
-        }
-        case NodeKind::Call: {
-            auto* c = static_cast<CallExpr*>(node);
-            collectAssignments(c->callee, scope);
-            for (Expr* arg : c->args) collectAssignments(arg, scope);
-            break;
-        }
-        case NodeKind::Index:
-            collectAssignments(static_cast<IndexExpr*>(node)->object, scope);
-            collectAssignments(static_cast<IndexExpr*>(node)->index, scope);
-            break;
-        case NodeKind::Modify: {
-            auto* m = static_cast<ModifyExpr*>(node);
-            collectAssignments(m->target, scope);
-            for (Modifier& mod : m->modifiers) collectAssignments(mod.argument, scope);
-            break;
-        }
-        case NodeKind::List:
-            for (Expr* item : static_cast<ListExpr*>(node)->items) collectAssignments(item, scope);
-            break;
-        case NodeKind::Object:
-            for (Attribute& a : static_cast<ObjectExpr*>(node)->attributes) collectAssignments(a.value, scope);
-            break;
-        default: break; // literals, names, nested macros (their own scope), include, error
-        }
+        forEachChild(node, [&](Node* child) { collectAssignments(child, scope); });
     }
 
     void declare(std::string_view name, SourceRange where, MacroScope* scope, bool loopVariable) {
