@@ -6,7 +6,6 @@
 #include "parser.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -276,12 +275,10 @@ void Interpreter::execInclude(const IncludeStmt* node) {
         if (done == canonical) return; // include-once
     }
 
-    std::ifstream in(found, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    if (!in) fail(node->path->range, fmt::format("cannot read include file \"{}\"", found.string()));
+    std::optional<std::string> text = readFile(found.string());
+    if (!text) fail(node->path->range, fmt::format("cannot read include file \"{}\"", found.string()));
 
-    uint32_t fileIndex = compilation_.sources.add(found.lexically_normal().string(), buffer.str());
+    uint32_t fileIndex = compilation_.sources.add(found.lexically_normal().string(), std::move(*text));
     size_t errorsBefore = diagnostics_.errorCount();
     Script script = parse(compilation_.sources.file(fileIndex), fileIndex, *compilation_.arena,
                           diagnostics_);
@@ -465,15 +462,13 @@ Compilation compile(std::string path, std::string text, const EvalOptions& optio
 }
 
 Compilation compileFile(const std::string& path, const EvalOptions& options, bool evaluate) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    if (!in) {
+    std::optional<std::string> text = readFile(path);
+    if (!text) {
         Compilation c;
         c.diagnostics.error({1u << 31, 0, 0}, fmt::format("cannot read '{}'", path));
         return c;
     }
-    return compile(path, buffer.str(), options, evaluate);
+    return compile(path, std::move(*text), options, evaluate);
 }
 
 } // namespace crt::lang

@@ -66,6 +66,13 @@ struct ParseContext {
         result->range = where;
         return result;
     }
+    // An attribute or a modifier is appended to its list by the very next reduction, so
+    // one slot each carries it there (nested ones are appended before it is made).
+    Attribute heldAttribute{};
+    Modifier heldModifier{};
+    Attribute* hold(const Attribute& attribute) { return &(heldAttribute = attribute); }
+    Modifier* hold(const Modifier& modifier) { return &(heldModifier = modifier); }
+
     template <typename T> ListMark beginList(const std::vector<T>& scratch) {
         return {static_cast<uint32_t>(scratch.size()), 0};
     }

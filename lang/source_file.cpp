@@ -2,7 +2,9 @@
 #include "source_file.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
+#include <sys/stat.h>
 
 namespace crt::lang {
 namespace {
@@ -116,6 +118,26 @@ uint32_t SourceFile::offsetOfUtf8(uint32_t line, uint32_t byteInLine) const {
     if (line >= lineStarts_.size()) return size();
     std::string_view text = lineText(line + 1);
     return lineStarts_[line] + std::min<uint32_t>(byteInLine, static_cast<uint32_t>(text.size()));
+}
+
+std::optional<std::string> readFile(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) return std::nullopt;
+    std::string text;
+    struct stat info;
+    if (fstat(fileno(file), &info) == 0 && S_ISREG(info.st_mode)) {
+        text.reserve(static_cast<size_t>(info.st_size) + 1);
+    } else if (fstat(fileno(file), &info) == 0 && S_ISDIR(info.st_mode)) {
+        std::fclose(file);
+        return std::nullopt;
+    }
+    char buffer[1 << 16];
+    size_t count = 0;
+    while ((count = std::fread(buffer, 1, sizeof buffer, file)) > 0) text.append(buffer, count);
+    bool failed = std::ferror(file) != 0;
+    std::fclose(file);
+    if (failed) return std::nullopt;
+    return text;
 }
 
 uint32_t SourceManager::add(std::string path, std::string text) {

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -75,6 +76,10 @@ public:
 private:
     std::vector<std::unique_ptr<SourceFile>> files_;
 };
+
+/// The contents of the file at `path`, or nothing if it cannot be read (or is a folder).
+/// The string has room for SourceFile's terminating NUL, so it is never copied again.
+std::optional<std::string> readFile(const std::string& path);
 
 /// Number of code points in a UTF-8 string (invalid bytes count as one each).
 uint32_t codePointCount(std::string_view text);

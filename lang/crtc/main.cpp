@@ -7,10 +7,8 @@
 #include "scene_json.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <set>
-#include <sstream>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -59,21 +57,18 @@ int main(int argc, char** argv) {
     driver::Options& options = *parsed.options;
     options.eval.stdlibDir = findStdlib(argv[0]);
 
-    std::ifstream in(options.script, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    if (!in || fs::is_directory(options.script)) {
+    std::optional<std::string> text = readFile(options.script);
+    if (!text) {
         std::cerr << "crtc: cannot read '" << options.script << "'\n";
         return 2;
     }
-    std::string text = buffer.str();
 
     // The dumps own standard output: print() goes to standard error beside them.
     if (options.mode == driver::Mode::DumpAst || options.mode == driver::Mode::DumpScene) {
         options.eval.printOut = &std::cerr;
     }
     if (options.mode == driver::Mode::DumpAst) {
-        Compilation c = compile(options.script, text, options.eval, false);
+        Compilation c = compile(options.script, std::move(*text), options.eval, false);
         std::string dump;
         runOnLargeStack([&] { dump = dumpAst(c.main, c.sources.file(0)); });
         std::cout << dump;
@@ -87,7 +82,8 @@ int main(int argc, char** argv) {
     std::set<std::string> printed;
     for (int frame = 0; frame < frames; ++frame) {
         options.eval.frame = frame;
-        Compilation c = compile(options.script, text, options.eval);
+        // The last frame can have the text itself; earlier ones get a copy.
+        Compilation c = compile(options.script, frame + 1 == frames ? std::move(*text) : *text, options.eval);
         bool failed = report(c, options, printed);
         if (failed) {
             if (frames > 1) std::cerr << "crtc: frame " << frame << " has errors\n";

@@ -32,12 +32,7 @@ using namespace crt::lang;
 
 namespace {
 
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
+std::string readText(const fs::path& path) { return readFile(path.string()).value_or(""); }
 
 struct Expectations {
     std::vector<std::string> printed;
@@ -150,7 +145,7 @@ int main(int argc, char** argv) {
     }
     // Longest first, so a path inside another is not half-replaced.
     std::stable_sort(paths.begin(), paths.end(), [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
-    std::string text = readFile(file);
+    std::string text = readText(file);
     Expectations expected = readExpectations(text);
 
     std::vector<std::string> argStrings = {"crtc"};
@@ -187,7 +182,7 @@ int main(int argc, char** argv) {
         std::string actual = c.scene ? replacePaths(sceneToJson(*c.scene), paths) : std::string("null\n");
         if (update) {
             std::ofstream(snapshot) << actual;
-        } else if (readFile(snapshot) != actual) {
+        } else if (readText(snapshot) != actual) {
             std::cerr << fmt::format("--dump-scene differs from {}; to accept the new output after "
                                      "reviewing it, run: golden_runner {} {} --update\n",
                                      snapshot.string(), root.string(), file.string());
