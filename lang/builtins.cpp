@@ -129,10 +129,10 @@ glm::dvec3 vector(BuiltinCall& call, size_t index) {
 
 Value fromVector(glm::dvec3 v) { return Value::vec3(v.x, v.y, v.z); }
 
-#define MATH1(fname, expr)                                                                     \
-    Value fname(BuiltinCall& call) {                                                           \
+#define MATH1(name, expr)                                                                      \
+    Value b_##name(BuiltinCall& call) {                                                        \
         double x = number(call, 0);                                                            \
-        return checked(call, (expr), #fname + 2);                                              \
+        return checked(call, (expr), #name);                                                   \
     }
 
 Value b_vec3(BuiltinCall& call) {
@@ -147,13 +147,13 @@ Value b_rgba(BuiltinCall& call) {
     double r = number(call, 0), g = number(call, 1), b = number(call, 2), a = number(call, 3);
     return Value::colour(r, g, b, a);
 }
-MATH1(b_sin, std::sin(x))
-MATH1(b_cos, std::cos(x))
-MATH1(b_tan, std::tan(x))
-MATH1(b_exp, std::exp(x))
-MATH1(b_radians, x * std::numbers::pi / 180.0)
-MATH1(b_degrees, x * 180.0 / std::numbers::pi)
-MATH1(b_atan, std::atan(x))
+MATH1(sin, std::sin(x))
+MATH1(cos, std::cos(x))
+MATH1(tan, std::tan(x))
+MATH1(exp, std::exp(x))
+MATH1(radians, x * std::numbers::pi / 180.0)
+MATH1(degrees, x * 180.0 / std::numbers::pi)
+MATH1(atan, std::atan(x))
 
 Value b_asin(BuiltinCall& call) {
     double x = number(call, 0);
