@@ -17,19 +17,12 @@ Interpreter::Interpreter(Compilation& compilation, const EvalOptions& options)
     : compilation_(compilation), options_(options), diagnostics_(compilation.diagnostics),
       randomState_(options.seed) {
     prelude_.resize(preludeSize());
-    for (uint32_t slot = 0; slot + 2 < preludeSize(); ++slot) {
+    for (uint32_t slot = 0; slot < preludeSlotOfT(); ++slot) {
         prelude_[slot] = Value::object(ValueKind::Builtin, ObjectType::Count, slot);
-        prelude_[slot].kind = ValueKind::Builtin;
     }
-    if (options.time) {
-        prelude_[preludeSlotOfT()] = Value::number(*options.time);
-    } else {
-        prelude_[preludeSlotOfT()] = Value::integer(options.frame);
-    }
-    double clock = options.frameCount > 1
-                       ? static_cast<double>(options.frame) / (options.frameCount - 1)
-                       : (options.time ? *options.time : 0.0);
-    if (options.frameCount <= 1 && options.time) clock = 0.0;
+    prelude_[preludeSlotOfT()] = options.time ? Value::number(*options.time) : Value::integer(options.frame);
+    // clock runs from 0 to 1 over the frames of an animation; a single frame is at 0.
+    double clock = options.frameCount > 1 ? static_cast<double>(options.frame) / (options.frameCount - 1) : 0.0;
     prelude_[preludeSlotOfClock()] = Value::number(clock);
 }
 

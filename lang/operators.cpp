@@ -245,7 +245,7 @@ Value Interpreter::evalBinary(const BinaryExpr* node) {
 Value Interpreter::binaryOnValues(const BinaryExpr* node, const Value& a, const Value& b) {
     BinaryOp op = node->op;
 
-    // The hot path: two floats, or a float and an int.
+    // Numbers: everything evalBinary did not settle inline, with exact checks and errors.
     if (a.isNumber() && b.isNumber()) {
         if (a.kind == ValueKind::Int && b.kind == ValueKind::Int) {
             int64_t result = 0;
