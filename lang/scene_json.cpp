@@ -121,6 +121,35 @@ const char* textureKind(t::TextureKind kind) {
     return names[static_cast<int>(kind)];
 }
 
+/// Writes arrays of numbers on one line ("[0.0, 1.0, 0.0]"): vectors and colours are
+/// read as units, and the dump stays a third as long.
+std::string compactNumberArrays(const std::string& json) {
+    std::string out;
+    out.reserve(json.size());
+    for (size_t i = 0; i < json.size(); ++i) {
+        if (json[i] == '[') {
+            size_t close = json.find_first_of("[]{}\"", i + 1);
+            if (close != std::string::npos && json[close] == ']') {
+                std::string items;
+                bool number = false;
+                for (size_t k = i + 1; k < close; ++k) {
+                    char c = json[k];
+                    if (c == ' ' || c == '\n') continue;
+                    if (c == ',') items += ", ";
+                    else items += c, number = true;
+                }
+                if (number) {
+                    out += '[' + items + ']';
+                    i = close;
+                    continue;
+                }
+            }
+        }
+        out += json[i];
+    }
+    return out;
+}
+
 } // namespace
 
 std::string sceneToJson(const t::SceneDesc& scene, int indent) {
@@ -249,7 +278,7 @@ std::string sceneToJson(const t::SceneDesc& scene, int indent) {
     }
     root["entities"] = std::move(entities);
     root["drawn"] = scene.drawn;
-    return root.dump(indent) + "\n";
+    return compactNumberArrays(root.dump(indent)) + "\n";
 }
 
 } // namespace crt::lang
