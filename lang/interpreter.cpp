@@ -275,11 +275,14 @@ void Interpreter::execInclude(const IncludeStmt* node) {
     size_t errorsBefore = diagnostics_.errorCount();
     Script script = parse(compilation_.sources.file(fileIndex), fileIndex, *compilation_.arena,
                           diagnostics_);
-    ResolveResult resolution = resolve(script, globals_, diagnostics_, false);
-    animated_ |= resolution.readsTime;
-    if (diagnostics_.errorCount() > errorsBefore) {
-        fail(node->range, fmt::format("included file \"{}\" has errors", name));
-    }
+    auto failOnErrors = [&] {
+        if (diagnostics_.errorCount() > errorsBefore) {
+            fail(node->range, fmt::format("included file \"{}\" has errors", name));
+        }
+    };
+    failOnErrors(); // as for the main script: no resolving or running with syntax errors
+    animated_ |= resolve(script, globals_, diagnostics_, false).readsTime;
+    failOnErrors();
     globalValues_.resize(globals_.size());
     includedFiles_.push_back(canonical);
     includeStack_.push_back(canonical);
