@@ -66,81 +66,9 @@ const VarExpr* var(const Node* node, std::string_view name) {
 /// The direct children of a node, in source order.
 std::vector<const Node*> children(const Node* node) {
     std::vector<const Node*> out;
-    auto add = [&](const Node* n) {
-        if (n) out.push_back(n);
-    };
-    switch (node->kind) {
-    case NodeKind::Assign: add(static_cast<const AssignExpr*>(node)->value); break;
-    case NodeKind::Unary: add(static_cast<const UnaryExpr*>(node)->operand); break;
-    case NodeKind::Binary: {
-        auto* b = static_cast<const BinaryExpr*>(node);
-        add(b->left);
-        add(b->right);
-        break;
-    }
-    case NodeKind::Ternary: {
-        auto* t = static_cast<const TernaryExpr*>(node);
-        add(t->condition);
-        add(t->then);
-        add(t->otherwise);
-        break;
-    }
-    case NodeKind::Call: {
-        auto* c = static_cast<const CallExpr*>(node);
-        add(c->callee);
-        for (const Expr* a : c->args) add(a);
-        break;
-    }
-    case NodeKind::Index: {
-        auto* i = static_cast<const IndexExpr*>(node);
-        add(i->object);
-        add(i->index);
-        break;
-    }
-    case NodeKind::Modify: {
-        auto* m = static_cast<const ModifyExpr*>(node);
-        add(m->target);
-        for (const Modifier& mod : m->modifiers) add(mod.argument);
-        break;
-    }
-    case NodeKind::List:
-        for (const Expr* e : static_cast<const ListExpr*>(node)->items) add(e);
-        break;
-    case NodeKind::Object:
-        for (const Attribute& a : static_cast<const ObjectExpr*>(node)->attributes) add(a.value);
-        break;
-    case NodeKind::Macro: add(static_cast<const MacroExpr*>(node)->body); break;
-    case NodeKind::While: {
-        auto* w = static_cast<const WhileStmt*>(node);
-        add(w->condition);
-        add(w->body);
-        break;
-    }
-    case NodeKind::For: {
-        auto* f = static_cast<const ForStmt*>(node);
-        add(f->iterable);
-        add(f->body);
-        break;
-    }
-    case NodeKind::If: {
-        auto* i = static_cast<const IfStmt*>(node);
-        add(i->condition);
-        add(i->then);
-        add(i->otherwise);
-        break;
-    }
-    case NodeKind::Block:
-        for (const Node* s : static_cast<const Block*>(node)->statements) add(s);
-        break;
-    case NodeKind::Settings:
-        for (const Attribute& a : static_cast<const SettingsStmt*>(node)->attributes) add(a.value);
-        break;
-    case NodeKind::Scene:
-        for (const Node* s : static_cast<const SceneStmt*>(node)->statements) add(s);
-        break;
-    case NodeKind::Include: add(static_cast<const IncludeStmt*>(node)->path); break;
-    default: break;
-    }
+    forEachChild(const_cast<Node*>(node), [&](const Node* child) {
+        if (child) out.push_back(child);
+    });
     return out;
 }
 
