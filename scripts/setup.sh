@@ -3,16 +3,17 @@
 # Quick and quiet when everything is already installed. Run as root.
 #   scripts/setup.sh          build and test dependencies
 #   scripts/setup.sh --bench  also POV-Ray and the tools the benchmarks use
+#   scripts/setup.sh --fuzz   also clang and its libFuzzer runtime (tests/fuzz/)
 set -euo pipefail
 
 packages=(
     g++ cmake ninja-build re2c bison
     libfmt-dev libglm-dev nlohmann-json3-dev catch2
-    clang libclang-rt-14-dev
 )
-if [ "${1:-}" = "--bench" ]; then
-    packages+=(povray time)
-fi
+case "${1:-}" in
+--bench) packages+=(povray time) ;;
+--fuzz) packages+=(clang libclang-rt-14-dev) ;;
+esac
 
 missing=()
 for package in "${packages[@]}"; do
