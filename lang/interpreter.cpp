@@ -130,7 +130,7 @@ void Interpreter::execFor(const ForStmt* node) {
     const std::vector<Value>& items = *iterable.list;
     for (const Value& item : items) {
         step(node->iterable->range);
-        store(node->resolution, item, node->variableRange);
+        store(node->resolution, item);
         execStatements(node->body->statements);
     }
 }
@@ -340,7 +340,7 @@ void Interpreter::unboundVariable(const VarExpr* node) {
     throw EvalError{};
 }
 
-void Interpreter::store(const Resolution& r, const Value& value, SourceRange) {
+void Interpreter::store(const Resolution& r, const Value& value) {
     switch (r.binding) {
     case Binding::Local: locals_[r.slot] = value; return;
     case Binding::Global:

@@ -68,7 +68,6 @@ private:
     static bool flattenEntities(const Value& list, std::vector<Value>& out);
     /// How many entities drawing `entity` draws: a group draws its members.
     uint64_t countMembers(int32_t entity) const;
-    uint64_t drawnCount_ = 0;
 
     // expressions
     Value eval(const Expr* node);
@@ -78,7 +77,7 @@ private:
     Value evalTernary(const TernaryExpr* node);
     [[noreturn, gnu::cold, gnu::noinline]] Value notAnExpression(const Expr* node);
     [[noreturn, gnu::cold, gnu::noinline]] void unboundVariable(const VarExpr* node);
-    void store(const Resolution& resolution, const Value& value, SourceRange where);
+    void store(const Resolution& resolution, const Value& value);
     Value evalBinary(const BinaryExpr* node);
     Value evalLogical(const BinaryExpr* node);
     [[gnu::noinline]] Value binaryOnValues(const BinaryExpr* node, const Value& a, const Value& b);
@@ -99,11 +98,11 @@ private:
     int32_t addEntity(tracer::EntityDesc entity, EntityInfo info);
     /// A warning reported once per construct, however often evaluation passes it.
     void warnOnce(WarningKind kind, SourceRange where, std::string message);
+    tracer::SourceSpan span(SourceRange range) const;
 
     // the end (scene_assembly.cpp)
     void assembleScene();
     void reportUnused();
-    tracer::SourceSpan span(SourceRange range) const;
     struct SpanCacheEntry {
         SourceRange range{~0u, 0, 0};
         tracer::SourceSpan span;
@@ -139,6 +138,7 @@ private:
     // scene under construction
     tracer::SceneDesc scene_;
     std::vector<EntityInfo> entityInfo_;
+    uint64_t drawnCount_ = 0;     ///< entities drawn so far, group members counted
     std::vector<bool> reachable_; ///< per entity: drawn, or part of something drawn
     std::set<std::tuple<WarningKind, uint32_t, uint32_t>> warnedOnce_;
     std::vector<tracer::LightDesc> lights_;

@@ -160,7 +160,7 @@ Value Interpreter::evalString(const StringLit* node) {
 Value Interpreter::evalAssign(const AssignExpr* node) {
     Value value = eval(node->value);
     if (value.kind == ValueKind::Unset) value = Value::none();
-    store(node->resolution, value, node->nameRange);
+    store(node->resolution, value);
     return value;
 }
 
