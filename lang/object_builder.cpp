@@ -53,7 +53,7 @@ struct ObjectBuilder {
     SourceRange range;     ///< the whole literal
     SourceRange typeRange; ///< its type name
     /// Storage for the given attributes' values; a slot is valid where `given` is set.
-    /// Left uninitialised: building an object must not pay for clearing 32 values.
+    /// Left uninitialised: building an object must not pay for clearing every slot.
     union RawValue {
         Value value;
         RawValue() {}
