@@ -431,18 +431,21 @@ TEST_CASE("parser: a script with syntax errors is not evaluated") {
     CHECK_FALSE(c.scene.has_value());
 }
 
+/// A valid script with one of every kind of node.
+constexpr const char* kEveryConstruct = "include \"lib.crt\"\n"
+                                        "Settings { width -> 10 * 2 }\n"
+                                        "sq = Macro (a, b) { a * b }\n"
+                                        "s = Sphere { center -> vec3(0, 0, 0) radius -> -r }\n"
+                                        "l = [1, 2.5, \"s\", true][0]\n"
+                                        "c = a ? b : d\n"
+                                        "Scene {\n"
+                                        "  while (i < 3) { i = i + 1 }\n"
+                                        "  for k in range(3) { s <translate vec3(k, 0, 0), scale 2> }\n"
+                                        "  if (!false) { s } else if (x) { s } else { s }\n"
+                                        "}\n";
+
 TEST_CASE("parser: every node's range lies inside the file and its parent's range") {
-    auto p = parseOk("include \"lib.crt\"\n"
-                     "Settings { width -> 10 * 2 }\n"
-                     "sq = Macro (a, b) { a * b }\n"
-                     "s = Sphere { center -> vec3(0, 0, 0) radius -> -r }\n"
-                     "l = [1, 2.5, \"s\", true][0]\n"
-                     "c = a ? b : d\n"
-                     "Scene {\n"
-                     "  while (i < 3) { i = i + 1 }\n"
-                     "  for k in range(3) { s <translate vec3(k, 0, 0), scale 2> }\n"
-                     "  if (!false) { s } else if (x) { s } else { s }\n"
-                     "}\n");
+    auto p = parseOk(kEveryConstruct);
     std::function<void(const Node*)> check = [&](const Node* node) {
         INFO("node: " << p->text(node));
         CHECK(node->range.file == 0);
@@ -460,17 +463,7 @@ TEST_CASE("parser: every node's range lies inside the file and its parent's rang
 }
 
 TEST_CASE("parser: every node's range covers exactly its source text") {
-    auto p = parseOk("include \"lib.crt\"\n"
-                     "Settings { width -> 10 * 2 }\n"
-                     "sq = Macro (a, b) { a * b }\n"
-                     "s = Sphere { center -> vec3(0, 0, 0) radius -> -r }\n"
-                     "l = [1, 2.5, \"s\", true][0]\n"
-                     "c = a ? b : d\n"
-                     "Scene {\n"
-                     "  while (i < 3) { i = i + 1 }\n"
-                     "  for k in range(3) { s <translate vec3(k, 0, 0), scale 2> }\n"
-                     "  if (!false) { s } else if (x) { s } else { s }\n"
-                     "}\n");
+    auto p = parseOk(kEveryConstruct);
     CHECK(textsOf(*p, NodeKind::Include) == std::vector<std::string>{"include \"lib.crt\""});
     CHECK(textsOf(*p, NodeKind::Settings) ==
           std::vector<std::string>{"Settings { width -> 10 * 2 }"});
