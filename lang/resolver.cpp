@@ -58,7 +58,7 @@ public:
         // Top-level assignments are known before any use so a macro defined early can
         // read a global assigned later, and so a global shadows a built-in everywhere.
         for (Node* item : script.items) collectAssignments(item, nullptr);
-        for (Node* item : script.items) statement(item);
+        for (Node* item : script.items) visit(item);
         return result_;
     }
 
@@ -126,52 +126,10 @@ private:
         return {Binding::Global, 0, slot};
     }
 
-    void statements(std::span<Node*> items) {
-        for (Node* item : items) statement(item);
-    }
-
-    void statement(Node* node) {
-        if (!node) return;
+    /// Resolves `node` and everything under it. Only the nodes that bind, read or check
+    /// names need a case; the rest just pass the walk on to their children.
+    void visit(Node* node) {
         switch (node->kind) {
-        case NodeKind::While: {
-            auto* w = static_cast<WhileStmt*>(node);
-            expr(w->condition);
-            statements(w->body->statements);
-            break;
-        }
-        case NodeKind::For: {
-            auto* f = static_cast<ForStmt*>(node);
-            expr(f->iterable);
-            f->resolution = lookup(f->variable, false);
-            if (f->resolution.binding != Binding::Enclosing) warnIfShadowsBuiltin(f->variable, f->variableRange);
-            statements(f->body->statements);
-            break;
-        }
-        case NodeKind::If: {
-            auto* i = static_cast<IfStmt*>(node);
-            expr(i->condition);
-            statements(i->then->statements);
-            statement(i->otherwise);
-            break;
-        }
-        case NodeKind::Block: statements(static_cast<Block*>(node)->statements); break;
-        case NodeKind::Settings:
-            attributes(objectInfo(ObjectType::Settings), static_cast<SettingsStmt*>(node)->attributes);
-            break;
-        case NodeKind::Scene: statements(static_cast<SceneStmt*>(node)->statements); break;
-        case NodeKind::Include:
-        case NodeKind::Error: break;
-        default: expr(static_cast<Expr*>(node)); break;
-        }
-    }
-
-    void expr(Expr* node) {
-        if (!node) return;
-        switch (node->kind) {
-        case NodeKind::IntLit:
-        case NodeKind::FloatLit:
-        case NodeKind::StringLit:
-        case NodeKind::BoolLit: break;
         case NodeKind::Var: {
             auto* v = static_cast<VarExpr*>(node);
             v->resolution = lookup(v->name, true);
@@ -179,45 +137,25 @@ private:
         }
         case NodeKind::Assign: {
             auto* a = static_cast<AssignExpr*>(node);
-            expr(a->value);
+            visit(a->value);
             a->resolution = lookup(a->name, false);
             if (a->resolution.binding != Binding::Enclosing) warnIfShadowsBuiltin(a->name, a->nameRange);
             break;
         }
-        case NodeKind::Unary: expr(static_cast<UnaryExpr*>(node)->operand); break;
-        case NodeKind::Binary:
-            expr(static_cast<BinaryExpr*>(node)->left);
-            expr(static_cast<BinaryExpr*>(node)->right);
-            break;
-        case NodeKind::Ternary: {
-            auto* t = static_cast<TernaryExpr*>(node);
-            expr(t->condition);
-            expr(t->then);
-            expr(t->otherwise);
+        case NodeKind::For: {
+            auto* f = static_cast<ForStmt*>(node);
+            visit(f->iterable);
+            f->resolution = lookup(f->variable, false);
+            if (f->resolution.binding != Binding::Enclosing) warnIfShadowsBuiltin(f->variable, f->variableRange);
+            visit(f->body);
             break;
         }
-        case NodeKind::Call: {
-            auto* c = static_cast<CallExpr*>(node);
-            expr(c->callee);
-            for (Expr* arg : c->args) expr(arg);
-            break;
-        }
-        case NodeKind::Index:
-            expr(static_cast<IndexExpr*>(node)->object);
-            expr(static_cast<IndexExpr*>(node)->index);
-            break;
-        case NodeKind::Modify: {
-            auto* m = static_cast<ModifyExpr*>(node);
-            expr(m->target);
-            for (Modifier& mod : m->modifiers) expr(mod.argument);
-            break;
-        }
-        case NodeKind::List:
-            for (Expr* item : static_cast<ListExpr*>(node)->items) expr(item);
+        case NodeKind::Settings:
+            attributes(objectInfo(ObjectType::Settings), static_cast<SettingsStmt*>(node)->attributes);
             break;
         case NodeKind::Object: object(static_cast<ObjectExpr*>(node)); break;
         case NodeKind::Macro: macro(static_cast<MacroExpr*>(node)); break;
-        default: break;
+        default: forEachChild(node, [&](Node* child) { visit(child); }); break;
         }
     }
 
@@ -234,7 +172,7 @@ private:
                                      : fmt::format("unknown object type '{}'; did you mean '{}'?",
                                                    node->typeName, suggestion));
             if (!suggestion.empty()) d.fixits.push_back({node->typeRange, suggestion});
-            for (Attribute& a : node->attributes) expr(a.value);
+            for (Attribute& a : node->attributes) visit(a.value);
             return;
         }
         attributes(objectInfo(node->type), node->attributes);
@@ -243,7 +181,7 @@ private:
     void attributes(const ObjectInfo& info, std::span<Attribute> attrs) {
         for (size_t i = 0; i < attrs.size(); ++i) {
             Attribute& a = attrs[i];
-            expr(a.value);
+            visit(a.value);
             a.slot = static_cast<int16_t>(findAttribute(info, a.name));
             if (a.slot < 0) {
                 reportUnknownAttribute(info, a);
@@ -284,7 +222,7 @@ private:
         for (Node* s : node->body->statements) collectAssignments(s, &scope);
         node->localCount = static_cast<uint32_t>(scope.locals.size());
         scopes_.push_back(&scope);
-        statements(node->body->statements);
+        visit(node->body);
         scopes_.pop_back();
         for (const MacroScope::Local& local : scope.locals) {
             if (!local.read && !local.isParameter && !local.isLoopVariable) {
