@@ -264,6 +264,11 @@ void Parser::report_syntax_error(const context& yyctx) const {
             expectsArrow |= names[i] == symbol_kind::S_ARROW;
         }
     }
+    // A top-level keyword starting a line where a '}' would do: the '}' was forgotten.
+    // Supplying it closes the open block or object, so one mistake is one diagnostic.
+    bool topLevelKeyword = found.kind == TokenKind::KwScene || found.kind == TokenKind::KwSettings ||
+                           found.kind == TokenKind::KwInclude;
+    bool missingBrace = found.begin != ctx.lastResumedAt && found.atLineStart && topLevelKeyword && expectsBrace;
     if (found.begin != ctx.lastReportedAt) {
         ctx.lastReportedAt = found.begin;
         Diagnostic& d = ctx.diagnostics.error(where, std::move(message));
@@ -271,20 +276,14 @@ void Parser::report_syntax_error(const context& yyctx) const {
             d.message += "; attributes are written 'name -> value'";
             d.fixits.push_back({where, "->"});
         }
+        if (missingBrace) d.message += "; is a '}' missing before it?";
     }
     // Skip the rest of the broken statement unless the parser can resume right here (and
     // has not already tried to resume at this very token).
     ctx.recovering = true;
-    // A top-level keyword starting a line where a '}' would do: the '}' was forgotten.
-    // Supplying it closes the open block or object, so one mistake is one diagnostic.
-    bool topLevelKeyword = found.kind == TokenKind::KwScene || found.kind == TokenKind::KwSettings ||
-                           found.kind == TokenKind::KwInclude;
-    if (found.begin != ctx.lastResumedAt && found.atLineStart && topLevelKeyword && expectsBrace) {
+    if (missingBrace) {
         ctx.lastResumedAt = found.begin;
         ctx.queued = {Token{TokenKind::RBrace, found.begin, found.begin, false}, found};
-        if (!ctx.diagnostics.items().empty() && ctx.lastReportedAt == found.begin) {
-            ctx.diagnostics.items().back().message += "; is a '}' missing before it?";
-        }
         ctx.skipping = false;
     } else if (isResumePoint(found) && found.begin != ctx.lastResumedAt &&
                found.kind != TokenKind::LParenLine && found.kind != TokenKind::LBracketLine) {
