@@ -226,7 +226,7 @@ void Interpreter::draw(const Value& value, const Node* where) {
 }
 
 void Interpreter::execInclude(const IncludeStmt* node) {
-    const std::string& name = std::string(node->path->value);
+    std::string name(node->path->value);
     const SourceFile& including = compilation_.sources.file(node->range.file);
     std::vector<fs::path> searched;
     searched.push_back(folderOf(including.path()));
