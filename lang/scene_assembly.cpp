@@ -193,15 +193,16 @@ void Interpreter::reportUnused() {
                              fmt::format("this {} is defined but never drawn nor used",
                                          objectInfo(info->type).name));
     }
-    std::map<uint32_t, const LightInfo*> lightLiterals;
-    std::map<uint32_t, bool> lightListed;
+    // Lights likewise: a literal shines if any of its values is listed. By source order.
+    std::map<uint32_t, std::pair<const LightInfo*, bool>> lightLiterals;
     for (const LightInfo& info : lightInfo_) {
         if (info.range.file != 0) continue;
-        lightLiterals.try_emplace(info.range.begin, &info);
-        lightListed[info.range.begin] = lightListed[info.range.begin] || info.listed;
+        auto& [first, listed] = lightLiterals.try_emplace(info.range.begin, &info, false).first->second;
+        listed = listed || info.listed;
     }
-    for (const auto& [begin, info] : lightLiterals) {
-        if (lightListed[begin]) continue;
+    for (const auto& [begin, literal] : lightLiterals) {
+        const auto& [info, listed] = literal;
+        if (listed) continue;
         diagnostics_.warning(WarningKind::UnusedLight, info->range,
                              fmt::format("this {} does not shine: it is not in Settings.lights",
                                          objectInfo(info->type).name));
