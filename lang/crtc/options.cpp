@@ -17,7 +17,14 @@ modes:
   --dump-scene         print the evaluated scene as JSON (docs/scene-json.md)
 
 options:
-  -o FILE              output file
+  -o FILE              output image (default: the script's name with .png, or .gif
+                       with --frames); the extension picks the format: .png .jpg .tif
+                       .exr .hdr .gif; with --frames, a name with %d or %04d writes
+                       numbered images instead of an animated GIF
+  --width N, --height N  override the script's image size
+  --threads N          render threads (default: all cores)
+  --fps F              frames per second of an animated GIF (default 15)
+  --stats              print ray and acceleration-structure counts after rendering
   -I DIR               add DIR to the include search path (repeatable)
   --assets DIR         asset root for "/..." image and mesh paths (repeatable)
   --time T             evaluate with t = T (a float)
@@ -29,11 +36,12 @@ options:
   --max-size N         image width and height (default 16384)
   -Werror              treat warnings as errors
   --color WHEN         colour diagnostics: auto, always or never (default auto)
-  -q, --quiet          print nothing but diagnostics
+  -q, --quiet          print nothing but diagnostics (no progress, no summary)
   -h, --help           show this help
   --version            show the version
 
-exit status: 0 success, 1 errors in the script, 2 bad usage or I/O failure
+exit status: 0 success, 1 errors in the script, 2 bad usage or I/O failure,
+             130 interrupted (Ctrl-C; no partial image is left)
 )";
 }
 
@@ -100,6 +108,15 @@ ParsedOptions parseOptions(int argc, char** argv) {
             o.eval.time = t;
         } else if (arg == "--frames") {
             if (!value(v) || !parseNumber(v, o.frames) || o.frames < 1) return bad("--frames needs a positive integer");
+        } else if (arg == "--width" || arg == "--height") {
+            int& size = arg == "--width" ? o.width : o.height;
+            if (!value(v) || !parseNumber(v, size) || size < 1) return bad(fmt::format("{} needs a positive integer", arg));
+        } else if (arg == "--threads") {
+            if (!value(v) || !parseNumber(v, o.threads) || o.threads < 1) return bad("--threads needs a positive integer");
+        } else if (arg == "--fps") {
+            if (!value(v) || !parseNumber(v, o.fps) || !(o.fps > 0) || o.fps > 100) return bad("--fps needs a number in (0, 100]");
+        } else if (arg == "--stats") {
+            o.stats = true;
         } else if (arg == "--seed") {
             if (!value(v) || !parseNumber(v, o.eval.seed)) return bad("--seed needs a non-negative integer");
         } else if (arg == "--max-steps") {

@@ -21,6 +21,12 @@ struct Options {
     bool werror = false;
     ColourWhen colour = ColourWhen::Auto;
     bool quiet = false;
+    // Rendering
+    int width = 0;     ///< --width; 0: the script's
+    int height = 0;    ///< --height; 0: the script's
+    int threads = 0;   ///< --threads; 0: all cores
+    double fps = 15;   ///< --fps of an animated GIF
+    bool stats = false; ///< --stats
 };
 
 /// The result of reading argv: options, or a message and exit status (0 for --help).

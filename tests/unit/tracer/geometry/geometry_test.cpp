@@ -1,0 +1,144 @@
+// The Geometry variant: construction from shapes, dispatch, and nearest-crossing queries.
+#include "geometry_test_support.hpp"
+
+using namespace crt::tracer;
+using namespace crt::tracer::test;
+
+TEST_CASE("geometry: makeGeometry covers the plain shapes only") {
+    CHECK(std::holds_alternative<SphereGeometry>(*makeGeometry(SphereShape{{0, 0, 0}, 1})));
+    CHECK(std::holds_alternative<BoxGeometry>(*makeGeometry(BoxShape{{0, 0, 0}, {1, 1, 1}})));
+    CHECK(std::holds_alternative<PlaneGeometry>(*makeGeometry(PlaneShape{})));
+    CHECK(std::holds_alternative<CylinderGeometry>(*makeGeometry(CylinderShape{})));
+    CHECK(std::holds_alternative<ConeGeometry>(*makeGeometry(ConeShape{})));
+    CHECK(std::holds_alternative<TorusGeometry>(*makeGeometry(TorusShape{})));
+    CHECK(std::holds_alternative<DiscGeometry>(*makeGeometry(DiscShape{})));
+    CHECK(std::holds_alternative<QuadGeometry>(*makeGeometry(QuadShape{})));
+    CHECK(std::holds_alternative<TriangleGeometry>(*makeGeometry(TriangleShape{})));
+    CHECK_FALSE(makeGeometry(MeshShape{"a.obj", ""}));
+    CHECK_FALSE(makeGeometry(CsgNode{}));
+    CHECK_FALSE(makeGeometry(TransformNode{}));
+    CHECK_FALSE(makeGeometry(GroupNode{}));
+}
+
+TEST_CASE("geometry: solidity follows the spec") {
+    CHECK(isSolid(*makeGeometry(SphereShape{{0, 0, 0}, 1})));
+    CHECK(isSolid(*makeGeometry(BoxShape{})));
+    CHECK(isSolid(*makeGeometry(PlaneShape{})));
+    CHECK(isSolid(*makeGeometry(CylinderShape{{0, 0, 0}, {0, 1, 0}, 1, false})));
+    CHECK_FALSE(isSolid(*makeGeometry(CylinderShape{{0, 0, 0}, {0, 1, 0}, 1, true})));
+    CHECK(isSolid(*makeGeometry(ConeShape{{0, 0, 0}, 1, {0, 1, 0}, 0, false})));
+    CHECK_FALSE(isSolid(*makeGeometry(ConeShape{{0, 0, 0}, 1, {0, 1, 0}, 0, true})));
+    CHECK(isSolid(*makeGeometry(TorusShape{})));
+    CHECK_FALSE(isSolid(*makeGeometry(DiscShape{})));
+    CHECK_FALSE(isSolid(*makeGeometry(QuadShape{})));
+    CHECK_FALSE(isSolid(*makeGeometry(TriangleShape{})));
+    auto mesh = std::make_shared<MeshData>();
+    CHECK_FALSE(isSolid(Geometry(MeshTriangleGeometry(mesh, 0))));
+}
+
+TEST_CASE("geometry: the free functions dispatch to the primitive") {
+    Geometry g = *makeGeometry(SphereShape{{0, 0, 0}, 2});
+    Bounds3 b = geometryBounds(g);
+    CHECK(b.lo.x == Approx(-2));
+    CHECK(b.hi.z == Approx(2));
+    CHECK(b.contains(Vec3(2, 0, 0)));
+    Ray ray{{0, 0, -5}, {0, 0, 1}};
+    CrossingList list;
+    list.count = 3; // stale contents are replaced
+    crossLine(g, ray, list);
+    REQUIRE(list.count == 2);
+    SurfacePoint sp = surfaceAt(g, ray, list.items[0]);
+    CHECK(sp.point == Vec3(0, 0, -2));
+    CHECK(geometryBounds(*makeGeometry(PlaneShape{})).lo.y == -kInfinity);
+    CHECK(geometryBounds(*makeGeometry(TorusShape{{0, 0, 0}, 2, 0.5, {0, 1, 0}})).hi.y ==
+          Approx(0.5));
+    CHECK(geometryBounds(*makeGeometry(TorusShape{{0, 0, 0}, 2, 0.5, {0, 1, 0}})).hi.x ==
+          Approx(2.5));
+}
+
+TEST_CASE("geometry: firstCrossingAfter takes the first crossing strictly inside the range") {
+    CrossingList list;
+    list.add(-1, 0);
+    list.add(2, 1);
+    list.add(5, 2);
+    Crossing c;
+    REQUIRE(firstCrossingAfter(list, 0, kInfinity, c));
+    CHECK(c.t == 2);
+    CHECK(c.part == 1);
+    REQUIRE(firstCrossingAfter(list, 2, kInfinity, c)); // strictly after tMin
+    CHECK(c.t == 5);
+    CHECK_FALSE(firstCrossingAfter(list, 2, 5, c)); // strictly before tMax
+    CHECK_FALSE(firstCrossingAfter(list, 5, 100, c));
+    REQUIRE(firstCrossingAfter(list, -kInfinity, 0, c));
+    CHECK(c.t == -1);
+    CHECK_FALSE(firstCrossingAfter(CrossingList{}, 0, kInfinity, c));
+}
+
+TEST_CASE("geometry: every primitive's bounds contain its random hits") {
+    Random rng(51);
+    std::vector<Geometry> shapes;
+    shapes.push_back(*makeGeometry(SphereShape{{1, 2, 3}, 1.5}));
+    shapes.push_back(*makeGeometry(BoxShape{{-1, 0, 2}, {3, 1, -1}}));
+    shapes.push_back(*makeGeometry(CylinderShape{{0, 0, 0}, {1, 2, 3}, 0.7, false}));
+    shapes.push_back(*makeGeometry(ConeShape{{0, 0, 0}, 0.2, {-1, 2, 1}, 1.1, false}));
+    shapes.push_back(*makeGeometry(TorusShape{{1, 1, 1}, 2, 0.3, {1, 1, 0}}));
+    shapes.push_back(*makeGeometry(DiscShape{{0, 1, 0}, {1, 1, 1}, 2, 0.5}));
+    shapes.push_back(*makeGeometry(QuadShape{{0, 0, 0}, {1, 2, 0}, {0, 1, 3}}));
+    shapes.push_back(*makeGeometry(TriangleShape{{0, 0, 0}, {1, 2, 0}, {0, 1, 3}}));
+    for (const Geometry& g : shapes) {
+        Bounds3 b = geometryBounds(g);
+        REQUIRE(b.finite());
+        int hits = 0;
+        for (int i = 0; i < 2000; ++i) {
+            Ray ray = rng.lineThrough(
+                b.centroid() + 0.5 * b.extent() *
+                                   Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)),
+                10);
+            CrossingList list;
+            crossLine(g, ray, list);
+            for (int k = 0; k < list.count; ++k) {
+                ++hits;
+                // The exact surface is inside the bounds, so the point is, to its error bound.
+                SurfacePoint sp = surfaceAt(g, ray, list.items[k]);
+                CHECK(Bounds3{b.lo - sp.pointError, b.hi + sp.pointError}.contains(sp.point));
+            }
+        }
+        CHECK(hits > 100);
+    }
+}
+
+TEST_CASE("geometry: no direction or degenerate shapes give no crossings and no NaN") {
+    std::vector<Geometry> shapes;
+    shapes.push_back(*makeGeometry(SphereShape{{0, 0, 0}, 1}));
+    shapes.push_back(*makeGeometry(BoxShape{{-1, -1, -1}, {1, 1, 1}}));
+    shapes.push_back(*makeGeometry(CylinderShape{{0, -1, 0}, {0, 1, 0}, 1, false}));
+    shapes.push_back(*makeGeometry(ConeShape{{0, -1, 0}, 1, {0, 1, 0}, 0, true}));
+    shapes.push_back(*makeGeometry(TorusShape{{0, 0, 0}, 1, 0.5, {0, 1, 0}}));
+    shapes.push_back(*makeGeometry(DiscShape{{0, 0, 0}, {0, 1, 0}, 1, 0}));
+    shapes.push_back(*makeGeometry(QuadShape{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}));
+    shapes.push_back(*makeGeometry(TriangleShape{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}));
+    for (const Geometry& g : shapes) {
+        CrossingList list;
+        crossLine(g, {{0, 0, 0}, {0, 0, 0}}, list);
+        CHECK(list.count == 0);
+    }
+    std::vector<Geometry> degenerate;
+    degenerate.push_back(*makeGeometry(SphereShape{{0, 0, 0}, -1}));
+    degenerate.push_back(*makeGeometry(BoxShape{{1, 1, 1}, {1, 1, 1}}));
+    degenerate.push_back(*makeGeometry(PlaneShape{{0, 0, 0}, {0, 0, 0}}));
+    degenerate.push_back(*makeGeometry(CylinderShape{{0, 0, 0}, {0, 0, 0}, 1, false}));
+    degenerate.push_back(*makeGeometry(ConeShape{{0, 0, 0}, 0, {0, 1, 0}, 0, false}));
+    degenerate.push_back(*makeGeometry(TorusShape{{0, 0, 0}, 1, 1, {0, 0, 0}}));
+    degenerate.push_back(*makeGeometry(DiscShape{{0, 0, 0}, {0, 0, 0}, 1, 0}));
+    degenerate.push_back(*makeGeometry(QuadShape{{0, 0, 0}, {0, 0, 0}, {0, 0, 1}}));
+    degenerate.push_back(*makeGeometry(TriangleShape{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}));
+    Random rng(52);
+    for (const Geometry& g : degenerate) {
+        for (int i = 0; i < 200; ++i) {
+            CrossingList list;
+            crossLine(g, rng.lineThrough(rng.inBox(0.5), 3), list);
+            CHECK(list.count == 0);
+            CHECK_FALSE(list.startsInside);
+        }
+    }
+}

@@ -1,0 +1,429 @@
+// Reading and writing images through the OpenImageIO module, in one coarse process.
+//
+// Registered as a single CTest test (not per Catch2 case), since every process that loads
+// the module pays OpenImageIO's 0.4 s start. CRT_IMAGE_IO_MODULE names the built module.
+// Cases run in declaration order; the first one must see the module still unloaded.
+#include "tracer/image_io/encoding.hpp"
+#include "tracer/image_io/image_io.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <thread>
+#include <vector>
+
+using namespace crt::tracer::image_io;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A fresh directory for this process, removed when the tests end.
+const fs::path& scratch() {
+    struct Dir {
+        fs::path path =
+            fs::temp_directory_path() / ("crt_image_io_test." + std::to_string(getpid()));
+        Dir() {
+            fs::remove_all(path);
+            fs::create_directories(path);
+        }
+        ~Dir() {
+            std::error_code ec;
+            fs::remove_all(path, ec);
+        }
+    };
+    static Dir dir;
+    return dir.path;
+}
+
+std::string scratchFile(const std::string& name) {
+    return (scratch() / name).string();
+}
+
+std::vector<std::string> scratchListing() {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(scratch()))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+bool openImageIoMapped() {
+    std::ifstream maps("/proc/self/maps");
+    const std::string text{std::istreambuf_iterator<char>(maps), std::istreambuf_iterator<char>()};
+    return text.find("libOpenImageIO") != std::string::npos;
+}
+
+// An RGB image whose every value is a multiple of 1/255, so 8-bit formats store it exactly.
+ImageBuffer codeGradient(int width, int height) {
+    ImageBuffer image{width, height, 3, {}};
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            image.pixels.push_back(float((x * 7 + y * 3) % 256) / 255.0f);
+            image.pixels.push_back(float((x * 13) % 256) / 255.0f);
+            image.pixels.push_back(float((y * 11 + 5) % 256) / 255.0f);
+        }
+    return image;
+}
+
+ImageBuffer solid(int width, int height, float r, float g, float b) {
+    ImageBuffer image{width, height, 3, {}};
+    for (int i = 0; i < width * height; ++i) image.pixels.insert(image.pixels.end(), {r, g, b});
+    return image;
+}
+
+ImageBuffer readOrFail(const std::string& path, bool* eightBit = nullptr) {
+    std::string error;
+    std::optional<ImageBuffer> image = readImage(path, error, eightBit);
+    INFO(error);
+    REQUIRE(image);
+    REQUIRE(image->channels == 3);
+    REQUIRE(image->pixels.size() == std::size_t(image->width) * image->height * 3);
+    return *image;
+}
+
+void writeOrFail(const std::string& path, const ImageBuffer& image,
+                 const WriteOptions& options = {}) {
+    std::string error;
+    const bool ok = writeImage(path, image, options, error);
+    INFO(error);
+    REQUIRE(ok);
+}
+
+// A binary PPM written by hand, readable without having written anything through OIIO.
+void writePpm(const std::string& path, int width, int height,
+              const std::vector<std::uint8_t>& rgb) {
+    std::ofstream out(path, std::ios::binary);
+    out << "P6\n" << width << " " << height << "\n255\n";
+    out.write(reinterpret_cast<const char*>(rgb.data()), std::streamsize(rgb.size()));
+}
+
+} // namespace
+
+TEST_CASE("startLoading, then concurrent reads from many threads", "[image_io]") {
+    // Written before the module loads, so that the readers below start while it is loading.
+    const int width = 17, height = 9;
+    std::vector<std::uint8_t> rgb;
+    for (int i = 0; i < width * height * 3; ++i) rgb.push_back(std::uint8_t((i * 37) % 256));
+    const std::string ppm = scratchFile("concurrent.ppm");
+    writePpm(ppm, width, height, rgb);
+
+    CHECK_FALSE(openImageIoMapped());
+    startLoading();
+    startLoading(); // idempotent
+    constexpr int kThreads = 8, kReadsPerThread = 10;
+    std::vector<int> failures(kThreads, 0);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < kThreads; ++t)
+        threads.emplace_back([&, t] {
+            startLoading();
+            for (int n = 0; n < kReadsPerThread; ++n) {
+                std::string error;
+                bool eightBit = false;
+                const std::optional<ImageBuffer> image = readImage(ppm, error, &eightBit);
+                bool same = image && eightBit && image->width == width && image->height == height &&
+                            image->pixels.size() == rgb.size();
+                for (std::size_t i = 0; same && i < rgb.size(); ++i)
+                    same = image->pixels[i] == float(rgb[i]) / 255.0f;
+                if (!same) ++failures[t];
+            }
+        });
+    for (std::thread& thread : threads) thread.join();
+    for (int t = 0; t < kThreads; ++t) CHECK(failures[t] == 0);
+    std::string error;
+    CHECK(ensureLoaded(error));
+    CHECK(openImageIoMapped());
+}
+
+TEST_CASE("PNG and TIFF round trips are exact for 8-bit codes", "[image_io]") {
+    const ImageBuffer image = codeGradient(64, 40);
+    for (const char* name : {"round.png", "round.tif", "round.tiff", "ROUND.PNG"}) {
+        INFO(name);
+        writeOrFail(scratchFile(name), image);
+        bool eightBit = false;
+        const ImageBuffer back = readOrFail(scratchFile(name), &eightBit);
+        CHECK(eightBit);
+        CHECK(back.width == image.width);
+        CHECK(back.height == image.height);
+        CHECK(back.pixels == image.pixels);
+    }
+}
+
+TEST_CASE("8-bit files hold the spec's codes", "[image_io]") {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    // One row: 0, 1, ½, negative, NaN, above 1, ¼, a tiny value.
+    const std::vector<float> values{0.0f, 1.0f, 0.5f, -0.3f, nan, 4.0f, 0.25f, 0.001f};
+    ImageBuffer image{int(values.size()), 1, 3, {}};
+    for (float v : values) image.pixels.insert(image.pixels.end(), {v, v, v});
+
+    struct Case {
+        WriteOptions options;
+        std::vector<int> codes;
+    };
+    const Case cases[] = {
+        {{1.0, false}, {0, 255, 128, 0, 0, 255, 64, 0}},
+        {{2.2, false}, {0, 255, 186, 0, 0, 255, 136, 11}},
+        {{1.0, true}, {0, 255, 188, 0, 0, 255, 137, 3}},
+    };
+    for (const Case& c : cases) {
+        INFO("gamma " << c.options.gamma << " srgb " << c.options.srgb);
+        const std::string path = scratchFile("codes.png");
+        writeOrFail(path, image, c.options);
+        const ImageBuffer back = readOrFail(path);
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            INFO("value " << values[i]);
+            const int expected =
+                c.options.srgb ? encodeSrgb8(values[i]) : encodeGamma8(values[i], c.options.gamma);
+            CHECK(expected == c.codes[i]);
+            for (int ch = 0; ch < 3; ++ch) CHECK(back.pixels[i * 3 + ch] == c.codes[i] / 255.0f);
+        }
+    }
+}
+
+TEST_CASE("EXR keeps linear values, above 1 and negative, exactly", "[image_io]") {
+    ImageBuffer image{4, 2, 3, {}};
+    const float values[] = {0.0f, 1.0f, 3.5f, -0.25f, 1e4f, 1e-6f, 0.1f, -7.0f};
+    for (int i = 0; i < 8; ++i)
+        image.pixels.insert(image.pixels.end(), {values[i], values[i] * 2.0f, -values[i]});
+    const std::string path = scratchFile("linear.exr");
+    // Options are for 8-bit formats only: a gamma must not touch float output.
+    writeOrFail(path, image, {2.2, true});
+    bool eightBit = true;
+    const ImageBuffer back = readOrFail(path, &eightBit);
+    CHECK_FALSE(eightBit);
+    CHECK(back.width == 4);
+    CHECK(back.height == 2);
+    CHECK(back.pixels == image.pixels);
+}
+
+TEST_CASE("HDR keeps values above 1 within RGBE precision", "[image_io]") {
+    ImageBuffer image{3,
+                      2,
+                      3,
+                      {0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 1.0f, 5.0f, 2.5f, 0.5f, 100.0f, 0.0f, 30.0f,
+                       0.25f, 0.125f, 0.0625f, 0.7f, 0.3f, 0.9f}};
+    const std::string path = scratchFile("radiance.hdr");
+    writeOrFail(path, image);
+    bool eightBit = true;
+    const ImageBuffer back = readOrFail(path, &eightBit);
+    CHECK_FALSE(eightBit);
+    REQUIRE(back.pixels.size() == image.pixels.size());
+    for (std::size_t p = 0; p < image.pixels.size(); p += 3) {
+        // RGBE shares one exponent per pixel: the error is relative to the largest channel.
+        const float largest = std::max({image.pixels[p], image.pixels[p + 1], image.pixels[p + 2]});
+        for (int ch = 0; ch < 3; ++ch)
+            CHECK(back.pixels[p + ch] == Approx(image.pixels[p + ch]).margin(largest / 128.0f));
+    }
+}
+
+TEST_CASE("JPEG round trip stays within a tolerance", "[image_io]") {
+    ImageBuffer image{64, 48, 3, {}};
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 64; ++x)
+            image.pixels.insert(image.pixels.end(), {x / 63.0f, y / 47.0f,
+                                                     0.5f + 0.3f * std::sin(x * 0.1f + y * 0.05f)});
+    for (const char* name : {"photo.jpg", "photo.jpeg"}) {
+        writeOrFail(scratchFile(name), image);
+        bool eightBit = false;
+        const ImageBuffer back = readOrFail(scratchFile(name), &eightBit);
+        CHECK(eightBit);
+        REQUIRE(back.pixels.size() == image.pixels.size());
+        double sum = 0, worst = 0;
+        for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+            const double d = std::abs(back.pixels[i] - image.pixels[i]);
+            sum += d;
+            worst = std::max(worst, d);
+        }
+        CHECK(sum / image.pixels.size() < 2.0 / 255.0);
+        CHECK(worst < 12.0 / 255.0);
+    }
+}
+
+TEST_CASE("grey images read as three equal channels", "[image_io]") {
+    ImageBuffer grey{5, 3, 1, {}};
+    for (int i = 0; i < 15; ++i) grey.pixels.push_back(float(i * 17) / 255.0f);
+    for (const char* name : {"grey.png", "grey.exr", "grey.gif", "grey.hdr"}) {
+        INFO(name);
+        writeOrFail(scratchFile(name), grey);
+        const ImageBuffer back = readOrFail(scratchFile(name));
+        REQUIRE(back.pixels.size() == 45);
+        for (int i = 0; i < 15; ++i) {
+            CHECK(back.pixels[i * 3] == back.pixels[i * 3 + 1]);
+            CHECK(back.pixels[i * 3] == back.pixels[i * 3 + 2]);
+        }
+        if (std::string(name) == "grey.png" || std::string(name) == "grey.exr")
+            for (int i = 0; i < 15; ++i) CHECK(back.pixels[i * 3] == grey.pixels[i]);
+    }
+    // A PGM written by hand: an 8-bit single-channel file from elsewhere.
+    const std::string pgm = scratchFile("hand.pgm");
+    {
+        std::ofstream out(pgm, std::ios::binary);
+        out << "P5\n2 1\n255\n";
+        out.put(char(10)).put(char(200));
+    }
+    const ImageBuffer back = readOrFail(pgm);
+    CHECK(back.pixels == std::vector<float>{10 / 255.0f, 10 / 255.0f, 10 / 255.0f, 200 / 255.0f,
+                                            200 / 255.0f, 200 / 255.0f});
+}
+
+TEST_CASE("alpha is dropped on read and not premultiplied", "[image_io]") {
+    ImageBuffer rgba{2, 1, 4, {0.6f, 0.4f, 0.2f, 0.0f, 1.0f, 0.5f, 0.0f, 0.5f}};
+    const std::string path = scratchFile("alpha.png");
+    writeOrFail(path, rgba, {2.2, false});
+    const ImageBuffer back = readOrFail(path);
+    CHECK(back.pixels[0] == encodeGamma8(0.6f, 2.2) / 255.0f); // alpha 0 keeps its colour
+    CHECK(back.pixels[1] == encodeGamma8(0.4f, 2.2) / 255.0f);
+    CHECK(back.pixels[3] == 1.0f);
+    CHECK(back.pixels[4] == encodeGamma8(0.5f, 2.2) / 255.0f); // not divided by alpha ½
+    std::string error;
+    const std::optional<ImageInfo> info = describeImage(path, error);
+    REQUIRE(info);
+    CHECK(info->channels == 4);
+}
+
+TEST_CASE("an animated GIF has one subimage per frame, the frame rate, and loops", "[image_io]") {
+    std::vector<ImageBuffer> frames;
+    for (int i = 0; i < 5; ++i) frames.push_back(solid(16, 12, i / 4.0f, 1.0f - i / 4.0f, 0.0f));
+    const std::string path = scratchFile("anim.gif");
+    std::string error;
+    REQUIRE(writeAnimatedGif(path, frames, 20.0, {}, error));
+    std::optional<ImageInfo> info = describeImage(path, error);
+    INFO(error);
+    REQUIRE(info);
+    CHECK(info->format == "gif");
+    CHECK(info->subimages == 5);
+    CHECK(info->width == 16);
+    CHECK(info->height == 12);
+    CHECK(info->fps == Approx(20.0));
+    CHECK(info->loopCount == 0);
+    // The first frame is pure green, which a 256-colour palette holds exactly.
+    const ImageBuffer first = readOrFail(path);
+    CHECK(first.pixels[0] == 0.0f);
+    CHECK(first.pixels[1] == 1.0f);
+    CHECK(first.pixels[2] == 0.0f);
+
+    // 15 fps is a delay of 7/100 s, the nearest GIF can store.
+    REQUIRE(writeAnimatedGif(path, frames, 15.0, {}, error));
+    info = describeImage(path, error);
+    REQUIRE(info);
+    CHECK(info->fps == Approx(100.0 / 7.0));
+
+    CHECK(writeAnimatedGif(scratchFile("one.gif"), {frames[0]}, 10.0, {}, error));
+    CHECK_FALSE(writeAnimatedGif(scratchFile("anim.png"), frames, 20.0, {}, error));
+    CHECK_THAT(error, Catch::Contains(".gif"));
+    CHECK_FALSE(writeAnimatedGif(scratchFile("bad.gif"), {frames[0], solid(8, 8, 0, 0, 0)}, 20.0,
+                                 {}, error));
+    CHECK_THAT(error, Catch::Contains("frame 1"));
+    CHECK_FALSE(writeAnimatedGif(scratchFile("bad.gif"), frames, 0.0, {}, error));
+    CHECK_FALSE(writeAnimatedGif(scratchFile("bad.gif"), {}, 20.0, {}, error));
+    CHECK_FALSE(fs::exists(scratchFile("bad.gif")));
+}
+
+TEST_CASE("a single-frame GIF is written by extension", "[image_io]") {
+    const std::string path = scratchFile("still.gif");
+    writeOrFail(path, solid(8, 8, 1.0f, 0.0f, 0.0f));
+    std::string error;
+    const std::optional<ImageInfo> info = describeImage(path, error);
+    REQUIRE(info);
+    CHECK(info->subimages == 1);
+    const ImageBuffer back = readOrFail(path);
+    CHECK(back.pixels[0] == 1.0f);
+    CHECK(back.pixels[1] == 0.0f);
+}
+
+TEST_CASE("a write into a missing directory fails and leaves nothing", "[image_io]") {
+    const std::string path = scratchFile("no_such_dir/out.png");
+    std::string error;
+    CHECK_FALSE(writeImage(path, solid(4, 4, 0.5f, 0.5f, 0.5f), {}, error));
+    CHECK_THAT(error, Catch::Contains(path) && Catch::Contains("does not exist"));
+    CHECK_FALSE(fs::exists(scratchFile("no_such_dir")));
+}
+
+TEST_CASE("no temporary file stays after a write, failed or not", "[image_io]") {
+    const fs::path dir = scratch() / "tidy";
+    fs::create_directories(dir);
+    const ImageBuffer image = solid(8, 8, 0.2f, 0.4f, 0.6f);
+    std::string error;
+    for (const char* name : {"a.png", "b.jpg", "c.tif", "d.exr", "e.hdr", "f.gif"})
+        CHECK(writeImage((dir / name).string(), image, {}, error));
+    // Overwriting an existing image replaces it whole.
+    CHECK(writeImage((dir / "a.png").string(), solid(3, 2, 1.0f, 1.0f, 1.0f), {}, error));
+    CHECK(readOrFail((dir / "a.png").string()).width == 3);
+    // Failures after the temporary file exists: a format that cannot take the channel count,
+    // and a rename onto a directory.
+    ImageBuffer rgba{2, 2, 4, std::vector<float>(16, 0.5f)};
+    CHECK_FALSE(writeImage((dir / "g.hdr").string(), rgba, {}, error));
+    fs::create_directory(dir / "h.png");
+    CHECK_FALSE(writeImage((dir / "h.png").string(), image, {}, error));
+    CHECK_THAT(error, Catch::Contains("directory"));
+
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    CHECK(names ==
+          std::vector<std::string>{"a.png", "b.jpg", "c.tif", "d.exr", "e.hdr", "f.gif", "h.png"});
+}
+
+TEST_CASE("bad buffers and options are errors", "[image_io]") {
+    std::string error;
+    const std::string path = scratchFile("bad.png");
+    CHECK_FALSE(writeImage(path, ImageBuffer{2, 2, 3, std::vector<float>(5)}, {}, error));
+    CHECK_THAT(error, Catch::Contains("values"));
+    CHECK_FALSE(writeImage(path, ImageBuffer{0, 2, 3, {}}, {}, error));
+    CHECK_FALSE(writeImage(path, ImageBuffer{1, 1, 2, {0, 0}}, {}, error));
+    CHECK_FALSE(writeImage(path, solid(1, 1, 0, 0, 0), {0.0, false}, error));
+    CHECK_THAT(error, Catch::Contains("gamma"));
+    CHECK_FALSE(writeImage(path, solid(1, 1, 0, 0, 0), {std::nan(""), false}, error));
+    CHECK_FALSE(fs::exists(path));
+}
+
+TEST_CASE("reading a missing or broken file is an error naming it", "[image_io]") {
+    std::string error;
+    const std::string missing = scratchFile("missing.png");
+    CHECK_FALSE(readImage(missing, error));
+    CHECK_THAT(error, Catch::Contains(missing));
+
+    const std::string broken = scratchFile("broken.png");
+    std::ofstream(broken) << "this is not a PNG";
+    error.clear();
+    CHECK_FALSE(readImage(broken, error));
+    CHECK_THAT(error, Catch::Contains(broken));
+    INFO(error);
+    CHECK(error.size() > broken.size() + 16); // says why, too
+
+    error.clear();
+    CHECK_FALSE(describeImage(missing, error));
+    CHECK_THAT(error, Catch::Contains(missing));
+}
+
+TEST_CASE("concurrent writes and reads of different files", "[image_io]") {
+    constexpr int kThreads = 6;
+    std::vector<int> failures(kThreads, 0);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < kThreads; ++t)
+        threads.emplace_back([&, t] {
+            const ImageBuffer image = codeGradient(32 + t, 16);
+            for (int n = 0; n < 5; ++n) {
+                const std::string path =
+                    scratchFile("thread" + std::to_string(t) + (n % 2 ? ".png" : ".tif"));
+                std::string error;
+                bool ok = writeImage(path, image, {}, error);
+                const std::optional<ImageBuffer> back = ok ? readImage(path, error) : std::nullopt;
+                ok = back && back->pixels == image.pixels;
+                if (!ok) ++failures[t];
+            }
+        });
+    for (std::thread& thread : threads) thread.join();
+    for (int t = 0; t < kThreads; ++t) CHECK(failures[t] == 0);
+    // Nothing but finished images in the directory: no temporary survived the races.
+    for (const std::string& name : scratchListing()) CHECK(name.find(".tmp") == std::string::npos);
+}

@@ -1,0 +1,96 @@
+// The BVH finds exactly what a brute-force search over every primitive finds.
+#include "scene_builder_util.hpp"
+#include "tracer/render_scene.hpp"
+#include "tracer/sampling.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace crt::tracer;
+using crt::tracer::test::SceneMaker;
+
+namespace {
+
+/// Nearest crossing with t > 0 over all primitives, without the BVH.
+double bruteForce(const RenderScene& scene, const Ray& ray) {
+    double best = kInfinity;
+    for (const Primitive& p : scene.primitives) {
+        CrossingList list;
+        Ray r = p.transform < 0 ? ray : scene.transforms[p.transform].toObject.ray(ray);
+        crossLine(p.geometry, r, list);
+        for (int i = 0; i < list.count; ++i)
+            if (list.items[i].t > 0 && list.items[i].t < best) best = list.items[i].t;
+    }
+    return best;
+}
+
+} // namespace
+
+TEST_CASE("BVH nearest hits equal brute force on random sphere scenes", "[bvh]") {
+    for (uint64_t seed : {1u, 2u, 3u}) {
+        SceneMaker maker;
+        SampleRng rng(seed, 0, 0);
+        int count = seed == 3 ? 2000 : 300;
+        for (int i = 0; i < count; ++i) {
+            Vec3 c(rng.uniform() * 20 - 10, rng.uniform() * 20 - 10, rng.uniform() * 20 - 10);
+            maker.draw(maker.sphere(c, 0.05 + rng.uniform() * 0.8));
+        }
+        // Some transformed boxes too, so world bounds of rotated objects are exercised.
+        for (int i = 0; i < 50; ++i) {
+            Vec3 c(rng.uniform() * 20 - 10, rng.uniform() * 20 - 10, rng.uniform() * 20 - 10);
+            int32_t b = maker.box(Vec3(-0.3), Vec3(0.3));
+            maker.draw(maker.transformed(b, {crt::tracer::test::rotate(Vec3(rng.uniform() * 90, rng.uniform() * 90, 0)),
+                                             crt::tracer::test::translate(c)}));
+        }
+        std::string error;
+        auto scene = buildRenderScene(maker.desc, error);
+        REQUIRE(scene);
+        REQUIRE(scene->bvh.nodeCount() > 1);
+        QueryScratch scratch;
+        RayStats stats;
+        int hits = 0;
+        for (int i = 0; i < 3000; ++i) {
+            Ray ray{Vec3(rng.uniform() * 30 - 15, rng.uniform() * 30 - 15, rng.uniform() * 30 - 15),
+                    glm::normalize(Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5))};
+            Hit hit;
+            bool found = scene->intersect(ray, kInfinity, hit, scratch, stats);
+            double expected = bruteForce(*scene, ray);
+            REQUIRE(found == (expected < kInfinity));
+            if (found) {
+                REQUIRE(hit.t == expected);
+                ++hits;
+            }
+        }
+        CHECK(hits > 300);
+        // The BVH must prune: far fewer tests than primitives × rays.
+        CHECK(stats.intersectionTests < 3000ull * scene->primitives.size() / 10);
+    }
+}
+
+TEST_CASE("BVH: every crossing query agrees with brute force counts", "[bvh]") {
+    SceneMaker maker;
+    SampleRng rng(7, 0, 0);
+    for (int i = 0; i < 400; ++i)
+        maker.draw(maker.sphere(Vec3(rng.uniform() * 10, rng.uniform() * 10, rng.uniform() * 10), 0.3));
+    maker.draw(maker.plane(Vec3(0, 1, 0), Vec3(0, -1, 0)));
+    std::string error;
+    auto scene = buildRenderScene(maker.desc, error);
+    REQUIRE(scene);
+    CHECK(scene->unbounded.size() == 1);
+    QueryScratch scratch;
+    RayStats stats;
+    for (int i = 0; i < 500; ++i) {
+        Ray ray{Vec3(rng.uniform() * 10, 12, rng.uniform() * 10), glm::normalize(Vec3(rng.uniform() - 0.5, -1, rng.uniform() - 0.5))};
+        int counted = 0;
+        scene->forEachCrossing(ray, kInfinity, scratch, stats, [&](int32_t, double) {
+            ++counted;
+            return true;
+        });
+        int expected = 0;
+        for (const Primitive& p : scene->primitives) {
+            CrossingList list;
+            crossLine(p.geometry, ray, list);
+            for (int k = 0; k < list.count; ++k) expected += list.items[k].t > 0;
+        }
+        REQUIRE(counted == expected);
+    }
+}

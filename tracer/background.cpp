@@ -1,0 +1,34 @@
+// Backgrounds; the panorama uses the corrected equirectangular mapping of spec §5.
+#include "tracer/background.hpp"
+
+#include "tracer/lights.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace crt::tracer {
+
+Background::Background(const BackgroundDesc& desc, const Image* panorama)
+    : kind_(desc.kind), color_(rgb(desc.color)), horizon_(rgb(desc.horizon)), sky_(rgb(desc.sky)),
+      panorama_(panorama), angle_(desc.angle) {}
+
+Vec3 Background::radiance(const Vec3& d) const {
+    switch (kind_) {
+    case BackgroundKind::Solid: return color_;
+    case BackgroundKind::Gradient: {
+        double e = std::min(std::abs(d.y), 1.0);
+        return horizon_ + (sky_ - horizon_) * e;
+    }
+    case BackgroundKind::Image: {
+        if (!panorama_ || panorama_->width == 0) return color_;
+        double a = std::fmod(angle_ + std::atan2(-d.x, d.z) + kPi, 2 * kPi);
+        if (a < 0) a += 2 * kPi;
+        double u = 1 - a / (2 * kPi);
+        double v = 0.5 - std::asin(std::clamp(d.y, -1.0, 1.0)) / kPi;
+        return panorama_->bilinear(u, v, false);
+    }
+    }
+    return color_;
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,23 @@
+// What a ray that leaves the scene sees: a colour, a sky gradient or a panorama (spec §5).
+#pragma once
+
+#include "tracer/image.hpp"
+#include "tracer/scene_desc.hpp"
+
+namespace crt::tracer {
+
+class Background {
+public:
+    /// `panorama` is the decoded image of an image background (null otherwise).
+    Background(const BackgroundDesc& desc, const Image* panorama);
+    /// The colour seen along the unit direction d.
+    Vec3 radiance(const Vec3& d) const;
+
+private:
+    BackgroundKind kind_;
+    Vec3 color_, horizon_, sky_;
+    const Image* panorama_;
+    double angle_;
+};
+
+} // namespace crt::tracer

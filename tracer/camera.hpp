@@ -1,0 +1,39 @@
+// The camera of spec §5-§6: pinhole or spherical projection, optional thin lens for depth of field.
+#pragma once
+
+#include "tracer/geometry/ray.hpp"
+#include "tracer/scene_desc.hpp"
+
+namespace crt::tracer {
+
+class Camera {
+public:
+    Camera(const CameraDesc& desc, int width, int height, int dofSamples);
+
+    /// Whether depth of field is on: aperture > 0 and more than one DOF sample (as the original).
+    bool usesLens() const { return usesLens_; }
+    /// The pinhole ray through the continuous image point (u, v), in pixels from the top left.
+    Ray ray(double u, double v) const;
+    /// The ray from the lens point chosen by `lensSample` (in [0,1)²), aimed at where the
+    /// pinhole ray meets the focal plane.
+    Ray lensRay(double u, double v, const Vec2& lensSample) const;
+    /// A point of the aperture shape with circumradius 1, in (right, up) coordinates.
+    Vec2 aperturePoint(const Vec2& sample) const;
+
+    const Vec3& position() const { return position_; }
+    const Vec3& forward() const { return forward_; }
+    const Vec3& right() const { return right_; }
+    const Vec3& up() const { return up_; }
+
+private:
+    Vec3 position_, forward_, right_, up_;
+    double tanHalfFov_, aspect_;
+    double width_, height_;
+    Projection projection_;
+    ApertureShape shape_;
+    int blades_;
+    double lensRadius_, focalDistance_;
+    bool usesLens_;
+};
+
+} // namespace crt::tracer

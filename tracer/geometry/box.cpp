@@ -1,0 +1,79 @@
+// The axis-aligned box primitive (in object space): slab crossings and per-face surface points.
+#include "tracer/geometry/box.hpp"
+
+#include "tracer/geometry/geometry_math.hpp"
+
+#include <utility>
+
+namespace crt::tracer {
+
+BoxGeometry::BoxGeometry(const BoxShape& desc)
+    : lo_(glm::min(desc.cornerA, desc.cornerB)), hi_(glm::max(desc.cornerA, desc.cornerB)),
+      empty_(!(lo_.x < hi_.x && lo_.y < hi_.y && lo_.z < hi_.z)) {}
+
+Bounds3 BoxGeometry::bounds() const {
+    return empty_ ? Bounds3{} : Bounds3{lo_, hi_};
+}
+
+void BoxGeometry::crossLine(const Ray& ray, CrossingList& out) const {
+    out.count = 0;
+    out.startsInside = false;
+    if (empty_) return;
+    double tEnter = -kInfinity, tExit = kInfinity;
+    uint32_t faceEnter = 0, faceExit = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        double o = ray.origin[axis], d = ray.dir[axis];
+        if (d == 0) {
+            // Parallel to this slab: the closed slab contains the line or misses it entirely.
+            if (o < lo_[axis] || o > hi_[axis]) return;
+            continue;
+        }
+        double tLo = (lo_[axis] - o) / d, tHi = (hi_[axis] - o) / d;
+        auto faceLo = uint32_t(2 * axis), faceHi = uint32_t(2 * axis + 1);
+        if (tLo > tHi) {
+            std::swap(tLo, tHi);
+            std::swap(faceLo, faceHi);
+        }
+        if (tLo > tEnter) {
+            tEnter = tLo;
+            faceEnter = faceLo;
+        }
+        if (tHi < tExit) {
+            tExit = tHi;
+            faceExit = faceHi;
+        }
+    }
+    if (!(tEnter <= tExit) || !std::isfinite(tEnter) || !std::isfinite(tExit)) return;
+    out.add(tEnter, faceEnter);
+    out.add(tExit, faceExit);
+}
+
+SurfacePoint BoxGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+    int axis = int(crossing.part / 2) % 3;
+    bool high = crossing.part % 2 == 1;
+    double face = high ? hi_[axis] : lo_[axis];
+    Vec3 n(0.0);
+    n[axis] = high ? 1 : -1;
+    Vec3 p = ray.at(crossing.t);
+    double distance = high ? p[axis] - face : face - p[axis];
+    RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance,
+                                       errorGamma(1) * std::abs(distance), n, sumAbs(hi_ - lo_));
+    // The face plane is representable: snap onto it exactly. The exact crossing lies on the
+    // face, so clamping the other coordinates into it only brings the point closer.
+    r.point[axis] = face;
+    r.error[axis] = 0;
+    int ua = (axis + 1) % 3, va = (axis + 2) % 3;
+    r.point[ua] = std::clamp(r.point[ua], lo_[ua], hi_[ua]);
+    r.point[va] = std::clamp(r.point[va], lo_[va], hi_[va]);
+
+    SurfacePoint sp;
+    sp.point = r.point;
+    sp.pointError = r.error;
+    sp.normal = n;
+    sp.shadingNormal = n;
+    sp.uv = {clamp01((r.point[ua] - lo_[ua]) / (hi_[ua] - lo_[ua])),
+             clamp01((r.point[va] - lo_[va]) / (hi_[va] - lo_[va]))};
+    return sp;
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,13 @@
+// The finite cone (frustum) primitive (capped, or open and then not a solid).
+#include "tracer/geometry/cone.hpp"
+
+namespace crt::tracer {
+
+ConeGeometry::ConeGeometry(const ConeShape& desc)
+    : solid_(desc.base, desc.top, desc.baseRadius, desc.topRadius, desc.open) {}
+
+SurfacePoint ConeGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+    return solid_.surfaceAt(ray, crossing);
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,13 @@
+// The finite cylinder primitive (capped, or open and then not a solid).
+#include "tracer/geometry/cylinder.hpp"
+
+namespace crt::tracer {
+
+CylinderGeometry::CylinderGeometry(const CylinderShape& desc)
+    : solid_(desc.base, desc.top, desc.radius, desc.radius, desc.open) {}
+
+SurfacePoint CylinderGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+    return solid_.surfaceAt(ray, crossing);
+}
+
+} // namespace crt::tracer

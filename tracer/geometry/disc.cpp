@@ -1,0 +1,58 @@
+// The disc primitive (with an optional hole: an annulus); a surface, not a solid.
+#include "tracer/geometry/disc.hpp"
+
+namespace crt::tracer {
+
+DiscGeometry::DiscGeometry(const DiscShape& desc) : center_(desc.center) {
+    double len = glm::length(desc.normal);
+    radius_ = desc.radius > 0 ? desc.radius : 0;
+    hole_ = desc.hole > 0 ? desc.hole : 0;
+    empty_ = !(radius_ > hole_) || !(len > 0) || !std::isfinite(len);
+    frame_ = Frame::fromAxis(empty_ ? Vec3(0, 1, 0) : desc.normal / len);
+}
+
+Bounds3 DiscGeometry::bounds() const {
+    if (empty_) return {};
+    const Vec3& w = frame_.w;
+    Vec3 e = radius_ * glm::sqrt(glm::max(Vec3(1.0) - w * w, Vec3(0.0)));
+    return padded({center_ - e, center_ + e});
+}
+
+void DiscGeometry::crossLine(const Ray& ray, CrossingList& out) const {
+    out.count = 0;
+    out.startsInside = false;
+    if (empty_) return;
+    double nd = glm::dot(frame_.w, ray.dir);
+    if (nd == 0) return;
+    double t = glm::dot(frame_.w, center_ - ray.origin) / nd;
+    if (!std::isfinite(t)) return;
+    Vec3 rel = ray.at(t) - center_;
+    // Measured in the plane (the normal component is only rounding).
+    double x = glm::dot(rel, frame_.u), y = glm::dot(rel, frame_.v);
+    double r2 = x * x + y * y;
+    if (r2 <= radius_ * radius_ && r2 >= hole_ * hole_) out.add(t, 0);
+}
+
+SurfacePoint DiscGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+    const Vec3& n = frame_.w;
+    Vec3 p = ray.at(crossing.t);
+    Vec3 rel = p - center_;
+    double distance = glm::dot(n, rel);
+    // As the plane's: rounding relative to |p| + |centre|, and the normalised normal's tilt (one
+    // rounding per component) times the distance from the centre along each axis.
+    double distanceError = errorGamma(6) * glm::dot(glm::abs(n), glm::abs(p) + glm::abs(center_)) +
+                           errorGamma(2) * glm::dot(glm::abs(n), glm::abs(rel)) +
+                           errorGamma(3) * std::abs(distance);
+    RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n, 2 * radius_);
+    Vec3 onPlane = r.point - center_;
+    double x = glm::dot(onPlane, frame_.u), y = glm::dot(onPlane, frame_.v);
+    SurfacePoint sp;
+    sp.point = r.point;
+    sp.pointError = r.error;
+    sp.normal = n;
+    sp.shadingNormal = n;
+    sp.uv = {angleCoordinate(y, x), clamp01(std::sqrt(x * x + y * y) / radius_)};
+    return sp;
+}
+
+} // namespace crt::tracer

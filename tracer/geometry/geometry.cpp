@@ -1,0 +1,64 @@
+// Every primitive behind one type, and the queries the renderer runs on them.
+#include "tracer/geometry/geometry.hpp"
+
+#include <type_traits>
+
+namespace crt::tracer {
+
+Bounds3 geometryBounds(const Geometry& geometry) {
+    return std::visit([](const auto& g) { return g.bounds(); }, geometry);
+}
+
+void crossLine(const Geometry& geometry, const Ray& ray, CrossingList& out) {
+    std::visit([&](const auto& g) { g.crossLine(ray, out); }, geometry);
+}
+
+SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing& crossing) {
+    return std::visit([&](const auto& g) { return g.surfaceAt(ray, crossing); }, geometry);
+}
+
+bool isSolid(const Geometry& geometry) {
+    return std::visit([](const auto& g) { return g.solid(); }, geometry);
+}
+
+std::optional<Geometry> makeGeometry(const Shape& shape) {
+    return std::visit(
+        [](const auto& s) -> std::optional<Geometry> {
+            using S = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<S, SphereShape>)
+                return Geometry(SphereGeometry(s));
+            else if constexpr (std::is_same_v<S, BoxShape>)
+                return Geometry(BoxGeometry(s));
+            else if constexpr (std::is_same_v<S, PlaneShape>)
+                return Geometry(PlaneGeometry(s));
+            else if constexpr (std::is_same_v<S, CylinderShape>)
+                return Geometry(CylinderGeometry(s));
+            else if constexpr (std::is_same_v<S, ConeShape>)
+                return Geometry(ConeGeometry(s));
+            else if constexpr (std::is_same_v<S, TorusShape>)
+                return Geometry(TorusGeometry(s));
+            else if constexpr (std::is_same_v<S, DiscShape>)
+                return Geometry(DiscGeometry(s));
+            else if constexpr (std::is_same_v<S, QuadShape>)
+                return Geometry(QuadGeometry(s));
+            else if constexpr (std::is_same_v<S, TriangleShape>)
+                return Geometry(TriangleGeometry(s));
+            else
+                return std::nullopt; // MeshShape, CsgNode, TransformNode, GroupNode
+        },
+        shape);
+}
+
+bool firstCrossingAfter(const CrossingList& crossings, double tMin, double tMax, Crossing& out) {
+    for (int i = 0; i < crossings.count; ++i) {
+        const Crossing& c = crossings.items[i];
+        if (c.t >= tMax) return false;
+        if (c.t > tMin) {
+            out = c;
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace crt::tracer

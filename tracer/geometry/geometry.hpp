@@ -1,0 +1,41 @@
+// Every primitive behind one type, and the queries the renderer runs on them.
+#pragma once
+
+#include "tracer/geometry/box.hpp"
+#include "tracer/geometry/cone.hpp"
+#include "tracer/geometry/cylinder.hpp"
+#include "tracer/geometry/disc.hpp"
+#include "tracer/geometry/mesh_triangle.hpp"
+#include "tracer/geometry/plane.hpp"
+#include "tracer/geometry/quad.hpp"
+#include "tracer/geometry/sphere.hpp"
+#include "tracer/geometry/torus.hpp"
+#include "tracer/geometry/triangle.hpp"
+
+#include <optional>
+#include <variant>
+
+namespace crt::tracer {
+
+/// One primitive in its object space.
+using Geometry =
+    std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry, ConeGeometry,
+                 TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshTriangleGeometry>;
+
+/// Object-space bounds (Bounds3::everything() for a plane, empty for a degenerate shape).
+Bounds3 geometryBounds(const Geometry& geometry);
+/// Every crossing of the whole line, ascending, and whether it starts inside (see shape.hpp).
+void crossLine(const Geometry& geometry, const Ray& ray, CrossingList& out);
+/// The surface at one of the crossings crossLine reported for the same ray.
+SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing& crossing);
+/// Whether the primitive bounds a volume (usable in CSG).
+bool isSolid(const Geometry& geometry);
+
+/// The primitive of a plain shape; nullopt for CSG, transform and group nodes and for meshes
+/// (which become one MeshTriangleGeometry per triangle once the file is read).
+std::optional<Geometry> makeGeometry(const Shape& shape);
+
+/// The first crossing with tMin < t < tMax (crossings are sorted), for nearest-hit queries.
+bool firstCrossingAfter(const CrossingList& crossings, double tMin, double tMax, Crossing& out);
+
+} // namespace crt::tracer

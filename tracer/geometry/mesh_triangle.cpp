@@ -1,0 +1,56 @@
+// One triangle of a mesh read from an OBJ file, with interpolated vertex normals and UVs.
+#include "tracer/geometry/mesh_triangle.hpp"
+
+#include <utility>
+
+namespace crt::tracer {
+
+namespace {
+
+template <class T> bool allValid(const int32_t (&idx)[3], const std::vector<T>& values) {
+    for (int32_t i : idx)
+        if (i < 0 || size_t(i) >= values.size()) return false;
+    return true;
+}
+
+TriangleShape shapeOf(const MeshData* mesh, size_t index) {
+    if (!mesh || index >= mesh->triangles.size()) return {};
+    const MeshData::Triangle& tri = mesh->triangles[index];
+    if (!allValid(tri.v, mesh->positions)) return {};
+    return {mesh->positions[size_t(tri.v[0])], mesh->positions[size_t(tri.v[1])],
+            mesh->positions[size_t(tri.v[2])]};
+}
+
+} // namespace
+
+MeshTriangleGeometry::MeshTriangleGeometry(std::shared_ptr<const MeshData> mesh, size_t index)
+    : triangle_(shapeOf(mesh.get(), index)), mesh_(std::move(mesh)), index_(index) {
+    if (mesh_ && index_ < mesh_->triangles.size()) {
+        const MeshData::Triangle& tri = mesh_->triangles[index_];
+        hasNormals_ = allValid(tri.n, mesh_->normals);
+        hasUvs_ = allValid(tri.uv, mesh_->uvs);
+    }
+}
+
+SurfacePoint MeshTriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+    SurfacePoint sp = triangle_.surfaceAt(ray, crossing);
+    if (!hasNormals_ && !hasUvs_) return sp;
+    const MeshData::Triangle& tri = mesh_->triangles[index_];
+    Vec3 b = triangle_.barycentrics(ray, crossing);
+    if (hasNormals_) {
+        Vec3 n = b.x * mesh_->normals[size_t(tri.n[0])] + b.y * mesh_->normals[size_t(tri.n[1])] +
+                 b.z * mesh_->normals[size_t(tri.n[2])];
+        double len = glm::length(n);
+        if (len > 0 && std::isfinite(len)) {
+            sp.shadingNormal = n / len;
+            if (glm::dot(sp.normal, sp.shadingNormal) < 0) sp.normal = -sp.normal;
+        }
+    }
+    if (hasUvs_) {
+        sp.uv = b.x * mesh_->uvs[size_t(tri.uv[0])] + b.y * mesh_->uvs[size_t(tri.uv[1])] +
+                b.z * mesh_->uvs[size_t(tri.uv[2])];
+    }
+    return sp;
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,39 @@
+// One triangle of a mesh read from an OBJ file, with interpolated vertex normals and UVs.
+#pragma once
+
+#include "tracer/geometry/obj_reader.hpp"
+#include "tracer/geometry/triangle.hpp"
+
+#include <memory>
+
+namespace crt::tracer {
+
+/// Triangle `index` of a mesh; a surface, not a solid. The vertex positions are copied so the
+/// crossing test does not chase the mesh. The geometric normal follows the right-hand rule of
+/// the face's corners, turned toward the interpolated vertex normal when the face has them
+/// (files disagree on winding, the normals say which side is out). shadingNormal: the vertex
+/// normals interpolated (the geometric normal without them); UV: the vertex UVs interpolated,
+/// else the barycentric weights of the second and third corners.
+class MeshTriangleGeometry {
+  public:
+    /// An index out of range (or a corner out of range) gives an empty triangle.
+    MeshTriangleGeometry(std::shared_ptr<const MeshData> mesh, size_t index);
+
+    /// The vertices' bounds (exact); empty for a degenerate triangle.
+    Bounds3 bounds() const { return triangle_.bounds(); }
+    /// Every crossing of the whole line, ascending.
+    void crossLine(const Ray& ray, CrossingList& out) const { triangle_.crossLine(ray, out); }
+    /// The refined point, its error bound, the normal and UV at one of crossLine's crossings.
+    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing) const;
+    /// A surface without an inside: not usable in CSG.
+    bool solid() const { return false; }
+
+  private:
+    TriangleGeometry triangle_;
+    std::shared_ptr<const MeshData> mesh_;
+    size_t index_;
+    bool hasNormals_ = false;
+    bool hasUvs_ = false;
+};
+
+} // namespace crt::tracer

@@ -1,0 +1,174 @@
+// Reading Wavefront OBJ meshes: positions, normals, UVs and fan-triangulated polygons.
+#include "tracer/geometry/obj_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace crt::tracer {
+
+namespace {
+
+/// Splits off the next whitespace-separated token of `rest`.
+std::string_view nextToken(std::string_view& rest) {
+    size_t start = rest.find_first_not_of(" \t\r\f\v");
+    if (start == std::string_view::npos) {
+        rest = {};
+        return {};
+    }
+    size_t end = rest.find_first_of(" \t\r\f\v", start);
+    if (end == std::string_view::npos) end = rest.size();
+    std::string_view token = rest.substr(start, end - start);
+    rest.remove_prefix(end);
+    return token;
+}
+
+bool parseNumber(std::string_view token, double& value) {
+    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+    auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    return ec == std::errc() && end == token.data() + token.size() && std::isfinite(value);
+}
+
+bool parseIndex(std::string_view token, long& value) {
+    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+    auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    return ec == std::errc() && end == token.data() + token.size();
+}
+
+class Parser {
+  public:
+    Parser(const std::string& name, std::string& error) : name_(name), error_(error) {}
+
+    bool line(std::string_view text, size_t lineNumber);
+    MeshData mesh;
+
+  private:
+    bool fail(const std::string& message) {
+        error_ = fmt::format("{}:{}: {}", name_, line_, message);
+        return false;
+    }
+    /// Reads `count` numbers (at least `required`), ignoring any beyond `count`.
+    bool numbers(std::string_view rest, double* out, int required, int count);
+    /// Resolves a 1-based (or negative, relative) index into a vector of `size` elements.
+    bool index(std::string_view token, size_t size, const char* what, int32_t& out);
+    bool face(std::string_view rest);
+
+    const std::string& name_;
+    std::string& error_;
+    size_t line_ = 0;
+};
+
+bool Parser::numbers(std::string_view rest, double* out, int required, int count) {
+    for (int i = 0; i < count; ++i) {
+        std::string_view token = nextToken(rest);
+        if (token.empty()) {
+            if (i < required)
+                return fail(fmt::format("expected {} numbers, found {}", required, i));
+            out[i] = 0;
+            continue;
+        }
+        if (!parseNumber(token, out[i])) return fail(fmt::format("bad number '{}'", token));
+    }
+    return true;
+}
+
+bool Parser::index(std::string_view token, size_t size, const char* what, int32_t& out) {
+    long value = 0;
+    if (!parseIndex(token, value)) return fail(fmt::format("bad {} index '{}'", what, token));
+    long resolved = value > 0 ? value - 1 : long(size) + value;
+    if (value == 0 || resolved < 0 || resolved >= long(size))
+        return fail(fmt::format("{} index {} out of range ({} defined)", what, value, size));
+    out = int32_t(resolved);
+    return true;
+}
+
+bool Parser::face(std::string_view rest) {
+    struct Corner {
+        int32_t v = -1, uv = -1, n = -1;
+    };
+    std::vector<Corner> corners;
+    for (std::string_view token = nextToken(rest); !token.empty(); token = nextToken(rest)) {
+        Corner c;
+        size_t slash1 = token.find('/');
+        std::string_view vPart = token.substr(0, slash1);
+        if (!index(vPart, mesh.positions.size(), "vertex", c.v)) return false;
+        if (slash1 != std::string_view::npos) {
+            std::string_view after = token.substr(slash1 + 1);
+            size_t slash2 = after.find('/');
+            std::string_view uvPart = after.substr(0, slash2);
+            if (!uvPart.empty() && !index(uvPart, mesh.uvs.size(), "texture coordinate", c.uv))
+                return false;
+            if (slash2 != std::string_view::npos &&
+                !index(after.substr(slash2 + 1), mesh.normals.size(), "normal", c.n))
+                return false;
+        }
+        corners.push_back(c);
+    }
+    if (corners.size() < 3)
+        return fail(fmt::format("face with {} vertices (at least 3 needed)", corners.size()));
+    for (size_t i = 1; i + 1 < corners.size(); ++i) {
+        const Corner* fan[3] = {&corners[0], &corners[i], &corners[i + 1]};
+        MeshData::Triangle tri;
+        for (int k = 0; k < 3; ++k) {
+            tri.v[k] = fan[k]->v;
+            tri.n[k] = fan[k]->n;
+            tri.uv[k] = fan[k]->uv;
+        }
+        mesh.triangles.push_back(tri);
+    }
+    return true;
+}
+
+bool Parser::line(std::string_view text, size_t lineNumber) {
+    line_ = lineNumber;
+    if (size_t hash = text.find('#'); hash != std::string_view::npos) text = text.substr(0, hash);
+    std::string_view rest = text;
+    std::string_view keyword = nextToken(rest);
+    double xyz[3];
+    if (keyword == "v") {
+        if (!numbers(rest, xyz, 3, 3)) return false;
+        mesh.positions.emplace_back(xyz[0], xyz[1], xyz[2]);
+    } else if (keyword == "vn") {
+        if (!numbers(rest, xyz, 3, 3)) return false;
+        mesh.normals.emplace_back(xyz[0], xyz[1], xyz[2]);
+    } else if (keyword == "vt") {
+        if (!numbers(rest, xyz, 1, 2)) return false;
+        mesh.uvs.emplace_back(xyz[0], xyz[1]);
+    } else if (keyword == "f") {
+        return face(rest);
+    }
+    return true; // o, g, s, usemtl, mtllib and anything else: not geometry we use
+}
+
+} // namespace
+
+std::optional<MeshData> parseObj(std::string_view text, const std::string& nameForErrors,
+                                 std::string& error) {
+    Parser parser(nameForErrors, error);
+    size_t lineNumber = 0;
+    while (!text.empty()) {
+        size_t end = text.find('\n');
+        std::string_view line = text.substr(0, end);
+        text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
+        if (!parser.line(line, ++lineNumber)) return std::nullopt;
+    }
+    return std::move(parser.mesh);
+}
+
+std::optional<MeshData> readObj(const std::string& path, std::string& error) {
+    std::error_code ec;
+    std::ifstream in;
+    if (std::filesystem::is_regular_file(path, ec)) in.open(path, std::ios::binary);
+    std::string text;
+    if (in) text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (!in.is_open() || in.bad()) {
+        error = fmt::format("cannot read '{}'", path);
+        return std::nullopt;
+    }
+    return parseObj(text, path, error);
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,33 @@
+// The infinite plane primitive; as a solid, the half-space behind its normal.
+#pragma once
+
+#include "tracer/geometry/geometry_math.hpp"
+#include "tracer/scene_desc.hpp"
+
+namespace crt::tracer {
+
+/// A plane through `position` with unit normal n; the solid is {p : n·(p − position) ≤ 0}.
+/// UV: the point's coordinates along two fixed orthonormal directions in the plane, measured
+/// from `position` (not wrapped, so textures tile by their own rules).
+class PlaneGeometry {
+  public:
+    /// A degenerate desc (zero radius or extent, zero normal) gives no crossings at all.
+    explicit PlaneGeometry(const PlaneShape& desc);
+
+    /// Everything: a plane is unbounded (it lives outside the BVH).
+    Bounds3 bounds() const { return Bounds3::everything(); }
+    /// At most one crossing; startsInside tells whether the line begins behind the plane
+    /// (a line parallel to the plane has no crossing and is wholly inside or outside).
+    void crossLine(const Ray& ray, CrossingList& out) const;
+    /// The point projected onto the plane, its error bound, the normal n and UV.
+    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing) const;
+    /// Usable in CSG: the crossings bound an inside.
+    bool solid() const { return true; }
+
+  private:
+    Vec3 position_;
+    Frame frame_; ///< w is the unit normal
+    bool empty_;  ///< a zero normal: no plane at all
+};
+
+} // namespace crt::tracer

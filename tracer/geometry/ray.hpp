@@ -1,0 +1,50 @@
+// Rays, the floating-point error bound helpers and the small vector aliases the renderer uses.
+//
+// Geometry is computed in double precision; spawned rays are offset by a bound on the hit
+// point's rounding error (pbrt's "Managing Rounding Error"), never by a fixed epsilon.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace crt::tracer {
+
+using Vec2 = glm::dvec2;
+using Vec3 = glm::dvec3;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+
+/// pbrt's gamma(n) = n·u / (1 − n·u): bounds the relative error of n chained roundings.
+constexpr double errorGamma(int n) {
+    constexpr double unitRoundoff = std::numeric_limits<double>::epsilon() * 0.5;
+    return (n * unitRoundoff) / (1 - n * unitRoundoff);
+}
+
+/// A ray o + t·d. The direction need not be unit length (object-space rays keep the world
+/// ray's t, so hits found in any space compare directly).
+struct Ray {
+    Vec3 origin{0.0};
+    Vec3 dir{0, 0, 1};
+
+    Vec3 at(double t) const { return origin + t * dir; }
+};
+
+/// Moves a surface point off the surface by its error bound, to the side `w` points to,
+/// so a ray spawned from it cannot hit the same surface again.
+inline Vec3 offsetRayOrigin(const Vec3& point, const Vec3& pointError, const Vec3& normal, const Vec3& w) {
+    double distance = glm::dot(glm::abs(normal), pointError);
+    Vec3 offset = distance * normal;
+    if (glm::dot(w, normal) < 0) offset = -offset;
+    Vec3 origin = point + offset;
+    // Round away from the point so the offset is not lost to rounding.
+    for (int i = 0; i < 3; ++i) {
+        if (offset[i] > 0) origin[i] = std::nextafter(origin[i], kInfinity);
+        else if (offset[i] < 0) origin[i] = std::nextafter(origin[i], -kInfinity);
+    }
+    return origin;
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,46 @@
+// The interface every primitive implements, in its own object space.
+//
+// A primitive reports every place the whole line o + t·d (t from −∞ to +∞) crosses its
+// surface, sorted by t, and whether the line starts inside the solid. Both CSG (which walks
+// the crossings of its operands) and plain nearest-hit queries (the first crossing past
+// t = 0) are built on this one query, so a shape is written once. Surface details (normal,
+// UV, the refined point and its error bound) are computed only for the crossing that wins.
+#pragma once
+
+#include "tracer/geometry/bounds.hpp"
+
+#include <cstdint>
+
+namespace crt::tracer {
+
+/// One crossing of the line with a surface. `part` tells the shape which face it was
+/// (a box side, a cylinder cap …) so surfaceAt need not redo the search.
+struct Crossing {
+    double t = 0;
+    uint32_t part = 0;
+};
+
+/// At most four crossings: a torus has four, every other primitive fewer.
+struct CrossingList {
+    static constexpr int kCapacity = 4;
+    Crossing items[kCapacity];
+    int count = 0;
+    /// Whether the line is inside the solid before its first crossing (a half-space can
+    /// start inside; bounded solids never do). Each crossing of a solid toggles inside/outside.
+    bool startsInside = false;
+
+    void add(double t, uint32_t part) {
+        if (count < kCapacity) items[count++] = {t, part};
+    }
+};
+
+/// The surface where a crossing happened, in object space.
+struct SurfacePoint {
+    Vec3 point{0.0};      ///< refined onto the surface
+    Vec3 pointError{0.0}; ///< per-component bound of the absolute rounding error of `point`
+    Vec3 normal{0, 1, 0}; ///< geometric normal, unit length; outward for solids
+    Vec3 shadingNormal{0, 1, 0}; ///< interpolated (mesh vertex normals), else equal to normal
+    Vec2 uv{0.0};
+};
+
+} // namespace crt::tracer

@@ -1,0 +1,340 @@
+// Image input and output: checks, quantisation and temporary files here, pixels through the module.
+#include "tracer/image_io/image_io.hpp"
+
+#include "tracer/image_io/encoding.hpp"
+#include "tracer/image_io/module_loader.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <new>
+#include <system_error>
+
+namespace crt::tracer::image_io {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct OutputFormat {
+    const char* extension;
+    const char* oiioName;
+    bool eightBit;
+    bool needsRgb; ///< the format stores no single-channel images
+};
+
+constexpr OutputFormat kOutputFormats[] = {
+    {".png", "png", true, false},   {".jpg", "jpeg", true, false},
+    {".jpeg", "jpeg", true, false}, {".tif", "tiff", true, false},
+    {".tiff", "tiff", true, false}, {".exr", "openexr", false, false},
+    {".hdr", "hdr", false, true},   {".gif", "gif", true, true},
+};
+
+std::string lowerExtension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+const OutputFormat* outputFormatOf(const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    for (const OutputFormat& format : kOutputFormats)
+        if (ext == format.extension) return &format;
+    return nullptr;
+}
+
+std::string supportedExtensions() {
+    std::string list;
+    for (const OutputFormat& format : kOutputFormats)
+        list += (list.empty() ? "" : ", ") + std::string(format.extension);
+    return list;
+}
+
+std::string quoted(const std::string& path) {
+    return "\"" + path + "\"";
+}
+
+// One context for both callbacks of a module call: the error text and, when reading, the image.
+struct CallContext {
+    std::string error;
+    ImageBuffer* image = nullptr;
+};
+
+void storeError(void* context, const char* message) {
+    static_cast<CallContext*>(context)->error = message ? message : "unknown error";
+}
+
+float* allocatePixels(void* context, int width, int height) {
+    ImageBuffer& image = *static_cast<CallContext*>(context)->image;
+    try {
+        image.width = width;
+        image.height = height;
+        image.channels = 3;
+        image.pixels.assign(std::size_t(width) * std::size_t(height) * 3, 0.0f);
+        return image.pixels.data();
+    } catch (const std::bad_alloc&) {
+        return nullptr; // reported by the module as out of memory; no exception crosses C
+    }
+}
+
+bool checkBuffer(const ImageBuffer& image, std::string& problem) {
+    if (image.width < 1 || image.height < 1) {
+        problem = "the image is empty (" + std::to_string(image.width) + " x " +
+                  std::to_string(image.height) + ")";
+        return false;
+    }
+    if (image.channels != 1 && image.channels != 3 && image.channels != 4) {
+        problem = "an image needs 1, 3 or 4 channels, not " + std::to_string(image.channels);
+        return false;
+    }
+    const std::size_t expected =
+        std::size_t(image.width) * std::size_t(image.height) * std::size_t(image.channels);
+    if (image.pixels.size() != expected) {
+        problem = "the image holds " + std::to_string(image.pixels.size()) + " values instead of " +
+                  std::to_string(expected);
+        return false;
+    }
+    return true;
+}
+
+bool checkOptions(const WriteOptions& options, std::string& problem) {
+    if (!(options.gamma > 0.0) || !std::isfinite(options.gamma)) {
+        problem = "gamma must be a positive number";
+        return false;
+    }
+    return true;
+}
+
+// GIF and HDR store only colour: a grey image becomes three equal channels.
+std::vector<float> expandGrey(const ImageBuffer& image) {
+    std::vector<float> rgb(image.pixels.size() * 3);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = image.pixels[i];
+    return rgb;
+}
+
+// The transfer function applies to colour; a fourth channel is alpha, a coverage stored as is.
+std::vector<std::uint8_t> quantiseColour(std::span<const float> values, int channels,
+                                         const WriteOptions& options) {
+    std::vector<std::uint8_t> codes = quantise8(values, options.gamma, options.srgb);
+    if (channels == 4)
+        for (std::size_t i = 3; i < values.size(); i += 4) codes[i] = encodeGamma8(values[i], 1.0);
+    return codes;
+}
+
+std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
+    if (from.empty()) return text;
+    for (std::size_t at = text.find(from); at != std::string::npos;
+         at = text.find(from, at + to.size()))
+        text.replace(at, from.size(), to);
+    return text;
+}
+
+// The temporary name is hidden, unique per process and call, and in the target's directory
+// so that the final rename is atomic (same file system).
+fs::path temporaryPathFor(const fs::path& target) {
+    static std::atomic<unsigned> counter{0};
+    // Appended piece by piece: `"." + std::string` trips GCC 12's -Wrestrict false positive.
+    std::string name(1, '.');
+    name += target.filename().string();
+    name += '.';
+    name += std::to_string(::getpid());
+    name += '.';
+    name += std::to_string(counter++);
+    name += ".tmp";
+    return target.parent_path() / name;
+}
+
+// Runs `write` on a temporary file and renames it over `path`; removes it on any failure.
+template <class Write>
+bool writeThroughTemporary(const std::string& path, std::string& error, Write&& write) {
+    const fs::path target(path);
+    const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) {
+        error = "cannot write " + quoted(path) + ": the directory " + quoted(dir.string()) +
+                " does not exist";
+        return false;
+    }
+    if (fs::is_directory(target, ec)) {
+        error = "cannot write " + quoted(path) + ": it is a directory";
+        return false;
+    }
+    const fs::path temporary = temporaryPathFor(target);
+    std::string problem;
+    if (!write(temporary.string(), problem)) {
+        fs::remove(temporary, ec);
+        // The module speaks of the file it was given; the caller knows only `path`.
+        error =
+            "cannot write " + quoted(path) + ": " + replaceAll(problem, temporary.string(), path);
+        return false;
+    }
+    fs::rename(temporary, target, ec);
+    if (ec) {
+        fs::remove(temporary, ec);
+        error = "cannot write " + quoted(path) + ": " + ec.message();
+        return false;
+    }
+    return true;
+}
+
+// The module, or null with "<action>: <why it could not be loaded>" in `error`.
+const CrtImageIoModule* moduleFor(const std::string& action, std::string& error) {
+    std::string why;
+    const CrtImageIoModule* module = detail::loadedModule(why);
+    if (!module) error = action + ": " + why;
+    return module;
+}
+
+} // namespace
+
+void startLoading() {
+    detail::startModuleLoad();
+}
+
+bool ensureLoaded(std::string& error) {
+    return detail::loadedModule(error) != nullptr;
+}
+
+bool isSupportedOutput(const std::string& path) {
+    return outputFormatOf(path) != nullptr;
+}
+
+std::optional<ImageBuffer> readImage(const std::string& path, std::string& error, bool* eightBit) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) {
+        error = "cannot read " + quoted(path) + ": no such file";
+        return std::nullopt;
+    }
+    const CrtImageIoModule* module = moduleFor("cannot read " + quoted(path), error);
+    if (!module) return std::nullopt;
+    ImageBuffer image;
+    CallContext context;
+    context.image = &image;
+    int isInteger = 0;
+    if (!module->readImage(path.c_str(), &isInteger, allocatePixels, storeError, &context)) {
+        error = "cannot read " + quoted(path) + ": " + context.error;
+        return std::nullopt;
+    }
+    if (eightBit) *eightBit = isInteger != 0;
+    return image;
+}
+
+bool writeImage(const std::string& path, const ImageBuffer& image, const WriteOptions& options,
+                std::string& error) {
+    const OutputFormat* format = outputFormatOf(path);
+    if (!format) {
+        error = "cannot write " + quoted(path) + ": unsupported image format \"" +
+                lowerExtension(path) + "\"; supported are " + supportedExtensions();
+        return false;
+    }
+    std::string problem;
+    if (!checkBuffer(image, problem) || !checkOptions(options, problem)) {
+        error = "cannot write " + quoted(path) + ": " + problem;
+        return false;
+    }
+    const CrtImageIoModule* module = moduleFor("cannot write " + quoted(path), error);
+    if (!module) return false;
+
+    const bool expand = format->needsRgb && image.channels == 1;
+    std::vector<float> expanded = expand ? expandGrey(image) : std::vector<float>{};
+    const std::span<const float> values = expand ? expanded : image.pixels;
+    const int channels = expand ? 3 : image.channels;
+    std::vector<std::uint8_t> codes;
+    if (format->eightBit) codes = quantiseColour(values, channels, options);
+    const void* pixels = format->eightBit ? static_cast<const void*>(codes.data())
+                                          : static_cast<const void*>(values.data());
+
+    return writeThroughTemporary(path, error, [&](const std::string& temporary, std::string& why) {
+        CallContext context;
+        const int ok =
+            module->writeImage(temporary.c_str(), format->oiioName, image.width, image.height,
+                               channels, format->eightBit ? 0 : 1, pixels,
+                               format->eightBit && options.srgb ? 1 : 0, storeError, &context);
+        why = context.error;
+        return ok != 0;
+    });
+}
+
+bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& frames, double fps,
+                      const WriteOptions& options, std::string& error) {
+    std::string problem;
+    if (lowerExtension(path) != ".gif") {
+        problem = "an animation is written as a GIF, so the name must end in .gif";
+    } else if (frames.empty()) {
+        problem = "an animation needs at least one frame";
+    } else if (!(fps > 0.0) || !std::isfinite(fps)) {
+        problem = "the frame rate must be a positive number";
+    } else if (checkOptions(options, problem)) {
+        for (std::size_t i = 0; i < frames.size() && problem.empty(); ++i) {
+            if (!checkBuffer(frames[i], problem)) {
+                problem = "frame " + std::to_string(i) + ": " + problem;
+            } else if (frames[i].width != frames[0].width || frames[i].height != frames[0].height ||
+                       frames[i].channels != frames[0].channels) {
+                problem = "frame " + std::to_string(i) + " differs in size from frame 0";
+            }
+        }
+    }
+    if (!problem.empty()) {
+        error = "cannot write " + quoted(path) + ": " + problem;
+        return false;
+    }
+    const CrtImageIoModule* module = moduleFor("cannot write " + quoted(path), error);
+    if (!module) return false;
+
+    const bool expand = frames[0].channels == 1;
+    std::vector<std::vector<std::uint8_t>> codes;
+    std::vector<const std::uint8_t*> framePointers;
+    codes.reserve(frames.size());
+    for (const ImageBuffer& frame : frames) {
+        codes.push_back(expand ? quantiseColour(expandGrey(frame), 3, options)
+                               : quantiseColour(frame.pixels, frame.channels, options));
+        framePointers.push_back(codes.back().data());
+    }
+    // GIF keeps a frame's delay in hundredths of a second. OIIO derives it from the rate in
+    // float and truncates, so 100 / delay can come out one short (delay 45 gave 44); a rate of
+    // 400 / (4·delay + 1) puts OIIO's quotient at delay + ¼, which truncates or rounds alike.
+    const long delay = std::clamp(std::lround(100.0 / fps), 1L, 65535L);
+    return writeThroughTemporary(path, error, [&](const std::string& temporary, std::string& why) {
+        CallContext context;
+        const int ok = module->writeAnimatedGif(temporary.c_str(), frames[0].width,
+                                                frames[0].height, expand ? 3 : frames[0].channels,
+                                                int(frames.size()), framePointers.data(), 400,
+                                                int(4 * delay + 1), storeError, &context);
+        why = context.error;
+        return ok != 0;
+    });
+}
+
+std::optional<ImageInfo> describeImage(const std::string& path, std::string& error) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) {
+        error = "cannot read " + quoted(path) + ": no such file";
+        return std::nullopt;
+    }
+    const CrtImageIoModule* module = moduleFor("cannot read " + quoted(path), error);
+    if (!module) return std::nullopt;
+    CrtImageInfo raw{};
+    CallContext context;
+    if (!module->describeImage(path.c_str(), &raw, storeError, &context)) {
+        error = "cannot read " + quoted(path) + ": " + context.error;
+        return std::nullopt;
+    }
+    ImageInfo info;
+    info.width = raw.width;
+    info.height = raw.height;
+    info.channels = raw.channels;
+    info.subimages = raw.subimages;
+    info.integer = raw.isInteger != 0;
+    info.fps = raw.fpsDenominator != 0 ? double(raw.fpsNumerator) / raw.fpsDenominator : 0.0;
+    info.loopCount = raw.loopCount;
+    info.format = std::string(raw.format, ::strnlen(raw.format, sizeof raw.format));
+    return info;
+}
+
+} // namespace crt::tracer::image_io

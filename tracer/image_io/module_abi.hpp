@@ -1,0 +1,61 @@
+// The C table through which crt_image_io calls the OpenImageIO module crt_image_io_oiio.so.
+//
+// Plain C types only: no exception, std::string or OpenImageIO type crosses the boundary,
+// so the module and its host need not agree on anything but this header. Strings and
+// buffers the module produces go back through the host's callbacks, so that memory is
+// allocated and freed on one side.
+#pragma once
+
+#include <cstdint>
+
+extern "C" {
+
+/// Raised whenever a function's signature or meaning changes; the host refuses other versions.
+inline constexpr int kCrtImageIoAbiVersion = 1;
+
+/// The name of the module's one exported function.
+inline constexpr const char* kCrtImageIoEntryName = "crt_image_io_module";
+
+/// Returns room for width × height × 3 floats, or null (reported as out of memory).
+using CrtImageAllocFn = float* (*)(void* context, int width, int height);
+
+/// Receives the message of a failed call.
+using CrtImageErrorFn = void (*)(void* context, const char* message);
+
+/// What the module reports about a file (used by tests and tools, not by rendering).
+struct CrtImageInfo {
+    int width;
+    int height;
+    int channels;
+    int subimages;
+    int isInteger;
+    int fpsNumerator; ///< 0 when the file has no frame rate
+    int fpsDenominator;
+    int loopCount; ///< -1 when the file does not say; 0 = forever
+    char format[32];
+};
+
+/// The module's functions; each returns 1 on success, 0 after calling `error` once.
+struct CrtImageIoModule {
+    int abiVersion;
+    /// Reads subimage 0 into 3 channels of floats (integer formats as value / max).
+    int (*readImage)(const char* path, int* isInteger, CrtImageAllocFn alloc, CrtImageErrorFn error,
+                     void* context);
+    /// Writes one image in the OpenImageIO format `format` ("png", "openexr" …), whatever the
+    /// file name; `pixels` holds `channels` uint8 values per pixel, or floats when `isFloat`.
+    int (*writeImage)(const char* path, const char* format, int width, int height, int channels,
+                      int isFloat, const void* pixels, int srgb, CrtImageErrorFn error,
+                      void* context);
+    /// Writes an animated GIF of `frameCount` frames of uint8 pixels, looping forever.
+    int (*writeAnimatedGif)(const char* path, int width, int height, int channels, int frameCount,
+                            const std::uint8_t* const* frames, int fpsNumerator, int fpsDenominator,
+                            CrtImageErrorFn error, void* context);
+    /// Fills `info` from the file's header.
+    int (*describeImage)(const char* path, CrtImageInfo* info, CrtImageErrorFn error,
+                         void* context);
+};
+
+/// The type of the module's exported entry point.
+using CrtImageIoEntryFn = const CrtImageIoModule* (*)();
+
+} // extern "C"

@@ -1,0 +1,211 @@
+// The OpenImageIO module (crt_image_io_oiio.so): the only source that includes OpenImageIO.
+//
+// It is dlopen'ed by crt_image_io so that OpenImageIO's 260 shared libraries load only in a
+// process that reads or writes an image. OIIO's headers bundle their own fmt with fmt's
+// include guards, so no <fmt/...> may appear in this file. Everything is built with hidden
+// visibility except the entry point, and no exception leaves an extern "C" function.
+#include "tracer/image_io/module_abi.hpp"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cstring>
+#include <exception>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+using OIIO::ImageInput;
+using OIIO::ImageOutput;
+using OIIO::ImageSpec;
+using OIIO::TypeDesc;
+
+struct ErrorSink {
+    CrtImageErrorFn fn;
+    void* context;
+    int fail(const std::string& message) const {
+        fn(context, message.c_str());
+        return 0;
+    }
+};
+
+// OIIO reports some failures on the object and some (a failed open or create) globally.
+std::string oiioError(const std::string& objectError) {
+    std::string message = objectError.empty() ? OIIO::geterror() : objectError;
+    while (!message.empty() && message.back() == '\n') message.pop_back();
+    return message.empty() ? "unknown OpenImageIO error" : message;
+}
+
+std::unique_ptr<ImageInput> openInput(const char* path, const ErrorSink& sink) {
+    // Colour channels of a PNG with alpha must come back as stored, not premultiplied:
+    // the alpha is dropped, so premultiplying would darken every transparent pixel.
+    ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = ImageInput::open(path, &config);
+    if (!in) sink.fail(oiioError(""));
+    return in;
+}
+
+// OIIO converts integers to float by multiplying with 1/max, which is off by an ulp for many
+// codes; dividing here makes an 8-bit code k read as exactly k / 255.0f, as the spec says.
+template <class Int> bool readScaled(ImageInput& in, std::vector<float>& out) {
+    std::vector<Int> raw(out.size());
+    if (!in.read_image(0, 0, 0, in.spec().nchannels, OIIO::BaseTypeFromC<Int>::value, raw.data()))
+        return false;
+    constexpr float max = float(std::numeric_limits<Int>::max());
+    for (std::size_t i = 0; i < raw.size(); ++i) out[i] = float(raw[i]) / max;
+    return true;
+}
+
+// Other formats (half, float, 32-bit integers …) convert as OIIO does: floats stay as stored.
+bool readFloats(ImageInput& in, std::vector<float>& out) {
+    return in.read_image(0, 0, 0, in.spec().nchannels, OIIO::TypeFloat, out.data());
+}
+
+int readImage(const char* path, int* isInteger, CrtImageAllocFn alloc, CrtImageErrorFn error,
+              void* context) {
+    const ErrorSink sink{error, context};
+    try {
+        auto in = openInput(path, sink);
+        if (!in) return 0;
+        const ImageSpec& spec = in->spec();
+        if (spec.deep) return sink.fail("deep images are not supported");
+        if (spec.depth > 1) return sink.fail("volume images are not supported");
+        const int width = spec.width, height = spec.height, channels = spec.nchannels;
+        if (width < 1 || height < 1 || channels < 1) return sink.fail("the image is empty");
+
+        std::vector<float> stored(std::size_t(width) * height * channels);
+        const bool ok = spec.format == OIIO::TypeUInt8    ? readScaled<std::uint8_t>(*in, stored)
+                        : spec.format == OIIO::TypeUInt16 ? readScaled<std::uint16_t>(*in, stored)
+                                                          : readFloats(*in, stored);
+        if (!ok) return sink.fail(oiioError(in->geterror()));
+
+        float* out = alloc(context, width, height);
+        if (!out) return sink.fail("out of memory");
+        // One or two channels are grey (and alpha): replicate the grey. Otherwise the first
+        // three are RGB and any further (alpha, depth …) are dropped.
+        const bool grey = channels < 3;
+        const std::size_t pixels = std::size_t(width) * height;
+        for (std::size_t i = 0; i < pixels; ++i) {
+            const float* s = &stored[i * channels];
+            float* d = &out[i * 3];
+            d[0] = s[0];
+            d[1] = grey ? s[0] : s[1];
+            d[2] = grey ? s[0] : s[2];
+        }
+        if (isInteger) *isInteger = spec.format.is_floating_point() ? 0 : 1;
+        return 1;
+    } catch (const std::exception& e) {
+        return sink.fail(e.what());
+    } catch (...) {
+        return sink.fail("unknown exception in the image module");
+    }
+}
+
+// Write one already-opened subimage and report OIIO's message on failure.
+bool writePixels(ImageOutput& out, TypeDesc type, const void* pixels, const ErrorSink& sink) {
+    if (out.write_image(type, pixels)) return true;
+    sink.fail(oiioError(out.geterror()));
+    return false;
+}
+
+int writeImage(const char* path, const char* format, int width, int height, int channels,
+               int isFloat, const void* pixels, int srgb, CrtImageErrorFn error, void* context) {
+    const ErrorSink sink{error, context};
+    try {
+        // Created by format name, because the host writes to a temporary file whose name
+        // does not end in the real extension.
+        auto out = ImageOutput::create(format);
+        if (!out) return sink.fail(oiioError(""));
+        const TypeDesc type = isFloat ? OIIO::TypeFloat : OIIO::TypeUInt8;
+        ImageSpec spec(width, height, channels, type);
+        if (srgb) spec.attribute("oiio:ColorSpace", "sRGB");
+        // A fourth channel is straight alpha, stored as given: without this, PNG and TIFF
+        // would take the colour as premultiplied and divide it by alpha.
+        spec.attribute("oiio:UnassociatedAlpha", 1);
+        if (!out->open(path, spec)) return sink.fail(oiioError(out->geterror()));
+        if (!writePixels(*out, type, pixels, sink)) return 0;
+        if (!out->close()) return sink.fail(oiioError(out->geterror()));
+        return 1;
+    } catch (const std::exception& e) {
+        return sink.fail(e.what());
+    } catch (...) {
+        return sink.fail("unknown exception in the image module");
+    }
+}
+
+int writeAnimatedGif(const char* path, int width, int height, int channels, int frameCount,
+                     const std::uint8_t* const* frames, int fpsNumerator, int fpsDenominator,
+                     CrtImageErrorFn error, void* context) {
+    const ErrorSink sink{error, context};
+    try {
+        auto out = ImageOutput::create("gif");
+        if (!out) return sink.fail(oiioError(""));
+        ImageSpec spec(width, height, channels, OIIO::TypeUInt8);
+        const int fps[2] = {fpsNumerator, fpsDenominator};
+        spec.attribute("FramesPerSecond", OIIO::TypeRational, fps);
+        spec.attribute("oiio:Movie", 1);
+        spec.attribute("oiio:LoopCount", 0); // forever
+        const std::vector<ImageSpec> specs(std::size_t(frameCount), spec);
+        if (!out->open(path, frameCount, specs.data()))
+            return sink.fail(oiioError(out->geterror()));
+        for (int i = 0; i < frameCount; ++i) {
+            if (i > 0 && !out->open(path, specs[i], ImageOutput::AppendSubimage))
+                return sink.fail(oiioError(out->geterror()));
+            if (!writePixels(*out, OIIO::TypeUInt8, frames[i], sink)) return 0;
+        }
+        if (!out->close()) return sink.fail(oiioError(out->geterror()));
+        return 1;
+    } catch (const std::exception& e) {
+        return sink.fail(e.what());
+    } catch (...) {
+        return sink.fail("unknown exception in the image module");
+    }
+}
+
+int describeImage(const char* path, CrtImageInfo* info, CrtImageErrorFn error, void* context) {
+    const ErrorSink sink{error, context};
+    try {
+        auto in = openInput(path, sink);
+        if (!in) return 0;
+        const ImageSpec spec = in->spec(); // a copy: seek_subimage replaces in->spec()
+        *info = CrtImageInfo{};
+        info->width = spec.width;
+        info->height = spec.height;
+        info->channels = spec.nchannels;
+        info->isInteger = spec.format.is_floating_point() ? 0 : 1;
+        int subimages = 1;
+        while (in->seek_subimage(subimages, 0)) ++subimages;
+        info->subimages = subimages;
+        if (const OIIO::ParamValue* p = spec.find_attribute("FramesPerSecond")) {
+            if (p->type() == OIIO::TypeRational) {
+                const int* r = static_cast<const int*>(p->data());
+                info->fpsNumerator = r[0];
+                info->fpsDenominator = r[1];
+            } else if (p->type() == OIIO::TypeFloat) {
+                // Kept to a thousandth: enough for a check, and still a rational.
+                info->fpsNumerator = int(*static_cast<const float*>(p->data()) * 1000.0f + 0.5f);
+                info->fpsDenominator = 1000;
+            }
+        }
+        info->loopCount =
+            spec.get_int_attribute("oiio:LoopCount", spec.get_int_attribute("gif:LoopCount", -1));
+        std::strncpy(info->format, in->format_name(), sizeof info->format - 1);
+        return 1;
+    } catch (const std::exception& e) {
+        return sink.fail(e.what());
+    } catch (...) {
+        return sink.fail("unknown exception in the image module");
+    }
+}
+
+constexpr CrtImageIoModule kModule{kCrtImageIoAbiVersion, readImage, writeImage, writeAnimatedGif,
+                                   describeImage};
+
+} // namespace
+
+extern "C" __attribute__((visibility("default"))) const CrtImageIoModule* crt_image_io_module() {
+    return &kModule;
+}

@@ -1,0 +1,202 @@
+// Shading: c = E + A·C·kd + Σ lights [aₗ·Lₗ·C·kd + Sₗ·Fₗ·(C·kd·Lₗ·(n·l) + K·ks·Lₗ·(r·v)^sh)] + kr·K·R + kt·T.
+#include "tracer/integrator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace crt::tracer {
+
+struct Integrator::ShadingPoint {
+    SurfaceInteraction si;
+    const MaterialDesc* material;
+    Vec3 color;        ///< C: the material colour or its texture
+    Vec3 n;            ///< shading normal, facing the incoming ray
+    Vec3 facingNormal; ///< geometric normal, facing the incoming ray
+    Vec3 v;            ///< unit direction back along the incoming ray
+    Vec3 d;            ///< the incoming direction
+    double pathLength; ///< from the camera to this point
+};
+
+Integrator::Integrator(const RenderScene& scene, const SettingsDesc& settings, std::vector<Light> lights,
+                       const Background& background, std::vector<Texture> textures)
+    : scene_(scene), settings_(settings), lights_(std::move(lights)), background_(background),
+      textures_(std::move(textures)), ambient_(rgb(settings.ambient)) {
+    for (const MaterialDesc& m : scene.materials) {
+        features_.reflection |= m.reflectivity > 0 || (m.fresnel && m.transparency > 0);
+        features_.refraction |= m.transparency > 0;
+        features_.transparentShadows |= m.transparency > 0;
+        features_.textures |= m.texture >= 0 || m.bump >= 0;
+        features_.specular |= m.specular > 0;
+    }
+}
+
+Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context) const {
+    Hit hit;
+    Vec3 color;
+    double distance = kInfinity;
+    if (scene_.intersect(ray, kInfinity, hit, context.scratch, context.stats)) {
+        distance = hit.t;
+        color = shade(ray, hit, depth, pathLength, medium, context);
+    } else {
+        color = background_.radiance(ray.dir);
+    }
+    if (medium >= 0) {
+        // Beer–Lambert absorption along the path inside the solid.
+        Vec3 a = rgb(scene_.materials[medium].absorption);
+        for (int i = 0; i < 3; ++i)
+            if (a[i] > 0) color[i] *= std::exp(-a[i] * distance);
+    }
+    return color;
+}
+
+Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium,
+                       TraceContext& context) const {
+    ShadingPoint sp;
+    sp.si = scene_.interaction(ray, hit);
+    sp.material = &scene_.materials[sp.si.material];
+    const MaterialDesc& m = *sp.material;
+    sp.d = ray.dir;
+    sp.v = -ray.dir;
+    sp.pathLength = pathLength + hit.t;
+    bool entering = glm::dot(ray.dir, sp.si.normal) < 0;
+    sp.facingNormal = entering ? sp.si.normal : -sp.si.normal;
+    sp.n = glm::dot(sp.si.shadingNormal, sp.v) < 0 ? -sp.si.shadingNormal : sp.si.shadingNormal;
+    sp.color = m.texture >= 0 ? textures_[m.texture].color(sp.si.objectPoint, sp.si.uv) : rgb(m.color);
+    if (m.bump >= 0) {
+        // Perturb the normal by the height field's gradient (finite differences in object space).
+        const Texture& bump = textures_[m.bump];
+        const double h = 1e-4;
+        double h0 = bump.height(sp.si.objectPoint, sp.si.uv);
+        Vec3 gradient(bump.height(sp.si.objectPoint + Vec3(h, 0, 0), sp.si.uv) - h0,
+                      bump.height(sp.si.objectPoint + Vec3(0, h, 0), sp.si.uv) - h0,
+                      bump.height(sp.si.objectPoint + Vec3(0, 0, h), sp.si.uv) - h0);
+        gradient /= h;
+        Vec3 tangential = gradient - glm::dot(gradient, sp.n) * sp.n;
+        sp.n = glm::normalize(sp.n - bump.strength() * 0.1 * tangential);
+    }
+
+    Vec3 c = rgb(m.emission) + ambient_ * sp.color * m.diffuse;
+    c += directLight(sp, context);
+    if (depth <= 0) return c;
+
+    double kr = m.reflectivity, kt = m.transparency;
+    Vec3 K = m.metallic ? sp.color : Vec3(1.0);
+    Vec3 refracted(0.0);
+    bool refracts = false;
+    if (kt > 0) {
+        // Snell's law against air; a surface without inside (a quad, a disc) is a thin sheet.
+        double eta = sp.si.solid ? (entering ? 1.0 / m.ior : m.ior) : 1.0;
+        double cosI = std::min(1.0, glm::dot(sp.v, sp.n));
+        double sin2T = eta * eta * std::max(0.0, 1 - cosI * cosI);
+        if (sin2T >= 1) {
+            kr += kt; // total internal reflection
+            kt = 0;
+        } else {
+            double cosT = std::sqrt(1 - sin2T);
+            refracted = glm::normalize(eta * sp.d + (eta * cosI - cosT) * sp.n);
+            refracts = true;
+            if (m.fresnel) {
+                double rs = (eta * cosI - cosT) / (eta * cosI + cosT);
+                double rp = (eta * cosT - cosI) / (eta * cosT + cosI);
+                double f = 0.5 * (rs * rs + rp * rp);
+                kr += kt * f;
+                kt *= 1 - f;
+            }
+        }
+    }
+    if (kr > 0) c += kr * K * reflect(sp, depth, medium, context);
+    if (kt > 0 && refracts) {
+        Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, refracted), refracted};
+        int32_t nextMedium = sp.si.solid ? (entering ? sp.si.material : -1) : medium;
+        ++context.stats.refractionRays;
+        c += kt * trace(next, depth - 1, sp.pathLength, nextMedium, context);
+    }
+    return c;
+}
+
+Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) const {
+    const MaterialDesc& m = *sp.material;
+    Vec3 c(0.0);
+    Vec3 diffuseColor = sp.color * m.diffuse;
+    Vec3 K = m.metallic ? sp.color : Vec3(1.0);
+    for (const Light& light : lights_) {
+        c += light.ambient() * light.color() * diffuseColor;
+        if (m.diffuse <= 0 && m.specular <= 0) continue;
+        int samples = light.sampleCount();
+        for (int s = 0; s < samples; ++s) {
+            Vec2 jitter = samples > 1 ? context.rng.uniform2() : Vec2(0.5);
+            LightSample ls = light.sample(sp.si.point, s, jitter);
+            double nDotL = glm::dot(sp.n, ls.toLight);
+            if (nDotL <= 0 || ls.color == Vec3(0.0)) continue;
+            Vec3 origin = offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, ls.toLight);
+            Ray shadowRay = ls.atInfinity ? Ray{origin, ls.toLight} : Ray{origin, ls.target - origin};
+            Vec3 visible = transmittance(shadowRay, ls.atInfinity ? kInfinity : 1.0, context);
+            if (visible == Vec3(0.0)) continue;
+            double falloff = 1;
+            if (light.falloff() > 0 && !ls.atInfinity) {
+                double d = ls.distance + sp.pathLength;
+                falloff = light.falloff() / (d * d);
+            }
+            Vec3 term = diffuseColor * nDotL;
+            if (m.specular > 0) {
+                Vec3 r = 2 * nDotL * sp.n - ls.toLight;
+                double rv = std::max(0.0, glm::dot(r, sp.v));
+                term += K * m.specular * std::pow(rv, m.shininess);
+            }
+            c += visible * falloff * ls.color * term;
+        }
+    }
+    return c;
+}
+
+Vec3 Integrator::transmittance(const Ray& ray, double tMax, TraceContext& context) const {
+    ++context.stats.shadowRays;
+    Vec3 through(1.0);
+    const RenderScene& scene = scene_;
+    scene_.forEachCrossing(ray, tMax, context.scratch, context.stats, [&](int32_t primitive, double) {
+        const MaterialDesc& m = scene.materials[scene.primitives[primitive].material];
+        if (m.transparency <= 0) {
+            through = Vec3(0.0);
+            return false;
+        }
+        through *= m.transparency * rgb(m.color);
+        return through != Vec3(0.0);
+    });
+    return through;
+}
+
+Vec3 Integrator::reflect(const ShadingPoint& sp, int depth, int32_t medium, TraceContext& context) const {
+    const MaterialDesc& m = *sp.material;
+    Vec3 mirror = glm::normalize(sp.d - 2 * glm::dot(sp.d, sp.n) * sp.n);
+    auto traceFrom = [&](const Vec3& dir) {
+        ++context.stats.reflectionRays;
+        Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, dir), dir};
+        return trace(next, depth - 1, sp.pathLength, medium, context);
+    };
+    if (m.glossiness <= 0) return traceFrom(mirror);
+
+    // Glossy: the mean over rays in a cone around the mirror direction (half-angle up to
+    // 45° at glossiness 1), folded back above the surface when they dip below it.
+    int count = context.inGlossy ? 1 : std::max(settings_.glossySamples, 1);
+    double cosMax = std::cos(std::clamp(m.glossiness, 0.0, 1.0) * kPi / 4);
+    Vec3 helper = std::abs(mirror.x) > 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
+    Vec3 t1 = glm::normalize(glm::cross(helper, mirror)), t2 = glm::cross(mirror, t1);
+    Vec2 shift = context.rng.uniform2();
+    bool wasGlossy = context.inGlossy;
+    context.inGlossy = true;
+    Vec3 sum(0.0);
+    for (int i = 0; i < count; ++i) {
+        Vec2 u = hammersley(static_cast<uint32_t>(i), static_cast<uint32_t>(count), shift);
+        double cosTheta = 1 - u.x * (1 - cosMax);
+        double sinTheta = std::sqrt(std::max(0.0, 1 - cosTheta * cosTheta));
+        double phi = 2 * kPi * u.y;
+        Vec3 dir = cosTheta * mirror + sinTheta * (std::cos(phi) * t1 + std::sin(phi) * t2);
+        double below = glm::dot(dir, sp.facingNormal);
+        if (below < 0) dir -= 2 * below * sp.facingNormal;
+        sum += traceFrom(glm::normalize(dir));
+    }
+    context.inGlossy = wasGlossy;
+    return sum / static_cast<double>(count);
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,61 @@
+// The Whitted-style shading of spec §6: ambient, diffuse, specular, shadows, reflection,
+// refraction with Fresnel and Beer–Lambert absorption.
+#pragma once
+
+#include "tracer/background.hpp"
+#include "tracer/lights.hpp"
+#include "tracer/render_scene.hpp"
+#include "tracer/sampling.hpp"
+#include "tracer/texture.hpp"
+
+#include <vector>
+
+namespace crt::tracer {
+
+/// The mutable state of one thread while it renders.
+struct TraceContext {
+    SampleRng rng{0, 0, 0};
+    QueryScratch scratch;
+    RayStats stats;
+    bool inGlossy = false; ///< below a glossy reflection only one ray per bounce is spawned
+};
+
+/// What the scene uses, found once so per-ray code can skip what is absent.
+struct SceneFeatures {
+    bool reflection = false;
+    bool refraction = false;
+    bool transparentShadows = false;
+    bool textures = false;
+    bool specular = false;
+};
+
+class Integrator {
+public:
+    Integrator(const RenderScene& scene, const SettingsDesc& settings, std::vector<Light> lights,
+               const Background& background, std::vector<Texture> textures);
+
+    /// The colour seen along `ray` (unit direction) with `depth` reflections/refractions left;
+    /// `pathLength` is the distance travelled from the camera to the ray's origin (falloff),
+    /// `medium` the material of the solid the ray travels in (-1: air).
+    Vec3 trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context) const;
+
+    const SceneFeatures& features() const { return features_; }
+
+private:
+    struct ShadingPoint;
+    Vec3 shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium, TraceContext& context) const;
+    Vec3 directLight(const ShadingPoint& sp, TraceContext& context) const;
+    /// The fraction of light that reaches the point through the shadow ray (0: blocked).
+    Vec3 transmittance(const Ray& ray, double tMax, TraceContext& context) const;
+    Vec3 reflect(const ShadingPoint& sp, int depth, int32_t medium, TraceContext& context) const;
+
+    const RenderScene& scene_;
+    const SettingsDesc& settings_;
+    std::vector<Light> lights_;
+    const Background& background_;
+    std::vector<Texture> textures_;
+    SceneFeatures features_;
+    Vec3 ambient_;
+};
+
+} // namespace crt::tracer

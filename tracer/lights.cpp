@@ -1,0 +1,69 @@
+// Point, parallel, spot and area lights.
+#include "tracer/lights.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace crt::tracer {
+
+Light::Light(const LightDesc& desc, int shadowSamples)
+    : kind_(desc.kind), color_(rgb(desc.color)), ambient_(desc.ambient), falloff_(desc.falloff) {
+    switch (desc.kind) {
+    case LightKind::Point: position_ = desc.origin; break;
+    case LightKind::Parallel: direction_ = glm::normalize(desc.pointing - desc.from); break;
+    case LightKind::Spot: {
+        position_ = desc.origin;
+        direction_ = glm::normalize(desc.pointing - desc.origin);
+        double half = std::clamp(desc.angle, 0.0, 360.0) * kPi / 360.0;
+        double inner = half * (1 - std::clamp(desc.softness, 0.0, 1.0));
+        cosOuter_ = std::cos(half);
+        cosInner_ = std::cos(inner);
+        break;
+    }
+    case LightKind::Area: {
+        position_ = desc.origin;
+        edgeA_ = desc.edgeA;
+        edgeB_ = desc.edgeB;
+        sampleCount_ = std::max(shadowSamples, 1);
+        // A near-square grid of strata, as many as there are samples.
+        strataX_ = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(sampleCount_))));
+        strataY_ = (sampleCount_ + strataX_ - 1) / strataX_;
+        break;
+    }
+    }
+}
+
+double Light::spotFactor(const Vec3& fromLight) const {
+    double c = glm::dot(fromLight, direction_);
+    if (c <= cosOuter_) return 0;
+    if (c >= cosInner_) return 1;
+    double x = (c - cosOuter_) / (cosInner_ - cosOuter_);
+    return x * x * (3 - 2 * x); // smoothstep
+}
+
+LightSample Light::sample(const Vec3& point, int index, const Vec2& jitter) const {
+    LightSample s;
+    if (kind_ == LightKind::Parallel) {
+        s.toLight = -direction_;
+        s.atInfinity = true;
+        s.color = color_;
+        return s;
+    }
+    Vec3 target = position_;
+    Vec3 color = color_;
+    if (kind_ == LightKind::Area) {
+        int sx = index % strataX_, sy = index / strataX_;
+        double a = (sx + jitter.x) / strataX_, b = (sy + jitter.y) / strataY_;
+        target = position_ + std::min(a, 1.0) * edgeA_ + std::min(b, 1.0) * edgeB_;
+        color = color_ / static_cast<double>(sampleCount_);
+    }
+    Vec3 offset = target - point;
+    s.distance = glm::length(offset);
+    s.toLight = s.distance > 0 ? offset / s.distance : Vec3(0, 1, 0);
+    s.target = target;
+    if (kind_ == LightKind::Spot) color *= spotFactor(-s.toLight);
+    s.color = color;
+    return s;
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,47 @@
+// Lights of spec §5, prepared for shading: where light comes from at a point, and how much.
+#pragma once
+
+#include "tracer/geometry/ray.hpp"
+#include "tracer/scene_desc.hpp"
+
+#include <vector>
+
+namespace crt::tracer {
+
+inline Vec3 rgb(const Color& c) { return {c.r, c.g, c.b}; }
+
+/// One sample of a light seen from a point.
+struct LightSample {
+    Vec3 toLight{0.0};  ///< unit direction from the point to the light
+    Vec3 target{0.0};   ///< the light's position (unused for parallel lights)
+    double distance = kInfinity;
+    Vec3 color{0.0};    ///< the light's colour for this sample, cone factor included
+    bool atInfinity = false;
+};
+
+class Light {
+public:
+    explicit Light(const LightDesc& desc, int shadowSamples);
+
+    /// How many samples shading takes: shadowsamples for an area light, else one.
+    int sampleCount() const { return sampleCount_; }
+    /// Sample `index` of sampleCount(), at `point`; `jitter` in [0,1)² places it in its stratum.
+    LightSample sample(const Vec3& point, int index, const Vec2& jitter) const;
+
+    Vec3 color() const { return color_; }
+    double ambient() const { return ambient_; }
+    double falloff() const { return falloff_; }
+    LightKind kind() const { return kind_; }
+
+private:
+    double spotFactor(const Vec3& fromLight) const;
+
+    LightKind kind_;
+    Vec3 position_{0.0}, direction_{0.0}, edgeA_{0.0}, edgeB_{0.0};
+    Vec3 color_{0.0};
+    double ambient_ = 0, falloff_ = 0;
+    double cosOuter_ = -1, cosInner_ = -1;
+    int sampleCount_ = 1, strataX_ = 1, strataY_ = 1;
+};
+
+} // namespace crt::tracer

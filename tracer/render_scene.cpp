@@ -1,0 +1,164 @@
+// Ray queries against the render scene: nearest hit, CSG crossing lists, surface details.
+#include "tracer/render_scene.hpp"
+
+#include <algorithm>
+
+namespace crt::tracer {
+
+namespace {
+
+bool insideOf(CsgNodeKind kind, bool left, bool right) {
+    switch (kind) {
+    case CsgNodeKind::Union: return left || right;
+    case CsgNodeKind::Difference: return left && !right;
+    case CsgNodeKind::Intersection: return left && right;
+    case CsgNodeKind::Leaf: break;
+    }
+    return left;
+}
+
+/// Crossings closer than this (in ray units) are one event: coincident faces of two
+/// operands, computed through different transforms, differ by rounding only, and treating
+/// them apart would leave slivers ("speckles") of the face that should vanish.
+double coincidenceTolerance(const Ray& ray, double t) {
+    double originScale = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z)});
+    double dirScale = std::max({std::abs(ray.dir.x), std::abs(ray.dir.y), std::abs(ray.dir.z)});
+    return 1e-9 * (std::abs(t) + originScale / dirScale);
+}
+
+} // namespace
+
+bool RenderScene::csgCrossings(int32_t nodeIndex, const Ray& ray, QueryScratch& scratch, RayStats& stats) const {
+    const CsgTreeNode& node = csgNodes[nodeIndex];
+    std::vector<CsgCrossing>& out = scratch.csg;
+    if (node.bounds.finite() && !BoxRay(ray).hits(node.bounds, -kInfinity, kInfinity)) return false;
+
+    if (node.kind == CsgNodeKind::Leaf) {
+        const Primitive& p = primitives[node.primitive];
+        CrossingList list;
+        ++stats.intersectionTests;
+        crossLine(p.geometry, objectRay(p, ray), list);
+        bool inside = list.startsInside;
+        for (int i = 0; i < list.count; ++i) {
+            inside = !inside;
+            out.push_back({list.items[i].t, node.primitive, list.items[i].part, inside, false});
+        }
+        return list.startsInside;
+    }
+
+    size_t leftStart = out.size();
+    bool inLeft = csgCrossings(node.left, ray, scratch, stats);
+    size_t rightStart = out.size();
+    bool inRight = csgCrossings(node.right, ray, scratch, stats);
+    size_t rightEnd = out.size();
+    bool state = insideOf(node.kind, inLeft, inRight);
+    bool startsInside = state;
+
+    size_t i = leftStart, j = rightStart;
+    while (i < rightStart || j < rightEnd) {
+        double t = std::min(i < rightStart ? out[i].t : kInfinity, j < rightEnd ? out[j].t : kInfinity);
+        double limit = t + coincidenceTolerance(ray, t);
+        size_t groupLeft = i, groupRight = j;
+        bool leftBefore = inLeft;
+        while (i < rightStart && out[i].t <= limit) inLeft = out[i++].insideAfter;
+        while (j < rightEnd && out[j].t <= limit) inRight = out[j++].insideAfter;
+        bool next = insideOf(node.kind, inLeft, inRight);
+        if (node.kind == CsgNodeKind::Union) {
+            // A union keeps every surface of its operands, interior ones included.
+            for (size_t k = groupLeft; k < i; ++k) out.push_back({out[k].t, out[k].primitive, out[k].part, next, out[k].flipNormal});
+            for (size_t k = groupRight; k < j; ++k) out.push_back({out[k].t, out[k].primitive, out[k].part, next, out[k].flipNormal});
+        } else if (next != state) {
+            // The event's face: the left operand's when it changed, else the right one's
+            // (a cut face of a difference, which bounds the result from the other side).
+            bool fromRight = inLeft == leftBefore;
+            CsgCrossing c = fromRight ? out[j - 1] : out[i - 1];
+            c.insideAfter = next;
+            if (fromRight && node.kind == CsgNodeKind::Difference) c.flipNormal = !c.flipNormal;
+            out.push_back(c);
+        } else if (inLeft == leftBefore && inLeft && (node.kind == CsgNodeKind::Intersection) == inRight) {
+            // Interior surfaces of a union operand stay visible where the result is solid.
+            for (size_t k = groupLeft; k < i; ++k)
+                if (out[k].insideAfter) out.push_back({out[k].t, out[k].primitive, out[k].part, next, out[k].flipNormal});
+        }
+        state = next;
+    }
+    // Move the result over the operands' lists.
+    std::copy(out.begin() + rightEnd, out.end(), out.begin() + leftStart);
+    out.resize(leftStart + (out.size() - rightEnd));
+    return startsInside;
+}
+
+bool RenderScene::nearestInObject(int32_t object, const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch,
+                                  RayStats& stats) const {
+    if (object >= 0) {
+        const Primitive& p = primitives[object];
+        CrossingList list;
+        ++stats.intersectionTests;
+        crossLine(p.geometry, objectRay(p, ray), list);
+        Crossing c;
+        if (!firstCrossingAfter(list, 0.0, tMax, c)) return false;
+        hit = {c.t, object, c, false};
+        return true;
+    }
+    size_t start = scratch.csg.size();
+    csgCrossings(~object, ray, scratch, stats);
+    bool found = false;
+    for (size_t i = start; i < scratch.csg.size(); ++i) {
+        const CsgCrossing& c = scratch.csg[i];
+        if (c.t > 0 && c.t < tMax) {
+            hit = {c.t, c.primitive, Crossing{c.t, c.part}, c.flipNormal};
+            found = true;
+            break;
+        }
+    }
+    scratch.csg.resize(start);
+    return found;
+}
+
+bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats) const {
+    bool found = false;
+    double nearest = tMax;
+    for (int32_t object : unbounded) {
+        if (nearestInObject(object, ray, nearest, hit, scratch, stats)) {
+            nearest = hit.t;
+            found = true;
+        }
+    }
+    bvh.traverse(ray, nearest, stats, [&](int32_t item) {
+        if (nearestInObject(objects[item], ray, nearest, hit, scratch, stats)) {
+            nearest = hit.t;
+            found = true;
+        }
+        return true;
+    });
+    return found;
+}
+
+SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) const {
+    const Primitive& p = primitives[hit.primitive];
+    SurfacePoint sp = surfaceAt(p.geometry, objectRay(p, ray), hit.crossing);
+    SurfaceInteraction si;
+    si.objectPoint = sp.point;
+    si.uv = sp.uv;
+    si.material = p.material;
+    si.solid = isSolid(p.geometry);
+    if (p.transform < 0) {
+        si.point = sp.point;
+        si.pointError = sp.pointError;
+        si.normal = sp.normal;
+        si.shadingNormal = sp.shadingNormal;
+    } else {
+        const Transform& toWorld = transforms[p.transform].toWorld;
+        si.point = toWorld.point(sp.point);
+        si.pointError = toWorld.pointError(sp.point, sp.pointError);
+        si.normal = toWorld.normal(sp.normal);
+        si.shadingNormal = toWorld.normal(sp.shadingNormal);
+    }
+    if (hit.flipNormal) {
+        si.normal = -si.normal;
+        si.shadingNormal = -si.shadingNormal;
+    }
+    return si;
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,120 @@
+// The scene as the renderer sees it: primitives with transforms and materials, CSG trees,
+// and an acceleration structure, built once from a SceneDesc.
+#pragma once
+
+#include "tracer/bvh.hpp"
+#include "tracer/geometry/geometry.hpp"
+#include "tracer/scene_desc.hpp"
+#include "tracer/stats.hpp"
+#include "tracer/transform.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace crt::tracer {
+
+/// A primitive placed in the world: its geometry in object space, the transforms between
+/// object and world space (index into RenderScene::transforms; -1 = identity) and its material.
+struct Primitive {
+    Geometry geometry;
+    int32_t transform = -1;
+    int32_t material = 0;
+};
+
+struct TransformPair {
+    Transform toWorld;
+    Transform toObject;
+};
+
+enum class CsgNodeKind : uint8_t { Leaf, Union, Difference, Intersection };
+
+/// A node of a flattened CSG tree; a leaf refers to a primitive.
+struct CsgTreeNode {
+    CsgNodeKind kind = CsgNodeKind::Leaf;
+    int32_t left = -1, right = -1; ///< children (node indices) of an operator
+    int32_t primitive = -1;        ///< leaf
+    Bounds3 bounds;                ///< world space; everything() when unbounded
+};
+
+/// A crossing of a world ray with a CSG tree's surface.
+struct CsgCrossing {
+    double t;
+    int32_t primitive;
+    uint32_t part;
+    bool insideAfter; ///< whether the line is inside the node's solid after this crossing
+    bool flipNormal;  ///< the face bounds the result from the other side (a cut face)
+};
+
+/// What a ray hit: enough to compute the surface later, only for the hit that wins.
+struct Hit {
+    double t = kInfinity;
+    int32_t primitive = -1;
+    Crossing crossing;
+    bool flipNormal = false;
+};
+
+/// The surface at a hit, in world space.
+struct SurfaceInteraction {
+    Vec3 point{0.0};
+    Vec3 pointError{0.0};
+    Vec3 normal{0, 1, 0};        ///< geometric, unit, outward for solids (cut faces flipped)
+    Vec3 shadingNormal{0, 1, 0}; ///< same orientation as normal
+    Vec3 objectPoint{0.0};       ///< in the primitive's object space (textures)
+    Vec2 uv{0.0};
+    int32_t material = 0;
+    bool solid = false;
+};
+
+/// Per-thread scratch memory, so queries never allocate.
+struct QueryScratch {
+    std::vector<CsgCrossing> csg;
+    std::vector<int32_t> stack;
+};
+
+class RenderScene {
+public:
+    /// Builds from the evaluated scene; meshes come already read (`meshes[i]` for the
+    /// i-th MeshShape entity encountered, see buildRenderScene).
+    std::vector<Primitive> primitives;
+    std::vector<TransformPair> transforms;
+    std::vector<CsgTreeNode> csgNodes;
+    std::vector<MaterialDesc> materials;
+
+    /// Nearest hit with 0 < t < tMax.
+    bool intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats) const;
+    /// Calls visit(primitive, t) for every surface crossing with 0 < t < tMax, in no
+    /// particular order, until visit returns false; returns false if stopped early.
+    template <typename Visit>
+    bool forEachCrossing(const Ray& ray, double tMax, QueryScratch& scratch, RayStats& stats, Visit&& visit) const;
+
+    SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
+
+    /// Objects of the acceleration structure: a primitive (>= 0) or a CSG root (~node).
+    std::vector<int32_t> objects;
+    std::vector<int32_t> unbounded; ///< objects kept outside the BVH (planes, unbounded CSG)
+    Bvh bvh;
+    Bounds3 bounds; ///< of the bounded objects
+
+private:
+    bool nearestInObject(int32_t object, const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch,
+                         RayStats& stats) const;
+    template <typename Visit>
+    bool crossingsInObject(int32_t object, const Ray& ray, double tMax, QueryScratch& scratch,
+                           RayStats& stats, Visit& visit) const;
+    /// Appends the node's crossings of the whole line to scratch.csg from `start`; returns
+    /// whether the line starts inside.
+    bool csgCrossings(int32_t node, const Ray& ray, QueryScratch& scratch, RayStats& stats) const;
+    Ray objectRay(const Primitive& p, const Ray& ray) const {
+        return p.transform < 0 ? ray : transforms[p.transform].toObject.ray(ray);
+    }
+    friend class RenderSceneBuilder;
+};
+
+/// Builds the render scene; returns nullptr and sets `error` ("file:line: message") when
+/// a mesh cannot be read.
+std::unique_ptr<RenderScene> buildRenderScene(const SceneDesc& desc, std::string& error);
+
+} // namespace crt::tracer
+
+#include "tracer/render_scene_queries.hpp"

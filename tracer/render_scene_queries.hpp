@@ -1,0 +1,41 @@
+// The templated crossing queries of RenderScene (included by render_scene.hpp).
+#pragma once
+
+namespace crt::tracer {
+
+template <typename Visit>
+bool RenderScene::crossingsInObject(int32_t object, const Ray& ray, double tMax, QueryScratch& scratch,
+                                    RayStats& stats, Visit& visit) const {
+    if (object >= 0) {
+        const Primitive& p = primitives[object];
+        CrossingList list;
+        ++stats.intersectionTests;
+        crossLine(p.geometry, objectRay(p, ray), list);
+        for (int i = 0; i < list.count; ++i) {
+            double t = list.items[i].t;
+            if (t > 0 && t < tMax && !visit(object, t)) return false;
+        }
+        return true;
+    }
+    size_t start = scratch.csg.size();
+    csgCrossings(~object, ray, scratch, stats);
+    bool keepGoing = true;
+    for (size_t i = start; i < scratch.csg.size() && keepGoing; ++i) {
+        const CsgCrossing& c = scratch.csg[i];
+        if (c.t > 0 && c.t < tMax) keepGoing = visit(c.primitive, c.t);
+    }
+    scratch.csg.resize(start);
+    return keepGoing;
+}
+
+template <typename Visit>
+bool RenderScene::forEachCrossing(const Ray& ray, double tMax, QueryScratch& scratch, RayStats& stats,
+                                  Visit&& visit) const {
+    for (int32_t object : unbounded)
+        if (!crossingsInObject(object, ray, tMax, scratch, stats, visit)) return false;
+    return bvh.traverse(ray, tMax, stats, [&](int32_t item) {
+        return crossingsInObject(objects[item], ray, tMax, scratch, stats, visit);
+    });
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,44 @@
+// Renders a SceneDesc into linear RGB pixels: tiles handed to std::thread workers.
+#pragma once
+
+#include "tracer/scene_desc.hpp"
+#include "tracer/stats.hpp"
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace crt::tracer {
+
+/// Linear RGB floats, row-major, top row first.
+struct PixelBuffer {
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgb;
+};
+
+struct RenderSettings {
+    int threads = 0;                          ///< 0: all cores
+    const std::atomic<bool>* cancel = nullptr; ///< set (e.g. by SIGINT) to stop early
+    /// Called from the calling thread about ten times a second with finished/total tiles.
+    std::function<void(int done, int total)> onProgress;
+};
+
+struct RenderOutcome {
+    bool ok = false;
+    bool cancelled = false;
+    std::string error; ///< why it failed, e.g. "scene.obj:12: bad vertex index"
+    PixelBuffer frame;
+    RayStats stats;
+    double buildSeconds = 0;  ///< scene build: BVH, images, textures
+    double renderSeconds = 0; ///< tracing
+    size_t primitives = 0;
+    size_t bvhNodes = 0;
+    uint64_t samples = 0; ///< camera samples per pixel (before DOF)
+};
+
+/// Renders `desc` at its settings' width and height.
+RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings);
+
+} // namespace crt::tracer

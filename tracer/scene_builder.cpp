@@ -1,0 +1,260 @@
+// Builds the render scene from a SceneDesc: flattens transforms, groups and top-level
+// unions into primitives, rebalances CSG chains, reads meshes, and builds the BVH.
+#include "tracer/geometry/obj_reader.hpp"
+#include "tracer/render_scene.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace crt::tracer {
+
+class RenderSceneBuilder {
+public:
+    RenderSceneBuilder(const SceneDesc& desc, RenderScene& scene, std::string& error)
+        : desc_(desc), scene_(scene), error_(error) {}
+
+    bool build() {
+        scene_.materials = desc_.materials;
+        defaultMaterial_ = static_cast<int32_t>(scene_.materials.size());
+        scene_.materials.emplace_back();
+        for (int32_t root : desc_.drawn)
+            if (!addDrawn(root, Transform())) return false;
+        finishAcceleration();
+        return true;
+    }
+
+private:
+    struct Operand {
+        int32_t entity;
+        Transform transform;
+    };
+
+    /// Draws an entity: groups and unions are drawn as their members (a union keeps every
+    /// surface, so at the top level it is no different from drawing both operands).
+    bool addDrawn(int32_t root, const Transform& rootTransform) {
+        std::vector<Operand> pending{{root, rootTransform}};
+        while (!pending.empty()) {
+            Operand op = std::move(pending.back());
+            pending.pop_back();
+            const EntityDesc& e = desc_.entities[op.entity];
+            if (auto* t = std::get_if<TransformNode>(&e.shape)) {
+                pending.push_back({t->child, op.transform.compose(Transform::fromModifiers(t->modifiers))});
+            } else if (auto* g = std::get_if<GroupNode>(&e.shape)) {
+                for (auto it = g->members.rbegin(); it != g->members.rend(); ++it) pending.push_back({*it, op.transform});
+            } else if (auto* c = std::get_if<CsgNode>(&e.shape); c && c->op == CsgOp::Union) {
+                pending.push_back({c->right, op.transform});
+                pending.push_back({c->left, op.transform});
+            } else if (std::holds_alternative<CsgNode>(e.shape)) {
+                int32_t node = addCsg(op);
+                if (node >= 0) scene_.objects.push_back(~node);
+            } else if (auto* m = std::get_if<MeshShape>(&e.shape)) {
+                if (!addMesh(*m, e, op.transform)) return false;
+            } else {
+                int32_t p = addPrimitive(e, op.transform);
+                if (p >= 0) scene_.objects.push_back(p);
+            }
+        }
+        return true;
+    }
+
+    int32_t materialOf(const EntityDesc& e) const { return e.material >= 0 ? e.material : defaultMaterial_; }
+
+    int32_t addTransform(const Transform& toWorld) {
+        if (toWorld.isIdentity()) return -1;
+        if (!scene_.transforms.empty()) {
+            const Transform& last = scene_.transforms.back().toWorld;
+            if (last.linear() == toWorld.linear() && last.offset() == toWorld.offset())
+                return static_cast<int32_t>(scene_.transforms.size() - 1);
+        }
+        scene_.transforms.push_back({toWorld, toWorld.inverse()});
+        return static_cast<int32_t>(scene_.transforms.size() - 1);
+    }
+
+    int32_t addPrimitive(const EntityDesc& e, const Transform& toWorld) {
+        std::optional<Geometry> geometry = makeGeometry(e.shape);
+        if (!geometry) return -1;
+        scene_.primitives.push_back({std::move(*geometry), addTransform(toWorld), materialOf(e)});
+        return static_cast<int32_t>(scene_.primitives.size() - 1);
+    }
+
+    bool addMesh(const MeshShape& mesh, const EntityDesc& e, const Transform& toWorld) {
+        std::string path = mesh.resolvedFile.empty() ? mesh.file : mesh.resolvedFile;
+        auto cached = meshes_.find(path);
+        if (cached == meshes_.end()) {
+            std::optional<MeshData> data = readObj(path, error_);
+            if (!data) return false;
+            cached = meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*data))).first;
+        }
+        int32_t transform = addTransform(toWorld);
+        for (size_t i = 0; i < cached->second->triangles.size(); ++i) {
+            scene_.primitives.push_back({MeshTriangleGeometry(cached->second, i), transform, materialOf(e)});
+            scene_.objects.push_back(static_cast<int32_t>(scene_.primitives.size() - 1));
+        }
+        return true;
+    }
+
+    /// The operands of a chain of one associative operator, through transforms and groups.
+    void collectChain(const Operand& start, CsgOp op, std::vector<Operand>& operands) {
+        std::vector<Operand> pending{start};
+        while (!pending.empty()) {
+            Operand o = std::move(pending.back());
+            pending.pop_back();
+            const EntityDesc& e = desc_.entities[o.entity];
+            if (auto* t = std::get_if<TransformNode>(&e.shape)) {
+                pending.push_back({t->child, o.transform.compose(Transform::fromModifiers(t->modifiers))});
+            } else if (auto* g = std::get_if<GroupNode>(&e.shape); g && op == CsgOp::Union) {
+                for (int32_t m : g->members) pending.push_back({m, o.transform});
+            } else if (auto* c = std::get_if<CsgNode>(&e.shape); c && c->op == op) {
+                pending.push_back({c->right, o.transform});
+                pending.push_back({c->left, o.transform});
+            } else {
+                operands.push_back(std::move(o));
+            }
+        }
+    }
+
+    /// Adds a CSG tree; chains are rebalanced ((a − b) − c = a − (b ∪ c), unions and
+    /// intersections regrouped by position) so evaluation depth grows like log n.
+    int32_t addCsg(const Operand& operand) {
+        const EntityDesc& e = desc_.entities[operand.entity];
+        if (auto* t = std::get_if<TransformNode>(&e.shape))
+            return addCsg({t->child, operand.transform.compose(Transform::fromModifiers(t->modifiers))});
+        const CsgNode* c = std::get_if<CsgNode>(&e.shape);
+        if (!c && !std::holds_alternative<GroupNode>(e.shape)) {
+            int32_t p = addPrimitive(e, operand.transform);
+            if (p < 0) return -1;
+            CsgTreeNode leaf;
+            leaf.primitive = p;
+            leaf.bounds = worldBounds(scene_.primitives[p]);
+            scene_.csgNodes.push_back(leaf);
+            return static_cast<int32_t>(scene_.csgNodes.size() - 1);
+        }
+        if (c && c->op == CsgOp::Difference) {
+            // Walk the left spine: ((a − b) − c) − d = a − (b ∪ c ∪ d).
+            std::vector<Operand> subtracted;
+            Operand base = operand;
+            while (true) {
+                const EntityDesc& be = desc_.entities[base.entity];
+                if (auto* t = std::get_if<TransformNode>(&be.shape)) {
+                    base = {t->child, base.transform.compose(Transform::fromModifiers(t->modifiers))};
+                } else if (auto* d = std::get_if<CsgNode>(&be.shape); d && d->op == CsgOp::Difference) {
+                    collectChain({d->right, base.transform}, CsgOp::Union, subtracted);
+                    base = {d->left, base.transform};
+                } else {
+                    break;
+                }
+            }
+            int32_t left = addCsg(base);
+            int32_t right = addBalanced(subtracted, CsgNodeKind::Union);
+            return combine(CsgNodeKind::Difference, left, right);
+        }
+        std::vector<Operand> operands;
+        CsgOp op = c ? c->op : CsgOp::Union;
+        collectChain(operand, op, operands);
+        return addBalanced(operands, op == CsgOp::Intersection ? CsgNodeKind::Intersection : CsgNodeKind::Union);
+    }
+
+    int32_t addBalanced(std::vector<Operand>& operands, CsgNodeKind kind) {
+        std::vector<int32_t> nodes;
+        for (const Operand& o : operands) {
+            int32_t n = addCsg(o);
+            if (n >= 0) nodes.push_back(n);
+        }
+        return balance(nodes, 0, nodes.size(), kind);
+    }
+
+    /// Splits by position along the widest axis, so bounds of subtrees are tight.
+    int32_t balance(std::vector<int32_t>& nodes, size_t begin, size_t end, CsgNodeKind kind) {
+        if (begin == end) return -1;
+        if (end - begin == 1) return nodes[begin];
+        Bounds3 centroids;
+        for (size_t i = begin; i < end; ++i)
+            if (scene_.csgNodes[nodes[i]].bounds.finite()) centroids.include(scene_.csgNodes[nodes[i]].bounds.centroid());
+        int axis = 0;
+        if (!centroids.empty()) {
+            Vec3 extent = centroids.extent();
+            axis = extent.y > extent.x ? 1 : 0;
+            if (extent.z > extent[axis]) axis = 2;
+        }
+        size_t mid = begin + (end - begin) / 2;
+        std::nth_element(nodes.begin() + begin, nodes.begin() + mid, nodes.begin() + end, [&](int32_t a, int32_t b) {
+            return key(a, axis) < key(b, axis);
+        });
+        int32_t left = balance(nodes, begin, mid, kind);
+        int32_t right = balance(nodes, mid, end, kind);
+        return combine(kind, left, right);
+    }
+
+    double key(int32_t node, int axis) const {
+        const Bounds3& b = scene_.csgNodes[node].bounds;
+        return b.finite() ? b.centroid()[axis] : kInfinity;
+    }
+
+    int32_t combine(CsgNodeKind kind, int32_t left, int32_t right) {
+        if (left < 0) return kind == CsgNodeKind::Union ? right : -1;
+        if (right < 0) return kind == CsgNodeKind::Intersection ? -1 : left;
+        CsgTreeNode node;
+        node.kind = kind;
+        node.left = left;
+        node.right = right;
+        const Bounds3& a = scene_.csgNodes[left].bounds;
+        const Bounds3& b = scene_.csgNodes[right].bounds;
+        if (kind == CsgNodeKind::Union) node.bounds = unionOf(a, b);
+        else if (kind == CsgNodeKind::Difference) node.bounds = a;
+        else node.bounds = {glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)};
+        scene_.csgNodes.push_back(node);
+        return static_cast<int32_t>(scene_.csgNodes.size() - 1);
+    }
+
+    Bounds3 worldBounds(const Primitive& p) const {
+        Bounds3 local = geometryBounds(p.geometry);
+        if (p.transform < 0 || !local.finite()) return p.transform < 0 ? local : Bounds3::everything();
+        const Transform& t = scene_.transforms[p.transform].toWorld;
+        Bounds3 world;
+        for (int corner = 0; corner < 8; ++corner) {
+            Vec3 c((corner & 1) ? local.hi.x : local.lo.x, (corner & 2) ? local.hi.y : local.lo.y,
+                   (corner & 4) ? local.hi.z : local.lo.z);
+            world.include(t.point(c));
+        }
+        // Rounding of the transformed corners must not cut off a grazing hit.
+        Vec3 pad = errorGamma(4) * glm::max(glm::abs(world.lo), glm::abs(world.hi));
+        return {world.lo - pad, world.hi + pad};
+    }
+
+    Bounds3 objectBounds(int32_t object) const {
+        return object >= 0 ? worldBounds(scene_.primitives[object]) : scene_.csgNodes[~object].bounds;
+    }
+
+    void finishAcceleration() {
+        std::vector<int32_t> bounded;
+        std::vector<Bounds3> bounds;
+        for (int32_t object : scene_.objects) {
+            Bounds3 b = objectBounds(object);
+            if (b.empty()) continue; // an intersection of disjoint solids
+            if (!b.finite()) {
+                scene_.unbounded.push_back(object);
+                continue;
+            }
+            bounded.push_back(object);
+            bounds.push_back(b);
+            scene_.bounds.include(b);
+        }
+        scene_.objects = std::move(bounded);
+        scene_.bvh.build(bounds);
+    }
+
+    const SceneDesc& desc_;
+    RenderScene& scene_;
+    std::string& error_;
+    int32_t defaultMaterial_ = 0;
+    std::map<std::string, std::shared_ptr<const MeshData>> meshes_;
+};
+
+std::unique_ptr<RenderScene> buildRenderScene(const SceneDesc& desc, std::string& error) {
+    auto scene = std::make_unique<RenderScene>();
+    RenderSceneBuilder builder(desc, *scene, error);
+    if (!builder.build()) return nullptr;
+    return scene;
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,44 @@
+// Image loading through the OpenImageIO module.
+#include "tracer/scene_images.hpp"
+
+#include "tracer/image_io/encoding.hpp"
+#include "tracer/image_io/image_io.hpp"
+
+namespace crt::tracer {
+
+namespace {
+
+bool load(const std::string& path, bool decodeSrgb, SceneImages& images, std::string& error) {
+    if (path.empty() || images.byPath.count(path)) return true;
+    bool eightBit = false;
+    std::optional<image_io::ImageBuffer> buffer = image_io::readImage(path, error, &eightBit);
+    if (!buffer) return false;
+    Image image;
+    image.width = buffer->width;
+    image.height = buffer->height;
+    image.rgb = std::move(buffer->pixels);
+    if (eightBit && decodeSrgb)
+        for (float& v : image.rgb) v = image_io::srgbToLinear(v);
+    images.byPath.emplace(path, std::move(image));
+    return true;
+}
+
+} // namespace
+
+bool loadSceneImages(const SceneDesc& desc, SceneImages& images, std::string& error) {
+    bool decodeSrgb = desc.settings.gamma != 1.0 || desc.settings.srgb;
+    auto pathOf = [](const std::string& resolved, const std::string& written) {
+        return resolved.empty() ? written : resolved;
+    };
+    if (desc.background.kind == BackgroundKind::Image &&
+        !load(pathOf(desc.background.resolvedImage, desc.background.image), decodeSrgb, images, error))
+        return false;
+    for (const TextureDesc& t : desc.textures) {
+        if ((t.kind == TextureKind::Image || t.kind == TextureKind::ImageBump) &&
+            !load(pathOf(t.resolvedFile, t.file), decodeSrgb && t.kind == TextureKind::Image, images, error))
+            return false;
+    }
+    return true;
+}
+
+} // namespace crt::tracer
