@@ -4,6 +4,7 @@
 #include "builtins.hpp"
 #include "large_stack.hpp"
 #include "parser.hpp"
+#include "value_format.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -54,6 +55,11 @@ SourceRange Interpreter::argRange(const CallExpr* site, size_t index) const {
 }
 
 void Interpreter::step(SourceRange where) {
+    // Only the language server sets a callback; it is polled every 64th step, which keeps
+    // the cost small while a loop whose body is slow still stops in time.
+    if (options_.interrupt && (steps_ & 63) == 63 && options_.interrupt()) {
+        fail(where, "evaluation was stopped before it finished (time budget exceeded)");
+    }
     if (++steps_ > options_.limits.maxSteps) {
         fail(where, fmt::format("evaluation exceeded {} steps (loop iterations and macro "
                                 "calls); raise the limit with --max-steps",
@@ -74,9 +80,25 @@ void Interpreter::run(bool evaluate) {
         execStatements(compilation_.main.items);
         assembleScene();
         reportUnused();
+        if (options_.keepGlobalValues) keepGlobalValues(); // str() of objects reads scene_
         compilation_.scene = std::move(scene_);
     } catch (const EvalError&) {
         // reported already
+        if (options_.keepGlobalValues) keepGlobalValues();
+    }
+}
+
+void Interpreter::keepGlobalValues() {
+    constexpr size_t kMaxText = 160; // a hover line, not a dump of a huge list
+    for (uint32_t slot = 0; slot < globals_.size() && slot < globalValues_.size(); ++slot) {
+        const Value& value = globalValues_[slot];
+        if (value.kind == ValueKind::Unset) continue;
+        std::string text = value.kind == ValueKind::List && value.list->size() > 32
+                               ? fmt::format("a list of {} values", value.list->size())
+                           : value.kind == ValueKind::String ? lang::quoted(*value.s)
+                                                             : str(value);
+        if (text.size() > kMaxText) text = text.substr(0, kMaxText) + "…";
+        compilation_.globalValues.emplace_back(globals_.entry(slot).name, std::move(text));
     }
 }
 

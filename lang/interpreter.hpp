@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <optional>
@@ -38,6 +39,12 @@ struct EvalOptions {
     std::optional<double> time;           ///< --time T: t is this float
     std::ostream* printOut = nullptr;     ///< where print() writes; null: standard output
     bool checkFiles = true;               ///< look up images and meshes on disk
+    /// Polled every few thousand steps; returning true stops evaluation with an error. The
+    /// language server uses it for its time budget and to drop analyses of stale text.
+    std::function<bool()> interrupt;
+    /// Keep a short text form of every global's final value (Compilation::globalValues),
+    /// for the language server's hover.
+    bool keepGlobalValues = false;
 };
 
 class Interpreter;
@@ -50,6 +57,9 @@ struct Compilation {
     Script main;
     std::vector<Token> comments;
     std::optional<tracer::SceneDesc> scene; ///< set when evaluation finished without errors
+    /// With EvalOptions::keepGlobalValues: each assigned global's name and str() (shortened),
+    /// as they stood when evaluation ended or stopped.
+    std::vector<std::pair<std::string, std::string>> globalValues;
 };
 
 /// Parses, resolves and (unless `evaluate` is false or there are errors) evaluates the

@@ -91,6 +91,7 @@ private:
     Value csg(BinaryOp op, const Value& left, const Value& right, const BinaryExpr* node);
     bool condition(const Expr* node, std::string_view what);
     void step(SourceRange where);
+    void keepGlobalValues();
 
     // objects (object_builder.cpp)
     Value evalObject(const ObjectExpr* node);

@@ -9,6 +9,7 @@ set -euo pipefail
 packages=(
     g++ cmake ninja-build re2c bison
     libfmt-dev libglm-dev nlohmann-json3-dev catch2
+    neovim # the language server's end-to-end test (tests/lsp/nvim)
 )
 case "${1:-}" in
 --bench) packages+=(povray time) ;;

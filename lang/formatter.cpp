@@ -1,0 +1,163 @@
+// Formatting over the lexer's tokens and comments; the AST tells unary operators and the
+// '>' closing a modifier list apart from their binary look-alikes.
+#include "formatter.hpp"
+
+#include "lexer.hpp"
+#include "parser.hpp"
+
+#include <algorithm>
+#include <set>
+
+namespace crt::lang {
+
+namespace {
+
+void collectShapes(Node* node, std::set<uint32_t>& unary, std::set<uint32_t>& modifierClose,
+                   const SourceFile& file) {
+    if (node->kind == NodeKind::Unary) unary.insert(static_cast<UnaryExpr*>(node)->opRange.begin);
+    if (node->kind == NodeKind::Modify && node->range.end > 0 && file.text()[node->range.end - 1] == '>') {
+        modifierClose.insert(node->range.end - 1);
+    }
+    forEachChild(node, [&](Node* child) { collectShapes(child, unary, modifierClose, file); });
+}
+
+bool isOpener(TokenKind k) {
+    return k == TokenKind::LParen || k == TokenKind::LParenLine || k == TokenKind::LBracket ||
+           k == TokenKind::LBracketLine || k == TokenKind::LBrace || k == TokenKind::ModifierOpen;
+}
+
+bool endsOperand(TokenKind k) {
+    return k == TokenKind::Identifier || k == TokenKind::RParen || k == TokenKind::RBracket ||
+           k == TokenKind::String;
+}
+
+struct Item {
+    Token token;
+    bool unary = false;
+    bool modifierClose = false;
+};
+
+/// The separator between two tokens on one line.
+std::string_view spacing(const Item& prev, const Item& cur) {
+    TokenKind p = prev.token.kind;
+    TokenKind c = cur.token.kind;
+    if (p == TokenKind::LParen || p == TokenKind::LParenLine || p == TokenKind::LBracket ||
+        p == TokenKind::LBracketLine || p == TokenKind::ModifierOpen) {
+        return "";
+    }
+    if (c == TokenKind::RParen || c == TokenKind::RBracket || c == TokenKind::Comma || cur.modifierClose) return "";
+    if ((c == TokenKind::LParen || c == TokenKind::LBracket) && endsOperand(p)) return ""; // a call or an index
+    if (prev.unary) return (c == TokenKind::Minus && p == TokenKind::Minus) ? " " : ""; // never "--"
+    return " ";
+}
+
+} // namespace
+
+FormatResult formatSource(std::string_view source, const FormatOptions& options,
+                          std::optional<std::pair<uint32_t, uint32_t>> range) {
+    FormatResult result;
+    SourceFile file("<format>", std::string(source));
+    DiagnosticBag diagnostics;
+    Arena arena;
+    std::vector<Token> comments;
+    Script script = parse(file, 0, arena, diagnostics, &comments);
+    if (diagnostics.hasErrors()) {
+        result.error = "the script has syntax errors; formatting needs a script that parses";
+        return result;
+    }
+    std::set<uint32_t> unary, modifierClose;
+    for (Node* item : script.items) collectShapes(item, unary, modifierClose, file);
+    DiagnosticBag ignored;
+    std::vector<Token> tokens = lexAll(file, 0, ignored);
+
+    // Tokens and comments by line, in order.
+    std::vector<std::vector<Item>> lines(file.lineCount());
+    size_t c = 0;
+    auto addItem = [&](const Token& t) {
+        uint32_t line = file.lineColumn(t.begin).line - 1;
+        lines[line].push_back({t, unary.count(t.begin) > 0, t.kind == TokenKind::Greater && modifierClose.count(t.begin) > 0});
+    };
+    for (const Token& t : tokens) {
+        for (; c < comments.size() && comments[c].begin < t.begin; ++c) addItem(comments[c]);
+        addItem(t);
+    }
+    for (; c < comments.size(); ++c) addItem(comments[c]);
+
+    std::string indentUnit = options.useTabs ? std::string("\t") : std::string(options.indentWidth, ' ');
+    struct Open {
+        TokenKind kind;
+        uint32_t level;
+    };
+    std::vector<Open> open;
+    std::string out;
+    out.reserve(source.size() + source.size() / 8);
+    out += file.text().substr(0, file.lineStart(1)); // a byte-order mark stays
+    for (uint32_t line = 0; line < file.lineCount(); ++line) {
+        uint32_t start = file.lineStart(line + 1);
+        std::string_view original = file.lineText(line + 1);
+        std::string formatted;
+        const std::vector<Item>& items = lines[line];
+        if (!items.empty()) {
+            const Item& first = items.front();
+            TokenKind k = first.token.kind;
+            bool closer = k == TokenKind::RBrace || k == TokenKind::RParen || k == TokenKind::RBracket || first.modifierClose;
+            uint32_t level = open.empty() ? 0 : closer ? open.back().level : open.back().level + 1;
+            for (uint32_t i = 0; i < level; ++i) formatted += indentUnit;
+            for (size_t i = 0; i < items.size(); ++i) {
+                const Item& item = items[i];
+                if (i > 0) {
+                    if (item.token.kind == TokenKind::Comment) {
+                        // Trailing comments keep their distance: people align them.
+                        uint32_t gap = item.token.begin - items[i - 1].token.end;
+                        formatted += std::string(std::max<uint32_t>(gap, 1), ' ');
+                    } else {
+                        formatted += spacing(items[i - 1], item);
+                    }
+                }
+                std::string_view text = file.text().substr(item.token.begin, item.token.end - item.token.begin);
+                if (item.token.kind == TokenKind::Comment) {
+                    while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.remove_suffix(1);
+                }
+                formatted += text;
+                TokenKind kind = item.token.kind;
+                if (isOpener(kind)) {
+                    open.push_back({kind, level});
+                } else if ((kind == TokenKind::RBrace || kind == TokenKind::RParen || kind == TokenKind::RBracket ||
+                            item.modifierClose) && !open.empty()) {
+                    open.pop_back();
+                }
+            }
+        }
+        // The line break as it was (LF or CR LF), none after a last line that had none.
+        uint32_t next = line + 1 < file.lineCount() ? file.lineStart(line + 2) : file.size();
+        std::string_view lineBreak = file.text().substr(start + original.size(), next - start - original.size());
+        out += formatted;
+        out += lineBreak;
+        bool inRange = !range || (start <= range->second && start + original.size() >= range->first);
+        if (formatted != original && inRange) {
+            result.edits.push_back({start, start + static_cast<uint32_t>(original.size()), formatted});
+        }
+    }
+
+    // The tokens must be exactly the same, in the same order: otherwise refuse.
+    SourceFile check("<format>", out);
+    DiagnosticBag checkDiagnostics;
+    std::vector<Token> checkComments;
+    std::vector<Token> after = lexAll(check, 0, checkDiagnostics, &checkComments);
+    bool same = after.size() == tokens.size() && checkComments.size() == comments.size();
+    for (size_t i = 0; same && i < after.size(); ++i) {
+        same = after[i].kind == tokens[i].kind &&
+               check.text().substr(after[i].begin, after[i].end - after[i].begin) ==
+                   file.text().substr(tokens[i].begin, tokens[i].end - tokens[i].begin);
+    }
+    if (!same) {
+        result.edits.clear();
+        result.error = "internal error: formatting would change the script's tokens";
+        return result;
+    }
+    result.ok = true;
+    result.text = std::move(out);
+    return result;
+}
+
+} // namespace crt::lang

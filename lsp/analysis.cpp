@@ -1,0 +1,447 @@
+// Runs the front end for the editor and indexes names, attributes and included files.
+#include "analysis.hpp"
+
+#include "builtins.hpp"
+#include "large_stack.hpp"
+#include "parser.hpp"
+#include "resolver.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <set>
+#include <sstream>
+
+namespace crt::lsp {
+
+namespace fs = std::filesystem;
+using namespace lang;
+
+// ---------------------------------------------------------------- includes
+
+std::vector<std::string> includeFolders(const std::string& folder, const AnalysisOptions& options) {
+    std::vector<std::string> folders{folder};
+    for (const std::string& dir : options.includeDirs) folders.push_back(dir);
+    if (const char* crtPath = std::getenv("CRT_PATH")) {
+        std::stringstream list(crtPath);
+        for (std::string dir; std::getline(list, dir, ':');) {
+            if (!dir.empty()) folders.push_back(dir);
+        }
+    }
+    if (!options.stdlibDir.empty()) folders.push_back(options.stdlibDir);
+    return folders;
+}
+
+std::string findInclude(const std::string& name, const std::string& folder,
+                        const AnalysisOptions& options) {
+    std::error_code error;
+    if (fs::path(name).is_absolute()) return fs::is_regular_file(name, error) ? name : "";
+    for (const std::string& dir : includeFolders(folder, options)) {
+        fs::path candidate = fs::path(dir) / name;
+        if (fs::is_regular_file(candidate, error)) return candidate.lexically_normal().string();
+    }
+    return "";
+}
+
+namespace {
+
+/// Top-level names of an included file: globals it assigns or reads.
+void collectMentions(Node* node, IncludedFile& out, int macroDepth) {
+    auto mention = [&](std::string_view name, SourceRange range, Binding binding, bool write,
+                       const Expr* value) {
+        if (binding != Binding::Global) return;
+        out.mentions.push_back({std::string(name), range, write, write ? value : nullptr});
+    };
+    switch (node->kind) {
+    case NodeKind::Var: {
+        auto* v = static_cast<VarExpr*>(node);
+        mention(v->name, v->range, v->resolution.binding, false, nullptr);
+        return;
+    }
+    case NodeKind::Assign: {
+        auto* a = static_cast<AssignExpr*>(node);
+        mention(a->name, a->nameRange, a->resolution.binding, macroDepth == 0, a->value);
+        break;
+    }
+    case NodeKind::For: {
+        auto* f = static_cast<ForStmt*>(node);
+        mention(f->variable, f->variableRange, f->resolution.binding, macroDepth == 0, nullptr);
+        break;
+    }
+    case NodeKind::Include: {
+        out.includes.emplace_back(static_cast<IncludeStmt*>(node)->path->value);
+        return;
+    }
+    default: break;
+    }
+    int depth = macroDepth + (node->kind == NodeKind::Macro ? 1 : 0);
+    forEachChild(node, [&](Node* child) { collectMentions(child, out, depth); });
+}
+
+std::shared_ptr<const IncludedFile> parseIncluded(const std::string& path, std::string text) {
+    auto included = std::make_shared<IncludedFile>();
+    included->path = path;
+    included->file = std::make_unique<SourceFile>(path, std::move(text));
+    included->arena = std::make_unique<Arena>();
+    runOnLargeStack([&] {
+        DiagnosticBag ignored; // reported by the diagnostics of the including document
+        included->script = parse(*included->file, 0, *included->arena, ignored);
+        GlobalTable globals;
+        resolve(included->script, globals, ignored, false);
+        for (Node* item : included->script.items) collectMentions(item, *included, 0);
+    });
+    std::stable_sort(included->mentions.begin(), included->mentions.end(),
+                     [](const auto& a, const auto& b) { return a.range.begin < b.range.begin; });
+    std::set<std::string> defined;
+    for (IncludedFile::Mention& m : included->mentions) {
+        if (m.definition && !defined.insert(m.name).second) m.definition = false;
+    }
+    return included;
+}
+
+} // namespace
+
+std::shared_ptr<const IncludedFile> IncludeCache::get(const std::string& path) {
+    std::error_code error;
+    auto mtime = fs::last_write_time(path, error);
+    if (error) return nullptr;
+    auto it = entries_.find(path);
+    if (it != entries_.end() && it->second.mtime == mtime) return it->second.file;
+    std::optional<std::string> text = readFile(path);
+    if (!text) return nullptr;
+    auto parsed = parseIncluded(path, std::move(*text));
+    entries_[path] = {mtime, parsed};
+    return parsed;
+}
+
+// ---------------------------------------------------------------- the index
+
+namespace {
+
+class Indexer {
+public:
+    explicit Indexer(Analysis& analysis) : a_(analysis) {}
+
+    void run() {
+        for (Node* item : a_.compilation.main.items) visit(item);
+        std::stable_sort(a_.occurrences.begin(), a_.occurrences.end(),
+                         [](const Occurrence& x, const Occurrence& y) { return x.range.begin < y.range.begin; });
+        std::stable_sort(a_.attributes.begin(), a_.attributes.end(), [](const AttributeUse& x, const AttributeUse& y) {
+            return x.nameRange.begin < y.nameRange.begin;
+        });
+        for (Occurrence& o : a_.occurrences) {
+            Symbol& s = a_.symbols[o.symbol];
+            if (o.write && !s.definition) {
+                s.definition = o.range;
+                o.definition = true;
+                if (s.kind == SymbolKind::Variable && values_.count(o.range.begin)) {
+                    s.value = values_[o.range.begin];
+                    if (s.value && s.value->kind == NodeKind::Macro) s.kind = SymbolKind::Macro;
+                }
+                if (s.kind == SymbolKind::Variable && loopVariables_.count(o.range.begin)) {
+                    s.kind = SymbolKind::LoopVariable;
+                }
+            }
+        }
+    }
+
+    std::map<std::string, uint32_t, std::less<>> globals;
+
+private:
+    uint32_t symbolFor(std::string_view name, const Resolution& r) {
+        if (r.binding == Binding::Builtin) {
+            auto it = builtins_.find(name);
+            if (it != builtins_.end()) return it->second;
+            uint32_t id = add(name, SymbolKind::Builtin, nullptr);
+            builtins_.emplace(std::string(name), id);
+            return id;
+        }
+        if ((r.binding == Binding::Local || r.binding == Binding::Enclosing) && r.depth < macros_.size()) {
+            const MacroExpr* owner = macros_[macros_.size() - 1 - r.depth];
+            auto key = std::make_pair(owner, r.slot);
+            auto it = locals_.find(key);
+            if (it != locals_.end()) return it->second;
+            uint32_t id = add(name, SymbolKind::Variable, owner);
+            locals_.emplace(key, id);
+            return id;
+        }
+        auto it = globals.find(name);
+        if (it != globals.end()) return it->second;
+        uint32_t id = add(name, SymbolKind::Variable, nullptr);
+        globals.emplace(std::string(name), id);
+        return id;
+    }
+
+    uint32_t add(std::string_view name, SymbolKind kind, const MacroExpr* scope) {
+        Symbol s;
+        s.name = std::string(name);
+        s.kind = kind;
+        s.scope = scope;
+        a_.symbols.push_back(std::move(s));
+        return static_cast<uint32_t>(a_.symbols.size() - 1);
+    }
+
+    void mention(std::string_view name, SourceRange range, const Resolution& r, bool write) {
+        if (range.file != 0) return;
+        a_.occurrences.push_back({range, symbolFor(name, r), write, false});
+    }
+
+    void attributes(ObjectType type, std::span<Attribute> attrs) {
+        for (Attribute& attr : attrs) {
+            a_.attributes.push_back({attr.nameRange, type, type == ObjectType::Count ? -1 : attr.slot});
+            visit(attr.value);
+        }
+    }
+
+    void visit(Node* node) {
+        switch (node->kind) {
+        case NodeKind::Var: {
+            auto* v = static_cast<VarExpr*>(node);
+            mention(v->name, v->range, v->resolution, false);
+            return;
+        }
+        case NodeKind::Assign: {
+            auto* as = static_cast<AssignExpr*>(node);
+            mention(as->name, as->nameRange, as->resolution, true);
+            values_[as->nameRange.begin] = as->value;
+            visit(as->value);
+            return;
+        }
+        case NodeKind::For: {
+            auto* f = static_cast<ForStmt*>(node);
+            mention(f->variable, f->variableRange, f->resolution, true);
+            loopVariables_.insert(f->variableRange.begin);
+            visit(f->iterable);
+            visit(f->body);
+            return;
+        }
+        case NodeKind::Object: {
+            auto* o = static_cast<ObjectExpr*>(node);
+            attributes(o->type, o->attributes);
+            return;
+        }
+        case NodeKind::Settings:
+            attributes(ObjectType::Settings, static_cast<SettingsStmt*>(node)->attributes);
+            return;
+        case NodeKind::Macro: {
+            auto* m = static_cast<MacroExpr*>(node);
+            a_.macros.push_back(m);
+            macros_.push_back(m);
+            std::vector<std::string_view> seen;
+            for (const Param& p : m->params) {
+                if (std::find(seen.begin(), seen.end(), p.name) != seen.end()) continue;
+                Resolution r{Binding::Local, 0, static_cast<uint32_t>(seen.size())};
+                seen.push_back(p.name);
+                uint32_t id = symbolFor(p.name, r);
+                a_.symbols[id].kind = SymbolKind::Parameter;
+                a_.occurrences.push_back({p.range, id, true, false});
+            }
+            visit(m->body);
+            macros_.pop_back();
+            return;
+        }
+        default: forEachChild(node, [&](Node* child) { visit(child); }); return;
+        }
+    }
+
+    Analysis& a_;
+    std::vector<const MacroExpr*> macros_;
+    std::map<std::pair<const MacroExpr*, uint32_t>, uint32_t> locals_;
+    std::map<std::string, uint32_t, std::less<>> builtins_;
+    std::map<uint32_t, const Expr*> values_;
+    std::set<uint32_t> loopVariables_;
+};
+
+void collectIncludes(Node* node, std::vector<std::string>& names) {
+    if (node->kind == NodeKind::Include) {
+        names.emplace_back(static_cast<IncludeStmt*>(node)->path->value);
+        return;
+    }
+    forEachChild(node, [&](Node* child) { collectIncludes(child, names); });
+}
+
+} // namespace
+
+std::shared_ptr<const Analysis> analyze(const std::string& path, std::string text,
+                                        const AnalysisOptions& options, IncludeCache& cache) {
+    auto result = std::make_shared<Analysis>();
+    Analysis& a = *result;
+    EvalOptions eval;
+    eval.limits = options.limits;
+    eval.includeDirs = options.includeDirs;
+    eval.stdlibDir = options.stdlibDir;
+    a.compilation = compile(path, std::move(text), eval, false);
+    a.syntaxErrors = a.compilation.diagnostics.hasErrors();
+    DiagnosticBag ignored;
+    a.tokens = lexAll(a.file(), 0, ignored, &a.comments);
+    std::vector<std::string> includeNames;
+    runOnLargeStack([&] {
+        if (a.syntaxErrors) {
+            // compile() stops at syntax errors; the editor still wants names resolved.
+            GlobalTable globals;
+            DiagnosticBag scratch;
+            resolve(a.compilation.main, globals, scratch, true);
+        }
+        Indexer indexer(a);
+        indexer.run();
+        for (Node* item : a.compilation.main.items) collectIncludes(item, includeNames);
+
+        // Included files, breadth first, each once.
+        std::error_code error;
+        std::string folder = fs::absolute(path, error).parent_path().string();
+        std::vector<std::pair<std::string, std::string>> pending; // name, folder
+        for (const std::string& name : includeNames) pending.emplace_back(name, folder);
+        std::set<std::string> seen;
+        for (size_t i = 0; i < pending.size() && i < 256; ++i) {
+            std::string found = findInclude(pending[i].first, pending[i].second, options);
+            if (found.empty()) continue;
+            std::string canonical = fs::weakly_canonical(found, error).string();
+            if (!seen.insert(canonical).second) continue;
+            auto included = cache.get(found);
+            if (!included) continue;
+            a.includes.push_back(included);
+            std::string innerFolder = fs::absolute(found, error).parent_path().string();
+            for (const std::string& name : included->includes) pending.emplace_back(name, innerFolder);
+        }
+        std::set<std::string> externalNames;
+        for (const auto& included : a.includes) {
+            for (const IncludedFile::Mention& m : included->mentions) {
+                if (!m.definition || !externalNames.insert(m.name).second) continue;
+                a.externals.push_back({m.name, included, m.range, m.value});
+                int index = static_cast<int>(a.externals.size() - 1);
+                auto it = indexer.globals.find(m.name);
+                if (it == indexer.globals.end()) {
+                    Symbol s;
+                    s.name = m.name;
+                    s.value = m.value;
+                    s.kind = m.value && m.value->kind == NodeKind::Macro ? SymbolKind::Macro
+                                                                          : SymbolKind::Variable;
+                    s.external = index;
+                    a.symbols.push_back(std::move(s));
+                } else if (!a.symbols[it->second].definition) {
+                    Symbol& s = a.symbols[it->second];
+                    s.external = index;
+                    s.value = m.value;
+                    if (m.value && m.value->kind == NodeKind::Macro) s.kind = SymbolKind::Macro;
+                }
+            }
+        }
+    });
+    return result;
+}
+
+// ---------------------------------------------------------------- queries
+
+const Occurrence* Analysis::occurrenceAt(uint32_t offset) const {
+    auto it = std::upper_bound(occurrences.begin(), occurrences.end(), offset,
+                               [](uint32_t value, const Occurrence& o) { return value < o.range.begin; });
+    if (it == occurrences.begin()) return nullptr;
+    --it;
+    return offset <= it->range.end ? &*it : nullptr;
+}
+
+const AttributeUse* Analysis::attributeAt(uint32_t offset) const {
+    auto it = std::upper_bound(attributes.begin(), attributes.end(), offset,
+                               [](uint32_t value, const AttributeUse& u) { return value < u.nameRange.begin; });
+    if (it == attributes.begin()) return nullptr;
+    --it;
+    return offset <= it->nameRange.end ? &*it : nullptr;
+}
+
+int Analysis::tokenAt(uint32_t offset) const {
+    auto it = std::upper_bound(tokens.begin(), tokens.end(), offset,
+                               [](uint32_t value, const Token& t) { return value < t.begin; });
+    if (it == tokens.begin()) return -1;
+    --it;
+    return offset <= it->end ? static_cast<int>(it - tokens.begin()) : -1;
+}
+
+int Analysis::tokenBefore(uint32_t offset) const {
+    auto it = std::upper_bound(tokens.begin(), tokens.end(), offset,
+                               [](uint32_t value, const Token& t) { return value < t.end; });
+    return static_cast<int>(it - tokens.begin()) - 1;
+}
+
+std::vector<const MacroExpr*> Analysis::macrosAt(uint32_t offset) const {
+    std::vector<const MacroExpr*> result;
+    for (const MacroExpr* m : macros) {
+        if (m->body->range.begin < offset && offset < m->body->range.end) result.push_back(m);
+    }
+    return result;
+}
+
+const Symbol* Analysis::lookup(std::string_view name, uint32_t offset) const {
+    std::vector<const MacroExpr*> scopes = macrosAt(offset);
+    for (auto scope = scopes.rbegin(); scope != scopes.rend(); ++scope) {
+        for (const Symbol& s : symbols) {
+            if (s.scope == *scope && s.name == name) return &s;
+        }
+    }
+    for (const Symbol& s : symbols) {
+        if (!s.scope && s.name == name && !s.builtin()) return &s;
+    }
+    for (const Symbol& s : symbols) {
+        if (s.builtin() && s.name == name) return &s;
+    }
+    return nullptr;
+}
+
+// ---------------------------------------------------------------- static types
+
+std::string staticType(const Expr* value) {
+    if (!value) return "";
+    switch (value->kind) {
+    case NodeKind::IntLit: return "int";
+    case NodeKind::FloatLit: return "float";
+    case NodeKind::StringLit: return "string";
+    case NodeKind::BoolLit: return "bool";
+    case NodeKind::List: return "list";
+    case NodeKind::Object: {
+        auto* o = static_cast<const ObjectExpr*>(value);
+        return std::string(o->typeName);
+    }
+    case NodeKind::Macro: {
+        auto* m = static_cast<const MacroExpr*>(value);
+        std::string text = "macro (";
+        for (size_t i = 0; i < m->params.size(); ++i) {
+            if (i) text += ", ";
+            text += std::string(m->params[i].name);
+        }
+        return text + ")";
+    }
+    case NodeKind::Modify: return staticType(static_cast<const ModifyExpr*>(value)->target);
+    case NodeKind::Call: {
+        auto* call = static_cast<const CallExpr*>(value);
+        if (call->callee->kind != NodeKind::Var) return "";
+        auto* callee = static_cast<const VarExpr*>(call->callee);
+        if (callee->resolution.binding != Binding::Builtin) return "";
+        std::string_view name = callee->name;
+        if (name == "vec3" || name == "normalize" || name == "cross") return "vec3";
+        if (name == "rgb" || name == "rgba") return "colour";
+        if (name == "range") return "list";
+        if (name == "str") return "string";
+        if (name == "len" || name == "floor" || name == "ceil" || name == "round") return "int";
+        return "";
+    }
+    case NodeKind::Binary: {
+        auto* b = static_cast<const BinaryExpr*>(value);
+        std::string left = staticType(b->left);
+        std::string right = staticType(b->right);
+        bool comparison = b->op >= BinaryOp::Less;
+        if (comparison) return "bool";
+        bool objects = (!left.empty() && std::isupper(static_cast<unsigned char>(left[0]))) ||
+                       (!right.empty() && std::isupper(static_cast<unsigned char>(right[0])));
+        if (objects) return "entity";
+        if (left == right) return left;
+        if ((left == "int" && right == "float") || (left == "float" && right == "int")) return "float";
+        return "";
+    }
+    case NodeKind::Unary: {
+        auto* u = static_cast<const UnaryExpr*>(value);
+        return u->op == UnaryOp::Not ? "bool" : staticType(u->operand);
+    }
+    default: return "";
+    }
+}
+
+} // namespace crt::lsp

@@ -1,0 +1,143 @@
+// One document's analysis: the front end's AST, tokens and resolution, indexed for the features.
+// No LSP types here: positions are byte offsets into the document's SourceFile.
+#pragma once
+
+#include "interpreter.hpp"
+#include "lexer.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace crt::lsp {
+
+/// How the server runs the front end; set from the command line and initializationOptions.
+struct AnalysisOptions {
+    std::vector<std::string> includeDirs; ///< as crtc -I
+    std::string stdlibDir;
+    /// Tighter than crtc's defaults: an editor wants an answer, not a finished render.
+    lang::Limits limits{5'000'000, 1'000, 1'000'000, 16'384};
+    std::chrono::milliseconds timeBudget{1500}; ///< wall-clock limit of one evaluation
+};
+
+enum class SymbolKind : uint8_t { Variable, Parameter, LoopVariable, Macro, Builtin };
+
+/// A name the resolver bound: a global, a macro local or parameter, or a built-in.
+struct Symbol {
+    std::string name;
+    SymbolKind kind = SymbolKind::Variable;
+    const lang::MacroExpr* scope = nullptr;  ///< the macro owning a local; null for globals
+    std::optional<lang::SourceRange> definition; ///< first binding in this document
+    const lang::Expr* value = nullptr;        ///< what the definition assigns, if an assignment
+    int external = -1; ///< index into Analysis::externals when first bound in an included file
+    bool builtin() const { return kind == SymbolKind::Builtin; }
+};
+
+/// One mention of a symbol in the document.
+struct Occurrence {
+    lang::SourceRange range;
+    uint32_t symbol;
+    bool write = false;      ///< assigned here (or a parameter, or a loop variable)
+    bool definition = false; ///< the first binding
+};
+
+/// An attribute name in an object literal or the Settings block.
+struct AttributeUse {
+    lang::SourceRange nameRange;
+    lang::ObjectType type;
+    int slot; ///< -1: unknown attribute
+};
+
+/// A file reached through `include`, parsed once and kept while it does not change.
+struct IncludedFile {
+    std::string path;
+    std::unique_ptr<lang::SourceFile> file;
+    std::unique_ptr<lang::Arena> arena;
+    lang::Script script;
+    std::vector<std::string> includes; ///< the include names it holds, in order
+    /// Top-level names: every mention, the first binding of each marked.
+    struct Mention {
+        std::string name;
+        lang::SourceRange range;
+        bool definition;
+        const lang::Expr* value; ///< for a definition, what it assigns
+    };
+    std::vector<Mention> mentions;
+};
+
+/// A global first bound in an included file.
+struct ExternalSymbol {
+    std::string name;
+    std::shared_ptr<const IncludedFile> file;
+    lang::SourceRange range;
+    const lang::Expr* value = nullptr;
+};
+
+/// Parses included files and keeps them while their modification time does not change.
+/// Used from one thread only.
+class IncludeCache {
+public:
+    std::shared_ptr<const IncludedFile> get(const std::string& path);
+
+private:
+    struct Entry {
+        std::filesystem::file_time_type mtime;
+        std::shared_ptr<const IncludedFile> file;
+    };
+    std::map<std::string, Entry> entries_;
+};
+
+struct Analysis {
+    lang::Compilation compilation; ///< parsed and resolved, not evaluated
+    std::vector<lang::Token> tokens;   ///< every token of the document, EndOfFile excluded
+    std::vector<lang::Token> comments;
+    std::vector<Symbol> symbols;
+    std::vector<Occurrence> occurrences; ///< sorted by position
+    std::vector<AttributeUse> attributes; ///< sorted by position
+    std::vector<std::shared_ptr<const IncludedFile>> includes; ///< reachable, in first-seen order
+    std::vector<ExternalSymbol> externals;
+    std::vector<const lang::MacroExpr*> macros; ///< every macro literal, outer before inner
+    bool syntaxErrors = false;
+
+    const lang::SourceFile& file() const { return compilation.sources.file(0); }
+    const lang::Script& script() const { return compilation.main; }
+    /// The occurrence whose range holds `offset` (its end included, as editors place the
+    /// cursor just after a word).
+    const Occurrence* occurrenceAt(uint32_t offset) const;
+    const AttributeUse* attributeAt(uint32_t offset) const;
+    /// Index of the token holding `offset` (end included), or -1.
+    int tokenAt(uint32_t offset) const;
+    /// Index of the last token ending at or before `offset`, or -1.
+    int tokenBefore(uint32_t offset) const;
+    std::string_view text(const lang::Token& token) const {
+        return file().text().substr(token.begin, token.end - token.begin);
+    }
+    std::string_view text(lang::SourceRange range) const {
+        return file().text().substr(range.begin, range.end - range.begin);
+    }
+    /// The symbol called `name` visible at `offset`: locals of enclosing macros first.
+    const Symbol* lookup(std::string_view name, uint32_t offset) const;
+    /// Macros whose body holds `offset`, innermost last.
+    std::vector<const lang::MacroExpr*> macrosAt(uint32_t offset) const;
+};
+
+/// Runs the front end on `text` (parse and resolve; evaluation is the diagnostics worker's)
+/// and indexes the result.
+std::shared_ptr<const Analysis> analyze(const std::string& path, std::string text,
+                                        const AnalysisOptions& options, IncludeCache& cache);
+
+/// Where `include "name"` in a file of folder `folder` finds its file, as the interpreter
+/// looks: the folder, -I folders, CRT_PATH, the standard library. Empty if nowhere.
+std::string findInclude(const std::string& name, const std::string& folder,
+                        const AnalysisOptions& options);
+/// The folders an include is looked up in, in order.
+std::vector<std::string> includeFolders(const std::string& folder, const AnalysisOptions& options);
+
+/// A short static description of what an expression yields ("vec3", "Sphere", "macro (a, b)").
+std::string staticType(const lang::Expr* value);
+
+} // namespace crt::lsp

@@ -1,0 +1,67 @@
+// Converts the front end's diagnostics for the document: included files map to their include.
+#include "diagnostics.hpp"
+
+#include <fmt/format.h>
+
+namespace crt::lsp {
+
+using namespace lang;
+
+std::string_view warningCode(WarningKind kind) {
+    switch (kind) {
+    case WarningKind::None: return "";
+    case WarningKind::UnusedVariable: return "unused-variable";
+    case WarningKind::EntityNeverDrawn: return "entity-never-drawn";
+    case WarningKind::UnusedLight: return "unused-light";
+    case WarningKind::DuplicateAttribute: return "duplicate-attribute";
+    case WarningKind::ValueNotDrawn: return "value-not-drawn";
+    case WarningKind::ShadowedBuiltin: return "shadowed-builtin";
+    case WarningKind::ZeroSizeEntity: return "zero-size-entity";
+    case WarningKind::EmptyScene: return "empty-scene";
+    }
+    return "";
+}
+
+namespace {
+
+/// The first top-level include of the document: where problems of included files are shown.
+SourceRange firstInclude(const Compilation& c) {
+    for (const Node* item : c.main.items) {
+        if (item->kind == NodeKind::Include) return item->range;
+    }
+    return {0, 0, 0};
+}
+
+} // namespace
+
+std::vector<DocumentDiagnostic> documentDiagnostics(const Compilation& c) {
+    std::vector<DocumentDiagnostic> result;
+    const uint32_t files = c.sources.fileCount();
+    for (const Diagnostic& d : c.diagnostics.items()) {
+        DocumentDiagnostic out;
+        out.severity = d.severity;
+        out.message = d.message;
+        out.code = std::string(warningCode(d.warning));
+        if (d.range.file == 0 && files > 0) {
+            out.range = d.range;
+        } else if (d.range.file < files) {
+            const SourceFile& file = c.sources.file(d.range.file);
+            LineColumn at = file.lineColumn(d.range.begin);
+            out.range = firstInclude(c);
+            out.message = fmt::format("{}:{}:{}: {}", file.path(), at.line, at.column, d.message);
+            out.related.push_back({&file, d.range, d.message});
+        } else {
+            out.range = {0, 0, 0}; // not in any file (an unreadable script)
+        }
+        for (const DiagnosticNote& note : d.notes) {
+            if (note.range.file < files) out.related.push_back({&c.sources.file(note.range.file), note.range, note.message});
+        }
+        for (const FixIt& fix : d.fixits) {
+            if (fix.range.file == 0 && d.range.file == 0) out.fixits.push_back(fix);
+        }
+        result.push_back(std::move(out));
+    }
+    return result;
+}
+
+} // namespace crt::lsp

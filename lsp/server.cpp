@@ -1,0 +1,440 @@
+// Dispatch of LSP messages to the features; the lifecycle rules; text synchronisation.
+#include "server.hpp"
+
+#include "code_actions.hpp"
+#include "diagnostics_worker.hpp"
+#include "formatter.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <thread>
+
+#ifndef CRT_VERSION
+#define CRT_VERSION "0"
+#endif
+
+namespace crt::lsp {
+
+using namespace lang;
+
+Server::Server(Transport& transport, ServerOptions options) : transport_(transport), options_(std::move(options)) {}
+
+Server::~Server() = default;
+
+// ---------------------------------------------------------------- messages
+
+void Server::send(const json& message) {
+    transport_.write(message.dump(-1, ' ', false, json::error_handler_t::replace));
+}
+
+void Server::reply(const json& id, json result) {
+    send({{"jsonrpc", "2.0"}, {"id", id}, {"result", std::move(result)}});
+}
+
+void Server::replyError(const json& id, ErrorCode code, const std::string& message) {
+    send({{"jsonrpc", "2.0"}, {"id", id}, {"error", {{"code", static_cast<int>(code)}, {"message", message}}}});
+}
+
+void Server::readerLoop() {
+    while (true) {
+        Transport::Incoming in = transport_.read();
+        if (in.status == Transport::Status::End) break;
+        if (in.status == Transport::Status::Malformed) {
+            replyError(nullptr, ErrorCode::ParseError, in.body);
+            continue;
+        }
+        json message = json::parse(in.body, nullptr, false);
+        if (message.is_discarded()) {
+            replyError(nullptr, ErrorCode::ParseError, "the message is not valid JSON");
+            continue;
+        }
+        if (message.is_object() && message.value("method", "") == "$/cancelRequest") {
+            // Handled here, so a request still waiting in the queue can be skipped.
+            std::lock_guard lock(queueMutex_);
+            if (message.contains("params") && message["params"].is_object() && message["params"].contains("id")) {
+                cancelled_.insert(message["params"]["id"].dump());
+            }
+            continue;
+        }
+        std::lock_guard lock(queueMutex_);
+        queue_.push_back(std::move(message));
+        queueReady_.notify_one();
+    }
+    std::lock_guard lock(queueMutex_);
+    queue_.push_back(std::nullopt);
+    queueReady_.notify_one();
+}
+
+int Server::run() {
+    std::thread reader([this] { readerLoop(); });
+    reader.detach(); // it may sit in a blocking read when `exit` arrives
+    while (true) {
+        std::optional<json> message;
+        {
+            std::unique_lock lock(queueMutex_);
+            queueReady_.wait(lock, [&] { return !queue_.empty(); });
+            message = std::move(queue_.front());
+            queue_.pop_front();
+        }
+        if (!message) break;
+        if (message->is_object() && message->value("method", "") == "exit") {
+            worker_.reset();
+            return shutdown_ ? 0 : 1;
+        }
+        handle(*message);
+    }
+    worker_.reset();
+    return shutdown_ ? 0 : 1;
+}
+
+void Server::handle(const json& message) {
+    if (!message.is_object() || !message.contains("method") || !message["method"].is_string()) {
+        // A response to a request of ours (we send none) or garbage.
+        if (message.is_object() && (message.contains("result") || message.contains("error"))) return;
+        json id = message.is_object() && message.contains("id") ? message["id"] : json(nullptr);
+        replyError(id, ErrorCode::InvalidRequest, "not a JSON-RPC request or notification");
+        return;
+    }
+    std::string method = message["method"];
+    json params = message.contains("params") ? message["params"] : json::object();
+    if (!message.contains("id")) {
+        try {
+            notification(method, params);
+        } catch (const std::exception& e) {
+            // Notifications get no answer; a bad one is ignored, as LSP asks.
+        }
+        return;
+    }
+    const json& id = message["id"];
+    if (!id.is_string() && !id.is_number_integer()) {
+        replyError(nullptr, ErrorCode::InvalidRequest, "a request id must be a string or an integer");
+        return;
+    }
+    {
+        std::lock_guard lock(queueMutex_);
+        if (cancelled_.erase(id.dump())) {
+            replyError(id, ErrorCode::RequestCancelled, "cancelled");
+            return;
+        }
+    }
+    if (!initialized_ && method != "initialize") {
+        replyError(id, ErrorCode::ServerNotInitialized, "the server is not initialized yet");
+        return;
+    }
+    if (shutdown_) {
+        replyError(id, ErrorCode::InvalidRequest, "the server is shutting down");
+        return;
+    }
+    try {
+        reply(id, dispatch(method, params));
+    } catch (const LspError& e) {
+        replyError(id, e.code, e.what());
+    } catch (const json::exception& e) {
+        replyError(id, ErrorCode::InvalidParams, fmt::format("invalid parameters: {}", e.what()));
+    } catch (const std::exception& e) {
+        replyError(id, ErrorCode::InternalError, e.what());
+    }
+}
+
+// ---------------------------------------------------------------- lifecycle
+
+json Server::initialize(const json& params) {
+    if (initialized_) throw LspError(ErrorCode::InvalidRequest, "initialize was already received");
+    encoding_ = OffsetEncoding::Utf16;
+    if (params.is_object() && params.contains("capabilities")) {
+        const json& caps = params["capabilities"];
+        json encodings = caps.value("general", json::object()).value("positionEncodings", json::array());
+        if (caps.contains("offsetEncoding") && caps["offsetEncoding"].is_array()) {
+            for (const json& e : caps["offsetEncoding"]) encodings.push_back(e); // clangd's extension
+        }
+        for (const json& e : encodings) {
+            if (e == "utf-8") encoding_ = OffsetEncoding::Utf8;
+        }
+        snippets_ = caps.value("textDocument", json::object())
+                        .value("completion", json::object())
+                        .value("completionItem", json::object())
+                        .value("snippetSupport", false);
+    }
+    if (params.is_object() && params.contains("initializationOptions") && params["initializationOptions"].is_object()) {
+        const json& init = params["initializationOptions"];
+        if (init.contains("includeDirs") && init["includeDirs"].is_array()) {
+            for (const json& dir : init["includeDirs"]) {
+                if (dir.is_string()) options_.analysis.includeDirs.push_back(dir);
+            }
+        }
+        if (init.contains("stdlib") && init["stdlib"].is_string()) options_.analysis.stdlibDir = init["stdlib"];
+        if (init.contains("debounceMs") && init["debounceMs"].is_number_integer()) {
+            options_.debounce = std::chrono::milliseconds(std::max<int64_t>(0, init["debounceMs"].get<int64_t>()));
+        }
+    }
+    initialized_ = true;
+    worker_ = std::make_unique<DiagnosticsWorker>(
+        options_.analysis, options_.debounce,
+        [this](const std::string& uri, int64_t version, std::shared_ptr<const Compilation> c) {
+            publish(uri, version, std::move(c));
+        });
+
+    json tokenTypes = json::array(), tokenModifiers = json::array();
+    for (std::string_view name : tokenTypeNames()) tokenTypes.push_back(name);
+    for (std::string_view name : tokenModifierNames()) tokenModifiers.push_back(name);
+    json capabilities{
+        {"positionEncoding", encoding_ == OffsetEncoding::Utf8 ? "utf-8" : "utf-16"},
+        {"textDocumentSync", {{"openClose", true}, {"change", 2}, {"save", {{"includeText", false}}}}},
+        {"hoverProvider", true},
+        {"completionProvider", {{"triggerCharacters", {">", "\"", "<", "{"}}, {"resolveProvider", false}}},
+        {"signatureHelpProvider", {{"triggerCharacters", {"(", ","}}}},
+        {"definitionProvider", true},
+        {"declarationProvider", true},
+        {"referencesProvider", true},
+        {"documentHighlightProvider", true},
+        {"documentSymbolProvider", true},
+        {"foldingRangeProvider", true},
+        {"renameProvider", {{"prepareProvider", true}}},
+        {"documentFormattingProvider", true},
+        {"documentRangeFormattingProvider", true},
+        {"codeActionProvider", {{"codeActionKinds", {"quickfix"}}}},
+        {"semanticTokensProvider",
+         {{"legend", {{"tokenTypes", tokenTypes}, {"tokenModifiers", tokenModifiers}}}, {"full", true}, {"range", true}}},
+    };
+    json result{{"capabilities", capabilities}, {"serverInfo", {{"name", "crt-lsp"}, {"version", CRT_VERSION}}}};
+    if (encoding_ == OffsetEncoding::Utf8) result["offsetEncoding"] = "utf-8";
+    return result;
+}
+
+void Server::notification(const std::string& method, const json& params) {
+    if (method == "initialized" || !initialized_ || shutdown_) return;
+    if (method == "textDocument/didOpen") didOpen(params);
+    else if (method == "textDocument/didChange") didChange(params);
+    else if (method == "textDocument/didClose") didClose(params);
+    // didSave: the text is already in sync; everything else ($/setTrace, …) is ignored.
+}
+
+// ---------------------------------------------------------------- documents
+
+void Server::didOpen(const json& params) {
+    const json& item = member(params, "textDocument");
+    std::string uri = member(item, "uri");
+    Document& doc = documents_[uri];
+    doc.uri = uri;
+    doc.path = uriToPath(uri);
+    doc.text = member(item, "text").get<std::string>();
+    doc.version = item.value("version", int64_t{0});
+    doc.analysis.reset();
+    doc.analysisVersion = -1;
+    worker_->schedule(uri, doc.version, doc.path, doc.text);
+}
+
+void Server::didChange(const json& params) {
+    const json& id = member(params, "textDocument");
+    auto it = documents_.find(member(id, "uri").get<std::string>());
+    if (it == documents_.end()) return;
+    Document& doc = it->second;
+    for (const json& change : member(params, "contentChanges")) {
+        std::string text = member(change, "text");
+        if (!change.contains("range")) {
+            doc.text = std::move(text);
+            continue;
+        }
+        SourceFile current(doc.path, doc.text);
+        Positions positions(current, encoding_);
+        uint32_t begin = positions.offset(member(change["range"], "start"));
+        uint32_t end = positions.offset(member(change["range"], "end"));
+        if (end < begin) std::swap(begin, end);
+        begin += current.lineStart(1) == 3 && begin < 3 ? 3 - begin : 0; // never split a byte-order mark
+        doc.text.replace(begin, end - begin, text);
+    }
+    if (id.contains("version") && id["version"].is_number_integer()) doc.version = id["version"];
+    else ++doc.version;
+    worker_->schedule(doc.uri, doc.version, doc.path, doc.text);
+}
+
+void Server::didClose(const json& params) {
+    std::string uri = member(member(params, "textDocument"), "uri");
+    documents_.erase(uri);
+    worker_->forget(uri);
+    {
+        std::lock_guard lock(publishedMutex_);
+        published_.erase(uri);
+    }
+    send({{"jsonrpc", "2.0"},
+          {"method", "textDocument/publishDiagnostics"},
+          {"params", {{"uri", uri}, {"diagnostics", json::array()}}}});
+}
+
+void Server::publish(const std::string& uri, int64_t version, std::shared_ptr<const Compilation> c) {
+    std::vector<DocumentDiagnostic> diagnostics = documentDiagnostics(*c);
+    const SourceFile& file = c->sources.file(0);
+    Positions positions(file, encoding_);
+    json list = json::array();
+    for (const DocumentDiagnostic& d : diagnostics) list.push_back(toJson(d, positions, uri, &file, encoding_));
+    {
+        std::lock_guard lock(publishedMutex_);
+        published_[uri] = Published{version, c, std::move(diagnostics)};
+    }
+    send({{"jsonrpc", "2.0"},
+          {"method", "textDocument/publishDiagnostics"},
+          {"params", {{"uri", uri}, {"version", version}, {"diagnostics", std::move(list)}}}});
+}
+
+std::optional<Server::Published> Server::published(const std::string& uri) {
+    std::lock_guard lock(publishedMutex_);
+    auto it = published_.find(uri);
+    if (it == published_.end()) return std::nullopt;
+    return it->second;
+}
+
+Server::Document& Server::document(const json& params) {
+    std::string uri = member(member(params, "textDocument"), "uri");
+    auto it = documents_.find(uri);
+    if (it == documents_.end()) throw LspError(ErrorCode::InvalidParams, fmt::format("document is not open: {}", uri));
+    return it->second;
+}
+
+const Analysis& Server::analysisOf(Document& doc) {
+    if (!doc.analysis || doc.analysisVersion != doc.version) {
+        doc.analysis = analyze(doc.path, doc.text, options_.analysis, includes_);
+        doc.analysisVersion = doc.version;
+    }
+    return *doc.analysis;
+}
+
+json Server::location(const Location& loc, const Document& doc, const Analysis& analysis) {
+    if (loc.file == &analysis.file()) {
+        return {{"uri", doc.uri}, {"range", Positions(analysis.file(), encoding_).range(loc.range)}};
+    }
+    std::error_code error;
+    std::string path = std::filesystem::absolute(loc.file->path(), error).lexically_normal().string();
+    return {{"uri", pathToUri(path)}, {"range", Positions(*loc.file, encoding_).range(loc.range)}};
+}
+
+// ---------------------------------------------------------------- requests
+
+json Server::dispatch(const std::string& method, const json& params) {
+    if (method == "initialize") return initialize(params);
+    if (method == "shutdown") {
+        shutdown_ = true;
+        return nullptr;
+    }
+    if (!method.starts_with("textDocument/")) {
+        throw LspError(ErrorCode::MethodNotFound, fmt::format("unknown method '{}'", method));
+    }
+    std::string_view feature = std::string_view(method).substr(13);
+    static const std::set<std::string_view> known{
+        "semanticTokens/full", "semanticTokens/range", "hover", "completion", "signatureHelp", "definition",
+        "declaration", "references", "documentHighlight", "prepareRename", "rename", "documentSymbol",
+        "foldingRange", "formatting", "rangeFormatting", "codeAction"};
+    if (!known.count(feature)) throw LspError(ErrorCode::MethodNotFound, fmt::format("unknown method '{}'", method));
+
+    Document& doc = document(params);
+    if (feature == "formatting" || feature == "rangeFormatting") {
+        FormatOptions format;
+        if (params.contains("options") && params["options"].is_object()) {
+            format.indentWidth = static_cast<uint32_t>(std::clamp<int64_t>(params["options"].value("tabSize", 4), 1, 16));
+            format.useTabs = !params["options"].value("insertSpaces", true);
+        }
+        SourceFile file(doc.path, doc.text);
+        Positions positions(file, encoding_);
+        std::optional<std::pair<uint32_t, uint32_t>> range;
+        if (feature == "rangeFormatting") {
+            const json& r = member(params, "range");
+            range = std::make_pair(positions.offset(member(r, "start")), positions.offset(member(r, "end")));
+        }
+        FormatResult result = formatSource(doc.text, format, range);
+        if (!result.ok) throw LspError(ErrorCode::RequestFailed, result.error);
+        json edits = json::array();
+        for (const FormatEdit& e : result.edits) {
+            edits.push_back({{"range", positions.range({0, e.begin, e.end})}, {"newText", e.replacement}});
+        }
+        return edits;
+    }
+
+    const Analysis& a = analysisOf(doc);
+    Positions positions(a.file(), encoding_);
+    auto offset = [&] { return positions.offset(member(params, "position")); };
+
+    if (feature == "semanticTokens/full") return encodeSemanticTokens(semanticTokens(a), positions);
+    if (feature == "semanticTokens/range") {
+        const json& r = member(params, "range");
+        SourceRange within{0, positions.offset(member(r, "start")), positions.offset(member(r, "end"))};
+        return encodeSemanticTokens(semanticTokens(a, within), positions);
+    }
+    if (feature == "hover") {
+        std::optional<Published> last = published(doc.uri);
+        const GlobalValues* values = last && last->compilation ? &last->compilation->globalValues : nullptr;
+        auto result = hover(a, offset(), values);
+        return result ? toJson(*result, positions) : json(nullptr);
+    }
+    if (feature == "completion") return toJson(complete(a, offset(), options_.analysis), positions, snippets_);
+    if (feature == "signatureHelp") {
+        auto help = signatureHelp(a, offset());
+        return help ? toJson(*help) : json(nullptr);
+    }
+    if (feature == "definition" || feature == "declaration") {
+        json out = json::array();
+        for (const Location& loc : definition(a, offset())) out.push_back(location(loc, doc, a));
+        return out;
+    }
+    if (feature == "references") {
+        bool declaration = params.value("context", json::object()).value("includeDeclaration", true);
+        json out = json::array();
+        for (const Location& loc : references(a, offset(), declaration)) out.push_back(location(loc, doc, a));
+        return out;
+    }
+    if (feature == "documentHighlight") {
+        json out = json::array();
+        for (const Highlight& h : documentHighlights(a, offset())) {
+            out.push_back({{"range", positions.range(h.range)}, {"kind", h.write ? 3 : 2}});
+        }
+        return out;
+    }
+    if (feature == "prepareRename") {
+        RenameCheck check = prepareRename(a, offset(), options_.analysis);
+        if (!check.range) throw LspError(ErrorCode::RequestFailed, check.error);
+        return {{"range", positions.range(*check.range)}, {"placeholder", check.placeholder}};
+    }
+    if (feature == "rename") {
+        const json& newName = member(params, "newName");
+        if (!newName.is_string()) throw LspError(ErrorCode::InvalidParams, "newName must be a string");
+        RenameResult result = rename(a, offset(), newName.get<std::string>(), options_.analysis);
+        if (!result.error.empty()) throw LspError(ErrorCode::RequestFailed, result.error);
+        json changes = json::object();
+        for (const Location& loc : result.edits) {
+            json l = location(loc, doc, a);
+            changes[l["uri"].get<std::string>()].push_back({{"range", l["range"]}, {"newText", newName}});
+        }
+        return {{"changes", changes}};
+    }
+    if (feature == "documentSymbol") {
+        json out = json::array();
+        for (const DocumentSymbol& s : documentSymbols(a)) out.push_back(toJson(s, positions));
+        return out;
+    }
+    if (feature == "foldingRange") {
+        json out = json::array();
+        for (const FoldingRange& r : foldingRanges(a)) out.push_back(toJson(r));
+        return out;
+    }
+    // codeAction: fixes from the last evaluation of this very text, else from parse and resolve.
+    const json& r = member(params, "range");
+    uint32_t begin = positions.offset(member(r, "start"));
+    uint32_t end = positions.offset(member(r, "end"));
+    std::optional<Published> last = published(doc.uri);
+    std::vector<DocumentDiagnostic> diagnostics = last && last->version == doc.version
+                                                      ? last->diagnostics
+                                                      : documentDiagnostics(a.compilation);
+    json out = json::array();
+    for (const CodeAction& action : codeActions(diagnostics, a.file().text(), begin, end)) {
+        json edits = json::array();
+        for (const TextEdit& e : action.edits) edits.push_back({{"range", positions.range(e.range)}, {"newText", e.newText}});
+        const DocumentDiagnostic& d = diagnostics[action.diagnostic];
+        out.push_back({{"title", action.title},
+                       {"kind", "quickfix"},
+                       {"isPreferred", action.preferred},
+                       {"diagnostics", json::array({toJson(d, positions, doc.uri, &a.file(), encoding_)})},
+                       {"edit", {{"changes", {{doc.uri, edits}}}}}});
+    }
+    return out;
+}
+
+} // namespace crt::lsp
