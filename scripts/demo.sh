@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Sets everything up, builds, and runs crtc on a demo scene.
+# Sets everything up, builds, and renders a demo scene to build/demo.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 scripts/build.sh
-demo=demos/mirror_hall.crt
+demo=${1:-demos/piano_foot.crt}
 echo "== crtc --check $demo"
 build/lang/crtc --check "$demo"
-echo "== crtc --dump-scene $demo (first lines)"
-build/lang/crtc --dump-scene "$demo" | head -n 40
-echo "== ok: $(build/lang/crtc --dump-scene "$demo" | grep -c '"id"') entities evaluated"
+echo "== crtc $demo -o build/demo.png"
+build/lang/crtc "$demo" -o build/demo.png --stats
+echo "== wrote build/demo.png"
