@@ -117,6 +117,7 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
     outcome.buildSeconds = secondsSince(buildStart);
     outcome.primitives = scene->primitives.size();
     outcome.bvhNodes = scene->bvh.nodeCount();
+    outcome.bvhDepth = scene->bvh.depth();
     outcome.samples = s.antialias == Antialias::Grid ? static_cast<uint64_t>(s.supersampling) * s.supersampling : 4;
 
     auto renderStart = std::chrono::steady_clock::now();

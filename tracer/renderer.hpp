@@ -35,6 +35,7 @@ struct RenderOutcome {
     double renderSeconds = 0; ///< tracing
     size_t primitives = 0;
     size_t bvhNodes = 0;
+    int bvhDepth = 0;
     uint64_t samples = 0; ///< camera samples per pixel (before DOF)
 };
 

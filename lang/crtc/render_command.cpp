@@ -71,11 +71,11 @@ private:
 void printStats(const tracer::RenderOutcome& r, uint64_t cachedFrames) {
     const tracer::RayStats& s = r.stats;
     std::cerr << fmt::format(
-        "crtc: stats: primitives {}, BVH nodes {}\n"
+        "crtc: stats: primitives {}, BVH nodes {}, BVH depth {}\n"
         "crtc: stats: rays: camera {}, reflection {}, refraction {}, shadow {} (total {})\n"
         "crtc: stats: BVH nodes visited {}, intersection tests {}\n"
         "crtc: stats: build {:.3f}s, render {:.3f}s, frames reused unchanged {}\n",
-        r.primitives, r.bvhNodes, s.cameraRays, s.reflectionRays, s.refractionRays, s.shadowRays, s.totalRays(),
+        r.primitives, r.bvhNodes, r.bvhDepth, s.cameraRays, s.reflectionRays, s.refractionRays, s.shadowRays, s.totalRays(),
         s.nodesVisited, s.intersectionTests, r.buildSeconds, r.renderSeconds, cachedFrames);
 }
 
@@ -182,6 +182,7 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
             total.renderSeconds += r.renderSeconds;
             total.primitives = r.primitives;
             total.bvhNodes = r.bvhNodes;
+            total.bvhDepth = r.bvhDepth;
             image = toBuffer(std::move(r.frame));
         }
         previousKey = std::move(key);

@@ -38,7 +38,7 @@ std::vector<fs::path> candidatePaths() {
 LoadResult openModule(const fs::path& path) {
     // RTLD_LOCAL keeps OpenImageIO's symbols (and its bundled fmt) out of the global namespace;
     // the handle is never closed, since OIIO keeps threads and static state alive until exit.
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    void* handle = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
     if (!handle) {
         const char* reason = dlerror();
         return {nullptr, "cannot load the image module " + path.string() + ": " +
