@@ -95,7 +95,7 @@ bool RenderScene::nearestInObject(int32_t object, const Ray& ray, double tMax, H
         CrossingList list;
         ++stats.intersectionTests;
         crossLine(p.geometry, objectRay(p, ray), list);
-        Crossing c;
+        Crossing c{};
         if (!firstCrossingAfter(list, 0.0, tMax, c)) return false;
         hit = {c.t, object, c, false};
         return true;
@@ -118,6 +118,15 @@ bool RenderScene::nearestInObject(int32_t object, const Ray& ray, double tMax, H
 bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats) const {
     bool found = false;
     double nearest = tMax;
+    for (const PlaneObject& plane : planes) {
+        ++stats.intersectionTests;
+        double t = planeCrossing(plane, ray);
+        if (t > 0 && t < nearest) {
+            hit = {t, plane.primitive, Crossing{t, 0}, false};
+            nearest = t;
+            found = true;
+        }
+    }
     for (int32_t object : unbounded) {
         if (nearestInObject(object, ray, nearest, hit, scratch, stats)) {
             nearest = hit.t;

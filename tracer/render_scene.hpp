@@ -50,7 +50,7 @@ struct CsgCrossing {
 struct Hit {
     double t = kInfinity;
     int32_t primitive = -1;
-    Crossing crossing;
+    Crossing crossing{};
     bool flipNormal = false;
 };
 
@@ -64,6 +64,14 @@ struct SurfaceInteraction {
     Vec2 uv{0.0};
     int32_t material = 0;
     bool solid = false;
+};
+
+/// A plain plane in world space: tested inline by every ray, without the general dispatch
+/// (scenes such as rooms have several, and every ray meets them).
+struct PlaneObject {
+    Vec3 normal;
+    double offset; ///< normal · (a point of the plane)
+    int32_t primitive;
 };
 
 /// Per-thread scratch memory, so queries never allocate.
@@ -92,7 +100,8 @@ public:
 
     /// Objects of the acceleration structure: a primitive (>= 0) or a CSG root (~node).
     std::vector<int32_t> objects;
-    std::vector<int32_t> unbounded; ///< objects kept outside the BVH (planes, unbounded CSG)
+    std::vector<int32_t> unbounded; ///< objects kept outside the BVH (unbounded CSG)
+    std::vector<PlaneObject> planes; ///< plain planes, also outside the BVH
     Bvh bvh;
     Bounds3 bounds; ///< of the bounded objects
 

@@ -3,6 +3,12 @@
 
 namespace crt::tracer {
 
+/// Where the ray crosses the plane (infinity when parallel).
+inline double planeCrossing(const PlaneObject& plane, const Ray& ray) {
+    double along = glm::dot(plane.normal, ray.dir);
+    return along != 0 ? (plane.offset - glm::dot(plane.normal, ray.origin)) / along : kInfinity;
+}
+
 template <typename Visit>
 bool RenderScene::crossingsInObject(int32_t object, const Ray& ray, double tMax, QueryScratch& scratch,
                                     RayStats& stats, Visit& visit) const {
@@ -31,6 +37,11 @@ bool RenderScene::crossingsInObject(int32_t object, const Ray& ray, double tMax,
 template <typename Visit>
 bool RenderScene::forEachCrossing(const Ray& ray, double tMax, QueryScratch& scratch, RayStats& stats,
                                   Visit&& visit) const {
+    for (const PlaneObject& plane : planes) {
+        ++stats.intersectionTests;
+        double t = planeCrossing(plane, ray);
+        if (t > 0 && t < tMax && !visit(plane.primitive, t)) return false;
+    }
     for (int32_t object : unbounded)
         if (!crossingsInObject(object, ray, tMax, scratch, stats, visit)) return false;
     return bvh.traverse(ray, tMax, stats, [&](int32_t item) {

@@ -225,6 +225,23 @@ private:
         return object >= 0 ? worldBounds(scene_.primitives[object]) : scene_.csgNodes[~object].bounds;
     }
 
+    /// Keeps a plain plane in the inline-tested list; false for anything else.
+    bool addPlane(int32_t object) {
+        if (object < 0) return false;
+        const Primitive& p = scene_.primitives[object];
+        const PlaneGeometry* plane = std::get_if<PlaneGeometry>(&p.geometry);
+        if (!plane) return false;
+        if (plane->empty()) return true; // a zero normal: nothing to draw
+        Vec3 normal = plane->normal(), point = plane->position();
+        if (p.transform >= 0) {
+            const Transform& t = scene_.transforms[p.transform].toWorld;
+            normal = t.normal(normal);
+            point = t.point(point);
+        }
+        scene_.planes.push_back({normal, glm::dot(normal, point), object});
+        return true;
+    }
+
     void finishAcceleration() {
         std::vector<int32_t> bounded;
         std::vector<Bounds3> bounds;
@@ -232,7 +249,7 @@ private:
             Bounds3 b = objectBounds(object);
             if (b.empty()) continue; // an intersection of disjoint solids
             if (!b.finite()) {
-                scene_.unbounded.push_back(object);
+                if (!addPlane(object)) scene_.unbounded.push_back(object);
                 continue;
             }
             bounded.push_back(object);

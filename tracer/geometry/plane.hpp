@@ -24,6 +24,11 @@ class PlaneGeometry {
     /// Usable in CSG: the crossings bound an inside.
     bool solid() const { return true; }
 
+    /// The unit normal and a point of the plane (for the renderer's plane fast path).
+    const Vec3& normal() const { return frame_.w; }
+    const Vec3& position() const { return position_; }
+    bool empty() const { return empty_; }
+
   private:
     Vec3 position_;
     Frame frame_; ///< w is the unit normal

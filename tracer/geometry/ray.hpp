@@ -6,7 +6,9 @@
 
 #include <glm/glm.hpp>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace crt::tracer {
@@ -32,6 +34,23 @@ struct Ray {
     Vec3 at(double t) const { return origin + t * dir; }
 };
 
+/// The next representable double above / below v (pbrt's NextFloatUp/Down, without libm's
+/// call: this runs for every spawned ray).
+inline double nextUp(double v) {
+    if (std::isinf(v) && v > 0) return v;
+    if (v == -0.0) v = 0.0;
+    uint64_t bits = std::bit_cast<uint64_t>(v);
+    bits = v >= 0 ? bits + 1 : bits - 1;
+    return std::bit_cast<double>(bits);
+}
+inline double nextDown(double v) {
+    if (std::isinf(v) && v < 0) return v;
+    if (v == 0.0) v = -0.0;
+    uint64_t bits = std::bit_cast<uint64_t>(v);
+    bits = v > 0 ? bits - 1 : bits + 1;
+    return std::bit_cast<double>(bits);
+}
+
 /// Moves a surface point off the surface by its error bound, to the side `w` points to,
 /// so a ray spawned from it cannot hit the same surface again.
 inline Vec3 offsetRayOrigin(const Vec3& point, const Vec3& pointError, const Vec3& normal, const Vec3& w) {
@@ -41,8 +60,8 @@ inline Vec3 offsetRayOrigin(const Vec3& point, const Vec3& pointError, const Vec
     Vec3 origin = point + offset;
     // Round away from the point so the offset is not lost to rounding.
     for (int i = 0; i < 3; ++i) {
-        if (offset[i] > 0) origin[i] = std::nextafter(origin[i], kInfinity);
-        else if (offset[i] < 0) origin[i] = std::nextafter(origin[i], -kInfinity);
+        if (offset[i] > 0) origin[i] = nextUp(origin[i]);
+        else if (offset[i] < 0) origin[i] = nextDown(origin[i]);
     }
     return origin;
 }

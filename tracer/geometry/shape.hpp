@@ -15,9 +15,11 @@ namespace crt::tracer {
 
 /// One crossing of the line with a surface. `part` tells the shape which face it was
 /// (a box side, a cylinder cap …) so surfaceAt need not redo the search.
+/// (No member initialisers: a CrossingList is made for every intersection test and its
+/// unused slots need not be written.)
 struct Crossing {
-    double t = 0;
-    uint32_t part = 0;
+    double t;
+    uint32_t part;
 };
 
 /// At most four crossings: a torus has four, every other primitive fewer.

@@ -70,7 +70,7 @@ TEST_CASE("box: from inside and past the box") {
     REQUIRE(list.count == 2);
     CHECK(list.items[0].t == -1);
     CHECK(list.items[1].t == 3);
-    Crossing c;
+    Crossing c{};
     REQUIRE(firstCrossingAfter(list, 0, kInfinity, c));
     CHECK(c.part == 3);
     g.crossLine({{1, 10, 1}, {0, 1, 0}}, list);

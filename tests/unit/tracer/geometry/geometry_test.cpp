@@ -61,7 +61,7 @@ TEST_CASE("geometry: firstCrossingAfter takes the first crossing strictly inside
     list.add(-1, 0);
     list.add(2, 1);
     list.add(5, 2);
-    Crossing c;
+    Crossing c{};
     REQUIRE(firstCrossingAfter(list, 0, kInfinity, c));
     CHECK(c.t == 2);
     CHECK(c.part == 1);

@@ -36,7 +36,7 @@ TEST_CASE("sphere: from inside the line still reports the crossing behind") {
     REQUIRE(list.count == 2);
     CHECK(list.items[0].t == -2);
     CHECK(list.items[1].t == 2);
-    Crossing c;
+    Crossing c{};
     REQUIRE(firstCrossingAfter(list, 0, kInfinity, c));
     CHECK(c.t == 2);
     SurfacePoint sp = g.surfaceAt(ray, c);
@@ -51,7 +51,7 @@ TEST_CASE("sphere: origin past the sphere gives only negative crossings") {
     REQUIRE(list.count == 2);
     CHECK(list.items[0].t == -6);
     CHECK(list.items[1].t == -4);
-    Crossing c;
+    Crossing c{};
     CHECK_FALSE(firstCrossingAfter(list, 0, kInfinity, c));
 }
 

@@ -75,7 +75,7 @@ TEST_CASE("BVH: every crossing query agrees with brute force counts", "[bvh]") {
     std::string error;
     auto scene = buildRenderScene(maker.desc, error);
     REQUIRE(scene);
-    CHECK(scene->unbounded.size() == 1);
+    CHECK(scene->planes.size() == 1);
     QueryScratch scratch;
     RayStats stats;
     for (int i = 0; i < 500; ++i) {
