@@ -48,9 +48,7 @@ bool report(Compilation& c, const driver::Options& options, std::set<std::string
     return c.diagnostics.hasErrors();
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv, bool& loadingImages) {
     driver::ParsedOptions parsed = driver::parseOptions(argc, argv);
     if (!parsed.options) {
         (parsed.status == 0 ? std::cout : std::cerr) << parsed.message << (parsed.message.ends_with('\n') ? "" : "\n");
@@ -59,7 +57,10 @@ int main(int argc, char** argv) {
     driver::Options& options = *parsed.options;
     options.eval.stdlibDir = findStdlib(argv[0]);
     // Loading OpenImageIO takes ~0.4 s: start it now so it overlaps parsing and tracing.
-    if (options.mode == driver::Mode::Render) crt::tracer::image_io::startLoading();
+    if (options.mode == driver::Mode::Render) {
+        crt::tracer::image_io::startLoading();
+        loadingImages = true;
+    }
 
     std::optional<std::string> text = readFile(options.script);
     if (!text) {
@@ -106,4 +107,18 @@ int main(int argc, char** argv) {
     }
     if (options.mode == driver::Mode::DumpScene) std::cout << json << (frames > 1 ? "]\n" : "");
     return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    bool loadingImages = false;
+    int status = run(argc, argv, loadingImages);
+    // Never exit while the image module is still being loaded: its libraries' constructors
+    // would run alongside the exit handlers (seen as aborts inside dlopen on Ctrl-C).
+    if (loadingImages) {
+        std::string ignored;
+        crt::tracer::image_io::ensureLoaded(ignored);
+    }
+    return status;
 }

@@ -80,6 +80,96 @@ expect_text "$work/out" "^2.5 0.0$" "--time sets t"
 expect_status 0 "--frames" "$crtc" --check --frames 3 "$work/time.crt"
 expect_text "$work/out" "^2 1.0$" "--frames runs every frame with t and clock"
 
+# --- rendering: output names and formats, animation, --stats, -q, sizes, Ctrl-C
+expect_file() { # path description
+    if [ ! -s "$1" ]; then
+        echo "FAIL: $2: $1 was not written"
+        failures=$((failures + 1))
+    fi
+}
+expect_no_file() { # path description
+    if [ -e "$1" ]; then
+        echo "FAIL: $2: $1 exists"
+        failures=$((failures + 1))
+    fi
+}
+expect_info() { # image pattern description: oiiotool's header summary of the image matches
+    command -v oiiotool >/dev/null || return 0
+    oiiotool --info "$1" >"$work/info" 2>&1
+    expect_text "$work/info" "$2" "$3"
+}
+mkdir -p "$work/scenes" "$work/images" "$work/elsewhere"
+cat >"$work/scenes/tiny.crt" <<'CRT'
+Settings { width -> 32 height -> 24 }
+Scene { Sphere { center -> vec3(0, 0, 1) radius -> 0.5 } }
+CRT
+crtc_path=$(cd "$(dirname "$crtc")" && pwd)/$(basename "$crtc")
+cd "$work/elsewhere" || exit 1
+expect_status 0 "render with the default output name" "$crtc_path" -q "$work/scenes/tiny.crt"
+cd - >/dev/null || exit 1
+expect_file "$work/scenes/tiny.png" "the default output is the script's name with .png, beside it"
+expect_info "$work/scenes/tiny.png" "32 x +24, 3 channel, uint8 png" "default output is a 32x24 RGB PNG"
+expect_no_file "$work/elsewhere/tiny.png" "the default output does not go to the working directory"
+
+expect_status 0 "-o x.exr" "$crtc" -q -o "$work/images/x.exr" "$work/scenes/tiny.crt"
+expect_info "$work/images/x.exr" "3 channel, (half|float) openexr" "-o .exr writes OpenEXR"
+expect_status 0 "-o x.jpg" "$crtc" -q -o "$work/images/x.jpg" "$work/scenes/tiny.crt"
+expect_info "$work/images/x.jpg" "3 channel, uint8 jpeg" "-o .jpg writes JPEG"
+expect_status 2 "an unknown output extension" "$crtc" -o "$work/images/x.xyz" "$work/scenes/tiny.crt"
+expect_text "$work/err" "cannot write '.*x\.xyz': unknown image format" "unknown extension message"
+expect_no_file "$work/images/x.xyz" "an unknown extension writes nothing"
+
+expect_status 0 "--frames 3 -o anim.gif" "$crtc" -q --frames 3 -o "$work/images/anim.gif" "$work/scenes/tiny.crt"
+expect_info "$work/images/anim.gif" "\(3 subimages\)" "the GIF has 3 subimages"
+expect_status 0 "--frames 3 -o f_%02d.png" "$crtc" -q --frames 3 -o "$work/images/f_%02d.png" "$work/scenes/tiny.crt"
+for i in 00 01 02; do expect_file "$work/images/f_$i.png" "numbered frame $i"; done
+expect_no_file "$work/images/f_03.png" "no fourth numbered frame"
+
+expect_status 0 "--stats" "$crtc" --stats -o "$work/images/s.png" "$work/scenes/tiny.crt"
+expect_text "$work/err" "stats: rays: camera 768, reflection 0, refraction 0, shadow 0" "--stats counts the rays"
+expect_text "$work/err" "stats: BVH nodes visited [0-9]+, intersection tests [0-9]+" "--stats counts BVH work"
+expect_status 0 "-q" "$crtc" -q -o "$work/images/q.png" "$work/scenes/tiny.crt"
+if [ -s "$work/out" ] || [ -s "$work/err" ]; then
+    echo "FAIL: -q printed something on success"
+    failures=$((failures + 1))
+fi
+expect_status 0 "--width/--height" "$crtc" -q --width 40 --height 30 -o "$work/images/sized.png" "$work/scenes/tiny.crt"
+expect_info "$work/images/sized.png" "40 x +30" "--width 40 --height 30 sizes the image"
+
+# A render far longer than the wait: Ctrl-C must exit 130 and leave no image (nor a temporary).
+cat >"$work/scenes/heavy.crt" <<'CRT'
+Settings {
+    width -> 2000 height -> 1500 supersampling -> 4 recursiondepth -> 8
+    lights -> [PointLight { origin -> vec3(2, 4, -3) color -> rgb(1, 1, 1) }]
+}
+m = Material { color -> rgb(0.8, 0.8, 0.8) reflectivity -> 0.8 }
+Scene {
+    for i in range(40) { Sphere { center -> vec3(i % 8 - 3.5, i / 8 - 2.0, 3.0 + i % 3) radius -> 0.45 material -> m } }
+}
+CRT
+# The handler is installed once the script is evaluated; a signal before that kills crtc with the
+# same status 130 but proves less, so wait longer until crtc reports the interruption itself.
+for delay in 0.5 1.5 4; do
+    "$crtc" -q -o "$work/images/heavy.png" "$work/scenes/heavy.crt" >"$work/out.heavy" 2>"$work/err.heavy" &
+    pid=$!
+    sleep "$delay"
+    kill -INT "$pid"
+    wait "$pid"
+    status=$?
+    grep -q "interrupted; no image written" "$work/err.heavy" && break
+done
+if [ "$status" != 130 ]; then
+    echo "FAIL: SIGINT during a render: exit status $status, expected 130"
+    failures=$((failures + 1))
+fi
+expect_text "$work/err.heavy" "crtc: interrupted; no image written" "SIGINT message"
+expect_no_file "$work/images/heavy.png" "an interrupted render leaves no output"
+leftovers=$(find "$work/images" -name '*heavy*' | head -3)
+if [ -n "$leftovers" ]; then
+    echo "FAIL: an interrupted render left files: $leftovers"
+    failures=$((failures + 1))
+fi
+
 if [ "$failures" -gt 0 ]; then
     echo "$failures check(s) failed"
     exit 1
