@@ -125,6 +125,27 @@ expect_status 0 "--frames 3 -o f_%02d.png" "$crtc" -q --frames 3 -o "$work/image
 for i in 00 01 02; do expect_file "$work/images/f_$i.png" "numbered frame $i"; done
 expect_no_file "$work/images/f_03.png" "no fourth numbered frame"
 
+# Frames whose scene does not change are not rendered again: tiny.crt never reads t.
+expect_status 0 "--frames 3 of a still scene" "$crtc" --stats --frames 3 -o "$work/images/still.gif" "$work/scenes/tiny.crt"
+expect_text "$work/err" "frames reused unchanged 2" "unchanged frames are reused"
+expect_text "$work/err" "stats: rays: camera 768," "only the first frame is traced"
+cat >"$work/scenes/moving.crt" <<'CRT'
+Settings { width -> 32 height -> 24 }
+Scene { Sphere { center -> vec3(0.1 * t, 0, 1) radius -> 0.5 } }
+CRT
+expect_status 0 "--frames 3 of a moving scene" "$crtc" --stats --frames 3 -o "$work/images/moving.gif" "$work/scenes/moving.crt"
+expect_text "$work/err" "frames reused unchanged 0" "changing frames are all rendered"
+
+# A bad OBJ file is an error naming the file and line.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n' >"$work/scenes/broken.obj"
+cat >"$work/scenes/mesh.crt" <<'CRT'
+Settings { width -> 32 height -> 24 }
+Scene { Mesh { file -> "broken.obj" } }
+CRT
+expect_status 1 "a broken OBJ file" "$crtc" -q -o "$work/images/mesh.png" "$work/scenes/mesh.crt"
+expect_text "$work/err" "broken\.obj:4: .*index 7 out of range" "the OBJ error names file and line"
+expect_no_file "$work/images/mesh.png" "no image for a broken mesh"
+
 expect_status 0 "--stats" "$crtc" --stats -o "$work/images/s.png" "$work/scenes/tiny.crt"
 expect_text "$work/err" "stats: rays: camera 768, reflection 0, refraction 0, shadow 0" "--stats counts the rays"
 expect_text "$work/err" "stats: BVH nodes visited [0-9]+, intersection tests [0-9]+" "--stats counts BVH work"
