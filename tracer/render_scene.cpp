@@ -28,10 +28,11 @@ double coincidenceTolerance(const Ray& ray, double t) {
 
 } // namespace
 
-bool RenderScene::csgCrossings(int32_t nodeIndex, const Ray& ray, QueryScratch& scratch, RayStats& stats) const {
+bool RenderScene::csgCrossings(int32_t nodeIndex, const Ray& ray, const BoxRay& boxRay, QueryScratch& scratch,
+                               RayStats& stats) const {
     const CsgTreeNode& node = csgNodes[nodeIndex];
     std::vector<CsgCrossing>& out = scratch.csg;
-    if (node.bounds.finite() && !BoxRay(ray).hits(node.bounds, -kInfinity, kInfinity)) return false;
+    if (node.bounds.finite() && !boxRay.hits(node.bounds, -kInfinity, kInfinity)) return false;
 
     if (node.kind == CsgNodeKind::Leaf) {
         const Primitive& p = primitives[node.primitive];
@@ -47,9 +48,9 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const Ray& ray, QueryScratch& 
     }
 
     size_t leftStart = out.size();
-    bool inLeft = csgCrossings(node.left, ray, scratch, stats);
+    bool inLeft = csgCrossings(node.left, ray, boxRay, scratch, stats);
     size_t rightStart = out.size();
-    bool inRight = csgCrossings(node.right, ray, scratch, stats);
+    bool inRight = csgCrossings(node.right, ray, boxRay, scratch, stats);
     size_t rightEnd = out.size();
     bool state = insideOf(node.kind, inLeft, inRight);
     bool startsInside = state;
@@ -101,7 +102,7 @@ bool RenderScene::nearestInObject(int32_t object, const Ray& ray, double tMax, H
         return true;
     }
     size_t start = scratch.csg.size();
-    csgCrossings(~object, ray, scratch, stats);
+    csgCrossings(~object, ray, BoxRay(ray), scratch, stats);
     bool found = false;
     for (size_t i = start; i < scratch.csg.size(); ++i) {
         const CsgCrossing& c = scratch.csg[i];

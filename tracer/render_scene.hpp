@@ -113,7 +113,8 @@ private:
                            RayStats& stats, Visit& visit) const;
     /// Appends the node's crossings of the whole line to scratch.csg from `start`; returns
     /// whether the line starts inside.
-    bool csgCrossings(int32_t node, const Ray& ray, QueryScratch& scratch, RayStats& stats) const;
+    bool csgCrossings(int32_t node, const Ray& ray, const BoxRay& boxRay, QueryScratch& scratch,
+                      RayStats& stats) const;
     Ray objectRay(const Primitive& p, const Ray& ray) const {
         return p.transform < 0 ? ray : transforms[p.transform].toObject.ray(ray);
     }

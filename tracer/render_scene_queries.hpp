@@ -24,7 +24,7 @@ bool RenderScene::crossingsInObject(int32_t object, const Ray& ray, double tMax,
         return true;
     }
     size_t start = scratch.csg.size();
-    csgCrossings(~object, ray, scratch, stats);
+    csgCrossings(~object, ray, BoxRay(ray), scratch, stats);
     bool keepGoing = true;
     for (size_t i = start; i < scratch.csg.size() && keepGoing; ++i) {
         const CsgCrossing& c = scratch.csg[i];
