@@ -1,6 +1,7 @@
 // crtc: checks, dumps and renders CRT scene scripts.
 #include "ast_dump.hpp"
 #include "diagnostic_printer.hpp"
+#include "formatter.hpp"
 #include "interpreter.hpp"
 #include "large_stack.hpp"
 #include "options.hpp"
@@ -9,6 +10,7 @@
 #include "tracer/image_io/image_io.hpp"
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <set>
 #include <unistd.h>
@@ -48,6 +50,43 @@ bool report(Compilation& c, const driver::Options& options, std::set<std::string
     return c.diagnostics.hasErrors();
 }
 
+/// crtc --format: the formatted script on standard output or in -o FILE.
+int formatCommand(const driver::Options& options, std::string text) {
+    FormatResult result = formatSource(text);
+    if (!result.ok) {
+        // Show why (the syntax errors) the way --check would.
+        Compilation c = compile(options.script, std::move(text), options.eval, false);
+        std::set<std::string> printed;
+        report(c, options, printed);
+        std::cerr << "crtc: not formatted: " << result.error << "\n";
+        return 1;
+    }
+    if (options.output.empty()) {
+        std::cout << result.text;
+        return 0;
+    }
+    // Write beside the target and rename, so a failed write never truncates the file.
+    std::string temporary = options.output + ".crtc-format.tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        out << result.text;
+        if (!out.flush()) {
+            std::error_code ignored;
+            fs::remove(temporary, ignored);
+            std::cerr << "crtc: cannot write '" << options.output << "'\n";
+            return 2;
+        }
+    }
+    std::error_code error;
+    fs::rename(temporary, options.output, error);
+    if (error) {
+        fs::remove(temporary, error);
+        std::cerr << "crtc: cannot write '" << options.output << "'\n";
+        return 2;
+    }
+    return 0;
+}
+
 int run(int argc, char** argv, bool& loadingImages) {
     driver::ParsedOptions parsed = driver::parseOptions(argc, argv);
     if (!parsed.options) {
@@ -67,6 +106,8 @@ int run(int argc, char** argv, bool& loadingImages) {
         std::cerr << "crtc: cannot read '" << options.script << "'\n";
         return 2;
     }
+
+    if (options.mode == driver::Mode::Format) return formatCommand(options, std::move(*text));
 
     // The dumps own standard output: print() goes to standard error beside them.
     if (options.mode == driver::Mode::DumpAst || options.mode == driver::Mode::DumpScene) {

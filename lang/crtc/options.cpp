@@ -15,6 +15,8 @@ modes:
   --check              report diagnostics only
   --dump-ast           print the syntax tree
   --dump-scene         print the evaluated scene as JSON (docs/scene-json.md)
+  --format             print the script formatted (to -o FILE if given); a script
+                       with syntax errors is refused
 
 options:
   -o FILE              output image (default: the script's name with .png, or .gif
@@ -85,6 +87,8 @@ ParsedOptions parseOptions(int argc, char** argv) {
             o.mode = Mode::DumpAst;
         } else if (arg == "--dump-scene") {
             o.mode = Mode::DumpScene;
+        } else if (arg == "--format") {
+            o.mode = Mode::Format;
         } else if (arg == "-Werror") {
             o.werror = true;
         } else if (arg == "-q" || arg == "--quiet") {

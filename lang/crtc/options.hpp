@@ -9,7 +9,7 @@
 
 namespace crt::lang::driver {
 
-enum class Mode { Render, Check, DumpAst, DumpScene };
+enum class Mode { Render, Check, DumpAst, DumpScene, Format };
 enum class ColourWhen { Auto, Always, Never };
 
 struct Options {

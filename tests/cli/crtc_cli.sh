@@ -125,6 +125,22 @@ expect_status 0 "--frames 3 -o f_%02d.png" "$crtc" -q --frames 3 -o "$work/image
 for i in 00 01 02; do expect_file "$work/images/f_$i.png" "numbered frame $i"; done
 expect_no_file "$work/images/f_03.png" "no fourth numbered frame"
 
+# --format prints the script formatted, refuses a script with syntax errors, and -o
+# writes the file.
+printf 'x=1+2\nScene {\nSphere{center->vec3(0,0,0) radius->x}\n}\n' >"$work/messy.crt"
+expect_status 0 "--format" "$crtc" --format "$work/messy.crt"
+expect_text "$work/out" "^x = 1 \+ 2$" "--format spaces operators"
+expect_text "$work/out" "^    Sphere \{ center -> vec3\(0, 0, 0\) radius -> x \}$" "--format indents and spaces"
+expect_status 0 "--format -o" "$crtc" --format -o "$work/tidy.crt" "$work/messy.crt"
+expect_status 0 "--format of formatted text" "$crtc" --format "$work/tidy.crt"
+if ! cmp -s "$work/out" "$work/tidy.crt"; then
+    echo "FAIL: --format is not idempotent"
+    failures=$((failures + 1))
+fi
+printf 'Scene {\n' >"$work/open.crt"
+expect_status 1 "--format of a script with a syntax error" "$crtc" --format "$work/open.crt"
+expect_text "$work/err" "not formatted" "--format says why it refused"
+
 # Frames whose scene does not change are not rendered again: tiny.crt never reads t.
 expect_status 0 "--frames 3 of a still scene" "$crtc" --stats --frames 3 -o "$work/images/still.gif" "$work/scenes/tiny.crt"
 expect_text "$work/err" "frames reused unchanged 2" "unchanged frames are reused"
