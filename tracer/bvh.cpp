@@ -31,7 +31,11 @@ public:
             bounds.include(items_[i].bounds);
             centroids.include(items_[i].centroid);
         }
-        nodes_[nodeIndex].bounds = bounds;
+        double* faces = nodes_[nodeIndex].faces;
+        for (int i = 0; i < 3; ++i) {
+            faces[i] = bounds.lo[i];
+            faces[3 + i] = bounds.hi[i];
+        }
         size_t count = end - begin;
         int axis = 0;
         Vec3 extent = centroids.extent();

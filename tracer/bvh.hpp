@@ -12,38 +12,47 @@ namespace crt::tracer {
 /// A node: a leaf holds items[offset .. offset+count); an interior node's first child
 /// follows it directly and its second child is nodes[offset].
 struct BvhNode {
-    Bounds3 bounds;
+    double faces[6]; ///< the box: lo.x, lo.y, lo.z, hi.x, hi.y, hi.z (indexed by BoxRay)
     int32_t offset = 0;
     uint16_t count = 0;
     uint8_t axis = 0;
 };
 
-/// A ray prepared for box tests.
+/// A ray prepared for box tests: the reciprocal direction, and for each axis which face of a
+/// box the ray meets first, so the slab test needs no branch on the direction.
 struct BoxRay {
     Vec3 origin;
     Vec3 invDir;
     int dirIsNegative[3];
+    int nearFace[3]; ///< index into Bounds3 viewed as {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}
+    int farFace[3];
 
     explicit BoxRay(const Ray& ray)
         : origin(ray.origin), invDir(1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z),
-          dirIsNegative{invDir.x < 0, invDir.y < 0, invDir.z < 0} {}
+          dirIsNegative{invDir.x < 0, invDir.y < 0, invDir.z < 0} {
+        for (int i = 0; i < 3; ++i) {
+            nearFace[i] = dirIsNegative[i] ? 3 + i : i;
+            farFace[i] = dirIsNegative[i] ? i : 3 + i;
+        }
+    }
 
     /// Whether the segment (tMin, tMax) of the ray meets the box (pbrt's slab test, with the
     /// far distance widened by the rounding bound so a grazing hit is never culled).
     bool hits(const Bounds3& b, double tMin, double tMax) const {
-        const Vec3* corners[2] = {&b.lo, &b.hi};
-        double t0 = (corners[dirIsNegative[0]]->x - origin.x) * invDir.x;
-        double t1 = (corners[1 - dirIsNegative[0]]->x - origin.x) * invDir.x;
-        double ty0 = (corners[dirIsNegative[1]]->y - origin.y) * invDir.y;
-        double ty1 = (corners[1 - dirIsNegative[1]]->y - origin.y) * invDir.y;
+        const double faces[6] = {b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z};
+        return hits(faces, tMin, tMax);
+    }
+    bool hits(const double* faces, double tMin, double tMax) const {
         constexpr double widen = 1 + 2 * errorGamma(3);
-        t1 *= widen;
-        ty1 *= widen;
+        double t0 = (faces[nearFace[0]] - origin.x) * invDir.x;
+        double t1 = (faces[farFace[0]] - origin.x) * invDir.x * widen;
+        double ty0 = (faces[nearFace[1]] - origin.y) * invDir.y;
+        double ty1 = (faces[farFace[1]] - origin.y) * invDir.y * widen;
         if (t0 > ty1 || ty0 > t1) return false;
         if (ty0 > t0) t0 = ty0;
         if (ty1 < t1) t1 = ty1;
-        double tz0 = (corners[dirIsNegative[2]]->z - origin.z) * invDir.z;
-        double tz1 = (corners[1 - dirIsNegative[2]]->z - origin.z) * invDir.z * widen;
+        double tz0 = (faces[nearFace[2]] - origin.z) * invDir.z;
+        double tz1 = (faces[farFace[2]] - origin.z) * invDir.z * widen;
         if (t0 > tz1 || tz0 > t1) return false;
         if (tz0 > t0) t0 = tz0;
         if (tz1 < t1) t1 = tz1;
@@ -70,13 +79,18 @@ public:
         int32_t stack[64];
         int top = 0;
         int32_t current = 0;
+        uint64_t visited = 0; // counted locally: the stats live in memory
         while (true) {
             const BvhNode& node = nodes_[current];
-            ++stats.nodesVisited;
-            if (boxRay.hits(node.bounds, 0.0, tMax)) {
+            ++visited;
+            if (boxRay.hits(node.faces, 0.0, tMax)) {
                 if (node.count > 0) {
-                    for (int i = 0; i < node.count; ++i)
-                        if (!visit(items_[node.offset + i])) return false;
+                    for (int i = 0; i < node.count; ++i) {
+                        if (!visit(items_[node.offset + i])) {
+                            stats.nodesVisited += visited;
+                            return false;
+                        }
+                    }
                     if (top == 0) break;
                     current = stack[--top];
                 } else if (boxRay.dirIsNegative[node.axis]) {
@@ -91,6 +105,7 @@ public:
                 current = stack[--top];
             }
         }
+        stats.nodesVisited += visited;
         return true;
     }
 
