@@ -5,6 +5,7 @@
 #include "tracer/stats.hpp"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace crt::tracer {
@@ -43,6 +44,11 @@ struct BoxRay {
         return hits(faces, tMin, tMax);
     }
     bool hits(const double* faces, double tMin, double tMax) const {
+        double entry;
+        return hits(faces, tMin, tMax, entry);
+    }
+    /// The same, also giving where the ray enters the box (for nearest-first traversal).
+    bool hits(const double* faces, double tMin, double tMax, double& entry) const {
         constexpr double widen = 1 + 2 * errorGamma(3);
         double t0 = (faces[nearFace[0]] - origin.x) * invDir.x;
         double t1 = (faces[farFace[0]] - origin.x) * invDir.x * widen;
@@ -56,6 +62,7 @@ struct BoxRay {
         if (t0 > tz1 || tz0 > t1) return false;
         if (tz0 > t0) t0 = tz0;
         if (tz1 < t1) t1 = tz1;
+        entry = t0;
         return t0 < tMax && t1 > tMin;
     }
 };
@@ -76,37 +83,60 @@ public:
     bool traverse(const Ray& ray, const double& tMax, RayStats& stats, Visit&& visit) const {
         if (nodes_.empty()) return true;
         BoxRay boxRay(ray);
-        int32_t stack[64];
+        uint64_t visited = 1; // counted locally: the stats live in memory
+        if (!boxRay.hits(nodes_[0].faces, 0.0, tMax)) {
+            stats.nodesVisited += visited;
+            return true;
+        }
+        // Children are tested from their parent; the nearer one (by entry distance) is
+        // visited first and the farther one waits on the stack, rechecked against the
+        // then-current tMax when popped.
+        struct Pending {
+            int32_t node;
+            double entry;
+        };
+        Pending stack[64];
         int top = 0;
         int32_t current = 0;
-        uint64_t visited = 0; // counted locally: the stats live in memory
         while (true) {
             const BvhNode& node = nodes_[current];
-            ++visited;
-            if (boxRay.hits(node.faces, 0.0, tMax)) {
-                if (node.count > 0) {
-                    for (int i = 0; i < node.count; ++i) {
-                        if (!visit(items_[node.offset + i])) {
-                            stats.nodesVisited += visited;
-                            return false;
-                        }
+            if (node.count > 0) {
+                for (int i = 0; i < node.count; ++i) {
+                    if (!visit(items_[node.offset + i])) {
+                        stats.nodesVisited += visited;
+                        return false;
                     }
-                    if (top == 0) break;
-                    current = stack[--top];
-                } else if (boxRay.dirIsNegative[node.axis]) {
-                    stack[top++] = current + 1;
-                    current = node.offset;
-                } else {
-                    stack[top++] = node.offset;
-                    current = current + 1;
                 }
             } else {
-                if (top == 0) break;
-                current = stack[--top];
+                int32_t first = current + 1, second = node.offset;
+                double firstEntry = 0, secondEntry = 0;
+                visited += 2;
+                bool hitFirst = boxRay.hits(nodes_[first].faces, 0.0, tMax, firstEntry);
+                bool hitSecond = boxRay.hits(nodes_[second].faces, 0.0, tMax, secondEntry);
+                if (hitFirst && hitSecond) {
+                    if (secondEntry < firstEntry) {
+                        std::swap(first, second);
+                        std::swap(firstEntry, secondEntry);
+                    }
+                    stack[top++] = {second, secondEntry};
+                    current = first;
+                    continue;
+                }
+                if (hitFirst || hitSecond) {
+                    current = hitFirst ? first : second;
+                    continue;
+                }
             }
+            // Next: the nearest pending subtree still in front of the nearest hit so far.
+            do {
+                if (top == 0) {
+                    stats.nodesVisited += visited;
+                    return true;
+                }
+                --top;
+            } while (stack[top].entry >= tMax);
+            current = stack[top].node;
         }
-        stats.nodesVisited += visited;
-        return true;
     }
 
 private:
