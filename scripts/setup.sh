@@ -9,7 +9,9 @@ set -euo pipefail
 packages=(
     g++ cmake ninja-build re2c bison
     libfmt-dev libglm-dev nlohmann-json3-dev catch2
-    neovim # the language server's end-to-end test (tests/lsp/nvim)
+    libopenimageio-dev openimageio-tools # image input and output; oiiotool in the tests
+    python3 # the language server's protocol session tests (tests/lsp)
+    neovim  # the language server's end-to-end test (tests/lsp/nvim)
 )
 case "${1:-}" in
 --bench) packages+=(povray time) ;;
