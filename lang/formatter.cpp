@@ -2,6 +2,7 @@
 // '>' closing a modifier list apart from their binary look-alikes.
 #include "formatter.hpp"
 
+#include "large_stack.hpp"
 #include "lexer.hpp"
 #include "parser.hpp"
 
@@ -29,6 +30,18 @@ bool isOpener(TokenKind k) {
 bool endsOperand(TokenKind k) {
     return k == TokenKind::Identifier || k == TokenKind::RParen || k == TokenKind::RBracket ||
            k == TokenKind::String;
+}
+
+bool isBinaryLike(TokenKind k) {
+    switch (k) {
+    case TokenKind::Plus: case TokenKind::Minus: case TokenKind::Star: case TokenKind::Slash:
+    case TokenKind::Percent: case TokenKind::Caret: case TokenKind::Less: case TokenKind::Greater:
+    case TokenKind::LessEqual: case TokenKind::GreaterEqual: case TokenKind::EqualEqual:
+    case TokenKind::NotEqual: case TokenKind::AndAnd: case TokenKind::OrOr: case TokenKind::Question:
+    case TokenKind::Colon: case TokenKind::Arrow: case TokenKind::Assign:
+        return true;
+    default: return false;
+    }
 }
 
 struct Item {
@@ -66,7 +79,9 @@ FormatResult formatSource(std::string_view source, const FormatOptions& options,
         return result;
     }
     std::set<uint32_t> unary, modifierClose;
-    for (Node* item : script.items) collectShapes(item, unary, modifierClose, file);
+    runOnLargeStack([&] { // expressions may nest tens of thousands deep
+        for (Node* item : script.items) collectShapes(item, unary, modifierClose, file);
+    });
     DiagnosticBag ignored;
     std::vector<Token> tokens = lexAll(file, 0, ignored);
 
@@ -89,6 +104,7 @@ FormatResult formatSource(std::string_view source, const FormatOptions& options,
         uint32_t level;
     };
     std::vector<Open> open;
+    const Item* lastCode = nullptr; ///< the last token (not comment) of the lines so far
     std::string out;
     out.reserve(source.size() + source.size() / 8);
     out += file.text().substr(0, file.lineStart(1)); // a byte-order mark stays
@@ -102,6 +118,19 @@ FormatResult formatSource(std::string_view source, const FormatOptions& options,
             TokenKind k = first.token.kind;
             bool closer = k == TokenKind::RBrace || k == TokenKind::RParen || k == TokenKind::RBracket || first.modifierClose;
             uint32_t level = open.empty() ? 0 : closer ? open.back().level : open.back().level + 1;
+            // A line that continues an expression (it starts with a binary operator, or the
+            // line before ended with one) hangs one level deeper.
+            auto binary = [](const Item* item) {
+                return item && !item->unary && !item->modifierClose && isBinaryLike(item->token.kind);
+            };
+            const Item* firstCode = nullptr;
+            for (const Item& item : items) {
+                if (item.token.kind != TokenKind::Comment) {
+                    firstCode = &item;
+                    break;
+                }
+            }
+            if (firstCode && !closer && (binary(firstCode) || binary(lastCode))) ++level;
             for (uint32_t i = 0; i < level; ++i) formatted += indentUnit;
             for (size_t i = 0; i < items.size(); ++i) {
                 const Item& item = items[i];
@@ -120,6 +149,7 @@ FormatResult formatSource(std::string_view source, const FormatOptions& options,
                 }
                 formatted += text;
                 TokenKind kind = item.token.kind;
+                if (kind != TokenKind::Comment) lastCode = &item;
                 if (isOpener(kind)) {
                     open.push_back({kind, level});
                 } else if ((kind == TokenKind::RBrace || kind == TokenKind::RParen || kind == TokenKind::RBracket ||

@@ -69,6 +69,7 @@ void Interpreter::step(SourceRange where) {
 
 void Interpreter::run(bool evaluate) {
     animated_ = resolve(compilation_.main, globals_, diagnostics_, true).readsTime;
+    compilation_.resolved = true;
     if (diagnostics_.hasErrors() || !evaluate) return;
     std::error_code error;
     const SourceFile& main = compilation_.sources.file(compilation_.main.file);

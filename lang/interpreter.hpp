@@ -57,6 +57,7 @@ struct Compilation {
     Script main;
     std::vector<Token> comments;
     std::optional<tracer::SceneDesc> scene; ///< set when evaluation finished without errors
+    bool resolved = false; ///< names were resolved (the main script has no syntax errors)
     /// With EvalOptions::keepGlobalValues: each assigned global's name and str() (shortened),
     /// as they stood when evaluation ended or stopped.
     std::vector<std::pair<std::string, std::string>> globalValues;

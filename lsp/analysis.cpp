@@ -264,14 +264,20 @@ void collectIncludes(Node* node, std::vector<std::string>& names) {
 
 std::shared_ptr<const Analysis> analyze(const std::string& path, std::string text,
                                         const AnalysisOptions& options, IncludeCache& cache) {
-    auto result = std::make_shared<Analysis>();
-    Analysis& a = *result;
     EvalOptions eval;
     eval.limits = options.limits;
     eval.includeDirs = options.includeDirs;
     eval.stdlibDir = options.stdlibDir;
-    a.compilation = compile(path, std::move(text), eval, false);
-    a.syntaxErrors = a.compilation.diagnostics.hasErrors();
+    return analyze(compile(path, std::move(text), eval, false), options, cache);
+}
+
+std::shared_ptr<const Analysis> analyze(Compilation compilation, const AnalysisOptions& options,
+                                        IncludeCache& cache) {
+    auto result = std::make_shared<Analysis>();
+    Analysis& a = *result;
+    a.compilation = std::move(compilation);
+    a.syntaxErrors = !a.compilation.resolved;
+    const std::string& path = a.file().path();
     DiagnosticBag ignored;
     a.tokens = lexAll(a.file(), 0, ignored, &a.comments);
     std::vector<std::string> includeNames;
@@ -370,6 +376,20 @@ std::vector<const MacroExpr*> Analysis::macrosAt(uint32_t offset) const {
     return result;
 }
 
+ObjectType Analysis::enclosingObject(int index) const {
+    int depth = 0;
+    for (int i = index - 1; i >= 0; --i) {
+        TokenKind k = tokens[static_cast<size_t>(i)].kind;
+        if (k == TokenKind::RBrace) ++depth;
+        if (k != TokenKind::LBrace || depth-- > 0) continue;
+        if (i == 0) return ObjectType::Count;
+        const Token& before = tokens[static_cast<size_t>(i - 1)];
+        if (before.kind == TokenKind::KwSettings) return ObjectType::Settings;
+        return before.kind == TokenKind::Name ? findObjectType(text(before)) : ObjectType::Count;
+    }
+    return ObjectType::Count;
+}
+
 const Symbol* Analysis::lookup(std::string_view name, uint32_t offset) const {
     std::vector<const MacroExpr*> scopes = macrosAt(offset);
     for (auto scope = scopes.rbegin(); scope != scopes.rend(); ++scope) {
@@ -388,8 +408,8 @@ const Symbol* Analysis::lookup(std::string_view name, uint32_t offset) const {
 
 // ---------------------------------------------------------------- static types
 
-std::string staticType(const Expr* value) {
-    if (!value) return "";
+std::string staticType(const Expr* value, int depth) {
+    if (!value || depth <= 0) return "";
     switch (value->kind) {
     case NodeKind::IntLit: return "int";
     case NodeKind::FloatLit: return "float";
@@ -409,7 +429,7 @@ std::string staticType(const Expr* value) {
         }
         return text + ")";
     }
-    case NodeKind::Modify: return staticType(static_cast<const ModifyExpr*>(value)->target);
+    case NodeKind::Modify: return staticType(static_cast<const ModifyExpr*>(value)->target, depth - 1);
     case NodeKind::Call: {
         auto* call = static_cast<const CallExpr*>(value);
         if (call->callee->kind != NodeKind::Var) return "";
@@ -425,8 +445,8 @@ std::string staticType(const Expr* value) {
     }
     case NodeKind::Binary: {
         auto* b = static_cast<const BinaryExpr*>(value);
-        std::string left = staticType(b->left);
-        std::string right = staticType(b->right);
+        std::string left = staticType(b->left, depth - 1);
+        std::string right = staticType(b->right, depth - 1);
         bool comparison = b->op >= BinaryOp::Less;
         if (comparison) return "bool";
         bool objects = (!left.empty() && std::isupper(static_cast<unsigned char>(left[0]))) ||
@@ -438,7 +458,7 @@ std::string staticType(const Expr* value) {
     }
     case NodeKind::Unary: {
         auto* u = static_cast<const UnaryExpr*>(value);
-        return u->op == UnaryOp::Not ? "bool" : staticType(u->operand);
+        return u->op == UnaryOp::Not ? "bool" : staticType(u->operand, depth - 1);
     }
     default: return "";
     }

@@ -123,12 +123,18 @@ struct Analysis {
     const Symbol* lookup(std::string_view name, uint32_t offset) const;
     /// Macros whose body holds `offset`, innermost last.
     std::vector<const lang::MacroExpr*> macrosAt(uint32_t offset) const;
+    /// The object type (or Settings) whose braces enclose token `index`, from the tokens
+    /// alone (so it works where the parse failed); ObjectType::Count when none.
+    lang::ObjectType enclosingObject(int index) const;
 };
 
 /// Runs the front end on `text` (parse and resolve; evaluation is the diagnostics worker's)
 /// and indexes the result.
 std::shared_ptr<const Analysis> analyze(const std::string& path, std::string text,
                                         const AnalysisOptions& options, IncludeCache& cache);
+/// Indexes a compilation made already (by the diagnostics worker, evaluated or not).
+std::shared_ptr<const Analysis> analyze(lang::Compilation compilation, const AnalysisOptions& options,
+                                        IncludeCache& cache);
 
 /// Where `include "name"` in a file of folder `folder` finds its file, as the interpreter
 /// looks: the folder, -I folders, CRT_PATH, the standard library. Empty if nowhere.
@@ -138,6 +144,7 @@ std::string findInclude(const std::string& name, const std::string& folder,
 std::vector<std::string> includeFolders(const std::string& folder, const AnalysisOptions& options);
 
 /// A short static description of what an expression yields ("vec3", "Sphere", "macro (a, b)").
-std::string staticType(const lang::Expr* value);
+/// Looks at most `depth` levels into the expression.
+std::string staticType(const lang::Expr* value, int depth = 32);
 
 } // namespace crt::lsp

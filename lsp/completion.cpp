@@ -128,7 +128,7 @@ public:
             const Token& t = a_.tokens[static_cast<size_t>(at)];
             if (t.begin < offset_ && (t.kind == TokenKind::Identifier || t.kind == TokenKind::Name || isKeyword(t.kind))) {
                 wordStart = t.begin;
-            } else if (t.begin < offset_ && offset_ < t.end && t.kind == TokenKind::String) {
+            } else if (insideString(t)) {
                 int before = at - 1;
                 if (before >= 0 && a_.tokens[static_cast<size_t>(before)].kind == TokenKind::KwInclude) {
                     list_.replace = {0, t.begin + 1, offset_};
@@ -206,6 +206,14 @@ public:
 
 private:
     void add(CompletionItem item) { list_.items.push_back(std::move(item)); }
+
+    /// Whether the cursor is inside string token `t` (an unterminated one included).
+    bool insideString(const Token& t) const {
+        std::string_view text = a_.text(t);
+        if ((t.kind != TokenKind::String && t.kind != TokenKind::Invalid) || !text.starts_with('"')) return false;
+        bool closed = text.size() >= 2 && text.ends_with('"');
+        return t.begin < offset_ && (offset_ < t.end || !closed);
+    }
 
     bool inModifierList(int index) {
         int depth = 0;

@@ -5,8 +5,10 @@
 
 namespace crt::lsp {
 
-DiagnosticsWorker::DiagnosticsWorker(AnalysisOptions options, std::chrono::milliseconds debounce, Publish publish)
-    : options_(std::move(options)), debounce_(debounce), publish_(std::move(publish)), thread_([this] { loop(); }) {}
+DiagnosticsWorker::DiagnosticsWorker(AnalysisOptions options, std::chrono::milliseconds debounce, Publish publish,
+                                     Ready ready)
+    : options_(std::move(options)), debounce_(debounce), publish_(std::move(publish)), ready_(std::move(ready)),
+      thread_([this] { loop(); }) {}
 
 DiagnosticsWorker::~DiagnosticsWorker() {
     {
@@ -67,13 +69,15 @@ void DiagnosticsWorker::loop() {
             std::lock_guard check(mutex_);
             return stop_ || generation_[uri] != job.generation;
         };
-        auto compilation = std::make_shared<lang::Compilation>(lang::compile(job.path, std::move(job.text), eval));
+        lang::Compilation compilation = lang::compile(job.path, std::move(job.text), eval);
 
         lock.lock();
         bool current = !stop_ && generation_[uri] == job.generation;
         if (!current) continue;
         lock.unlock();
-        publish_(uri, job.version, std::move(compilation));
+        publish_(uri, job.version, compilation);
+        // Indexed after publishing, so the requests after a change find the analysis ready.
+        ready_(uri, job.version, analyze(std::move(compilation), options_, includes_));
         lock.lock();
     }
 }

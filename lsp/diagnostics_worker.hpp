@@ -19,10 +19,12 @@ namespace crt::lsp {
 /// every evaluation stops at the time budget, so `while (true) {}` costs at most that.
 class DiagnosticsWorker {
 public:
-    using Publish = std::function<void(const std::string& uri, int64_t version,
-                                       std::shared_ptr<const lang::Compilation> compilation)>;
+    /// Receives the evaluation, as soon as it is done; called on the worker thread.
+    using Publish = std::function<void(const std::string& uri, int64_t version, const lang::Compilation& compilation)>;
+    /// Then receives the same compilation indexed, for the requests that follow.
+    using Ready = std::function<void(const std::string& uri, int64_t version, std::shared_ptr<const Analysis> analysis)>;
 
-    DiagnosticsWorker(AnalysisOptions options, std::chrono::milliseconds debounce, Publish publish);
+    DiagnosticsWorker(AnalysisOptions options, std::chrono::milliseconds debounce, Publish publish, Ready ready);
     ~DiagnosticsWorker();
     DiagnosticsWorker(const DiagnosticsWorker&) = delete;
     DiagnosticsWorker& operator=(const DiagnosticsWorker&) = delete;
@@ -45,10 +47,12 @@ private:
     AnalysisOptions options_;
     std::chrono::milliseconds debounce_;
     Publish publish_;
+    Ready ready_;
     std::mutex mutex_;
     std::condition_variable wake_;
     std::map<std::string, Job> pending_;
     std::map<std::string, uint64_t> generation_; ///< latest per document
+    IncludeCache includes_; ///< the worker's own: the cache is for one thread
     uint64_t nextGeneration_ = 1;
     bool stop_ = false;
     std::thread thread_;

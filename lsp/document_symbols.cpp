@@ -1,6 +1,8 @@
 // Builds the outline from the AST: what a reader looks for in a scene file.
 #include "document_symbols.hpp"
 
+#include "large_stack.hpp"
+
 #include <fmt/format.h>
 
 namespace crt::lsp {
@@ -96,7 +98,9 @@ private:
 std::vector<DocumentSymbol> documentSymbols(const Analysis& a) {
     std::vector<DocumentSymbol> result;
     Outliner outliner(a);
-    for (const Node* item : a.script().items) outliner.node(item, result);
+    runOnLargeStack([&] { // the walk recurses into expressions, which may nest deeply
+        for (const Node* item : a.script().items) outliner.node(item, result);
+    });
     return result;
 }
 

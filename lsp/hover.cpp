@@ -135,6 +135,15 @@ std::optional<Hover> hover(const Analysis& a, uint32_t offset, const GlobalValue
     if (const Occurrence* o = a.occurrenceAt(offset); o && o->range.begin == t.begin) {
         return Hover{range, symbolHover(a, a.symbols[o->symbol], values)};
     }
+    // An attribute the parser could not keep (a broken object): its object from the tokens.
+    if (static_cast<size_t>(index) + 1 < a.tokens.size() && a.tokens[static_cast<size_t>(index) + 1].kind == TokenKind::Arrow) {
+        ObjectType type = a.enclosingObject(index);
+        if (type == ObjectType::Count) return std::nullopt;
+        const ObjectInfo& info = objectInfo(type);
+        int slot = findAttribute(info, a.text(t));
+        if (slot < 0) return std::nullopt;
+        return Hover{range, attributeDoc(info, info.attributes[static_cast<size_t>(slot)])};
+    }
     // Where the parse failed there is no index: fall back on the name's scope.
     if (const Symbol* s = a.lookup(a.text(t), offset)) return Hover{range, symbolHover(a, *s, values)};
     return std::nullopt;

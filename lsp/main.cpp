@@ -1,6 +1,7 @@
 // crt-lsp: the CRT language server, speaking LSP over standard input and output.
 #include "server.hpp"
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -62,6 +63,7 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
+    std::signal(SIGPIPE, SIG_IGN); // a client that went away must not kill us mid-write
     crt::lsp::Transport transport(stdin, stdout);
     int code;
     {

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
+
 namespace crt::lsp {
 
 using namespace lang;
@@ -176,23 +178,60 @@ json toJson(const FoldingRange& range) {
     return out;
 }
 
-json encodeSemanticTokens(const std::vector<SemanticToken>& tokens, const Positions& positions) {
+std::string encodeSemanticTokens(const std::vector<SemanticToken>& tokens, const Positions& positions) {
+    // Tokens come in order: walk the text once instead of converting each position alone
+    // (a full-file request on a large script has tens of thousands of tokens).
+    const SourceFile& file = positions.file();
+    std::string_view text = file.text();
+    bool utf16 = positions.encoding() == OffsetEncoding::Utf16;
+    auto units = [&](uint32_t from, uint32_t to) {
+        if (!utf16) return to - from;
+        uint32_t n = 0;
+        for (uint32_t i = from; i < to; ++i) {
+            auto c = static_cast<unsigned char>(text[i]);
+            if ((c & 0xC0) != 0x80) n += c >= 0xF0 ? 2 : 1; // a code point past U+FFFF is two units
+        }
+        return n;
+    };
     std::vector<uint32_t> data;
     data.reserve(tokens.size() * 5);
+    uint32_t line = 0, lineStart = file.lineStart(1), nextStart = file.lineStart(2);
     uint32_t lastLine = 0, lastStart = 0;
+    uint32_t cursor = lineStart, cursorUnits = 0; // a known position on the current line
     for (const SemanticToken& t : tokens) {
-        auto [line, start] = positions.lineCharacter(t.range.begin);
-        auto [endLine, end] = positions.lineCharacter(t.range.end);
-        if (endLine != line || end <= start) continue; // tokens never span lines; be safe
+        if (t.range.begin < cursor || t.range.end > text.size() || t.range.end <= t.range.begin) continue;
+        while (line + 1 < file.lineCount() && nextStart <= t.range.begin) {
+            ++line;
+            lineStart = nextStart;
+            nextStart = file.lineStart(line + 2);
+            cursor = lineStart;
+            cursorUnits = 0;
+        }
+        if (t.range.end > nextStart && line + 1 < file.lineCount()) continue; // never spans lines
+        uint32_t start = cursorUnits + units(cursor, t.range.begin);
+        uint32_t length = units(t.range.begin, t.range.end);
+        cursor = t.range.end;
+        cursorUnits = start + length;
         data.push_back(line - lastLine);
         data.push_back(line == lastLine ? start - lastStart : start);
-        data.push_back(end - start);
+        data.push_back(length);
         data.push_back(static_cast<uint32_t>(t.type));
         data.push_back(t.modifiers);
         lastLine = line;
         lastStart = start;
     }
-    return {{"data", std::move(data)}};
+    std::string out = "{\"data\":[";
+    out.resize(out.size() + data.size() * 11 + 2); // at most 10 digits and a comma each
+    char* p = out.data() + 9;
+    char* end = out.data() + out.size();
+    for (size_t i = 0; i < data.size(); ++i) {
+        if (i) *p++ = ',';
+        p = std::to_chars(p, end, data[i]).ptr;
+    }
+    *p++ = ']';
+    *p++ = '}';
+    out.resize(static_cast<size_t>(p - out.data()));
+    return out;
 }
 
 } // namespace crt::lsp

@@ -51,6 +51,8 @@ public:
     uint32_t offset(const json& position) const;
     /// Line and character of `offset` in the encoding.
     std::pair<uint32_t, uint32_t> lineCharacter(uint32_t offset) const;
+    const lang::SourceFile& file() const { return file_; }
+    OffsetEncoding encoding() const { return encoding_; }
 
 private:
     const lang::SourceFile& file_;
@@ -71,7 +73,9 @@ json toJson(const CompletionList& list, const Positions& positions, bool snippet
 json toJson(const SignatureHelp& help);
 json toJson(const DocumentSymbol& symbol, const Positions& positions);
 json toJson(const FoldingRange& range);
-/// Semantic tokens in LSP's relative encoding.
-json encodeSemanticTokens(const std::vector<SemanticToken>& tokens, const Positions& positions);
+/// Semantic tokens in LSP's relative encoding, as the JSON text of the result object
+/// (`{"data":[…]}`): written directly, since a json array of a whole file's numbers costs
+/// more than everything else in the request.
+std::string encodeSemanticTokens(const std::vector<SemanticToken>& tokens, const Positions& positions);
 
 } // namespace crt::lsp

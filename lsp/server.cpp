@@ -101,7 +101,7 @@ void Server::handle(const json& message) {
     if (!message.contains("id")) {
         try {
             notification(method, params);
-        } catch (const std::exception& e) {
+        } catch (const std::exception&) {
             // Notifications get no answer; a bad one is ignored, as LSP asks.
         }
         return;
@@ -127,7 +127,13 @@ void Server::handle(const json& message) {
         return;
     }
     try {
-        reply(id, dispatch(method, params));
+        rawResult_.reset();
+        json result = dispatch(method, params);
+        if (rawResult_) {
+            transport_.write(fmt::format("{{\"jsonrpc\":\"2.0\",\"id\":{},\"result\":{}}}", id.dump(), *rawResult_));
+            return;
+        }
+        reply(id, std::move(result));
     } catch (const LspError& e) {
         replyError(id, e.code, e.what());
     } catch (const json::exception& e) {
@@ -171,8 +177,9 @@ json Server::initialize(const json& params) {
     initialized_ = true;
     worker_ = std::make_unique<DiagnosticsWorker>(
         options_.analysis, options_.debounce,
-        [this](const std::string& uri, int64_t version, std::shared_ptr<const Compilation> c) {
-            publish(uri, version, std::move(c));
+        [this](const std::string& uri, int64_t version, const Compilation& c) { publish(uri, version, c); },
+        [this](const std::string& uri, int64_t version, std::shared_ptr<const Analysis> analysis) {
+            ready(uri, version, std::move(analysis));
         });
 
     json tokenTypes = json::array(), tokenModifiers = json::array();
@@ -241,7 +248,6 @@ void Server::didChange(const json& params) {
         uint32_t begin = positions.offset(member(change["range"], "start"));
         uint32_t end = positions.offset(member(change["range"], "end"));
         if (end < begin) std::swap(begin, end);
-        begin += current.lineStart(1) == 3 && begin < 3 ? 3 - begin : 0; // never split a byte-order mark
         doc.text.replace(begin, end - begin, text);
     }
     if (id.contains("version") && id["version"].is_number_integer()) doc.version = id["version"];
@@ -262,19 +268,31 @@ void Server::didClose(const json& params) {
           {"params", {{"uri", uri}, {"diagnostics", json::array()}}}});
 }
 
-void Server::publish(const std::string& uri, int64_t version, std::shared_ptr<const Compilation> c) {
-    std::vector<DocumentDiagnostic> diagnostics = documentDiagnostics(*c);
-    const SourceFile& file = c->sources.file(0);
+void Server::publish(const std::string& uri, int64_t version, const Compilation& c) {
+    // Runs on the worker thread, before the compilation is indexed and handed over: from
+    // then on only the main thread touches it (SourceFile caches its last line lookup).
+    std::vector<DocumentDiagnostic> diagnostics = documentDiagnostics(c);
+    const SourceFile& file = c.sources.file(0);
     Positions positions(file, encoding_);
     json list = json::array();
     for (const DocumentDiagnostic& d : diagnostics) list.push_back(toJson(d, positions, uri, &file, encoding_));
     {
         std::lock_guard lock(publishedMutex_);
-        published_[uri] = Published{version, c, std::move(diagnostics)};
+        Published& last = published_[uri];
+        // Related information points into the compilation: keep the texts, drop the files.
+        for (DocumentDiagnostic& d : diagnostics) d.related.clear();
+        last = Published{version, nullptr, std::move(diagnostics), c.globalValues};
     }
     send({{"jsonrpc", "2.0"},
           {"method", "textDocument/publishDiagnostics"},
           {"params", {{"uri", uri}, {"version", version}, {"diagnostics", std::move(list)}}}});
+}
+
+void Server::ready(const std::string& uri, int64_t version, std::shared_ptr<const Analysis> analysis) {
+    std::lock_guard lock(publishedMutex_);
+    auto it = published_.find(uri);
+    if (it != published_.end() && it->second.version == version) it->second.analysis = std::move(analysis);
+    analysisReady_.notify_all();
 }
 
 std::optional<Server::Published> Server::published(const std::string& uri) {
@@ -293,7 +311,24 @@ Server::Document& Server::document(const json& params) {
 
 const Analysis& Server::analysisOf(Document& doc) {
     if (!doc.analysis || doc.analysisVersion != doc.version) {
-        doc.analysis = analyze(doc.path, doc.text, options_.analysis, includes_);
+        std::shared_ptr<const Analysis> fromWorker;
+        {
+            // Diagnostics of this very text are out: the worker is indexing it right now,
+            // which takes less time than starting over here.
+            std::unique_lock lock(publishedMutex_);
+            auto ready = [&] {
+                auto it = published_.find(doc.uri);
+                if (it == published_.end() || it->second.version != doc.version) return true;
+                fromWorker = it->second.analysis;
+                return fromWorker != nullptr;
+            };
+            analysisReady_.wait_for(lock, std::chrono::milliseconds(250), ready);
+        }
+        if (fromWorker) {
+            doc.analysis = std::move(fromWorker);
+        } else {
+            doc.analysis = analyze(doc.path, doc.text, options_.analysis, includes_);
+        }
         doc.analysisVersion = doc.version;
     }
     return *doc.analysis;
@@ -353,15 +388,19 @@ json Server::dispatch(const std::string& method, const json& params) {
     Positions positions(a.file(), encoding_);
     auto offset = [&] { return positions.offset(member(params, "position")); };
 
-    if (feature == "semanticTokens/full") return encodeSemanticTokens(semanticTokens(a), positions);
+    if (feature == "semanticTokens/full") {
+        rawResult_ = encodeSemanticTokens(semanticTokens(a), positions);
+        return nullptr;
+    }
     if (feature == "semanticTokens/range") {
         const json& r = member(params, "range");
         SourceRange within{0, positions.offset(member(r, "start")), positions.offset(member(r, "end"))};
-        return encodeSemanticTokens(semanticTokens(a, within), positions);
+        rawResult_ = encodeSemanticTokens(semanticTokens(a, within), positions);
+        return nullptr;
     }
     if (feature == "hover") {
         std::optional<Published> last = published(doc.uri);
-        const GlobalValues* values = last && last->compilation ? &last->compilation->globalValues : nullptr;
+        const GlobalValues* values = last ? &last->values : nullptr;
         auto result = hover(a, offset(), values);
         return result ? toJson(*result, positions) : json(nullptr);
     }

@@ -44,8 +44,9 @@ private:
     /// What the diagnostics worker last published for a document.
     struct Published {
         int64_t version = -1;
-        std::shared_ptr<const lang::Compilation> compilation;
+        std::shared_ptr<const Analysis> analysis; ///< the same, indexed (set a little later)
         std::vector<DocumentDiagnostic> diagnostics;
+        GlobalValues values; ///< for hover
     };
 
     void readerLoop();
@@ -53,6 +54,8 @@ private:
     json dispatch(const std::string& method, const json& params);
     void notification(const std::string& method, const json& params);
     void reply(const json& id, json result);
+    /// A result already serialised (semantic tokens), set by dispatch instead of its value.
+    std::optional<std::string> rawResult_;
     void replyError(const json& id, ErrorCode code, const std::string& message);
     void send(const json& message);
 
@@ -60,7 +63,8 @@ private:
     void didOpen(const json& params);
     void didChange(const json& params);
     void didClose(const json& params);
-    void publish(const std::string& uri, int64_t version, std::shared_ptr<const lang::Compilation> compilation);
+    void publish(const std::string& uri, int64_t version, const lang::Compilation& compilation);
+    void ready(const std::string& uri, int64_t version, std::shared_ptr<const Analysis> analysis);
 
     Document& document(const json& params);
     const Analysis& analysisOf(Document& document);
@@ -78,6 +82,7 @@ private:
     std::unique_ptr<DiagnosticsWorker> worker_;
 
     std::mutex publishedMutex_;
+    std::condition_variable analysisReady_;
     std::map<std::string, Published> published_;
 
     // Messages read by the reader thread, handled in order by the main thread.

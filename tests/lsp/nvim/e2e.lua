@@ -12,15 +12,22 @@ local function step(name)
   io.stdout:write("nvim e2e: " .. name .. "\n")
 end
 
+-- The editors/nvim glue: filetype detection, syntax and the client setup.
+vim.opt.runtimepath:append(os.getenv("CRT_EDITORS_NVIM"))
+vim.cmd("runtime! ftdetect/crt.vim")
+require("crt_lsp").setup({ cmd = { lsp_path } })
 vim.cmd("edit " .. file)
 local buf = vim.api.nvim_get_current_buf()
-local client_id = vim.lsp.start_client({
-  name = "crt-lsp",
-  cmd = { lsp_path },
-  root_dir = vim.fn.fnamemodify(file, ":h"),
-})
-if not client_id then fail("could not start crt-lsp") end
-vim.lsp.buf_attach_client(buf, client_id)
+if vim.bo[buf].filetype ~= "crt" then fail("filetype is '" .. vim.bo[buf].filetype .. "', not crt") end
+if vim.bo[buf].commentstring ~= "-- %s" then fail("ftplugin not loaded: " .. vim.bo[buf].commentstring) end
+local client_id
+vim.wait(5000, function()
+  for _, client in pairs(vim.lsp.buf_get_clients(buf)) do
+    if client.name == "crt-lsp" then client_id = client.id end
+  end
+  return client_id ~= nil
+end, 20)
+if not client_id then fail("crt-lsp did not attach to the buffer") end
 
 local function request(method, params)
   local responses, err = vim.lsp.buf_request_sync(buf, method, params, 10000)

@@ -23,5 +23,5 @@ Scene { ball }
 CRT
 cd "$work"
 HOME="$work/home" XDG_CACHE_HOME="$work/cache" XDG_STATE_HOME="$work/state" XDG_DATA_HOME="$work/data" \
-CRT_LSP="$lsp" CRT_FILE="$work/scene.crt" \
+CRT_LSP="$lsp" CRT_FILE="$work/scene.crt" CRT_EDITORS_NVIM="$here/../../../editors/nvim" \
     timeout 90 nvim --headless --clean -n -c "luafile $here/e2e.lua"

@@ -127,6 +127,9 @@ TEST_CASE("include file names", "[completion]") {
     auto inString = completeAt("include \"ma@\"");
     CHECK(has(inString, "materials.crt"));
     CHECK(item(inString, "materials.crt").insertText == "materials.crt");
+    auto unterminated = completeAt("x = 1\ninclude \"sha@");
+    CHECK(has(unterminated, "shapes.crt"));
+    CHECK(item(unterminated, "shapes.crt").insertText == "shapes.crt");
 }
 
 TEST_CASE("modifiers after '<'", "[completion]") {

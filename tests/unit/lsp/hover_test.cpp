@@ -76,6 +76,21 @@ TEST_CASE("hover works on a broken script", "[hover]") {
     CHECK_THAT(h->markdown, Contains("size: int"));
 }
 
+TEST_CASE("hover on an attribute of an object the parser dropped", "[hover]") {
+    Annotations code("Scene { Box { cor@nerA -> vec3(0, 0, 0) cornerB -> ) } }\nSettings { wid@th -> ( }\nx = Cone { ba@se -> vec3(0, 0, 0) top -> \n");
+    auto a = analyzeCode(code.code);
+    REQUIRE(a->syntaxErrors);
+    auto h = hover(*a, code.points()[0], nullptr);
+    REQUIRE(h);
+    CHECK_THAT(h->markdown, Contains("Box.cornerA: vec3"));
+    auto w = hover(*a, code.points()[1], nullptr);
+    REQUIRE(w);
+    CHECK_THAT(w->markdown, Contains("Settings.width: int"));
+    auto b = hover(*a, code.points()[2], nullptr);
+    REQUIRE(b);
+    CHECK_THAT(b->markdown, Contains("Cone.base: vec3"));
+}
+
 TEST_CASE("hover on nothing is empty", "[hover]") {
     Annotations code("x = 1   @\n-- comm@ent");
     auto a = analyzeCode(code.code);

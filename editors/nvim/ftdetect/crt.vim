@@ -1,0 +1,2 @@
+" CRT scene scripts: *.crt
+autocmd BufRead,BufNewFile *.crt setfiletype crt
