@@ -80,10 +80,9 @@ struct QueryScratch {
     std::vector<int32_t> stack;
 };
 
+/// Built by buildRenderScene; read-only while rendering, shared by every thread.
 class RenderScene {
 public:
-    /// Builds from the evaluated scene; meshes come already read (`meshes[i]` for the
-    /// i-th MeshShape entity encountered, see buildRenderScene).
     std::vector<Primitive> primitives;
     std::vector<TransformPair> transforms;
     std::vector<CsgTreeNode> csgNodes;
