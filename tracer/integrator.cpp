@@ -10,6 +10,7 @@ struct Integrator::ShadingPoint {
     SurfaceInteraction si;
     const MaterialDesc* material;
     Vec3 color;        ///< C: the material colour or its texture
+    Vec3 tint;         ///< K: C for metallic materials, else white
     Vec3 n;            ///< shading normal, facing the incoming ray
     Vec3 facingNormal; ///< geometric normal, facing the incoming ray
     Vec3 v;            ///< unit direction back along the incoming ray
@@ -62,6 +63,7 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
     sp.facingNormal = entering ? sp.si.normal : -sp.si.normal;
     sp.n = glm::dot(sp.si.shadingNormal, sp.v) < 0 ? -sp.si.shadingNormal : sp.si.shadingNormal;
     sp.color = m.texture >= 0 ? textures_[m.texture].color(sp.si.objectPoint, sp.si.uv) : rgb(m.color);
+    sp.tint = m.metallic ? sp.color : Vec3(1.0);
     if (m.bump >= 0) {
         // Perturb the normal by the height field's gradient (finite differences in object space).
         const Texture& bump = textures_[m.bump];
@@ -80,7 +82,6 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
     if (depth <= 0) return c;
 
     double kr = m.reflectivity, kt = m.transparency;
-    Vec3 K = m.metallic ? sp.color : Vec3(1.0);
     Vec3 refracted(0.0);
     bool refracts = false;
     if (kt > 0) {
@@ -104,7 +105,7 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
             }
         }
     }
-    if (kr > 0) c += kr * K * reflect(sp, depth, medium, context);
+    if (kr > 0) c += kr * sp.tint * reflect(sp, depth, medium, context);
     if (kt > 0 && refracts) {
         Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, refracted), refracted};
         int32_t nextMedium = sp.si.solid ? (entering ? sp.si.material : -1) : medium;
@@ -118,7 +119,6 @@ Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) cons
     const MaterialDesc& m = *sp.material;
     Vec3 c(0.0);
     Vec3 diffuseColor = sp.color * m.diffuse;
-    Vec3 K = m.metallic ? sp.color : Vec3(1.0);
     for (const Light& light : lights_) {
         c += light.ambient() * light.color() * diffuseColor;
         if (m.diffuse <= 0 && m.specular <= 0) continue;
@@ -141,7 +141,7 @@ Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) cons
             if (m.specular > 0) {
                 Vec3 r = 2 * nDotL * sp.n - ls.toLight;
                 double rv = std::max(0.0, glm::dot(r, sp.v));
-                term += K * m.specular * std::pow(rv, m.shininess);
+                term += sp.tint * m.specular * std::pow(rv, m.shininess);
             }
             c += visible * falloff * ls.color * term;
         }
