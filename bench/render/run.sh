@@ -24,6 +24,8 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+# shellcheck source=../common.sh
+source "$here/../common.sh"
 root=$(cd "$here/../.." && pwd)
 
 usage() { sed -n '2,23p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
@@ -88,43 +90,10 @@ if ! command -v oiiotool >/dev/null; then
     exit 2
 fi
 
-have_crtc=1
-if [[ ! -f $crtc ]]; then
-    have_crtc=0
-    echo "$0: crtc not found at '$crtc'." >&2
-    echo "    Build it first (cmake --build build --target crtc) or pass its path:" >&2
-    echo "    $0 path/to/crtc   or   CRTC=path/to/crtc $0" >&2
-    echo "    Measuring the POV-Ray side only; the crtc columns will read 'missing'." >&2
-elif [[ ! -x $crtc ]]; then
-    echo "$0: '$crtc' exists but is not executable" >&2
-    exit 2
-fi
-
-# Output folder: images, logs, and a private HOME for POV-Ray (so it reads no
-# user povray.ini and does not warn about a missing user povray.conf).
-if [[ -n ${BENCH_OUT:-} ]]; then
-    out=$BENCH_OUT
-    mkdir -p "$out"
-    out=$(cd "$out" && pwd)
-    keep_hint=
-else
-    out=$(mktemp -d "${TMPDIR:-/tmp}/crt-bench-render.XXXXXX")
-    trap 'rm -rf "$out"' EXIT
-    keep_hint=" (removed at exit; set BENCH_OUT to keep it)"
-fi
-logs=$out/logs
-povhome=$out/povray-home
-mkdir -p "$logs" "$povhome/.povray/3.7"
-: >"$povhome/.povray/3.7/povray.conf"
+bench_check_crtc
+bench_output_folder render
 
 # ---------------------------------------------------------------------------
-
-now_ns() { date +%s%N; }
-
-# median of the numbers given as arguments (lower middle for an even count)
-median() {
-    printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'
-}
 
 # seconds between two nanosecond stamps
 elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", (b - a) / 1e9 }'; }

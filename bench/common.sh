@@ -1,0 +1,44 @@
+# Shared by the benchmark scripts against POV-Ray (sourced, not run): the crtc check,
+# the output folder with a private POV-Ray HOME, and timing helpers.
+#   bench_check_crtc            sets have_crtc (0: measure POV-Ray only); exits 2 if unusable
+#   bench_output_folder NAME    sets out, logs, povhome and keep_hint
+
+bench_check_crtc() {
+    have_crtc=1
+    if [[ ! -f $crtc ]]; then
+        have_crtc=0
+        echo "$0: crtc not found at '$crtc'." >&2
+        echo "    Build it first (cmake --build build --target crtc) or pass its path:" >&2
+        echo "    $0 path/to/crtc   or   CRTC=path/to/crtc $0" >&2
+        echo "    Measuring the POV-Ray side only; the crtc columns will read 'missing'." >&2
+    elif [[ ! -x $crtc ]]; then
+        echo "$0: '$crtc' exists but is not executable" >&2
+        exit 2
+    fi
+}
+
+# Output folder: images or generated files, logs, and a private HOME for POV-Ray (so it
+# reads no user povray.ini and does not warn about a missing user povray.conf).
+bench_output_folder() {
+    if [[ -n ${BENCH_OUT:-} ]]; then
+        out=$BENCH_OUT
+        mkdir -p "$out"
+        out=$(cd "$out" && pwd)
+        keep_hint=
+    else
+        out=$(mktemp -d "${TMPDIR:-/tmp}/crt-bench-$1.XXXXXX")
+        trap 'rm -rf "$out"' EXIT
+        keep_hint=" (removed at exit; set BENCH_OUT to keep it)"
+    fi
+    logs=$out/logs
+    povhome=$out/povray-home
+    mkdir -p "$logs" "$povhome/.povray/3.7"
+    : >"$povhome/.povray/3.7/povray.conf"
+}
+
+now_ns() { date +%s%N; }
+
+# median of the numbers given as arguments (lower middle for an even count)
+median() {
+    printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'
+}
