@@ -40,6 +40,23 @@ inline LD length(LVec a) {
     return std::sqrt(dot(a, a));
 }
 
+/// The parameter where g changes sign in [lo, hi] (g(lo) = glo, g(hi) of the other sign),
+/// by bisection in long double down to adjacent representable values.
+template <typename G> LD bisectSignChange(const G& g, LD lo, LD hi, LD glo) {
+    for (int i = 0; i < 200; ++i) {
+        LD mid = 0.5L * (lo + hi);
+        if (mid == lo || mid == hi) break;
+        LD gm = g(mid);
+        if ((gm < 0) == (glo < 0)) {
+            lo = mid;
+            glo = gm;
+        } else {
+            hi = mid;
+        }
+    }
+    return 0.5L * (lo + hi);
+}
+
 /// A signed function of a point that vanishes exactly on one surface (in long double).
 using SurfaceFn = std::function<LD(const LVec&)>;
 
@@ -59,18 +76,7 @@ inline bool exactHit(const Ray& ray, const SurfaceFn& f, double t, LVec& hit) {
         ghi = g(hi);
     }
     if ((glo < 0) == (ghi < 0)) return false;
-    for (int i = 0; i < 200; ++i) {
-        LD mid = 0.5L * (lo + hi);
-        if (mid == lo || mid == hi) break;
-        LD gm = g(mid);
-        if ((gm < 0) == (glo < 0)) {
-            lo = mid;
-            glo = gm;
-        } else {
-            hi = mid;
-        }
-    }
-    hit = o + (0.5L * (lo + hi)) * d;
+    hit = o + bisectSignChange(g, lo, hi, glo) * d;
     return true;
 }
 

@@ -34,19 +34,7 @@ struct ExactTorus {
         for (int i = 1; i <= n; ++i) {
             LD t = tc - half + 2 * half * i / n, gt = g(t);
             if ((gt < 0) != (prevG < 0)) {
-                LD lo = prevT, hi = t, glo = prevG;
-                for (int k = 0; k < 200; ++k) {
-                    LD mid = 0.5L * (lo + hi);
-                    if (mid == lo || mid == hi) break;
-                    LD gm = g(mid);
-                    if ((gm < 0) == (glo < 0)) {
-                        lo = mid;
-                        glo = gm;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                out.push_back(0.5L * (lo + hi));
+                out.push_back(bisectSignChange(g, prevT, t, prevG));
             }
             prevT = t;
             prevG = gt;
