@@ -107,10 +107,9 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
     for (const LightDesc& l : desc.lights) lights.emplace_back(l, s.shadowSamples);
     std::vector<Texture> textures;
     for (const TextureDesc& t : desc.textures)
-        textures.emplace_back(t, images.find(t.resolvedFile.empty() ? t.file : t.resolvedFile));
-    Background background(desc.background, images.find(desc.background.resolvedImage.empty()
-                                                           ? desc.background.image
-                                                           : desc.background.resolvedImage));
+        textures.emplace_back(t, images.find(fileToOpen(t.resolvedFile, t.file)));
+    Background background(desc.background,
+                          images.find(fileToOpen(desc.background.resolvedImage, desc.background.image)));
     Integrator integrator(*scene, s, std::move(lights), background, std::move(textures));
     Camera camera(desc.camera, s.width, s.height, s.dofSamples);
     PixelSampler sampler(integrator, camera, s);

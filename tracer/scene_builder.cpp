@@ -78,7 +78,7 @@ private:
     }
 
     bool addMesh(const MeshShape& mesh, const EntityDesc& e, const Transform& toWorld) {
-        std::string path = mesh.resolvedFile.empty() ? mesh.file : mesh.resolvedFile;
+        const std::string& path = fileToOpen(mesh.resolvedFile, mesh.file);
         auto cached = meshes_.find(path);
         if (cached == meshes_.end()) {
             std::optional<MeshData> data = readObj(path, error_);

@@ -178,6 +178,12 @@ struct SettingsDesc {
     Color ambient{0, 0, 0, 1};
 };
 
+/// The file to open for an image or mesh: where the front end found it, else the name as
+/// written (then opening it reports the missing file).
+inline const std::string& fileToOpen(const std::string& resolved, const std::string& written) {
+    return resolved.empty() ? written : resolved;
+}
+
 /// The evaluated scene.
 struct SceneDesc {
     static constexpr int kSchemaVersion = 1;

@@ -27,15 +27,12 @@ bool load(const std::string& path, bool decodeSrgb, SceneImages& images, std::st
 
 bool loadSceneImages(const SceneDesc& desc, SceneImages& images, std::string& error) {
     bool decodeSrgb = desc.settings.gamma != 1.0 || desc.settings.srgb;
-    auto pathOf = [](const std::string& resolved, const std::string& written) {
-        return resolved.empty() ? written : resolved;
-    };
     if (desc.background.kind == BackgroundKind::Image &&
-        !load(pathOf(desc.background.resolvedImage, desc.background.image), decodeSrgb, images, error))
+        !load(fileToOpen(desc.background.resolvedImage, desc.background.image), decodeSrgb, images, error))
         return false;
     for (const TextureDesc& t : desc.textures) {
         if ((t.kind == TextureKind::Image || t.kind == TextureKind::ImageBump) &&
-            !load(pathOf(t.resolvedFile, t.file), decodeSrgb && t.kind == TextureKind::Image, images, error))
+            !load(fileToOpen(t.resolvedFile, t.file), decodeSrgb && t.kind == TextureKind::Image, images, error))
             return false;
     }
     return true;
