@@ -26,6 +26,8 @@ options:
   --width N, --height N  override the script's image size
   --threads N          render threads (default: all cores)
   --fps F              frames per second of an animated GIF (default 15)
+  --png-compression N  zlib level of PNG output, 0 (fastest) to 9 (smallest);
+                       default 2
   --stats              print ray and acceleration-structure counts after rendering
   -I DIR               add DIR to the include search path (repeatable)
   --assets DIR         asset root for "/..." image and mesh paths (repeatable)
@@ -119,6 +121,8 @@ ParsedOptions parseOptions(int argc, char** argv) {
             if (!value(v) || !parseNumber(v, o.threads) || o.threads < 1) return bad("--threads needs a positive integer");
         } else if (arg == "--fps") {
             if (!value(v) || !parseNumber(v, o.fps) || !(o.fps > 0) || o.fps > 100) return bad("--fps needs a number in (0, 100]");
+        } else if (arg == "--png-compression") {
+            if (!value(v) || !parseNumber(v, o.pngCompression) || o.pngCompression < 0 || o.pngCompression > 9) return bad("--png-compression needs an integer from 0 to 9");
         } else if (arg == "--stats") {
             o.stats = true;
         } else if (arg == "--seed") {

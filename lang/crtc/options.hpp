@@ -26,6 +26,7 @@ struct Options {
     int height = 0;    ///< --height; 0: the script's
     int threads = 0;   ///< --threads; 0: all cores
     double fps = 15;   ///< --fps of an animated GIF
+    int pngCompression = -1; ///< --png-compression 0-9; -1: the image writer's default
     bool stats = false; ///< --stats
 };
 

@@ -134,6 +134,7 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
     tracer::RenderOutcome total;
     uint64_t cachedFrames = 0;
     image_io::WriteOptions write;
+    if (options.pngCompression >= 0) write.pngCompression = options.pngCompression;
     auto start = std::chrono::steady_clock::now();
     int width = 0, height = 0;
     uint64_t samples = 0;

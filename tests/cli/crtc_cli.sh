@@ -172,6 +172,14 @@ if [ -s "$work/out" ] || [ -s "$work/err" ]; then
 fi
 expect_status 0 "--width/--height" "$crtc" -q --width 40 --height 30 -o "$work/images/sized.png" "$work/scenes/tiny.crt"
 expect_info "$work/images/sized.png" "40 x +30" "--width 40 --height 30 sizes the image"
+expect_status 0 "--png-compression 0" "$crtc" -q --png-compression 0 -o "$work/images/raw.png" "$work/scenes/tiny.crt"
+expect_status 0 "--png-compression 9" "$crtc" -q --png-compression 9 -o "$work/images/small.png" "$work/scenes/tiny.crt"
+if [ "$(stat -c %s "$work/images/raw.png")" -le "$(stat -c %s "$work/images/small.png")" ]; then
+    echo "FAIL: --png-compression 0 did not write a bigger file than --png-compression 9"
+    failures=$((failures + 1))
+fi
+expect_status 2 "--png-compression 10" "$crtc" -q --png-compression 10 -o "$work/images/bad.png" "$work/scenes/tiny.crt"
+expect_text "$work/err" "--png-compression needs an integer from 0 to 9" "--png-compression range message"
 
 # A render far longer than the wait: Ctrl-C must exit 130 and leave no image (nor a temporary).
 cat >"$work/scenes/heavy.crt" <<'CRT'

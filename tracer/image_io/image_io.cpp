@@ -107,6 +107,10 @@ bool checkOptions(const WriteOptions& options, std::string& problem) {
         problem = "gamma must be a positive number";
         return false;
     }
+    if (options.pngCompression < 0 || options.pngCompression > 9) {
+        problem = "the PNG compression level must be 0 to 9";
+        return false;
+    }
     return true;
 }
 
@@ -255,7 +259,8 @@ bool writeImage(const std::string& path, const ImageBuffer& image, const WriteOp
         const int ok =
             module->writeImage(temporary.c_str(), format->oiioName, image.width, image.height,
                                channels, format->eightBit ? 0 : 1, pixels,
-                               format->eightBit && options.srgb ? 1 : 0, storeError, &context);
+                               format->eightBit && options.srgb ? 1 : 0, options.pngCompression,
+                               storeError, &context);
         why = context.error;
         return ok != 0;
     });

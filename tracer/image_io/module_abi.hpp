@@ -11,7 +11,7 @@
 extern "C" {
 
 /// Raised whenever a function's signature or meaning changes; the host refuses other versions.
-inline constexpr int kCrtImageIoAbiVersion = 1;
+inline constexpr int kCrtImageIoAbiVersion = 2;
 
 /// The name of the module's one exported function.
 inline constexpr const char* kCrtImageIoEntryName = "crt_image_io_module";
@@ -43,9 +43,10 @@ struct CrtImageIoModule {
                      void* context);
     /// Writes one image in the OpenImageIO format `format` ("png", "openexr" …), whatever the
     /// file name; `pixels` holds `channels` uint8 values per pixel, or floats when `isFloat`.
+    /// `pngCompression` (0–9) is the zlib level of a PNG.
     int (*writeImage)(const char* path, const char* format, int width, int height, int channels,
-                      int isFloat, const void* pixels, int srgb, CrtImageErrorFn error,
-                      void* context);
+                      int isFloat, const void* pixels, int srgb, int pngCompression,
+                      CrtImageErrorFn error, void* context);
     /// Writes an animated GIF of `frameCount` frames of uint8 pixels, looping forever.
     int (*writeAnimatedGif)(const char* path, int width, int height, int channels, int frameCount,
                             const std::uint8_t* const* frames, int fpsNumerator, int fpsDenominator,

@@ -13,6 +13,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -21,6 +22,9 @@ using OIIO::ImageInput;
 using OIIO::ImageOutput;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
+
+// libpng's PNG_FILTER_SUB, which OpenImageIO's "png:filter" takes (png.h is not included here).
+constexpr int kPngFilterSub = 0x10;
 
 struct ErrorSink {
     CrtImageErrorFn fn;
@@ -112,7 +116,8 @@ bool writePixels(ImageOutput& out, TypeDesc type, const void* pixels, const Erro
 }
 
 int writeImage(const char* path, const char* format, int width, int height, int channels,
-               int isFloat, const void* pixels, int srgb, CrtImageErrorFn error, void* context) {
+               int isFloat, const void* pixels, int srgb, int pngCompression, CrtImageErrorFn error,
+               void* context) {
     const ErrorSink sink{error, context};
     try {
         // Created by format name, because the host writes to a temporary file whose name
@@ -125,6 +130,10 @@ int writeImage(const char* path, const char* format, int width, int height, int 
         // A fourth channel is straight alpha, stored as given: without this, PNG and TIFF
         // would take the colour as premultiplied and divide it by alpha.
         spec.attribute("oiio:UnassociatedAlpha", 1);
+        if (std::string_view(format) == "png") {
+            spec.attribute("png:compressionLevel", pngCompression);
+            spec.attribute("png:filter", kPngFilterSub);
+        }
         if (!out->open(path, spec)) return sink.fail(oiioError(out->geterror()));
         if (!writePixels(*out, type, pixels, sink)) return 0;
         if (!out->close()) return sink.fail(oiioError(out->geterror()));

@@ -427,3 +427,34 @@ TEST_CASE("concurrent writes and reads of different files", "[image_io]") {
     // Nothing but finished images in the directory: no temporary survived the races.
     for (const std::string& name : scratchListing()) CHECK(name.find(".tmp") == std::string::npos);
 }
+
+TEST_CASE("the PNG compression level trades size for time, never pixels", "[image_io]") {
+    // A smooth two-axis ramp with a little pattern: compressible, but not trivially.
+    ImageBuffer image{96, 64, 3, {}};
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            image.pixels.push_back(float(x) / float(image.width));
+            image.pixels.push_back(float(y) / float(image.height));
+            image.pixels.push_back(float((x * 7 + y * 3) % 11) / 10.0f);
+        }
+    std::string error;
+    std::vector<std::uintmax_t> sizes;
+    std::optional<ImageBuffer> first;
+    for (int level : {0, 2, 9}) {
+        const std::string path = scratchFile("level" + std::to_string(level) + ".png");
+        WriteOptions options;
+        options.pngCompression = level;
+        REQUIRE(writeImage(path, image, options, error));
+        sizes.push_back(fs::file_size(path));
+        ImageBuffer back = readOrFail(path);
+        if (!first) first = back;
+        CHECK(back.pixels == first->pixels);
+    }
+    CHECK(sizes[0] > sizes[1]);
+    CHECK(sizes[1] > sizes[2]);
+
+    WriteOptions tooHigh;
+    tooHigh.pngCompression = 10;
+    CHECK_FALSE(writeImage(scratchFile("level10.png"), image, tooHigh, error));
+    CHECK_THAT(error, Catch::Contains("compression level must be 0 to 9"));
+}
