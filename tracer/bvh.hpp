@@ -5,19 +5,11 @@
 #include "tracer/stats.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
 namespace crt::tracer {
-
-/// A node: a leaf holds items[offset .. offset+count); an interior node's first child
-/// follows it directly and its second child is nodes[offset].
-struct BvhNode {
-    double faces[6]; ///< the box: lo.x, lo.y, lo.z, hi.x, hi.y, hi.z (indexed by BoxRay)
-    int32_t offset = 0;
-    uint16_t count = 0;
-    uint8_t axis = 0;
-};
 
 /// A ray prepared for box tests: the reciprocal direction, and for each axis which face of a
 /// box the ray meets first, so the slab test needs no branch on the direction.
@@ -67,6 +59,69 @@ struct BoxRay {
     }
 };
 
+/// Four float lanes; GCC and Clang compile the arithmetic to one SSE instruction each.
+using Float4 = float __attribute__((vector_size(16)));
+using Int4 = int32_t __attribute__((vector_size(16)));
+
+/// Bit i set when lane i of a comparison result is true.
+inline int laneMask(Int4 lanes) {
+#if defined(__SSE__)
+    return __builtin_ia32_movmskps(reinterpret_cast<Float4>(lanes));
+#else
+    return (lanes[0] & 1) | (lanes[1] & 2) | (lanes[2] & 4) | (lanes[3] & 8);
+#endif
+}
+
+/// A node of the 4-wide BVH: the boxes of up to four children side by side, axis by axis,
+/// so that one ray is tested against all four at once. Boxes are the double-precision
+/// bounds rounded outwards to float; an unused slot has an empty box (lo > hi) that no ray
+/// hits. A child >= 0 is a node; a leaf is ~first with items[first .. first + count).
+struct alignas(16) WideBvhNode {
+    Float4 faces[6]; ///< lo.x, lo.y, lo.z, hi.x, hi.y, hi.z of the four boxes
+    int32_t child[4];
+    uint16_t count[4];
+    uint32_t used; ///< slots holding a child
+};
+
+/// A ray prepared for four-box tests in float. The ray origin is rounded to float with a
+/// margin on the safe side of each slab (shifted forwards for the near faces, backwards for
+/// the far ones), so no box the double-precision ray meets is ever missed; the rounding of
+/// the float arithmetic itself is covered by widening the exit distance, as in pbrt-v4.
+struct WideRay {
+    Float4 nearOrigin[3], farOrigin[3], invDir[3];
+    int nearFace[3]; ///< index into WideBvhNode::faces: `hi` when the ray runs towards -axis
+    int farFace[3];
+
+    explicit WideRay(const Ray& ray);
+
+    /// Entry distances of the four boxes; returns the mask of boxes the segment (0, tMax)
+    /// meets (bit i for slot i).
+    int hits(const WideBvhNode& node, double tMax, Float4& entry) const {
+        const float limit = widenedLimit(tMax);
+        Float4 enter = {0, 0, 0, 0};
+        Float4 exit = {limit, limit, limit, limit};
+        for (int axis = 0; axis < 3; ++axis) {
+            Float4 tNear = (node.faces[nearFace[axis]] - nearOrigin[axis]) * invDir[axis];
+            Float4 tFar = (node.faces[farFace[axis]] - farOrigin[axis]) * invDir[axis];
+            // A NaN (0 · ∞: the ray lies in a face plane) fails the comparison and leaves the
+            // running value alone, which keeps the test conservative.
+            enter = tNear > enter ? tNear : enter;
+            exit = tFar < exit ? tFar : exit;
+        }
+        entry = enter;
+        return laneMask(enter <= exit * kWiden);
+    }
+
+    /// A float at least as large as tMax and as any float distance computed for a true
+    /// distance below it: 2·γ(3) of float arithmetic above tMax.
+    static float widenedLimit(double tMax) {
+        return tMax < std::numeric_limits<float>::max() ? float(tMax) * kWiden
+                                                        : std::numeric_limits<float>::infinity();
+    }
+
+    static constexpr float kWiden = 1 + 2 * 3 * std::numeric_limits<float>::epsilon();
+};
+
 class Bvh {
 public:
     /// Builds over items 0..n-1 with the given (finite) bounds.
@@ -82,66 +137,98 @@ public:
     template <typename Visit>
     bool traverse(const Ray& ray, const double& tMax, RayStats& stats, Visit&& visit) const {
         if (nodes_.empty()) return true;
-        BoxRay boxRay(ray);
-        uint64_t visited = 1; // counted locally: the stats live in memory
-        if (!boxRay.hits(nodes_[0].faces, 0.0, tMax)) {
-            stats.nodesVisited += visited;
+        if (!fewItemBounds_.empty()) {
+            // A handful of items: their boxes one by one in double precision, which is
+            // cheaper than preparing a ray for four-wide float tests.
+            const BoxRay boxRay(ray);
+            stats.nodesVisited += fewItemBounds_.size();
+            for (size_t i = 0; i < fewItemBounds_.size(); ++i)
+                if (boxRay.hits(fewItemBounds_[i].faces, 0.0, tMax) && !visit(items_[i])) return false;
             return true;
         }
-        // Children are tested from their parent; the nearer one (by entry distance) is
-        // visited first and the farther one waits on the stack, rechecked against the
-        // then-current tMax when popped.
+        return traverseWide(ray, tMax, stats, visit);
+    }
+
+    /// Up to this many items, traversal tests each item's box (fewItemBounds_).
+    static constexpr size_t kFewItems = 4;
+
+private:
+    /// The deepest the wide tree may be: a branch of the binary build up to 56 deep
+    /// collapses to at most that many wide levels, and each level pushes at most 3.
+    static constexpr int kMaxWideDepth = 64;
+
+    // Kept out of line so that the few-items path does not pay for its stack frame.
+    template <typename Visit>
+    [[gnu::noinline]] bool traverseWide(const Ray& ray, const double& tMax, RayStats& stats,
+                                        Visit& visit) const {
+        const WideRay wideRay(ray);
+        uint64_t tested = 0; // counted locally: the stats live in memory
+        // Children met are taken nearest first; the others wait on the stack with their
+        // entry distance and are dropped when popped if a nearer hit was found meanwhile.
         struct Pending {
-            int32_t node;
-            double entry;
+            int32_t child;
+            uint32_t count;
+            float entry;
         };
-        Pending stack[64];
+        Pending stack[3 * kMaxWideDepth + 4];
         int top = 0;
-        int32_t current = 0;
+        Pending current{0, 0, 0};
         while (true) {
-            const BvhNode& node = nodes_[current];
-            if (node.count > 0) {
-                for (int i = 0; i < node.count; ++i) {
-                    if (!visit(items_[node.offset + i])) {
-                        stats.nodesVisited += visited;
+            if (current.child < 0) {
+                const int32_t first = ~current.child;
+                for (uint32_t i = 0; i < current.count; ++i) {
+                    if (!visit(items_[first + int32_t(i)])) {
+                        stats.nodesVisited += tested;
                         return false;
                     }
                 }
             } else {
-                int32_t first = current + 1, second = node.offset;
-                double firstEntry = 0, secondEntry = 0;
-                visited += 2;
-                bool hitFirst = boxRay.hits(nodes_[first].faces, 0.0, tMax, firstEntry);
-                bool hitSecond = boxRay.hits(nodes_[second].faces, 0.0, tMax, secondEntry);
-                if (hitFirst && hitSecond) {
-                    if (secondEntry < firstEntry) {
-                        std::swap(first, second);
-                        std::swap(firstEntry, secondEntry);
-                    }
-                    stack[top++] = {second, secondEntry};
-                    current = first;
+                const WideBvhNode& node = nodes_[current.child];
+                tested += node.used;
+                Float4 entry;
+                int met = wideRay.hits(node, tMax, entry);
+                if (met != 0 && (met & (met - 1)) == 0) { // one child: no ordering
+                    const int slot = __builtin_ctz(static_cast<unsigned>(met));
+                    current = {node.child[slot], node.count[slot], entry[slot]};
                     continue;
                 }
-                if (hitFirst || hitSecond) {
-                    current = hitFirst ? first : second;
+                if (met != 0) {
+                    // Order the children met by entry distance (at most four: insertion sort).
+                    Pending order[4];
+                    int n = 0;
+                    for (int slot = 0; slot < 4; ++slot) {
+                        if (!(met & (1 << slot))) continue;
+                        Pending p{node.child[slot], node.count[slot], entry[slot]};
+                        int at = n++;
+                        while (at > 0 && order[at - 1].entry > p.entry) {
+                            order[at] = order[at - 1];
+                            --at;
+                        }
+                        order[at] = p;
+                    }
+                    for (int i = n - 1; i > 0; --i) stack[top++] = order[i];
+                    current = order[0];
                     continue;
                 }
             }
             // Next: the nearest pending subtree still in front of the nearest hit so far.
             do {
                 if (top == 0) {
-                    stats.nodesVisited += visited;
+                    stats.nodesVisited += tested;
                     return true;
                 }
                 --top;
-            } while (stack[top].entry >= tMax);
-            current = stack[top].node;
+            } while (stack[top].entry > WideRay::widenedLimit(tMax));
+            current = stack[top];
         }
     }
 
-private:
-    std::vector<BvhNode> nodes_;
+    std::vector<WideBvhNode> nodes_;
     std::vector<int32_t> items_;
+    struct BoxFaces {
+        double faces[6]; ///< as BoxRay indexes them
+    };
+    std::vector<BoxFaces> fewItemBounds_; ///< with at most kFewItems items, theirs in order
     int depth_ = 0;
 };
 
