@@ -50,6 +50,9 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const Ray& ray, const BoxRay& 
     size_t leftStart = out.size();
     bool inLeft = csgCrossings(node.left, ray, boxRay, scratch, stats);
     size_t rightStart = out.size();
+    // A difference or intersection whose left operand the line never enters is empty on
+    // it: the right operand need not be asked (a carving tool the ray only meets outside).
+    if (node.kind != CsgNodeKind::Union && rightStart == leftStart && !inLeft) return false;
     bool inRight = csgCrossings(node.right, ray, boxRay, scratch, stats);
     size_t rightEnd = out.size();
     bool state = insideOf(node.kind, inLeft, inRight);
@@ -89,6 +92,14 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const Ray& ray, const BoxRay& 
     return startsInside;
 }
 
+bool RenderScene::csgMayCross(int32_t root, const BoxRay& boxRay, double tMax) const {
+    // In double precision and on (0, tMax), unlike the BVH's outward-rounded float boxes:
+    // a ray leaving the surface of a CSG object whose face lies on its bounds (a box with
+    // holes) is not sent through the whole tree again.
+    const Bounds3& bounds = csgNodes[root].bounds;
+    return !bounds.finite() || boxRay.hits(bounds, 0.0, tMax);
+}
+
 bool RenderScene::nearestInObject(int32_t object, const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch,
                                   RayStats& stats) const {
     if (object >= 0) {
@@ -101,8 +112,10 @@ bool RenderScene::nearestInObject(int32_t object, const Ray& ray, double tMax, H
         hit = {c.t, object, c, false};
         return true;
     }
+    const BoxRay boxRay(ray);
+    if (!csgMayCross(~object, boxRay, tMax)) return false;
     size_t start = scratch.csg.size();
-    csgCrossings(~object, ray, BoxRay(ray), scratch, stats);
+    csgCrossings(~object, ray, boxRay, scratch, stats);
     bool found = false;
     for (size_t i = start; i < scratch.csg.size(); ++i) {
         const CsgCrossing& c = scratch.csg[i];

@@ -110,6 +110,8 @@ private:
     template <typename Visit>
     bool crossingsInObject(int32_t object, const Ray& ray, double tMax, QueryScratch& scratch,
                            RayStats& stats, Visit& visit) const;
+    /// Whether the segment (0, tMax) can meet the CSG tree rooted at `root` (its bounds).
+    bool csgMayCross(int32_t root, const BoxRay& boxRay, double tMax) const;
     /// Appends the node's crossings of the whole line to scratch.csg from `start`; returns
     /// whether the line starts inside.
     bool csgCrossings(int32_t node, const Ray& ray, const BoxRay& boxRay, QueryScratch& scratch,

@@ -23,8 +23,10 @@ bool RenderScene::crossingsInObject(int32_t object, const Ray& ray, double tMax,
         }
         return true;
     }
+    const BoxRay boxRay(ray);
+    if (!csgMayCross(~object, boxRay, tMax)) return true;
     size_t start = scratch.csg.size();
-    csgCrossings(~object, ray, BoxRay(ray), scratch, stats);
+    csgCrossings(~object, ray, boxRay, scratch, stats);
     bool keepGoing = true;
     for (size_t i = start; i < scratch.csg.size() && keepGoing; ++i) {
         const CsgCrossing& c = scratch.csg[i];
