@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <mutex>
 #include <thread>
 
 namespace crt::tracer {
@@ -93,6 +94,36 @@ private:
     int dofSamples_;
 };
 
+/// Reports bands of rows as they become final: a tile row is final when all its tiles are,
+/// and bands go out in order, so a finished row waits for the rows above it.
+class FinishedRows {
+public:
+    using Report = std::function<void(int yBegin, int yEnd, std::span<const float> rgb)>;
+
+    FinishedRows(const PixelBuffer& frame, int tilesX, int tilesY, const Report& report)
+        : frame_(frame), report_(report), tilesLeft_(static_cast<size_t>(tilesY), tilesX) {}
+
+    void tileDone(int tileRow) {
+        if (!report_) return;
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (--tilesLeft_[static_cast<size_t>(tileRow)] > 0) return;
+        while (nextRow_ < static_cast<int>(tilesLeft_.size()) && tilesLeft_[static_cast<size_t>(nextRow_)] == 0) {
+            const int yBegin = nextRow_ * kTileSize, yEnd = std::min(yBegin + kTileSize, frame_.height);
+            const size_t rowValues = static_cast<size_t>(frame_.width) * 3;
+            report_(yBegin, yEnd,
+                    std::span<const float>(frame_.rgb.data() + yBegin * rowValues, (yEnd - yBegin) * rowValues));
+            ++nextRow_;
+        }
+    }
+
+private:
+    const PixelBuffer& frame_;
+    const Report& report_;
+    std::mutex mutex_;
+    std::vector<int> tilesLeft_; ///< per tile row
+    int nextRow_ = 0;            ///< the first tile row not reported
+};
+
 } // namespace
 
 RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings) {
@@ -131,6 +162,7 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
                                                 : std::max(1u, std::thread::hardware_concurrency());
     threadCount = std::min<unsigned>(threadCount, static_cast<unsigned>(tileCount));
     std::vector<RayStats> stats(threadCount);
+    FinishedRows finishedRows(frame, tilesX, tilesY, settings.onRowsDone);
 
     auto worker = [&](unsigned index) {
         TraceContext context;
@@ -149,6 +181,7 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
                 }
             }
             doneTiles.fetch_add(1);
+            finishedRows.tileDone(tile / tilesX);
         }
         stats[index] = context.stats;
     };

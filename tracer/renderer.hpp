@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,10 @@ struct RenderSettings {
     const std::atomic<bool>* cancel = nullptr; ///< set (e.g. by SIGINT) to stop early
     /// Called from the calling thread about ten times a second with finished/total tiles.
     std::function<void(int done, int total)> onProgress;
+    /// Called with rows [yBegin, yEnd) of the image (RGB floats) as soon as they are final,
+    /// in order from the top, one call at a time, from a worker thread: it should only copy
+    /// them and hand them over (to an image file being written while the render goes on).
+    std::function<void(int yBegin, int yEnd, std::span<const float> rgb)> onRowsDone;
 };
 
 struct RenderOutcome {

@@ -2,6 +2,7 @@
 #include "render_command.hpp"
 
 #include "scene_json.hpp"
+#include "streamed_output.hpp"
 #include "tracer/image_io/image_io.hpp"
 #include "tracer/renderer.hpp"
 
@@ -12,6 +13,7 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <regex>
 #include <unistd.h>
 
@@ -156,6 +158,8 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
         height = scene.settings.height;
 
         image_io::ImageBuffer image;
+        const std::string target = numbered ? numberedOutput(output, frame) : output;
+        bool written = false; // streamed to `target` while rendering
         std::string key = frames > 1 ? sceneKey(scene) : std::string();
         if (frame > 0 && key == previousKey) {
             // Nothing the renderer sees changed since the previous frame: reuse its image.
@@ -167,6 +171,13 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
             settings.threads = options.threads;
             settings.cancel = &interrupted;
             settings.onProgress = [&](int done, int all) { progress.update(done, all); };
+            std::optional<StreamedOutput> streamed;
+            if (!gif) {
+                streamed.emplace(target, width, height, write);
+                settings.onRowsDone = [&](int yBegin, int yEnd, std::span<const float> rgb) {
+                    streamed->addRows(yBegin, yEnd, rgb);
+                };
+            }
             tracer::RenderOutcome r = tracer::renderScene(scene, settings);
             progress.finish();
             if (r.cancelled || interrupted.load()) {
@@ -177,6 +188,12 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
                 std::cerr << "crtc: " << r.error << "\n";
                 return 1;
             }
+            std::string error;
+            if (streamed && !streamed->finish(error)) {
+                std::cerr << "crtc: " << error << "\n";
+                return 2;
+            }
+            written = streamed.has_value();
             samples = r.samples;
             total.stats += r.stats;
             total.buildSeconds += r.buildSeconds;
@@ -188,14 +205,9 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
         }
         previousKey = std::move(key);
         std::string error;
-        if (numbered) {
-            if (!image_io::writeImage(numberedOutput(output, frame), image, write, error)) {
-                std::cerr << "crtc: " << error << "\n";
-                return 2;
-            }
-        } else if (gif) {
+        if (gif) {
             gifFrames.push_back(image);
-        } else if (!image_io::writeImage(output, image, write, error)) {
+        } else if (!written && !image_io::writeImage(target, image, write, error)) {
             std::cerr << "crtc: " << error << "\n";
             return 2;
         }

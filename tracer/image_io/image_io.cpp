@@ -55,7 +55,7 @@ std::string supportedExtensions() {
     return list;
 }
 
-std::string quoted(const std::string& path) {
+std::string quotedName(const std::string& path) {
     return "\"" + path + "\"";
 }
 
@@ -82,16 +82,20 @@ float* allocatePixels(void* context, int width, int height) {
     }
 }
 
+bool checkSize(int width, int height, int channels, std::string& problem) {
+    if (width < 1 || height < 1) {
+        problem = "the image is empty (" + std::to_string(width) + " x " + std::to_string(height) + ")";
+        return false;
+    }
+    if (channels != 1 && channels != 3 && channels != 4) {
+        problem = "an image needs 1, 3 or 4 channels, not " + std::to_string(channels);
+        return false;
+    }
+    return true;
+}
+
 bool checkBuffer(const ImageBuffer& image, std::string& problem) {
-    if (image.width < 1 || image.height < 1) {
-        problem = "the image is empty (" + std::to_string(image.width) + " x " +
-                  std::to_string(image.height) + ")";
-        return false;
-    }
-    if (image.channels != 1 && image.channels != 3 && image.channels != 4) {
-        problem = "an image needs 1, 3 or 4 channels, not " + std::to_string(image.channels);
-        return false;
-    }
+    if (!checkSize(image.width, image.height, image.channels, problem)) return false;
     const std::size_t expected =
         std::size_t(image.width) * std::size_t(image.height) * std::size_t(image.channels);
     if (image.pixels.size() != expected) {
@@ -115,10 +119,9 @@ bool checkOptions(const WriteOptions& options, std::string& problem) {
 }
 
 // GIF and HDR store only colour: a grey image becomes three equal channels.
-std::vector<float> expandGrey(const ImageBuffer& image) {
-    std::vector<float> rgb(image.pixels.size() * 3);
-    for (std::size_t i = 0; i < image.pixels.size(); ++i)
-        rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = image.pixels[i];
+std::vector<float> expandGrey(std::span<const float> grey) {
+    std::vector<float> rgb(grey.size() * 3);
+    for (std::size_t i = 0; i < grey.size(); ++i) rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = grey[i];
     return rgb;
 }
 
@@ -154,37 +157,51 @@ fs::path temporaryPathFor(const fs::path& target) {
     return target.parent_path() / name;
 }
 
-// Runs `write` on a temporary file and renames it over `path`; removes it on any failure.
-template <class Write>
-bool writeThroughTemporary(const std::string& path, std::string& error, Write&& write) {
+// Whether `path` can be written: its directory exists and it is not one.
+bool checkTarget(const std::string& path, std::string& error) {
     const fs::path target(path);
     const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) {
-        error = "cannot write " + quoted(path) + ": the directory " + quoted(dir.string()) +
+        error = "cannot write " + quotedName(path) + ": the directory " + quotedName(dir.string()) +
                 " does not exist";
         return false;
     }
     if (fs::is_directory(target, ec)) {
-        error = "cannot write " + quoted(path) + ": it is a directory";
-        return false;
-    }
-    const fs::path temporary = temporaryPathFor(target);
-    std::string problem;
-    if (!write(temporary.string(), problem)) {
-        fs::remove(temporary, ec);
-        // The module speaks of the file it was given; the caller knows only `path`.
-        error =
-            "cannot write " + quoted(path) + ": " + replaceAll(problem, temporary.string(), path);
-        return false;
-    }
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        error = "cannot write " + quoted(path) + ": " + ec.message();
+        error = "cannot write " + quotedName(path) + ": it is a directory";
         return false;
     }
     return true;
+}
+
+// The module speaks of the file it was given; the caller knows only `path`.
+std::string failureOf(const std::string& path, const std::string& temporary, const std::string& problem) {
+    return "cannot write " + quotedName(path) + ": " + replaceAll(problem, temporary, path);
+}
+
+// Renames the finished temporary over `path`; removes it if that fails.
+bool moveIntoPlace(const std::string& temporary, const std::string& path, std::string& error) {
+    std::error_code ec;
+    fs::rename(temporary, path, ec);
+    if (!ec) return true;
+    fs::remove(temporary, ec);
+    error = "cannot write " + quotedName(path) + ": " + ec.message();
+    return false;
+}
+
+// Runs `write` on a temporary file and renames it over `path`; removes it on any failure.
+template <class Write>
+bool writeThroughTemporary(const std::string& path, std::string& error, Write&& write) {
+    if (!checkTarget(path, error)) return false;
+    const std::string temporary = temporaryPathFor(fs::path(path)).string();
+    std::string problem;
+    if (!write(temporary, problem)) {
+        std::error_code ec;
+        fs::remove(temporary, ec);
+        error = failureOf(path, temporary, problem);
+        return false;
+    }
+    return moveIntoPlace(temporary, path, error);
 }
 
 // The module, or null with "<action>: <why it could not be loaded>" in `error`.
@@ -212,58 +229,126 @@ bool isSupportedOutput(const std::string& path) {
 std::optional<ImageBuffer> readImage(const std::string& path, std::string& error, bool* eightBit) {
     std::error_code ec;
     if (!fs::exists(path, ec)) {
-        error = "cannot read " + quoted(path) + ": no such file";
+        error = "cannot read " + quotedName(path) + ": no such file";
         return std::nullopt;
     }
-    const CrtImageIoModule* module = moduleFor("cannot read " + quoted(path), error);
+    const CrtImageIoModule* module = moduleFor("cannot read " + quotedName(path), error);
     if (!module) return std::nullopt;
     ImageBuffer image;
     CallContext context;
     context.image = &image;
     int isInteger = 0;
     if (!module->readImage(path.c_str(), &isInteger, allocatePixels, storeError, &context)) {
-        error = "cannot read " + quoted(path) + ": " + context.error;
+        error = "cannot read " + quotedName(path) + ": " + context.error;
         return std::nullopt;
     }
     if (eightBit) *eightBit = isInteger != 0;
     return image;
 }
 
-bool writeImage(const std::string& path, const ImageBuffer& image, const WriteOptions& options,
-                std::string& error) {
+std::unique_ptr<ImageStream> ImageStream::open(const std::string& path, int width, int height,
+                                               int channels, const WriteOptions& options,
+                                               std::string& error) {
     const OutputFormat* format = outputFormatOf(path);
     if (!format) {
-        error = "cannot write " + quoted(path) + ": unsupported image format \"" +
+        error = "cannot write " + quotedName(path) + ": unsupported image format \"" +
                 lowerExtension(path) + "\"; supported are " + supportedExtensions();
-        return false;
+        return nullptr;
     }
     std::string problem;
-    if (!checkBuffer(image, problem) || !checkOptions(options, problem)) {
-        error = "cannot write " + quoted(path) + ": " + problem;
+    if (!checkSize(width, height, channels, problem) || !checkOptions(options, problem)) {
+        error = "cannot write " + quotedName(path) + ": " + problem;
+        return nullptr;
+    }
+    if (!checkTarget(path, error)) return nullptr;
+    const CrtImageIoModule* module = moduleFor("cannot write " + quotedName(path), error);
+    if (!module) return nullptr;
+
+    std::unique_ptr<ImageStream> stream(new ImageStream());
+    stream->module_ = module;
+    stream->path_ = path;
+    stream->temporary_ = temporaryPathFor(fs::path(path)).string();
+    stream->width_ = width;
+    stream->height_ = height;
+    stream->channels_ = channels;
+    stream->expandGrey_ = format->needsRgb && channels == 1;
+    stream->eightBit_ = format->eightBit;
+    stream->options_ = options;
+    CallContext context;
+    stream->handle_ = module->openImage(stream->temporary_.c_str(), format->oiioName, width, height,
+                                        stream->expandGrey_ ? 3 : channels, format->eightBit ? 0 : 1,
+                                        format->eightBit && options.srgb ? 1 : 0,
+                                        options.pngCompression, storeError, &context);
+    if (!stream->handle_) {
+        error = failureOf(path, stream->temporary_, context.error);
+        return nullptr; // the destructor removes whatever the module created
+    }
+    return stream;
+}
+
+bool ImageStream::writeRows(int yBegin, int yEnd, std::span<const float> values, std::string& error) {
+    const std::size_t expected = std::size_t(yEnd - yBegin) * std::size_t(width_) * std::size_t(channels_);
+    if (!handle_ || yBegin != nextRow_ || yEnd <= yBegin || yEnd > height_ || values.size() != expected) {
+        error = "cannot write " + quotedName(path_) + ": rows " + std::to_string(yBegin) + " to " +
+                std::to_string(yEnd) + " do not follow row " + std::to_string(nextRow_) +
+                " with " + std::to_string(expected) + " values";
         return false;
     }
-    const CrtImageIoModule* module = moduleFor("cannot write " + quoted(path), error);
-    if (!module) return false;
-
-    const bool expand = format->needsRgb && image.channels == 1;
-    std::vector<float> expanded = expand ? expandGrey(image) : std::vector<float>{};
-    const std::span<const float> values = expand ? expanded : image.pixels;
-    const int channels = expand ? 3 : image.channels;
+    const int fileChannels = expandGrey_ ? 3 : channels_;
+    std::vector<float> expanded = expandGrey_ ? expandGrey(values) : std::vector<float>{};
+    const std::span<const float> stored = expandGrey_ ? expanded : values;
     std::vector<std::uint8_t> codes;
-    if (format->eightBit) codes = quantiseColour(values, channels, options);
-    const void* pixels = format->eightBit ? static_cast<const void*>(codes.data())
-                                          : static_cast<const void*>(values.data());
+    if (eightBit_) codes = quantiseColour(stored, fileChannels, options_);
+    const void* pixels = eightBit_ ? static_cast<const void*>(codes.data()) : static_cast<const void*>(stored.data());
+    CallContext context;
+    if (!module_->writeRows(handle_, yBegin, yEnd, pixels, storeError, &context)) {
+        error = failureOf(path_, temporary_, context.error);
+        return false;
+    }
+    nextRow_ = yEnd;
+    return true;
+}
 
-    return writeThroughTemporary(path, error, [&](const std::string& temporary, std::string& why) {
-        CallContext context;
-        const int ok =
-            module->writeImage(temporary.c_str(), format->oiioName, image.width, image.height,
-                               channels, format->eightBit ? 0 : 1, pixels,
-                               format->eightBit && options.srgb ? 1 : 0, options.pngCompression,
-                               storeError, &context);
-        why = context.error;
-        return ok != 0;
-    });
+bool ImageStream::finish(std::string& error) {
+    if (!handle_ || nextRow_ != height_) {
+        error = "cannot write " + quotedName(path_) + ": only " + std::to_string(nextRow_) + " of " +
+                std::to_string(height_) + " rows were written";
+        return false;
+    }
+    CallContext context;
+    const int closed = module_->closeImage(handle_, 0, storeError, &context);
+    handle_ = nullptr;
+    if (!closed) {
+        std::error_code ec;
+        fs::remove(temporary_, ec);
+        error = failureOf(path_, temporary_, context.error);
+        return false;
+    }
+    finished_ = true;
+    return moveIntoPlace(temporary_, path_, error);
+}
+
+ImageStream::~ImageStream() {
+    if (finished_) return;
+    if (handle_) {
+        CallContext ignored;
+        module_->closeImage(handle_, 1, storeError, &ignored);
+    }
+    std::error_code ec;
+    fs::remove(temporary_, ec);
+}
+
+bool writeImage(const std::string& path, const ImageBuffer& image, const WriteOptions& options,
+                std::string& error) {
+    std::string problem;
+    if (isSupportedOutput(path) && !checkBuffer(image, problem)) {
+        error = "cannot write " + quotedName(path) + ": " + problem;
+        return false;
+    }
+    std::unique_ptr<ImageStream> stream =
+        ImageStream::open(path, image.width, image.height, image.channels, options, error);
+    return stream && stream->writeRows(0, image.height, image.pixels, error) &&
+           stream->finish(error);
 }
 
 bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& frames, double fps,
@@ -286,10 +371,10 @@ bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& f
         }
     }
     if (!problem.empty()) {
-        error = "cannot write " + quoted(path) + ": " + problem;
+        error = "cannot write " + quotedName(path) + ": " + problem;
         return false;
     }
-    const CrtImageIoModule* module = moduleFor("cannot write " + quoted(path), error);
+    const CrtImageIoModule* module = moduleFor("cannot write " + quotedName(path), error);
     if (!module) return false;
 
     const bool expand = frames[0].channels == 1;
@@ -297,7 +382,7 @@ bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& f
     std::vector<const std::uint8_t*> framePointers;
     codes.reserve(frames.size());
     for (const ImageBuffer& frame : frames) {
-        codes.push_back(expand ? quantiseColour(expandGrey(frame), 3, options)
+        codes.push_back(expand ? quantiseColour(expandGrey(frame.pixels), 3, options)
                                : quantiseColour(frame.pixels, frame.channels, options));
         framePointers.push_back(codes.back().data());
     }
@@ -319,15 +404,15 @@ bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& f
 std::optional<ImageInfo> describeImage(const std::string& path, std::string& error) {
     std::error_code ec;
     if (!fs::exists(path, ec)) {
-        error = "cannot read " + quoted(path) + ": no such file";
+        error = "cannot read " + quotedName(path) + ": no such file";
         return std::nullopt;
     }
-    const CrtImageIoModule* module = moduleFor("cannot read " + quoted(path), error);
+    const CrtImageIoModule* module = moduleFor("cannot read " + quotedName(path), error);
     if (!module) return std::nullopt;
     CrtImageInfo raw{};
     CallContext context;
     if (!module->describeImage(path.c_str(), &raw, storeError, &context)) {
-        error = "cannot read " + quoted(path) + ": " + context.error;
+        error = "cannot read " + quotedName(path) + ": " + context.error;
         return std::nullopt;
     }
     ImageInfo info;

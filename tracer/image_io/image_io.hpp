@@ -7,9 +7,13 @@
 // variable CRT_IMAGE_IO_MODULE names it explicitly. All functions are thread-safe.
 #pragma once
 
+#include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
+
+struct CrtImageIoModule;
 
 namespace crt::tracer::image_io {
 
@@ -58,6 +62,39 @@ std::optional<ImageBuffer> readImage(const std::string& path, std::string& error
 /// partial file under `path`; the temporary is removed on failure.
 bool writeImage(const std::string& path, const ImageBuffer& image, const WriteOptions& options,
                 std::string& error);
+
+/// An image written band by band, top to bottom, as its rows become final (a render streams
+/// finished rows while later ones are traced, so that encoding overlaps tracing); same
+/// formats, quantisation and temporary-file rule as writeImage. Destroying a stream that was
+/// not finished removes its temporary file, so an interrupted render leaves nothing.
+class ImageStream {
+public:
+    /// Checks the name, size and options and opens the temporary file (waiting for the
+    /// module); null with a message in `error` on failure.
+    static std::unique_ptr<ImageStream> open(const std::string& path, int width, int height,
+                                             int channels, const WriteOptions& options,
+                                             std::string& error);
+    /// Rows [yBegin, yEnd), which must follow the rows written before: `channels` floats per
+    /// pixel, row-major.
+    bool writeRows(int yBegin, int yEnd, std::span<const float> values, std::string& error);
+    /// After the last row: completes the file and renames it into place.
+    bool finish(std::string& error);
+
+    ImageStream(const ImageStream&) = delete;
+    ImageStream& operator=(const ImageStream&) = delete;
+    ~ImageStream();
+
+private:
+    ImageStream() = default;
+
+    const CrtImageIoModule* module_ = nullptr;
+    void* handle_ = nullptr;
+    std::string path_, temporary_;
+    int width_ = 0, height_ = 0, channels_ = 3;
+    bool expandGrey_ = false, eightBit_ = true, finished_ = false;
+    WriteOptions options_;
+    int nextRow_ = 0;
+};
 
 /// Writes an animated GIF (`path` must end in .gif): one subimage per frame, all frames of one
 /// size, `fps` frames per second, looping forever; same quantisation and temporary-file rule as

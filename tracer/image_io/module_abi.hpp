@@ -11,7 +11,7 @@
 extern "C" {
 
 /// Raised whenever a function's signature or meaning changes; the host refuses other versions.
-inline constexpr int kCrtImageIoAbiVersion = 2;
+inline constexpr int kCrtImageIoAbiVersion = 3;
 
 /// The name of the module's one exported function.
 inline constexpr const char* kCrtImageIoEntryName = "crt_image_io_module";
@@ -41,12 +41,18 @@ struct CrtImageIoModule {
     /// Reads subimage 0 into 3 channels of floats (integer formats as value / max).
     int (*readImage)(const char* path, int* isInteger, CrtImageAllocFn alloc, CrtImageErrorFn error,
                      void* context);
-    /// Writes one image in the OpenImageIO format `format` ("png", "openexr" …), whatever the
-    /// file name; `pixels` holds `channels` uint8 values per pixel, or floats when `isFloat`.
-    /// `pngCompression` (0–9) is the zlib level of a PNG.
-    int (*writeImage)(const char* path, const char* format, int width, int height, int channels,
-                      int isFloat, const void* pixels, int srgb, int pngCompression,
-                      CrtImageErrorFn error, void* context);
+    /// Opens `path` for one image in the OpenImageIO format `format` ("png", "openexr" …),
+    /// whatever the file name, to be written in bands of rows from the top; pixels will be
+    /// `channels` uint8 values each, or floats when `isFloat`. `pngCompression` (0–9) is the
+    /// zlib level of a PNG. Returns a handle for writeRows and closeImage, or null.
+    void* (*openImage)(const char* path, const char* format, int width, int height, int channels,
+                       int isFloat, int srgb, int pngCompression, CrtImageErrorFn error,
+                       void* context);
+    /// Writes rows [yBegin, yEnd), the next ones after those written before.
+    int (*writeRows)(void* image, int yBegin, int yEnd, const void* pixels, CrtImageErrorFn error,
+                     void* context);
+    /// Completes the file (or, when `abandon`, only closes it) and frees the handle.
+    int (*closeImage)(void* image, int abandon, CrtImageErrorFn error, void* context);
     /// Writes an animated GIF of `frameCount` frames of uint8 pixels, looping forever.
     int (*writeAnimatedGif)(const char* path, int width, int height, int channels, int frameCount,
                             const std::uint8_t* const* frames, int fpsNumerator, int fpsDenominator,

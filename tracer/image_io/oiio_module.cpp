@@ -108,22 +108,24 @@ int readImage(const char* path, int* isInteger, CrtImageAllocFn alloc, CrtImageE
     }
 }
 
-// Write one already-opened subimage and report OIIO's message on failure.
-bool writePixels(ImageOutput& out, TypeDesc type, const void* pixels, const ErrorSink& sink) {
-    if (out.write_image(type, pixels)) return true;
-    sink.fail(oiioError(out.geterror()));
-    return false;
-}
+// An image being written band by band.
+struct OpenOutput {
+    std::unique_ptr<ImageOutput> out;
+    TypeDesc type;
+    int channels;
+};
 
-int writeImage(const char* path, const char* format, int width, int height, int channels,
-               int isFloat, const void* pixels, int srgb, int pngCompression, CrtImageErrorFn error,
-               void* context) {
+void* openImage(const char* path, const char* format, int width, int height, int channels,
+                int isFloat, int srgb, int pngCompression, CrtImageErrorFn error, void* context) {
     const ErrorSink sink{error, context};
     try {
         // Created by format name, because the host writes to a temporary file whose name
         // does not end in the real extension.
         auto out = ImageOutput::create(format);
-        if (!out) return sink.fail(oiioError(""));
+        if (!out) {
+            sink.fail(oiioError(""));
+            return nullptr;
+        }
         const TypeDesc type = isFloat ? OIIO::TypeFloat : OIIO::TypeUInt8;
         ImageSpec spec(width, height, channels, type);
         if (srgb) spec.attribute("oiio:ColorSpace", "sRGB");
@@ -134,10 +136,39 @@ int writeImage(const char* path, const char* format, int width, int height, int 
             spec.attribute("png:compressionLevel", pngCompression);
             spec.attribute("png:filter", kPngFilterSub);
         }
-        if (!out->open(path, spec)) return sink.fail(oiioError(out->geterror()));
-        if (!writePixels(*out, type, pixels, sink)) return 0;
-        if (!out->close()) return sink.fail(oiioError(out->geterror()));
-        return 1;
+        if (!out->open(path, spec)) {
+            sink.fail(oiioError(out->geterror()));
+            return nullptr;
+        }
+        return new OpenOutput{std::move(out), type, channels};
+    } catch (const std::exception& e) {
+        sink.fail(e.what());
+    } catch (...) {
+        sink.fail("unknown exception in the image module");
+    }
+    return nullptr;
+}
+
+int writeRows(void* image, int yBegin, int yEnd, const void* pixels, CrtImageErrorFn error,
+              void* context) {
+    const ErrorSink sink{error, context};
+    try {
+        OpenOutput& open = *static_cast<OpenOutput*>(image);
+        if (open.out->write_scanlines(yBegin, yEnd, 0, open.type, pixels)) return 1;
+        return sink.fail(oiioError(open.out->geterror()));
+    } catch (const std::exception& e) {
+        return sink.fail(e.what());
+    } catch (...) {
+        return sink.fail("unknown exception in the image module");
+    }
+}
+
+int closeImage(void* image, int abandon, CrtImageErrorFn error, void* context) {
+    const ErrorSink sink{error, context};
+    std::unique_ptr<OpenOutput> open(static_cast<OpenOutput*>(image));
+    try {
+        if (open->out->close() || abandon) return 1;
+        return sink.fail(oiioError(open->out->geterror()));
     } catch (const std::exception& e) {
         return sink.fail(e.what());
     } catch (...) {
@@ -163,7 +194,8 @@ int writeAnimatedGif(const char* path, int width, int height, int channels, int 
         for (int i = 0; i < frameCount; ++i) {
             if (i > 0 && !out->open(path, specs[i], ImageOutput::AppendSubimage))
                 return sink.fail(oiioError(out->geterror()));
-            if (!writePixels(*out, OIIO::TypeUInt8, frames[i], sink)) return 0;
+            if (!out->write_image(OIIO::TypeUInt8, frames[i]))
+                return sink.fail(oiioError(out->geterror()));
         }
         if (!out->close()) return sink.fail(oiioError(out->geterror()));
         return 1;
@@ -210,8 +242,8 @@ int describeImage(const char* path, CrtImageInfo* info, CrtImageErrorFn error, v
     }
 }
 
-constexpr CrtImageIoModule kModule{kCrtImageIoAbiVersion, readImage, writeImage, writeAnimatedGif,
-                                   describeImage};
+constexpr CrtImageIoModule kModule{kCrtImageIoAbiVersion, readImage,  openImage, writeRows,
+                                   closeImage,            writeAnimatedGif, describeImage};
 
 } // namespace
 

@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -457,4 +458,53 @@ TEST_CASE("the PNG compression level trades size for time, never pixels", "[imag
     tooHigh.pngCompression = 10;
     CHECK_FALSE(writeImage(scratchFile("level10.png"), image, tooHigh, error));
     CHECK_THAT(error, Catch::Contains("compression level must be 0 to 9"));
+}
+
+TEST_CASE("an image streamed in bands of rows equals the image written whole", "[image_io]") {
+    const ImageBuffer image = codeGradient(37, 23);
+    for (const char* name : {"bands.png", "bands.exr", "bands.tif"}) {
+        const std::string path = scratchFile(name);
+        std::string error;
+        auto stream = ImageStream::open(path, image.width, image.height, 3, {}, error);
+        INFO(error);
+        REQUIRE(stream);
+        // Uneven bands, like a render's tile rows with a short last one.
+        const std::size_t rowValues = std::size_t(image.width) * 3;
+        for (int y = 0; y < image.height; y += 5) {
+            const int end = std::min(y + 5, image.height);
+            std::span<const float> rows(image.pixels.data() + y * rowValues, (end - y) * rowValues);
+            REQUIRE(stream->writeRows(y, end, rows, error));
+        }
+        // Nothing under the final name until the stream is finished.
+        CHECK_FALSE(fs::exists(path));
+        REQUIRE(stream->finish(error));
+        CHECK(readOrFail(path).pixels == image.pixels);
+    }
+}
+
+TEST_CASE("a stream refuses rows out of order and an early finish, and leaves no file", "[image_io]") {
+    const ImageBuffer image = codeGradient(8, 6);
+    const std::size_t rowValues = 8 * 3;
+    const std::string path = scratchFile("unfinished.png");
+    const auto before = scratchListing();
+    std::string error;
+    {
+        auto stream = ImageStream::open(path, 8, 6, 3, {}, error);
+        REQUIRE(stream);
+        std::span<const float> two(image.pixels.data(), 2 * rowValues);
+        CHECK_FALSE(stream->writeRows(2, 4, two, error)); // row 0 comes first
+        CHECK_THAT(error, Catch::Contains("do not follow row 0"));
+        REQUIRE(stream->writeRows(0, 2, two, error));
+        CHECK_FALSE(stream->writeRows(2, 3, two, error)); // wrong value count
+        CHECK_FALSE(stream->finish(error));
+        CHECK_THAT(error, Catch::Contains("only 2 of 6 rows"));
+    }
+    // Destroyed unfinished: the temporary file is gone and no image appeared.
+    CHECK_FALSE(fs::exists(path));
+    CHECK(scratchListing() == before);
+
+    CHECK_FALSE(ImageStream::open(scratchFile("no_dir/x.png"), 8, 6, 3, {}, error));
+    CHECK_THAT(error, Catch::Contains("does not exist"));
+    CHECK_FALSE(ImageStream::open(scratchFile("x.png"), 0, 6, 3, {}, error));
+    CHECK_THAT(error, Catch::Contains("empty"));
 }

@@ -77,3 +77,30 @@ TEST_CASE("Changing the seed changes the stochastic samples", "[render][determin
     desc.settings.seed = 8;
     CHECK(renderOk(desc, 2).rgb != a.rgb);
 }
+
+TEST_CASE("Finished rows are reported once each, in order, with their final values", "[render]") {
+    SceneDesc desc = stochasticScene();
+    desc.settings.width = 53; // a last tile row and column of 5 pixels
+    desc.settings.height = 37;
+    for (int threads : {1, 3}) {
+        INFO("threads " << threads);
+        std::vector<float> streamed;
+        int nextRow = 0, calls = 0;
+        bool ordered = true;
+        RenderSettings settings;
+        settings.threads = threads;
+        settings.onRowsDone = [&](int yBegin, int yEnd, std::span<const float> rgb) {
+            ordered = ordered && yBegin == nextRow && yEnd > yBegin &&
+                      rgb.size() == std::size_t(yEnd - yBegin) * 53 * 3;
+            nextRow = yEnd;
+            ++calls;
+            streamed.insert(streamed.end(), rgb.begin(), rgb.end());
+        };
+        RenderOutcome r = renderScene(desc, settings);
+        REQUIRE(r.ok);
+        CHECK(ordered);
+        CHECK(nextRow == 37);
+        CHECK(calls == 3); // tile rows of 16, 16 and 5
+        CHECK(streamed == r.frame.rgb);
+    }
+}

@@ -1,0 +1,65 @@
+#include "streamed_output.hpp"
+
+namespace crt::lang::driver {
+
+namespace image_io = tracer::image_io;
+
+StreamedOutput::StreamedOutput(std::string path, int width, int height, image_io::WriteOptions options)
+    : path_(std::move(path)), width_(width), height_(height), options_(options), writer_([this] { write(); }) {}
+
+StreamedOutput::~StreamedOutput() {
+    stopWriter();
+    // stream_, if unfinished, removes its temporary file as it goes.
+}
+
+void StreamedOutput::addRows(int yBegin, int yEnd, std::span<const float> rgb) {
+    Band band{yBegin, yEnd, std::vector<float>(rgb.begin(), rgb.end())};
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        bands_.push_back(std::move(band));
+    }
+    ready_.notify_one();
+}
+
+void StreamedOutput::write() {
+    std::string error;
+    std::unique_ptr<image_io::ImageStream> stream = image_io::ImageStream::open(path_, width_, height_, 3, options_, error);
+    while (true) {
+        Band band;
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            ready_.wait(lock, [&] { return !bands_.empty() || noMoreRows_; });
+            if (bands_.empty()) break;
+            band = std::move(bands_.front());
+            bands_.pop_front();
+        }
+        // After a failure the remaining rows are only drained: the error is reported once.
+        if (stream && !stream->writeRows(band.yBegin, band.yEnd, band.rgb, error)) stream.reset();
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    stream_ = std::move(stream);
+    error_ = error;
+}
+
+void StreamedOutput::stopWriter() {
+    if (!writer_.joinable()) return;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        noMoreRows_ = true;
+    }
+    ready_.notify_one();
+    writer_.join();
+}
+
+bool StreamedOutput::finish(std::string& error) {
+    stopWriter();
+    if (!stream_) {
+        error = error_;
+        return false;
+    }
+    bool ok = stream_->finish(error);
+    stream_.reset();
+    return ok;
+}
+
+} // namespace crt::lang::driver
