@@ -23,6 +23,24 @@ double bruteForce(const RenderScene& scene, const Ray& ray) {
     return best;
 }
 
+/// The nearest hit through the BVH, required to equal brute force's; whether there is one.
+bool nearestAgrees(const RenderScene& scene, const Ray& ray, QueryScratch& scratch, RayStats& stats) {
+    Hit hit;
+    bool found = scene.intersect(ray, kInfinity, hit, scratch, stats);
+    double expected = bruteForce(scene, ray);
+    REQUIRE(found == (expected < kInfinity));
+    if (found) REQUIRE(hit.t == expected);
+    return found;
+}
+
+std::unique_ptr<RenderScene> buildWithBvh(const SceneMaker& maker) {
+    std::string error;
+    auto scene = buildRenderScene(maker.desc, error);
+    REQUIRE(scene);
+    REQUIRE(scene->bvh.nodeCount() > 1);
+    return scene;
+}
+
 } // namespace
 
 TEST_CASE("BVH nearest hits equal brute force on random sphere scenes", "[bvh]") {
@@ -41,24 +59,14 @@ TEST_CASE("BVH nearest hits equal brute force on random sphere scenes", "[bvh]")
             maker.draw(maker.transformed(b, {crt::tracer::test::rotate(Vec3(rng.uniform() * 90, rng.uniform() * 90, 0)),
                                              crt::tracer::test::translate(c)}));
         }
-        std::string error;
-        auto scene = buildRenderScene(maker.desc, error);
-        REQUIRE(scene);
-        REQUIRE(scene->bvh.nodeCount() > 1);
+        auto scene = buildWithBvh(maker);
         QueryScratch scratch;
         RayStats stats;
         int hits = 0;
         for (int i = 0; i < 3000; ++i) {
             Ray ray{Vec3(rng.uniform() * 30 - 15, rng.uniform() * 30 - 15, rng.uniform() * 30 - 15),
                     glm::normalize(Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5))};
-            Hit hit;
-            bool found = scene->intersect(ray, kInfinity, hit, scratch, stats);
-            double expected = bruteForce(*scene, ray);
-            REQUIRE(found == (expected < kInfinity));
-            if (found) {
-                REQUIRE(hit.t == expected);
-                ++hits;
-            }
+            hits += nearestAgrees(*scene, ray, scratch, stats);
         }
         CHECK(hits > 300);
         // The BVH must prune: far fewer tests than primitives × rays.
@@ -110,20 +118,10 @@ TEST_CASE("BVH float boxes miss nothing: far from the origin, in face planes, ax
     // Unit boxes on a grid: rays along their faces lie exactly in the boxes' face planes.
     for (int x = 0; x < 6; ++x)
         for (int z = 0; z < 6; ++z) maker.draw(maker.box(Vec3(2 * x, 0, 2 * z), Vec3(2 * x + 1, 1, 2 * z + 1)));
-    std::string error;
-    auto scene = buildRenderScene(maker.desc, error);
-    REQUIRE(scene);
-    REQUIRE(scene->bvh.nodeCount() > 1);
+    auto scene = buildWithBvh(maker);
     QueryScratch scratch;
     RayStats stats;
-    auto agree = [&](const Ray& ray) {
-        Hit hit;
-        bool found = scene->intersect(ray, kInfinity, hit, scratch, stats);
-        double expected = bruteForce(*scene, ray);
-        REQUIRE(found == (expected < kInfinity));
-        if (found) REQUIRE(hit.t == expected);
-        return found;
-    };
+    auto agree = [&](const Ray& ray) { return nearestAgrees(*scene, ray, scratch, stats); };
     int hits = 0;
     // Through each small sphere's centre, from a point near the world origin and from
     // nearby; a tiny sphere far away is where a float origin or box could lose it.
