@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 Interpreter::Interpreter(Compilation& compilation, const EvalOptions& options)
     : compilation_(compilation), options_(options), diagnostics_(compilation.diagnostics),
-      randomState_(options.seed) {
+      globals_(compilation.globals), randomState_(options.seed) {
     prelude_.resize(preludeSize());
     for (uint32_t slot = 0; slot < preludeSlotOfT(); ++slot) {
         prelude_[slot] = Value::object(ValueKind::Builtin, ObjectType::Count, slot);
@@ -68,9 +68,14 @@ void Interpreter::step(SourceRange where) {
 }
 
 void Interpreter::run(bool evaluate) {
-    animated_ = resolve(compilation_.main, globals_, diagnostics_, true).readsTime;
+    compilation_.readsTime = resolve(compilation_.main, globals_, diagnostics_, true).readsTime;
     compilation_.resolved = true;
-    if (diagnostics_.hasErrors() || !evaluate) return;
+    if (evaluate) evaluateResolved();
+}
+
+void Interpreter::evaluateResolved() {
+    if (!compilation_.resolved || diagnostics_.hasErrors()) return;
+    animated_ = compilation_.readsTime;
     std::error_code error;
     const SourceFile& main = compilation_.sources.file(compilation_.main.file);
     fs::path canonical = fs::weakly_canonical(fs::absolute(main.path(), error), error);
@@ -478,6 +483,10 @@ Compilation compile(std::string path, std::string text, const EvalOptions& optio
         Interpreter(c, options).run(evaluate);
     });
     return c;
+}
+
+void evaluate(Compilation& compilation, const EvalOptions& options) {
+    runOnLargeStack([&] { Interpreter(compilation, options).evaluateResolved(); });
 }
 
 Compilation compileFile(const std::string& path, const EvalOptions& options, bool evaluate) {

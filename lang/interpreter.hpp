@@ -58,6 +58,10 @@ struct Compilation {
     std::vector<Token> comments;
     std::optional<tracer::SceneDesc> scene; ///< set when evaluation finished without errors
     bool resolved = false; ///< names were resolved (the main script has no syntax errors)
+    /// The global scope the resolver built, and whether the script reads t or clock: kept so
+    /// that a compilation resolved by compile(..., false) can be evaluated later (evaluate()).
+    GlobalTable globals;
+    bool readsTime = false;
     /// With EvalOptions::keepGlobalValues: each assigned global's name and str() (shortened),
     /// as they stood when evaluation ended or stopped.
     std::vector<std::pair<std::string, std::string>> globalValues;
@@ -67,6 +71,10 @@ struct Compilation {
 /// script `path` with contents `text`.
 Compilation compile(std::string path, std::string text, const EvalOptions& options,
                     bool evaluate = true);
+/// Evaluates a compilation that compile(..., evaluate = false) parsed and resolved, as
+/// compile() would have (nothing happens if it has errors). The language server indexes the
+/// resolved script while its debounce runs, and evaluates it only once the text is quiet.
+void evaluate(Compilation& compilation, const EvalOptions& options);
 /// Reads `path` and compiles it; an unreadable file is an error diagnostic.
 Compilation compileFile(const std::string& path, const EvalOptions& options, bool evaluate = true);
 

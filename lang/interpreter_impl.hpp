@@ -41,6 +41,8 @@ public:
     /// Resolves the main script and, if `evaluate` and there are no errors, evaluates it;
     /// fills compilation.scene unless an error occurred.
     void run(bool evaluate);
+    /// Evaluates the main script resolved before (by run(false), maybe in another Interpreter).
+    void evaluateResolved();
 
     // --- services for built-ins and object builders ---
     [[noreturn, gnu::cold, gnu::noinline]] void fail(SourceRange where, std::string message);
@@ -114,7 +116,7 @@ private:
     const EvalOptions& options_;
     DiagnosticBag& diagnostics_;
 
-    GlobalTable globals_;
+    GlobalTable& globals_; ///< compilation_.globals
     std::vector<Value> globalValues_;
     std::vector<Value> prelude_;
 

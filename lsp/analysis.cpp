@@ -11,6 +11,8 @@
 #include <cstdlib>
 #include <set>
 #include <sstream>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace crt::lsp {
 
@@ -124,11 +126,15 @@ public:
 
     void run() {
         for (Node* item : a_.compilation.main.items) visit(item);
-        std::stable_sort(a_.occurrences.begin(), a_.occurrences.end(),
-                         [](const Occurrence& x, const Occurrence& y) { return x.range.begin < y.range.begin; });
-        std::stable_sort(a_.attributes.begin(), a_.attributes.end(), [](const AttributeUse& x, const AttributeUse& y) {
-            return x.nameRange.begin < y.nameRange.begin;
-        });
+        // The walk is mostly in source order already: sort only when it was not.
+        auto byOccurrence = [](const Occurrence& x, const Occurrence& y) { return x.range.begin < y.range.begin; };
+        if (!std::is_sorted(a_.occurrences.begin(), a_.occurrences.end(), byOccurrence)) {
+            std::stable_sort(a_.occurrences.begin(), a_.occurrences.end(), byOccurrence);
+        }
+        auto byAttribute = [](const AttributeUse& x, const AttributeUse& y) { return x.nameRange.begin < y.nameRange.begin; };
+        if (!std::is_sorted(a_.attributes.begin(), a_.attributes.end(), byAttribute)) {
+            std::stable_sort(a_.attributes.begin(), a_.attributes.end(), byAttribute);
+        }
         for (Occurrence& o : a_.occurrences) {
             Symbol& s = a_.symbols[o.symbol];
             if (o.write && !s.definition) {
@@ -145,7 +151,9 @@ public:
         }
     }
 
-    std::map<std::string, uint32_t, std::less<>> globals;
+    std::vector<std::string> includeNames; ///< of every include, in order
+    /// Keyed by the AST's names, which point into the script and live as long as the analysis.
+    std::unordered_map<std::string_view, uint32_t> globals;
 
 private:
     uint32_t symbolFor(std::string_view name, const Resolution& r) {
@@ -153,7 +161,7 @@ private:
             auto it = builtins_.find(name);
             if (it != builtins_.end()) return it->second;
             uint32_t id = add(name, SymbolKind::Builtin, nullptr);
-            builtins_.emplace(std::string(name), id);
+            builtins_.emplace(name, id);
             return id;
         }
         if ((r.binding == Binding::Local || r.binding == Binding::Enclosing) && r.depth < macros_.size()) {
@@ -168,7 +176,7 @@ private:
         auto it = globals.find(name);
         if (it != globals.end()) return it->second;
         uint32_t id = add(name, SymbolKind::Variable, nullptr);
-        globals.emplace(std::string(name), id);
+        globals.emplace(name, id);
         return id;
     }
 
@@ -240,25 +248,23 @@ private:
             macros_.pop_back();
             return;
         }
+        case NodeKind::Include: includeNames.emplace_back(static_cast<IncludeStmt*>(node)->path->value); return;
         default: forEachChild(node, [&](Node* child) { visit(child); }); return;
         }
     }
 
     Analysis& a_;
     std::vector<const MacroExpr*> macros_;
-    std::map<std::pair<const MacroExpr*, uint32_t>, uint32_t> locals_;
-    std::map<std::string, uint32_t, std::less<>> builtins_;
-    std::map<uint32_t, const Expr*> values_;
-    std::set<uint32_t> loopVariables_;
+    struct LocalKeyHash {
+        size_t operator()(const std::pair<const MacroExpr*, uint32_t>& key) const {
+            return std::hash<const void*>()(key.first) ^ (static_cast<size_t>(key.second) * 0x9E3779B97F4A7C15ull);
+        }
+    };
+    std::unordered_map<std::pair<const MacroExpr*, uint32_t>, uint32_t, LocalKeyHash> locals_;
+    std::unordered_map<std::string_view, uint32_t> builtins_;
+    std::unordered_map<uint32_t, const Expr*> values_; ///< by the offset of an assigned name
+    std::unordered_set<uint32_t> loopVariables_;
 };
-
-void collectIncludes(Node* node, std::vector<std::string>& names) {
-    if (node->kind == NodeKind::Include) {
-        names.emplace_back(static_cast<IncludeStmt*>(node)->path->value);
-        return;
-    }
-    forEachChild(node, [&](Node* child) { collectIncludes(child, names); });
-}
 
 } // namespace
 
@@ -271,16 +277,21 @@ std::shared_ptr<const Analysis> analyze(const std::string& path, std::string tex
     return analyze(compile(path, std::move(text), eval, false), options, cache);
 }
 
-std::shared_ptr<const Analysis> analyze(Compilation compilation, const AnalysisOptions& options,
-                                        IncludeCache& cache) {
+std::shared_ptr<Analysis> analyze(Compilation compilation, const AnalysisOptions& options,
+                                  IncludeCache& cache) {
     auto result = std::make_shared<Analysis>();
-    Analysis& a = *result;
-    a.compilation = std::move(compilation);
+    result->compilation = std::move(compilation);
+    index(*result, result->file(), options, cache);
+    return result;
+}
+
+void index(Analysis& a, const SourceFile& file, const AnalysisOptions& options, IncludeCache& cache) {
+    // Of the compilation, only `file`, the main script's AST and `resolved` are read here (and
+    // the AST written only when it has syntax errors, so nothing evaluates it).
     a.syntaxErrors = !a.compilation.resolved;
-    const std::string& path = a.file().path();
+    const std::string& path = file.path();
     DiagnosticBag ignored;
-    a.tokens = lexAll(a.file(), 0, ignored, &a.comments);
-    std::vector<std::string> includeNames;
+    a.tokens = lexAll(file, 0, ignored, &a.comments);
     runOnLargeStack([&] {
         if (a.syntaxErrors) {
             // compile() stops at syntax errors; the editor still wants names resolved.
@@ -290,7 +301,7 @@ std::shared_ptr<const Analysis> analyze(Compilation compilation, const AnalysisO
         }
         Indexer indexer(a);
         indexer.run();
-        for (Node* item : a.compilation.main.items) collectIncludes(item, includeNames);
+        std::vector<std::string>& includeNames = indexer.includeNames;
 
         // Included files, breadth first, each once.
         std::error_code error;
@@ -333,6 +344,14 @@ std::shared_ptr<const Analysis> analyze(Compilation compilation, const AnalysisO
             }
         }
     });
+}
+
+std::shared_ptr<const Analysis> lexOnly(const std::string& path, std::string text) {
+    auto result = std::make_shared<Analysis>();
+    result->compilation.sources.add(path, std::move(text));
+    result->syntaxErrors = true; // not parsed: nothing is known of its structure
+    DiagnosticBag ignored;
+    result->tokens = lexAll(result->file(), 0, ignored, &result->comments);
     return result;
 }
 

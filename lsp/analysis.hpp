@@ -132,9 +132,18 @@ struct Analysis {
 /// and indexes the result.
 std::shared_ptr<const Analysis> analyze(const std::string& path, std::string text,
                                         const AnalysisOptions& options, IncludeCache& cache);
-/// Indexes a compilation made already (by the diagnostics worker, evaluated or not).
-std::shared_ptr<const Analysis> analyze(lang::Compilation compilation, const AnalysisOptions& options,
-                                        IncludeCache& cache);
+/// Indexes a compilation made already (by the diagnostics worker, before it evaluates it).
+std::shared_ptr<Analysis> analyze(lang::Compilation compilation, const AnalysisOptions& options,
+                                  IncludeCache& cache);
+/// Indexes `analysis`, whose compilation is set (parsed, maybe resolved). Reads of the
+/// compilation only `file` (its file 0), the main script's AST and `resolved`, so the
+/// compilation may be evaluated meanwhile on another thread (evaluation adds files and
+/// diagnostics, and never writes the main script's AST).
+void index(Analysis& analysis, const lang::SourceFile& file, const AnalysisOptions& options, IncludeCache& cache);
+
+/// Only the tokens and comments of `text`, no parse: with the names of an older analysis,
+/// enough to complete (stale_names.hpp), in a millisecond where analyze() takes tens.
+std::shared_ptr<const Analysis> lexOnly(const std::string& path, std::string text);
 
 /// Where `include "name"` in a file of folder `folder` finds its file, as the interpreter
 /// looks: the folder, -I folders, CRT_PATH, the standard library. Empty if nowhere.

@@ -114,8 +114,9 @@ int typeFit(AttrType want, const std::string& type) {
 
 class Completer {
 public:
-    Completer(const Analysis& a, uint32_t offset, const AnalysisOptions& options)
-        : a_(a), offset_(offset), options_(options) {}
+    Completer(const Analysis& a, uint32_t offset, const Analysis& names, uint32_t namesOffset,
+              const AnalysisOptions& options)
+        : a_(a), offset_(offset), names_(names), namesOffset_(namesOffset), options_(options) {}
 
     CompletionList run() {
         list_.replace = {0, offset_, offset_};
@@ -300,15 +301,17 @@ private:
 
     std::vector<const Symbol*> visibleSymbols() {
         std::vector<const Symbol*> result;
-        std::vector<const MacroExpr*> scopes = a_.macrosAt(offset_);
+        std::vector<const MacroExpr*> scopes = names_.macrosAt(namesOffset_);
         std::set<std::string_view> names;
         for (auto scope = scopes.rbegin(); scope != scopes.rend(); ++scope) {
-            for (const Symbol& s : a_.symbols) {
+            for (const Symbol& s : names_.symbols) {
                 if (s.scope == *scope && names.insert(s.name).second) result.push_back(&s);
             }
         }
-        for (const Symbol& s : a_.symbols) {
-            if (!s.scope && !s.builtin() && names.insert(s.name).second) result.push_back(&s);
+        for (const Symbol& s : names_.symbols) {
+            // A global read but bound nowhere is no name to offer: usually the word being typed.
+            bool bound = s.definition || s.external >= 0;
+            if (!s.scope && !s.builtin() && bound && names.insert(s.name).second) result.push_back(&s);
         }
         return result;
     }
@@ -372,8 +375,10 @@ private:
         }
     }
 
-    const Analysis& a_;
+    const Analysis& a_; ///< the tokens and text around the cursor
     uint32_t offset_;
+    const Analysis& names_; ///< the names in scope: a_, or an older analysis with the same names
+    uint32_t namesOffset_;  ///< offset_ in the text of names_
     const AnalysisOptions& options_;
     CompletionList list_;
 };
@@ -381,7 +386,12 @@ private:
 } // namespace
 
 CompletionList complete(const Analysis& analysis, uint32_t offset, const AnalysisOptions& options) {
-    return Completer(analysis, offset, options).run();
+    return Completer(analysis, offset, analysis, offset, options).run();
+}
+
+CompletionList complete(const Analysis& current, uint32_t offset, const Analysis& names, uint32_t namesOffset,
+                        const AnalysisOptions& options) {
+    return Completer(current, offset, names, namesOffset, options).run();
 }
 
 } // namespace crt::lsp

@@ -1,4 +1,5 @@
-// Evaluates documents off the main thread, debounced, dropping analyses of stale text.
+// Analyses documents off the main thread: indexes each change at once, evaluates it debounced,
+// and drops the work of stale text.
 #pragma once
 
 #include "analysis.hpp"
@@ -13,23 +14,28 @@
 
 namespace crt::lsp {
 
-/// One background thread that runs the whole front end (evaluation included) on the latest
-/// text of each document and hands the result to `publish`. A newer version of a document
-/// cancels the evaluation of an older one (through the interpreter's interrupt hook), and
-/// every evaluation stops at the time budget, so `while (true) {}` costs at most that.
+/// One background thread that runs the whole front end on the latest text of each document.
+/// A change is parsed, resolved and indexed as soon as it arrives (the thread would otherwise
+/// sit idle through the debounce); the evaluation, the unbounded part, waits until the text has
+/// been quiet for the debounce delay. If the index is not done by then (a slow machine, a huge
+/// text), it is finished on a second thread while the evaluation runs. A newer version of a
+/// document drops the preparation of an older one and cancels its evaluation (through the
+/// interpreter's interrupt hook), and every evaluation stops at the time budget, so
+/// `while (true) {}` costs at most that.
 class DiagnosticsWorker {
 public:
-    /// Receives the evaluation, as soon as it is done; called on the worker thread.
-    using Publish = std::function<void(const std::string& uri, int64_t version, const lang::Compilation& compilation)>;
-    /// Then receives the same compilation indexed, for the requests that follow.
-    using Ready = std::function<void(const std::string& uri, int64_t version, std::shared_ptr<const Analysis> analysis)>;
+    /// Receives each evaluated version, indexed: its compilation holds the evaluation's
+    /// diagnostics and global values. Called on the worker thread, which never touches the
+    /// analysis again, so the receiver may hand it to other threads.
+    using Finished = std::function<void(const std::string& uri, int64_t version, std::shared_ptr<const Analysis> analysis)>;
 
-    DiagnosticsWorker(AnalysisOptions options, std::chrono::milliseconds debounce, Publish publish, Ready ready);
+    DiagnosticsWorker(AnalysisOptions options, std::chrono::milliseconds debounce, Finished finished);
     ~DiagnosticsWorker();
     DiagnosticsWorker(const DiagnosticsWorker&) = delete;
     DiagnosticsWorker& operator=(const DiagnosticsWorker&) = delete;
 
-    /// Evaluates `text` after the debounce delay, unless a newer version comes first.
+    /// Indexes `text` now and evaluates it after the debounce delay, unless a newer version
+    /// comes first.
     void schedule(const std::string& uri, int64_t version, const std::string& path, std::string text);
     /// Drops pending and running work for `uri` (the document was closed).
     void forget(const std::string& uri);
@@ -38,16 +44,21 @@ private:
     struct Job {
         int64_t version;
         std::string path;
-        std::string text;
+        std::string text; ///< moved out when parsing starts
         std::chrono::steady_clock::time_point due;
         uint64_t generation;
+        std::shared_ptr<Analysis> parsed; ///< parsed and resolved; not evaluated yet
+        bool indexed = false;             ///< `parsed` is indexed too
     };
     void loop();
+    /// Parses and resolves a job, or indexes one not due yet; false if none needs it.
+    bool prepareOne(std::unique_lock<std::mutex>& lock);
+    void evaluateAndFinish(const std::string& uri, Job job);
+    lang::EvalOptions evalOptions() const;
 
     AnalysisOptions options_;
     std::chrono::milliseconds debounce_;
-    Publish publish_;
-    Ready ready_;
+    Finished finished_;
     std::mutex mutex_;
     std::condition_variable wake_;
     std::map<std::string, Job> pending_;

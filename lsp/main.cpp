@@ -8,6 +8,10 @@
 #include <filesystem>
 #include <string>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -30,6 +34,14 @@ void usage(std::FILE* out) {
 } // namespace
 
 int main(int argc, char** argv) {
+#ifdef __GLIBC__
+    // One malloc arena, set before any thread starts. Every parse and index runs on a fresh
+    // large-stack thread, and glibc gives threads arenas of their own: analyses made in
+    // them and freed on the main thread kept memory in many arenas, trimmed and faulted in
+    // again. Measured with lsp_bench: peak memory 29-36 MB -> 20 MB, completion median
+    // 0.8 -> 0.2-0.4 ms, diagnostics no slower. Two threads at most allocate at once.
+    mallopt(M_ARENA_MAX, 1);
+#endif
     crt::lsp::ServerOptions options;
     options.analysis.stdlibDir = findStdlib();
     for (int i = 1; i < argc; ++i) {

@@ -4,11 +4,13 @@
 #include "code_actions.hpp"
 #include "diagnostics_worker.hpp"
 #include "formatter.hpp"
+#include "stale_names.hpp"
 
 #include <fmt/format.h>
 
 #include <filesystem>
 #include <thread>
+#include <utility>
 
 #ifndef CRT_VERSION
 #define CRT_VERSION "0"
@@ -131,9 +133,9 @@ void Server::handle(const json& message) {
         json result = dispatch(method, params);
         if (rawResult_) {
             transport_.write(fmt::format("{{\"jsonrpc\":\"2.0\",\"id\":{},\"result\":{}}}", id.dump(), *rawResult_));
-            return;
+        } else {
+            reply(id, std::move(result));
         }
-        reply(id, std::move(result));
     } catch (const LspError& e) {
         replyError(id, e.code, e.what());
     } catch (const json::exception& e) {
@@ -141,6 +143,7 @@ void Server::handle(const json& message) {
     } catch (const std::exception& e) {
         replyError(id, ErrorCode::InternalError, e.what());
     }
+    retired_.clear();
 }
 
 // ---------------------------------------------------------------- lifecycle
@@ -177,9 +180,8 @@ json Server::initialize(const json& params) {
     initialized_ = true;
     worker_ = std::make_unique<DiagnosticsWorker>(
         options_.analysis, options_.debounce,
-        [this](const std::string& uri, int64_t version, const Compilation& c) { publish(uri, version, c); },
         [this](const std::string& uri, int64_t version, std::shared_ptr<const Analysis> analysis) {
-            ready(uri, version, std::move(analysis));
+            publish(uri, version, std::move(analysis));
         });
 
     json tokenTypes = json::array(), tokenModifiers = json::array();
@@ -229,6 +231,10 @@ void Server::didOpen(const json& params) {
     doc.version = item.value("version", int64_t{0});
     doc.analysis.reset();
     doc.analysisVersion = -1;
+    {
+        std::lock_guard lock(publishedMutex_); // of an earlier text opened under this name
+        published_.erase(uri);
+    }
     worker_->schedule(uri, doc.version, doc.path, doc.text);
 }
 
@@ -268,31 +274,29 @@ void Server::didClose(const json& params) {
           {"params", {{"uri", uri}, {"diagnostics", json::array()}}}});
 }
 
-void Server::publish(const std::string& uri, int64_t version, const Compilation& c) {
-    // Runs on the worker thread, before the compilation is indexed and handed over: from
-    // then on only the main thread touches it (SourceFile caches its last line lookup).
+void Server::publish(const std::string& uri, int64_t version, std::shared_ptr<const Analysis> analysis) {
+    // Runs on the worker thread. The diagnostics are converted before the analysis is handed
+    // over: from then on only the main thread touches it (SourceFile caches its last line
+    // lookup). Handing it over before sending means a request that follows the diagnostics
+    // always finds the analysis of their text.
+    const Compilation& c = analysis->compilation;
     std::vector<DocumentDiagnostic> diagnostics = documentDiagnostics(c);
     const SourceFile& file = c.sources.file(0);
     Positions positions(file, encoding_);
     json list = json::array();
     for (const DocumentDiagnostic& d : diagnostics) list.push_back(toJson(d, positions, uri, &file, encoding_));
+    // Code actions need the texts and fix-its only, never the related files.
+    for (DocumentDiagnostic& d : diagnostics) d.related.clear();
+    Published replaced; // freed once the diagnostics are out: a whole analysis takes a while
     {
         std::lock_guard lock(publishedMutex_);
-        Published& last = published_[uri];
-        // Related information points into the compilation: keep the texts, drop the files.
-        for (DocumentDiagnostic& d : diagnostics) d.related.clear();
-        last = Published{version, nullptr, std::move(diagnostics), c.globalValues};
+        replaced = std::exchange(published_[uri],
+                                 Published{version, std::move(analysis),
+                                           std::make_shared<const std::vector<DocumentDiagnostic>>(std::move(diagnostics))});
     }
     send({{"jsonrpc", "2.0"},
           {"method", "textDocument/publishDiagnostics"},
           {"params", {{"uri", uri}, {"version", version}, {"diagnostics", std::move(list)}}}});
-}
-
-void Server::ready(const std::string& uri, int64_t version, std::shared_ptr<const Analysis> analysis) {
-    std::lock_guard lock(publishedMutex_);
-    auto it = published_.find(uri);
-    if (it != published_.end() && it->second.version == version) it->second.analysis = std::move(analysis);
-    analysisReady_.notify_all();
 }
 
 std::optional<Server::Published> Server::published(const std::string& uri) {
@@ -310,28 +314,48 @@ Server::Document& Server::document(const json& params) {
 }
 
 const Analysis& Server::analysisOf(Document& doc) {
-    if (!doc.analysis || doc.analysisVersion != doc.version) {
-        std::shared_ptr<const Analysis> fromWorker;
-        {
-            // Diagnostics of this very text are out: the worker is indexing it right now,
-            // which takes less time than starting over here.
-            std::unique_lock lock(publishedMutex_);
-            auto ready = [&] {
-                auto it = published_.find(doc.uri);
-                if (it == published_.end() || it->second.version != doc.version) return true;
-                fromWorker = it->second.analysis;
-                return fromWorker != nullptr;
-            };
-            analysisReady_.wait_for(lock, std::chrono::milliseconds(250), ready);
-        }
-        if (fromWorker) {
-            doc.analysis = std::move(fromWorker);
-        } else {
-            doc.analysis = analyze(doc.path, doc.text, options_.analysis, includes_);
-        }
-        doc.analysisVersion = doc.version;
+    if (doc.analysis && doc.analysisVersion == doc.version) return *doc.analysis;
+    // The worker publishes an analysis together with the diagnostics of its text; before
+    // they are out, parsing and resolving here (no evaluation) is quicker than waiting.
+    std::optional<Published> last = published(doc.uri);
+    retired_.push_back(std::move(doc.analysis)); // freed after the answer is sent
+    if (last && last->version == doc.version) {
+        doc.analysis = std::move(last->analysis);
+    } else {
+        doc.analysis = analyze(doc.path, doc.text, options_.analysis, includes_);
     }
+    doc.analysisVersion = doc.version;
     return *doc.analysis;
+}
+
+std::shared_ptr<const Analysis> Server::olderAnalysis(Document& doc) {
+    std::optional<Published> last = published(doc.uri);
+    if (last && last->version > doc.analysisVersion) return last->analysis;
+    return doc.analysis;
+}
+
+json Server::completion(Document& doc, const json& params) {
+    std::optional<Published> last = published(doc.uri);
+    bool exact = (doc.analysis && doc.analysisVersion == doc.version) || (last && last->version == doc.version);
+    if (!exact) {
+        // As clangd completes with a stale preamble: the tokens of the current text, and the
+        // names in scope from the newest finished analysis if the edits since cannot have
+        // changed them, rather than parse, resolve and index the whole text for one request.
+        if (std::shared_ptr<const Analysis> older = olderAnalysis(doc)) {
+            if (!doc.tokens || doc.tokensVersion != doc.version) {
+                doc.tokens = lexOnly(doc.path, doc.text);
+                doc.tokensVersion = doc.version;
+            }
+            Positions positions(doc.tokens->file(), encoding_);
+            uint32_t offset = positions.offset(member(params, "position"));
+            if (std::optional<uint32_t> at = sameNamesAt(*older, *doc.tokens, offset)) {
+                return toJson(complete(*doc.tokens, offset, *older, *at, options_.analysis), positions, snippets_);
+            }
+        }
+    }
+    const Analysis& a = analysisOf(doc);
+    Positions positions(a.file(), encoding_);
+    return toJson(complete(a, positions.offset(member(params, "position")), options_.analysis), positions, snippets_);
 }
 
 json Server::location(const Location& loc, const Document& doc, const Analysis& analysis) {
@@ -384,6 +408,8 @@ json Server::dispatch(const std::string& method, const json& params) {
         return edits;
     }
 
+    if (feature == "completion") return completion(doc, params);
+
     const Analysis& a = analysisOf(doc);
     Positions positions(a.file(), encoding_);
     auto offset = [&] { return positions.offset(member(params, "position")); };
@@ -400,11 +426,10 @@ json Server::dispatch(const std::string& method, const json& params) {
     }
     if (feature == "hover") {
         std::optional<Published> last = published(doc.uri);
-        const GlobalValues* values = last ? &last->values : nullptr;
+        const GlobalValues* values = last ? &last->analysis->compilation.globalValues : nullptr;
         auto result = hover(a, offset(), values);
         return result ? toJson(*result, positions) : json(nullptr);
     }
-    if (feature == "completion") return toJson(complete(a, offset(), options_.analysis), positions, snippets_);
     if (feature == "signatureHelp") {
         auto help = signatureHelp(a, offset());
         return help ? toJson(*help) : json(nullptr);
@@ -459,14 +484,14 @@ json Server::dispatch(const std::string& method, const json& params) {
     uint32_t begin = positions.offset(member(r, "start"));
     uint32_t end = positions.offset(member(r, "end"));
     std::optional<Published> last = published(doc.uri);
-    std::vector<DocumentDiagnostic> diagnostics = last && last->version == doc.version
-                                                      ? last->diagnostics
-                                                      : documentDiagnostics(a.compilation);
+    auto diagnostics = last && last->version == doc.version
+                           ? last->diagnostics
+                           : std::make_shared<const std::vector<DocumentDiagnostic>>(documentDiagnostics(a.compilation));
     json out = json::array();
-    for (const CodeAction& action : codeActions(diagnostics, a.file().text(), begin, end)) {
+    for (const CodeAction& action : codeActions(*diagnostics, a.file().text(), begin, end)) {
         json edits = json::array();
         for (const TextEdit& e : action.edits) edits.push_back({{"range", positions.range(e.range)}, {"newText", e.newText}});
-        const DocumentDiagnostic& d = diagnostics[action.diagnostic];
+        const DocumentDiagnostic& d = (*diagnostics)[action.diagnostic];
         out.push_back({{"title", action.title},
                        {"kind", "quickfix"},
                        {"isPreferred", action.preferred},

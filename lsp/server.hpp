@@ -38,15 +38,17 @@ private:
         std::string path;
         std::string text;
         int64_t version = 0;
-        std::shared_ptr<const Analysis> analysis; ///< of `version`, made on demand
+        std::shared_ptr<const Analysis> analysis; ///< of `analysisVersion`, the newest at hand
         int64_t analysisVersion = -1;
+        std::shared_ptr<const Analysis> tokens; ///< only the tokens of `tokensVersion`
+        int64_t tokensVersion = -1;
     };
-    /// What the diagnostics worker last published for a document.
+    /// What the diagnostics worker last published for a document: immutable, shared by the
+    /// requests that read it.
     struct Published {
         int64_t version = -1;
-        std::shared_ptr<const Analysis> analysis; ///< the same, indexed (set a little later)
-        std::vector<DocumentDiagnostic> diagnostics;
-        GlobalValues values; ///< for hover
+        std::shared_ptr<const Analysis> analysis; ///< evaluated: its global values are for hover
+        std::shared_ptr<const std::vector<DocumentDiagnostic>> diagnostics; ///< for code actions
     };
 
     void readerLoop();
@@ -63,11 +65,13 @@ private:
     void didOpen(const json& params);
     void didChange(const json& params);
     void didClose(const json& params);
-    void publish(const std::string& uri, int64_t version, const lang::Compilation& compilation);
-    void ready(const std::string& uri, int64_t version, std::shared_ptr<const Analysis> analysis);
+    void publish(const std::string& uri, int64_t version, std::shared_ptr<const Analysis> analysis);
 
     Document& document(const json& params);
     const Analysis& analysisOf(Document& document);
+    /// An analysis of an older version of the document, the newest at hand (or null).
+    std::shared_ptr<const Analysis> olderAnalysis(Document& document);
+    json completion(Document& document, const json& params);
     std::optional<Published> published(const std::string& uri);
     json location(const Location& location, const Document& document, const Analysis& analysis);
 
@@ -78,11 +82,12 @@ private:
     bool initialized_ = false;
     bool shutdown_ = false;
     std::map<std::string, Document> documents_;
+    /// Analyses replaced while answering a request, freed once the answer is out.
+    std::vector<std::shared_ptr<const Analysis>> retired_;
     IncludeCache includes_;
     std::unique_ptr<DiagnosticsWorker> worker_;
 
     std::mutex publishedMutex_;
-    std::condition_variable analysisReady_;
     std::map<std::string, Published> published_;
 
     // Messages read by the reader thread, handled in order by the main thread.

@@ -150,3 +150,9 @@ TEST_CASE("snippets read as plain text for clients without snippets", "[completi
           "Sphere { center -> vec3(0, 0, 0) radius -> 1.0 }");
     CHECK(snippetToPlain("f(${1})") == "f()");
 }
+
+TEST_CASE("a name bound nowhere, such as the word being typed, is not offered", "[completion]") {
+    auto list = completeAt("size = 1\nScene { Sphere { center -> vec3(0, 0, 0) radius -> si@ } }\n");
+    CHECK(has(list, "size"));
+    CHECK(!has(list, "si"));
+}
