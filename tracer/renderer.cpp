@@ -187,23 +187,24 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
     };
     std::vector<std::thread> threads;
     for (unsigned i = 1; i < threadCount; ++i) threads.emplace_back(worker, i);
+    // Report from a helper so the caller's callback runs while the workers trace.
+    std::atomic<bool> finished{false};
+    std::thread reporter;
     if (settings.onProgress) {
-        // Report from a helper so the caller's callback runs while the workers trace.
-        std::atomic<bool> finished{false};
-        std::thread reporter([&] {
+        reporter = std::thread([&] {
             while (!finished.load()) {
                 settings.onProgress(doneTiles.load(), tileCount);
                 std::this_thread::sleep_for(std::chrono::milliseconds(100));
             }
         });
-        worker(0);
-        for (std::thread& t : threads) t.join();
+    }
+    if (settings.onThreadsStarted) settings.onThreadsStarted();
+    worker(0);
+    for (std::thread& t : threads) t.join();
+    if (reporter.joinable()) {
         finished = true;
         reporter.join();
         settings.onProgress(doneTiles.load(), tileCount);
-    } else {
-        worker(0);
-        for (std::thread& t : threads) t.join();
     }
     for (const RayStats& st : stats) outcome.stats += st;
     outcome.renderSeconds = secondsSince(renderStart);

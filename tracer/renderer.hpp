@@ -28,6 +28,9 @@ struct RenderSettings {
     /// in order from the top, one call at a time, from a worker thread: it should only copy
     /// them and hand them over (to an image file being written while the render goes on).
     std::function<void(int yBegin, int yEnd, std::span<const float> rgb)> onRowsDone;
+    /// Called once all the render's threads have been created, before the calling thread
+    /// starts tracing (crtc starts loading the image module then; see image_io::startLoading).
+    std::function<void()> onThreadsStarted;
 };
 
 struct RenderOutcome {

@@ -171,6 +171,9 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
             settings.threads = options.threads;
             settings.cancel = &interrupted;
             settings.onProgress = [&](int done, int all) { progress.update(done, all); };
+            // The image module (OpenImageIO, about 0.2 s to load) loads while the frame is
+            // traced; not earlier, since no thread can start while it loads.
+            settings.onThreadsStarted = [] { image_io::startLoading(); };
             std::optional<StreamedOutput> streamed;
             if (!gif) {
                 streamed.emplace(target, width, height, write);

@@ -22,6 +22,17 @@ void StreamedOutput::addRows(int yBegin, int yEnd, std::span<const float> rgb) {
 }
 
 void StreamedOutput::write() {
+    {
+        // Nothing is opened before the first rows: opening waits for the image module, and
+        // asking for it before the render's threads exist would load it now, on this thread,
+        // holding up their creation (see image_io::startLoading).
+        std::unique_lock<std::mutex> lock(mutex_);
+        ready_.wait(lock, [&] { return !bands_.empty() || noMoreRows_; });
+        if (bands_.empty()) {
+            error_ = "no rows were rendered";
+            return;
+        }
+    }
     std::string error;
     std::unique_ptr<image_io::ImageStream> stream = image_io::ImageStream::open(path_, width_, height_, 3, options_, error);
     while (true) {

@@ -218,6 +218,10 @@ void startLoading() {
     detail::startModuleLoad();
 }
 
+bool finishLoading() {
+    return detail::waitForStartedLoad();
+}
+
 bool ensureLoaded(std::string& error) {
     return detail::loadedModule(error) != nullptr;
 }

@@ -37,9 +37,16 @@ struct WriteOptions {
     static constexpr int kDefaultPngCompression = 2;
 };
 
-/// Begins loading the module on a background thread, so that the load overlaps parsing and
-/// rendering. Returns at once; later calls do nothing. Every other function waits for the load.
+/// Begins loading the module on a background thread, so that the load overlaps rendering.
+/// Returns at once; later calls do nothing. Every other function waits for the load.
+/// While the dynamic linker loads a library no thread can be created (creating one waits for
+/// the whole load, about 0.2 s), so start it once the threads a job needs are running.
 void startLoading();
+
+/// Waits for a load begun by startLoading (or by a read or write); returns at once if none
+/// was. A process must not exit in the middle of loading the module. Returns whether the
+/// module was loaded (or its load attempted).
+bool finishLoading();
 
 /// Waits for the module (loading it now if startLoading was not called); false with a message
 /// if it cannot be loaded. Lets a driver fail before a long render rather than after it.

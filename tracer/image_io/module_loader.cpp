@@ -123,6 +123,12 @@ class Loader {
         return result_.module;
     }
 
+    bool waitIfStarted() {
+        std::unique_lock lock(mutex_);
+        if (started_) done_.wait(lock, [this] { return finished_; });
+        return started_;
+    }
+
   private:
     void finish(LoadResult result) {
         {
@@ -150,6 +156,10 @@ Loader& loader() {
 
 void startModuleLoad() {
     loader().startInBackground();
+}
+
+bool waitForStartedLoad() {
+    return loader().waitIfStarted();
 }
 
 const CrtImageIoModule* loadedModule(std::string& error) {
