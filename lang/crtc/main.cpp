@@ -153,6 +153,9 @@ int main(int argc, char** argv) {
     // Never exit while the image module is still being loaded: its libraries' constructors
     // would run alongside the exit handlers (seen as aborts inside dlopen on Ctrl-C).
     if (!crt::tracer::image_io::finishLoading()) return status;
+#if defined(__SANITIZE_ADDRESS__)
+    return status; // sanitizer builds exit normally, so that LeakSanitizer checks renders too
+#endif
     // With OpenImageIO loaded, a normal exit runs the exit handlers and destructors of its
     // ~260 libraries: 30 to 60 ms spent after the image is written. Everything crtc writes is
     // complete by now (the image renamed into place, temporary files removed), so flush the
