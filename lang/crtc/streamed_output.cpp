@@ -22,19 +22,9 @@ void StreamedOutput::addRows(int yBegin, int yEnd, std::span<const float> rgb) {
 }
 
 void StreamedOutput::write() {
-    {
-        // Nothing is opened before the first rows: opening waits for the image module, and
-        // asking for it before the render's threads exist would load it now, on this thread,
-        // holding up their creation (see image_io::startLoading).
-        std::unique_lock<std::mutex> lock(mutex_);
-        ready_.wait(lock, [&] { return !bands_.empty() || noMoreRows_; });
-        if (bands_.empty()) {
-            error_ = "no rows were rendered";
-            return;
-        }
-    }
-    std::string error;
-    std::unique_ptr<image_io::ImageStream> stream = image_io::ImageStream::open(path_, width_, height_, 3, options_, error);
+    std::unique_ptr<image_io::ImageStream> stream;
+    std::string error = "no rows were rendered";
+    bool opened = false;
     while (true) {
         Band band;
         {
@@ -43,6 +33,14 @@ void StreamedOutput::write() {
             if (bands_.empty()) break;
             band = std::move(bands_.front());
             bands_.pop_front();
+        }
+        if (!opened) {
+            // Opened with the first rows, not before: opening waits for the image module,
+            // and asking for it before the render's threads exist would load it now, on this
+            // thread, holding up their creation (see image_io::startLoading).
+            opened = true;
+            error.clear();
+            stream = image_io::ImageStream::open(path_, width_, height_, 3, options_, error);
         }
         // After a failure the remaining rows are only drained: the error is reported once.
         if (stream && !stream->writeRows(band.yBegin, band.yEnd, band.rgb, error)) stream.reset();

@@ -18,7 +18,7 @@ namespace crt::lang::driver {
 
 class StreamedOutput {
 public:
-    /// Starts the writer thread, which opens `path` (waiting for the image module).
+    /// Starts the writer thread, which opens `path` when the first rows arrive.
     StreamedOutput(std::string path, int width, int height, tracer::image_io::WriteOptions options);
     /// Destroying an unfinished output (an interrupted or failed render) leaves no file.
     ~StreamedOutput();

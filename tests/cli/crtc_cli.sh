@@ -178,6 +178,9 @@ if [ "$(stat -c %s "$work/images/raw.png")" -le "$(stat -c %s "$work/images/smal
     echo "FAIL: --png-compression 0 did not write a bigger file than --png-compression 9"
     failures=$((failures + 1))
 fi
+expect_status 2 "an output folder that does not exist" "$crtc" -q -o "$work/images/missing/x.png" "$work/scenes/tiny.crt"
+expect_text "$work/err" "cannot write .*missing/x.png.*does not exist" "the streamed output names the missing folder"
+expect_no_file "$work/images/missing" "nothing is created for an unwritable output"
 expect_status 2 "--png-compression 10" "$crtc" -q --png-compression 10 -o "$work/images/bad.png" "$work/scenes/tiny.crt"
 expect_text "$work/err" "--png-compression needs an integer from 0 to 9" "--png-compression range message"
 
