@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
 #include <mutex>
 #include <thread>
 
@@ -187,14 +188,18 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
     };
     std::vector<std::thread> threads;
     for (unsigned i = 1; i < threadCount; ++i) threads.emplace_back(worker, i);
-    // Report from a helper so the caller's callback runs while the workers trace.
-    std::atomic<bool> finished{false};
+    // Report from a helper so the caller's callback runs while the workers trace. It waits
+    // on a condition the end of the render signals, so the render never waits out a period.
+    std::mutex reportMutex;
+    std::condition_variable reportWake;
+    bool finished = false;
     std::thread reporter;
     if (settings.onProgress) {
         reporter = std::thread([&] {
-            while (!finished.load()) {
+            std::unique_lock lock(reportMutex);
+            while (!finished) {
                 settings.onProgress(doneTiles.load(), tileCount);
-                std::this_thread::sleep_for(std::chrono::milliseconds(100));
+                reportWake.wait_for(lock, std::chrono::milliseconds(100), [&] { return finished; });
             }
         });
     }
@@ -202,7 +207,11 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
     worker(0);
     for (std::thread& t : threads) t.join();
     if (reporter.joinable()) {
-        finished = true;
+        {
+            std::lock_guard lock(reportMutex);
+            finished = true;
+        }
+        reportWake.notify_one();
         reporter.join();
         settings.onProgress(doneTiles.load(), tileCount);
     }

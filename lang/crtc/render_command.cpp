@@ -170,7 +170,7 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
             tracer::RenderSettings settings;
             settings.threads = options.threads;
             settings.cancel = &interrupted;
-            settings.onProgress = [&](int done, int all) { progress.update(done, all); };
+            if (!options.quiet) settings.onProgress = [&](int done, int all) { progress.update(done, all); };
             // The image module (OpenImageIO, about 0.2 s to load) loads while the frame is
             // traced; not earlier, since no thread can start while it loads.
             settings.onThreadsStarted = [] { image_io::startLoading(); };
