@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -57,6 +58,22 @@ struct BoxRay {
         entry = t0;
         return t0 < tMax && t1 > tMin;
     }
+};
+
+/// A ray whose BoxRay is prepared on first use: a query that meets no box test in double
+/// precision (a four-wide traversal that reaches no CSG object) does not pay for it.
+class LazyBoxRay {
+public:
+    explicit LazyBoxRay(const Ray& ray) : ray_(ray) {}
+    const Ray& ray() const { return ray_; }
+    const BoxRay& box() const {
+        if (!box_) box_.emplace(ray_);
+        return *box_;
+    }
+
+private:
+    const Ray& ray_;
+    mutable std::optional<BoxRay> box_;
 };
 
 /// Four float lanes; GCC and Clang compile the arithmetic to one SSE instruction each.
@@ -135,18 +152,18 @@ public:
     /// first; `tMax` may shrink while visiting (a nearest-hit search). visit(item) returns
     /// false to stop; traverse then returns false.
     template <typename Visit>
-    bool traverse(const Ray& ray, const double& tMax, RayStats& stats, Visit&& visit) const {
+    bool traverse(const LazyBoxRay& ray, const double& tMax, RayStats& stats, Visit&& visit) const {
         if (nodes_.empty()) return true;
         if (!fewItemBounds_.empty()) {
             // A handful of items: their boxes one by one in double precision, which is
             // cheaper than preparing a ray for four-wide float tests.
-            const BoxRay boxRay(ray);
+            const BoxRay& boxRay = ray.box();
             stats.nodesVisited += fewItemBounds_.size();
             for (size_t i = 0; i < fewItemBounds_.size(); ++i)
                 if (boxRay.hits(fewItemBounds_[i].faces, 0.0, tMax) && !visit(items_[i])) return false;
             return true;
         }
-        return traverseWide(ray, tMax, stats, visit);
+        return traverseWide(ray.ray(), tMax, stats, visit);
     }
 
     /// Up to this many items, traversal tests each item's box (fewItemBounds_).

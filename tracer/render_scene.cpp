@@ -17,28 +17,22 @@ bool insideOf(CsgNodeKind kind, bool left, bool right) {
     return left;
 }
 
-/// Crossings closer than this (in ray units) are one event: coincident faces of two
-/// operands, computed through different transforms, differ by rounding only, and treating
-/// them apart would leave slivers ("speckles") of the face that should vanish.
-double coincidenceTolerance(const Ray& ray, double t) {
-    double originScale = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z)});
-    double dirScale = std::max({std::abs(ray.dir.x), std::abs(ray.dir.y), std::abs(ray.dir.z)});
-    return 1e-9 * (std::abs(t) + originScale / dirScale);
-}
-
 } // namespace
 
-bool RenderScene::csgCrossings(int32_t nodeIndex, const Ray& ray, const BoxRay& boxRay, QueryScratch& scratch,
-                               RayStats& stats) const {
+CsgRay::CsgRay(const Ray& r, const BoxRay& b)
+    : ray(r), boxRay(b),
+      lineScale(std::max({std::abs(r.origin.x), std::abs(r.origin.y), std::abs(r.origin.z)}) /
+                std::max({std::abs(r.dir.x), std::abs(r.dir.y), std::abs(r.dir.z)})) {}
+
+bool RenderScene::csgCrossings(int32_t nodeIndex, const CsgRay& q, QueryScratch& scratch, RayStats& stats) const {
     const CsgTreeNode& node = csgNodes[nodeIndex];
     std::vector<CsgCrossing>& out = scratch.csg;
-    if (node.bounds.finite() && !boxRay.hits(node.bounds, -kInfinity, kInfinity)) return false;
 
     if (node.kind == CsgNodeKind::Leaf) {
         const Primitive& p = primitives[node.primitive];
         CrossingList list;
         ++stats.intersectionTests;
-        crossLine(p.geometry, objectRay(p, ray), list);
+        crossLine(p.geometry, objectRay(p, q.ray), list);
         bool inside = list.startsInside;
         for (int i = 0; i < list.count; ++i) {
             inside = !inside;
@@ -47,13 +41,19 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const Ray& ray, const BoxRay& 
         return list.startsInside;
     }
 
+    // An operand whose bounds the line misses has no crossings and the line is outside it.
+    auto operand = [&](int32_t child) {
+        const CsgTreeNode& c = csgNodes[child];
+        if (c.testBounds && !q.boxRay.hits(c.bounds, -kInfinity, kInfinity)) return false;
+        return csgCrossings(child, q, scratch, stats);
+    };
     size_t leftStart = out.size();
-    bool inLeft = csgCrossings(node.left, ray, boxRay, scratch, stats);
+    bool inLeft = operand(node.left);
     size_t rightStart = out.size();
     // A difference or intersection whose left operand the line never enters is empty on
     // it: the right operand need not be asked (a carving tool the ray only meets outside).
     if (node.kind != CsgNodeKind::Union && rightStart == leftStart && !inLeft) return false;
-    bool inRight = csgCrossings(node.right, ray, boxRay, scratch, stats);
+    bool inRight = operand(node.right);
     size_t rightEnd = out.size();
     bool state = insideOf(node.kind, inLeft, inRight);
     bool startsInside = state;
@@ -61,7 +61,7 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const Ray& ray, const BoxRay& 
     size_t i = leftStart, j = rightStart;
     while (i < rightStart || j < rightEnd) {
         double t = std::min(i < rightStart ? out[i].t : kInfinity, j < rightEnd ? out[j].t : kInfinity);
-        double limit = t + coincidenceTolerance(ray, t);
+        double limit = t + q.coincidence(t);
         size_t groupLeft = i, groupRight = j;
         bool leftBefore = inLeft;
         while (i < rightStart && out[i].t <= limit) inLeft = out[i++].insideAfter;
@@ -100,22 +100,21 @@ bool RenderScene::csgMayCross(int32_t root, const BoxRay& boxRay, double tMax) c
     return !bounds.finite() || boxRay.hits(bounds, 0.0, tMax);
 }
 
-bool RenderScene::nearestInObject(int32_t object, const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch,
-                                  RayStats& stats) const {
+bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double tMax, Hit& hit,
+                                  QueryScratch& scratch, RayStats& stats) const {
     if (object >= 0) {
         const Primitive& p = primitives[object];
         CrossingList list;
         ++stats.intersectionTests;
-        crossLine(p.geometry, objectRay(p, ray), list);
+        crossLine(p.geometry, objectRay(p, ray.ray()), list);
         Crossing c{};
         if (!firstCrossingAfter(list, 0.0, tMax, c)) return false;
         hit = {c.t, object, c, false};
         return true;
     }
-    const BoxRay boxRay(ray);
-    if (!csgMayCross(~object, boxRay, tMax)) return false;
+    if (!csgMayCross(~object, ray.box(), tMax)) return false;
     size_t start = scratch.csg.size();
-    csgCrossings(~object, ray, boxRay, scratch, stats);
+    csgCrossings(~object, CsgRay(ray.ray(), ray.box()), scratch, stats);
     bool found = false;
     for (size_t i = start; i < scratch.csg.size(); ++i) {
         const CsgCrossing& c = scratch.csg[i];
@@ -141,14 +140,15 @@ bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch&
             found = true;
         }
     }
+    const LazyBoxRay lazy(ray);
     for (int32_t object : unbounded) {
-        if (nearestInObject(object, ray, nearest, hit, scratch, stats)) {
+        if (nearestInObject(object, lazy, nearest, hit, scratch, stats)) {
             nearest = hit.t;
             found = true;
         }
     }
-    bvh.traverse(ray, nearest, stats, [&](int32_t item) {
-        if (nearestInObject(objects[item], ray, nearest, hit, scratch, stats)) {
+    bvh.traverse(lazy, nearest, stats, [&](int32_t item) {
+        if (nearestInObject(objects[item], lazy, nearest, hit, scratch, stats)) {
             nearest = hit.t;
             found = true;
         }

@@ -35,6 +35,23 @@ struct CsgTreeNode {
     int32_t left = -1, right = -1; ///< children (node indices) of an operator
     int32_t primitive = -1;        ///< leaf
     Bounds3 bounds;                ///< world space; everything() when unbounded
+    /// Whether queries test `bounds` before asking the node: not for leaves whose own
+    /// crossing test costs about as much as the box test, nor for a difference (its bounds
+    /// are its left operand's, which that operand tests itself).
+    bool testBounds = false;
+};
+
+/// A world ray prepared for CSG queries.
+struct CsgRay {
+    const Ray& ray;
+    const BoxRay& boxRay;
+    /// Crossings closer than this (in ray units) are one event: coincident faces of two
+    /// operands, computed through different transforms, differ by rounding only, and treating
+    /// them apart would leave slivers ("speckles") of the face that should vanish.
+    double coincidence(double t) const { return 1e-9 * (std::abs(t) + lineScale); }
+    double lineScale; ///< max |origin component| / max |direction component|
+
+    CsgRay(const Ray& r, const BoxRay& b);
 };
 
 /// A crossing of a world ray with a CSG tree's surface.
@@ -105,17 +122,16 @@ public:
     Bounds3 bounds; ///< of the bounded objects
 
 private:
-    bool nearestInObject(int32_t object, const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch,
+    bool nearestInObject(int32_t object, const LazyBoxRay& ray, double tMax, Hit& hit, QueryScratch& scratch,
                          RayStats& stats) const;
     template <typename Visit>
-    bool crossingsInObject(int32_t object, const Ray& ray, double tMax, QueryScratch& scratch,
+    bool crossingsInObject(int32_t object, const LazyBoxRay& ray, double tMax, QueryScratch& scratch,
                            RayStats& stats, Visit& visit) const;
     /// Whether the segment (0, tMax) can meet the CSG tree rooted at `root` (its bounds).
     bool csgMayCross(int32_t root, const BoxRay& boxRay, double tMax) const;
-    /// Appends the node's crossings of the whole line to scratch.csg from `start`; returns
-    /// whether the line starts inside.
-    bool csgCrossings(int32_t node, const Ray& ray, const BoxRay& boxRay, QueryScratch& scratch,
-                      RayStats& stats) const;
+    /// Appends the node's crossings of the whole line to scratch.csg; returns whether the
+    /// line starts inside. The caller has tested the node's bounds where that pays.
+    bool csgCrossings(int32_t node, const CsgRay& ray, QueryScratch& scratch, RayStats& stats) const;
     Ray objectRay(const Primitive& p, const Ray& ray) const {
         return p.transform < 0 ? ray : transforms[p.transform].toObject.ray(ray);
     }

@@ -10,23 +10,22 @@ inline double planeCrossing(const PlaneObject& plane, const Ray& ray) {
 }
 
 template <typename Visit>
-bool RenderScene::crossingsInObject(int32_t object, const Ray& ray, double tMax, QueryScratch& scratch,
+bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, double tMax, QueryScratch& scratch,
                                     RayStats& stats, Visit& visit) const {
     if (object >= 0) {
         const Primitive& p = primitives[object];
         CrossingList list;
         ++stats.intersectionTests;
-        crossLine(p.geometry, objectRay(p, ray), list);
+        crossLine(p.geometry, objectRay(p, ray.ray()), list);
         for (int i = 0; i < list.count; ++i) {
             double t = list.items[i].t;
             if (t > 0 && t < tMax && !visit(object, t)) return false;
         }
         return true;
     }
-    const BoxRay boxRay(ray);
-    if (!csgMayCross(~object, boxRay, tMax)) return true;
+    if (!csgMayCross(~object, ray.box(), tMax)) return true;
     size_t start = scratch.csg.size();
-    csgCrossings(~object, ray, boxRay, scratch, stats);
+    csgCrossings(~object, CsgRay(ray.ray(), ray.box()), scratch, stats);
     bool keepGoing = true;
     for (size_t i = start; i < scratch.csg.size() && keepGoing; ++i) {
         const CsgCrossing& c = scratch.csg[i];
@@ -44,10 +43,11 @@ bool RenderScene::forEachCrossing(const Ray& ray, double tMax, QueryScratch& scr
         double t = planeCrossing(plane, ray);
         if (t > 0 && t < tMax && !visit(plane.primitive, t)) return false;
     }
+    const LazyBoxRay lazy(ray);
     for (int32_t object : unbounded)
-        if (!crossingsInObject(object, ray, tMax, scratch, stats, visit)) return false;
-    return bvh.traverse(ray, tMax, stats, [&](int32_t item) {
-        return crossingsInObject(objects[item], ray, tMax, scratch, stats, visit);
+        if (!crossingsInObject(object, lazy, tMax, scratch, stats, visit)) return false;
+    return bvh.traverse(lazy, tMax, stats, [&](int32_t item) {
+        return crossingsInObject(objects[item], lazy, tMax, scratch, stats, visit);
     });
 }
 

@@ -126,6 +126,7 @@ private:
             CsgTreeNode leaf;
             leaf.primitive = p;
             leaf.bounds = worldBounds(scene_.primitives[p]);
+            leaf.testBounds = leaf.bounds.finite() && !hasCheapCrossings(scene_.primitives[p].geometry);
             scene_.csgNodes.push_back(leaf);
             return static_cast<int32_t>(scene_.csgNodes.size() - 1);
         }
@@ -202,6 +203,7 @@ private:
         if (kind == CsgNodeKind::Union) node.bounds = unionOf(a, b);
         else if (kind == CsgNodeKind::Difference) node.bounds = a;
         else node.bounds = {glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)};
+        node.testBounds = kind != CsgNodeKind::Difference && node.bounds.finite();
         scene_.csgNodes.push_back(node);
         return static_cast<int32_t>(scene_.csgNodes.size() - 1);
     }

@@ -21,6 +21,12 @@ bool isSolid(const Geometry& geometry) {
     return std::visit([](const auto& g) { return g.solid(); }, geometry);
 }
 
+bool hasCheapCrossings(const Geometry& geometry) {
+    return std::holds_alternative<SphereGeometry>(geometry) || std::holds_alternative<BoxGeometry>(geometry) ||
+           std::holds_alternative<PlaneGeometry>(geometry) || std::holds_alternative<DiscGeometry>(geometry) ||
+           std::holds_alternative<QuadGeometry>(geometry) || std::holds_alternative<TriangleGeometry>(geometry);
+}
+
 std::optional<Geometry> makeGeometry(const Shape& shape) {
     return std::visit(
         [](const auto& s) -> std::optional<Geometry> {

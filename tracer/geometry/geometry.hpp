@@ -30,6 +30,9 @@ void crossLine(const Geometry& geometry, const Ray& ray, CrossingList& out);
 SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing& crossing);
 /// Whether the primitive bounds a volume (usable in CSG).
 bool isSolid(const Geometry& geometry);
+/// Whether crossLine costs about as much as testing a ray against the primitive's bounds
+/// (then testing the bounds first does not pay).
+bool hasCheapCrossings(const Geometry& geometry);
 
 /// The primitive of a plain shape; nullopt for CSG, transform and group nodes and for meshes
 /// (which become one MeshTriangleGeometry per triangle once the file is read).
