@@ -78,7 +78,7 @@ struct SurfaceInteraction {
     Vec3 normal{0, 1, 0};        ///< geometric, unit, outward for solids (cut faces flipped)
     Vec3 shadingNormal{0, 1, 0}; ///< same orientation as normal
     Vec3 objectPoint{0.0};       ///< in the primitive's object space (textures)
-    Vec2 uv{0.0};
+    Vec2 uv{0.0};                ///< (0, 0) unless the material has a texture or bump
     int32_t material = 0;
     bool solid = false;
 };
@@ -112,6 +112,7 @@ public:
     template <typename Visit>
     bool forEachCrossing(const Ray& ray, double tMax, QueryScratch& scratch, RayStats& stats, Visit&& visit) const;
 
+    /// The surface at the hit (uv only where the material reads it).
     SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
 
     /// Objects of the acceleration structure: a primitive (>= 0) or a CSG root (~node).

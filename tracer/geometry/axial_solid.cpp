@@ -129,11 +129,11 @@ void AxialSolid::crossLine(const Ray& ray, CrossingList& out) const {
     out.add(tc + best.hi, hiPart);
 }
 
-SurfacePoint AxialSolid::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+SurfacePoint AxialSolid::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {
     Vec3 p = ray.at(crossing.t);
     Vec3 q = frame_.toLocal(p - base_);
     double rho = std::sqrt(q.x * q.x + q.y * q.y);
-    double angle = angleCoordinate(q.y, q.x);
+    double angle = wantUv ? angleCoordinate(q.y, q.x) : 0.0;
     // Local coordinates round a few times relative to |p| + |base|, and the frame's axis is
     // off by a few roundings, which moves points by that much times their distance from base.
     double scale = sumAbs(p) + sumAbs(base_) + std::max(r0_, r1_);
@@ -146,7 +146,7 @@ SurfacePoint AxialSolid::surfaceAt(const Ray& ray, const Crossing& crossing) con
         n = top ? frame_.w : -frame_.w;
         distance = top ? q.z - height_ : -q.z;
         double capRadius = top ? r1_ : r0_;
-        sp.uv = {angle, capRadius > 0 ? clamp01(rho / capRadius) : 0.0};
+        if (wantUv) sp.uv = {angle, capRadius > 0 ? clamp01(rho / capRadius) : 0.0};
     } else {
         // Outward normal of x² + y² = (r0 + slope·z)²: (x/ρ, y/ρ, −slope) normalised; the
         // distance to the side along it is (ρ − r(z)) / √(1 + slope²).
@@ -154,7 +154,7 @@ SurfacePoint AxialSolid::surfaceAt(const Ray& ray, const Crossing& crossing) con
         double cx = rho > 0 ? q.x / rho : 1, cy = rho > 0 ? q.y / rho : 0;
         n = frame_.fromLocal(Vec3(cx, cy, -slope_) / norm);
         distance = (rho - (r0_ + slope_ * q.z)) / norm;
-        sp.uv = {angle, clamp01(q.z / height_)};
+        if (wantUv) sp.uv = {angle, clamp01(q.z / height_)};
     }
     RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n, cap_);
     sp.point = r.point;

@@ -20,7 +20,7 @@ class AxialSolid {
     /// side's crossings within the height, zero to two.
     void crossLine(const Ray& ray, CrossingList& out) const;
     /// The refined point, its error bound, the normal and UV at one of crossLine's crossings.
-    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing) const;
+    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     bool solid() const { return !open_; }
 
   private:

@@ -48,7 +48,7 @@ void BoxGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     out.add(tExit, faceExit);
 }
 
-SurfacePoint BoxGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+SurfacePoint BoxGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool) const {
     int axis = int(crossing.part / 2) % 3;
     bool high = crossing.part % 2 == 1;
     double face = high ? hi_[axis] : lo_[axis];

@@ -20,7 +20,7 @@ class BoxGeometry {
     /// slab, so it also gives none or two.
     void crossLine(const Ray& ray, CrossingList& out) const;
     /// The point snapped exactly onto the crossed face, its error bound, normal and UV.
-    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing) const;
+    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// Usable in CSG: the crossings bound an inside.
     bool solid() const { return true; }
 

@@ -6,8 +6,8 @@ namespace crt::tracer {
 ConeGeometry::ConeGeometry(const ConeShape& desc)
     : solid_(desc.base, desc.top, desc.baseRadius, desc.topRadius, desc.open) {}
 
-SurfacePoint ConeGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
-    return solid_.surfaceAt(ray, crossing);
+SurfacePoint ConeGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {
+    return solid_.surfaceAt(ray, crossing, wantUv);
 }
 
 } // namespace crt::tracer

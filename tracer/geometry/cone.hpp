@@ -19,7 +19,7 @@ class ConeGeometry {
     /// Capped: none or two crossings. Open: the side's crossings only.
     void crossLine(const Ray& ray, CrossingList& out) const { solid_.crossLine(ray, out); }
     /// The refined point, its error bound, the normal and UV at one of crossLine's crossings.
-    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing) const;
+    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// An open cone has no inside.
     bool solid() const { return solid_.solid(); }
 

@@ -6,8 +6,8 @@ namespace crt::tracer {
 CylinderGeometry::CylinderGeometry(const CylinderShape& desc)
     : solid_(desc.base, desc.top, desc.radius, desc.radius, desc.open) {}
 
-SurfacePoint CylinderGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
-    return solid_.surfaceAt(ray, crossing);
+SurfacePoint CylinderGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {
+    return solid_.surfaceAt(ray, crossing, wantUv);
 }
 
 } // namespace crt::tracer

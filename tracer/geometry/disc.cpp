@@ -33,7 +33,7 @@ void DiscGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     if (r2 <= radius_ * radius_ && r2 >= hole_ * hole_) out.add(t, 0);
 }
 
-SurfacePoint DiscGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+SurfacePoint DiscGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {
     const Vec3& n = frame_.w;
     Vec3 p = ray.at(crossing.t);
     Vec3 rel = p - center_;
@@ -44,14 +44,16 @@ SurfacePoint DiscGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) c
                            errorGamma(2) * glm::dot(glm::abs(n), glm::abs(rel)) +
                            errorGamma(3) * std::abs(distance);
     RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n, 2 * radius_);
-    Vec3 onPlane = r.point - center_;
-    double x = glm::dot(onPlane, frame_.u), y = glm::dot(onPlane, frame_.v);
     SurfacePoint sp;
     sp.point = r.point;
     sp.pointError = r.error;
     sp.normal = n;
     sp.shadingNormal = n;
-    sp.uv = {angleCoordinate(y, x), clamp01(std::sqrt(x * x + y * y) / radius_)};
+    if (wantUv) {
+        Vec3 onPlane = r.point - center_;
+        double x = glm::dot(onPlane, frame_.u), y = glm::dot(onPlane, frame_.v);
+        sp.uv = {angleCoordinate(y, x), clamp01(std::sqrt(x * x + y * y) / radius_)};
+    }
     return sp;
 }
 

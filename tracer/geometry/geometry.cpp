@@ -13,8 +13,8 @@ void crossLine(const Geometry& geometry, const Ray& ray, CrossingList& out) {
     std::visit([&](const auto& g) { g.crossLine(ray, out); }, geometry);
 }
 
-SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing& crossing) {
-    return std::visit([&](const auto& g) { return g.surfaceAt(ray, crossing); }, geometry);
+SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing& crossing, bool wantUv) {
+    return std::visit([&](const auto& g) { return g.surfaceAt(ray, crossing, wantUv); }, geometry);
 }
 
 bool isSolid(const Geometry& geometry) {

@@ -26,8 +26,10 @@ using Geometry =
 Bounds3 geometryBounds(const Geometry& geometry);
 /// Every crossing of the whole line, ascending, and whether it starts inside (see shape.hpp).
 void crossLine(const Geometry& geometry, const Ray& ray, CrossingList& out);
-/// The surface at one of the crossings crossLine reported for the same ray.
-SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing& crossing);
+/// The surface at one of the crossings crossLine reported for the same ray. Without `wantUv`
+/// the shape may leave uv at (0, 0) (only textures read it, and some shapes need
+/// trigonometry for it).
+SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing& crossing, bool wantUv = true);
 /// Whether the primitive bounds a volume (usable in CSG).
 bool isSolid(const Geometry& geometry);
 /// Whether crossLine costs about as much as testing a ray against the primitive's bounds

@@ -32,9 +32,9 @@ MeshTriangleGeometry::MeshTriangleGeometry(std::shared_ptr<const MeshData> mesh,
     }
 }
 
-SurfacePoint MeshTriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
-    SurfacePoint sp = triangle_.surfaceAt(ray, crossing);
-    if (!hasNormals_ && !hasUvs_) return sp;
+SurfacePoint MeshTriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {
+    SurfacePoint sp = triangle_.surfaceAt(ray, crossing, wantUv);
+    if (!hasNormals_ && !(hasUvs_ && wantUv)) return sp;
     const MeshData::Triangle& tri = mesh_->triangles[index_];
     Vec3 b = triangle_.barycentrics(ray, crossing);
     if (hasNormals_) {
@@ -46,7 +46,7 @@ SurfacePoint MeshTriangleGeometry::surfaceAt(const Ray& ray, const Crossing& cro
             if (glm::dot(sp.normal, sp.shadingNormal) < 0) sp.normal = -sp.normal;
         }
     }
-    if (hasUvs_) {
+    if (hasUvs_ && wantUv) {
         sp.uv = b.x * mesh_->uvs[size_t(tri.uv[0])] + b.y * mesh_->uvs[size_t(tri.uv[1])] +
                 b.z * mesh_->uvs[size_t(tri.uv[2])];
     }

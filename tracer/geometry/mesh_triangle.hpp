@@ -24,7 +24,7 @@ class MeshTriangleGeometry {
     /// Every crossing of the whole line, ascending.
     void crossLine(const Ray& ray, CrossingList& out) const { triangle_.crossLine(ray, out); }
     /// The refined point, its error bound, the normal and UV at one of crossLine's crossings.
-    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing) const;
+    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// A surface without an inside: not usable in CSG.
     bool solid() const { return false; }
 

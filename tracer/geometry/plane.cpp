@@ -27,7 +27,7 @@ void PlaneGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     out.add(t, 0);
 }
 
-SurfacePoint PlaneGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+SurfacePoint PlaneGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool) const {
     const Vec3& n = frame_.w;
     Vec3 p = ray.at(crossing.t);
     Vec3 rel = p - position_;

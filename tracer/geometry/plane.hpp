@@ -20,7 +20,7 @@ class PlaneGeometry {
     /// (a line parallel to the plane has no crossing and is wholly inside or outside).
     void crossLine(const Ray& ray, CrossingList& out) const;
     /// The point projected onto the plane, its error bound, the normal n and UV.
-    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing) const;
+    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// Usable in CSG: the crossings bound an inside.
     bool solid() const { return true; }
 

@@ -43,7 +43,7 @@ void QuadGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     if (alpha >= 0 && alpha <= 1 && beta >= 0 && beta <= 1) out.add(t, 0);
 }
 
-SurfacePoint QuadGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+SurfacePoint QuadGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool) const {
     const Vec3& n = normal_;
     Vec3 p = ray.at(crossing.t);
     Vec3 rel = p - corner_;

@@ -18,7 +18,7 @@ class QuadGeometry {
     /// None or one crossing; none for a line parallel to the quad.
     void crossLine(const Ray& ray, CrossingList& out) const;
     /// The refined point, its error bound, the normal and UV at one of crossLine's crossings.
-    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing) const;
+    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// A surface without an inside: not usable in CSG.
     bool solid() const { return false; }
 

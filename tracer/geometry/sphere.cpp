@@ -33,7 +33,7 @@ void SphereGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     out.add(tc + s1, 0);
 }
 
-SurfacePoint SphereGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+SurfacePoint SphereGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {
     Vec3 p = ray.at(crossing.t);
     Vec3 f = p - center_;
     double len = glm::length(f);
@@ -49,7 +49,7 @@ SurfacePoint SphereGeometry::surfaceAt(const Ray& ray, const Crossing& crossing)
     sp.pointError = r.error;
     sp.normal = n;
     sp.shadingNormal = n;
-    sp.uv = {angleCoordinate(n.z, n.x), clamp01(0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) / kPi)};
+    if (wantUv) sp.uv = {angleCoordinate(n.z, n.x), clamp01(0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) / kPi)};
     return sp;
 }
 

@@ -18,7 +18,7 @@ class SphereGeometry {
     /// Every crossing of the whole line, ascending: none or two (a tangent line gives two equal).
     void crossLine(const Ray& ray, CrossingList& out) const;
     /// The crossing's point reprojected onto the sphere, its error bound, outward normal and UV.
-    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing) const;
+    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// Usable in CSG: the crossings bound an inside.
     bool solid() const { return true; }
 

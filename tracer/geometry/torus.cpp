@@ -127,7 +127,7 @@ void TorusGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     }
 }
 
-SurfacePoint TorusGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+SurfacePoint TorusGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {
     Vec3 p = ray.at(crossing.t);
     Vec3 q = frame_.toLocal(p - center_);
     double rho = std::sqrt(q.x * q.x + q.y * q.y);
@@ -148,7 +148,7 @@ SurfacePoint TorusGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) 
     sp.pointError = r.error;
     sp.normal = n;
     sp.shadingNormal = n;
-    sp.uv = {angleCoordinate(q.y, q.x), angleCoordinate(q.z, rho - major_)};
+    if (wantUv) sp.uv = {angleCoordinate(q.y, q.x), angleCoordinate(q.z, rho - major_)};
     return sp;
 }
 

@@ -20,7 +20,7 @@ class TorusGeometry {
     /// Zero, two or four crossings, ascending; a tangency gives none or two.
     void crossLine(const Ray& ray, CrossingList& out) const;
     /// The refined point, its error bound, the normal and UV at one of crossLine's crossings.
-    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing) const;
+    SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// Usable in CSG: the crossings bound an inside.
     bool solid() const { return true; }
 

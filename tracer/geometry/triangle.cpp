@@ -78,7 +78,7 @@ Vec3 TriangleGeometry::barycentrics(const Ray& ray, const Crossing& crossing) co
     return {1 - b1 - b2, b1, b2};
 }
 
-SurfacePoint TriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossing) const {
+SurfacePoint TriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool) const {
     const Vec3& n = normal_;
     Vec3 p = ray.at(crossing.t);
     Vec3 rel = p - p_[0];
