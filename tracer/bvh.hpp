@@ -112,9 +112,8 @@ struct WideRay {
     explicit WideRay(const Ray& ray);
 
     /// Entry distances of the four boxes; returns the mask of boxes the segment (0, tMax)
-    /// meets (bit i for slot i).
-    int hits(const WideBvhNode& node, double tMax, Float4& entry) const {
-        const float limit = widenedLimit(tMax);
+    /// meets (bit i for slot i), given limit = widenedLimit(tMax).
+    int hits(const WideBvhNode& node, float limit, Float4& entry) const {
         Float4 enter = {0, 0, 0, 0};
         Float4 exit = {limit, limit, limit, limit};
         for (int axis = 0; axis < 3; ++axis) {
@@ -190,6 +189,7 @@ private:
         Pending stack[3 * kMaxWideDepth + 4];
         int top = 0;
         Pending current{0, 0, 0};
+        float limit = WideRay::widenedLimit(tMax); // tMax changes only in visit()
         while (true) {
             if (current.child < 0) {
                 const int32_t first = ~current.child;
@@ -199,11 +199,12 @@ private:
                         return false;
                     }
                 }
+                limit = WideRay::widenedLimit(tMax);
             } else {
                 const WideBvhNode& node = nodes_[current.child];
                 tested += node.used;
                 Float4 entry;
-                int met = wideRay.hits(node, tMax, entry);
+                int met = wideRay.hits(node, limit, entry);
                 if (met != 0 && (met & (met - 1)) == 0) { // one child: no ordering
                     const int slot = __builtin_ctz(static_cast<unsigned>(met));
                     current = {node.child[slot], node.count[slot], entry[slot]};
@@ -235,7 +236,7 @@ private:
                     return true;
                 }
                 --top;
-            } while (stack[top].entry > WideRay::widenedLimit(tMax));
+            } while (stack[top].entry > limit);
             current = stack[top];
         }
     }
