@@ -28,6 +28,7 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const CsgRay& q, QueryScratch&
     const CsgTreeNode& node = csgNodes[nodeIndex];
     std::vector<CsgCrossing>& out = scratch.csg;
 
+    if (node.kind != CsgNodeKind::Leaf && convexCrossings(nodeIndex, q, scratch, stats)) return false;
     if (node.kind == CsgNodeKind::Leaf) {
         const Primitive& p = primitives[node.primitive];
         CrossingList list;

@@ -39,6 +39,9 @@ struct CsgTreeNode {
     /// crossing test costs about as much as the box test, nor for a difference (its bounds
     /// are its left operand's, which that operand tests itself).
     bool testBounds = false;
+    /// A bounded convex solid: a sphere, box, capped cylinder or cone, or an intersection of
+    /// such. The line crosses it at most twice, so it is evaluated as one interval.
+    bool convex = false;
 };
 
 /// A world ray prepared for CSG queries.
@@ -61,6 +64,12 @@ struct CsgCrossing {
     uint32_t part;
     bool insideAfter; ///< whether the line is inside the node's solid after this crossing
     bool flipNormal;  ///< the face bounds the result from the other side (a cut face)
+};
+
+/// Where a line enters and leaves a convex CSG node (when not `empty`).
+struct ConvexSpan {
+    bool empty = true;
+    CsgCrossing enter, exit;
 };
 
 /// What a ray hit: enough to compute the surface later, only for the hit that wins.
@@ -133,6 +142,15 @@ private:
     /// Appends the node's crossings of the whole line to scratch.csg; returns whether the
     /// line starts inside. The caller has tested the node's bounds where that pays.
     bool csgCrossings(int32_t node, const CsgRay& ray, QueryScratch& scratch, RayStats& stats) const;
+    /// The crossings of an intersection of convex nodes, or of a difference of two, appended
+    /// as csgCrossings appends them but without its general merge. False, with nothing
+    /// appended, when the node is of neither kind or two crossings nearly coincide (the
+    /// general merge groups those as one event).
+    bool convexCrossings(int32_t node, const CsgRay& ray, QueryScratch& scratch, RayStats& stats) const;
+    /// A convex node's span; false when two crossings nearly coincide. The caller has tested
+    /// the node's bounds where that pays.
+    bool convexSpan(int32_t node, const CsgRay& ray, RayStats& stats, ConvexSpan& span) const;
+    bool convexOperandSpan(int32_t node, const CsgRay& ray, RayStats& stats, ConvexSpan& span) const;
     Ray objectRay(const Primitive& p, const Ray& ray) const {
         return p.transform < 0 ? ray : transforms[p.transform].toObject.ray(ray);
     }

@@ -127,6 +127,7 @@ private:
             leaf.primitive = p;
             leaf.bounds = worldBounds(scene_.primitives[p]);
             leaf.testBounds = leaf.bounds.finite() && !hasCheapCrossings(scene_.primitives[p].geometry);
+            leaf.convex = isBoundedConvex(scene_.primitives[p].geometry);
             scene_.csgNodes.push_back(leaf);
             return static_cast<int32_t>(scene_.csgNodes.size() - 1);
         }
@@ -204,6 +205,7 @@ private:
         else if (kind == CsgNodeKind::Difference) node.bounds = a;
         else node.bounds = {glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)};
         node.testBounds = kind != CsgNodeKind::Difference && node.bounds.finite();
+        node.convex = kind == CsgNodeKind::Intersection && scene_.csgNodes[left].convex && scene_.csgNodes[right].convex;
         scene_.csgNodes.push_back(node);
         return static_cast<int32_t>(scene_.csgNodes.size() - 1);
     }

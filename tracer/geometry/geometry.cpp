@@ -21,6 +21,13 @@ bool isSolid(const Geometry& geometry) {
     return std::visit([](const auto& g) { return g.solid(); }, geometry);
 }
 
+bool isBoundedConvex(const Geometry& geometry) {
+    if (std::holds_alternative<SphereGeometry>(geometry) || std::holds_alternative<BoxGeometry>(geometry)) return true;
+    if (auto* c = std::get_if<CylinderGeometry>(&geometry)) return c->solid();
+    if (auto* c = std::get_if<ConeGeometry>(&geometry)) return c->solid();
+    return false;
+}
+
 bool hasCheapCrossings(const Geometry& geometry) {
     return std::holds_alternative<SphereGeometry>(geometry) || std::holds_alternative<BoxGeometry>(geometry) ||
            std::holds_alternative<PlaneGeometry>(geometry) || std::holds_alternative<DiscGeometry>(geometry) ||

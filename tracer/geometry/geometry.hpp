@@ -32,6 +32,8 @@ void crossLine(const Geometry& geometry, const Ray& ray, CrossingList& out);
 SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing& crossing, bool wantUv = true);
 /// Whether the primitive bounds a volume (usable in CSG).
 bool isSolid(const Geometry& geometry);
+/// Whether the primitive is a bounded convex solid (a line crosses it at most twice).
+bool isBoundedConvex(const Geometry& geometry);
 /// Whether crossLine costs about as much as testing a ray against the primitive's bounds
 /// (then testing the bounds first does not pay).
 bool hasCheapCrossings(const Geometry& geometry);
