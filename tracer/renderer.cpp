@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
+#include <latch>
 #include <mutex>
 #include <thread>
 
@@ -165,7 +166,12 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
     std::vector<RayStats> stats(threadCount);
     FinishedRows finishedRows(frame, tilesX, tilesY, settings.onRowsDone);
 
+    std::latch threadsStarted(1);
     auto worker = [&](unsigned index) {
+        if (index + 1 == threadCount && index > 0 && settings.beforeLastWorker) {
+            threadsStarted.wait();
+            settings.beforeLastWorker();
+        }
         TraceContext context;
         while (true) {
             if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) break;
@@ -204,6 +210,7 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
         });
     }
     if (settings.onThreadsStarted) settings.onThreadsStarted();
+    threadsStarted.count_down();
     worker(0);
     for (std::thread& t : threads) t.join();
     if (reporter.joinable()) {

@@ -31,6 +31,11 @@ struct RenderSettings {
     /// Called once all the render's threads have been created, before the calling thread
     /// starts tracing (crtc starts loading the image module then; see image_io::startLoading).
     std::function<void()> onThreadsStarted;
+    /// With two or more threads, one of them calls this (after onThreadsStarted) before it
+    /// starts tracing and may be held up by it: crtc holds it until the image module, which
+    /// keeps a core busy while it loads, is loaded. The load then has a core of its own
+    /// instead of a share of every core, and ends before the render rather than after it.
+    std::function<void()> beforeLastWorker;
 };
 
 struct RenderOutcome {

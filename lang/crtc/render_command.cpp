@@ -174,6 +174,7 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
             // The image module (OpenImageIO, about 0.2 s to load) loads while the frame is
             // traced; not earlier, since no thread can start while it loads.
             settings.onThreadsStarted = [] { image_io::startLoading(); };
+            settings.beforeLastWorker = [] { image_io::finishLoading(); };
             std::optional<StreamedOutput> streamed;
             if (!gif) {
                 streamed.emplace(target, width, height, write);

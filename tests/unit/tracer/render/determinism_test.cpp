@@ -3,6 +3,10 @@
 #include "analytic_util.hpp"
 #include "scene_builder_util.hpp"
 
+#include <atomic>
+#include <chrono>
+#include <thread>
+
 using namespace crt::tracer;
 using namespace crt::tracer::test;
 
@@ -102,5 +106,28 @@ TEST_CASE("Finished rows are reported once each, in order, with their final valu
         CHECK(nextRow == 37);
         CHECK(calls == 3); // tile rows of 16, 16 and 5
         CHECK(streamed == r.frame.rgb);
+    }
+}
+
+TEST_CASE("A worker held back for the image module's load joins later; the image is the same", "[render]") {
+    SceneDesc desc = stochasticScene();
+    PixelBuffer reference = renderOk(desc, 1);
+    for (int threads : {1, 2, 3}) {
+        INFO("threads " << threads);
+        std::atomic<int> calls{0};
+        std::atomic<bool> started{false}, startedFirst{true};
+        RenderSettings settings;
+        settings.threads = threads;
+        settings.onThreadsStarted = [&] { started = true; };
+        settings.beforeLastWorker = [&] {
+            startedFirst = startedFirst && started;
+            ++calls;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50)); // a load in progress
+        };
+        RenderOutcome r = renderScene(desc, settings);
+        REQUIRE(r.ok);
+        CHECK(calls == (threads > 1 ? 1 : 0));
+        CHECK(startedFirst);
+        CHECK(r.frame.rgb == reference.rgb);
     }
 }
