@@ -214,18 +214,19 @@ WideRay::WideRay(const Ray& ray) {
     for (int axis = 0; axis < 3; ++axis) {
         const double inv = 1.0 / ray.dir[axis];
         const bool negative = inv < 0;
-        nearFace[axis] = negative ? 3 + axis : axis;
-        farFace[axis] = negative ? axis : 3 + axis;
+        nearFace[axis] = (negative ? 3 + axis : axis) * sizeof(Float4);
+        farFace[axis] = (negative ? axis : 3 + axis) * sizeof(Float4);
         // float(o ± margin) stays on the safe side of o: the margin is at least 4 times the
         // float rounding of a number of o's size.
         const double o = ray.origin[axis];
         const double margin = std::abs(o) * 0x1p-22;
         const double forwards = negative ? -margin : margin;
         const float nearO = static_cast<float>(o + forwards), farO = static_cast<float>(o - forwards);
-        const float invF = static_cast<float>(inv);
+        const float invF = static_cast<float>(inv), widenedInvF = invF * kWiden;
         nearOrigin[axis] = Float4{nearO, nearO, nearO, nearO};
         farOrigin[axis] = Float4{farO, farO, farO, farO};
         invDir[axis] = Float4{invF, invF, invF, invF};
+        widenedInvDir[axis] = Float4{widenedInvF, widenedInvF, widenedInvF, widenedInvF};
     }
 }
 

@@ -103,29 +103,33 @@ struct alignas(16) WideBvhNode {
 /// A ray prepared for four-box tests in float. The ray origin is rounded to float with a
 /// margin on the safe side of each slab (shifted forwards for the near faces, backwards for
 /// the far ones), so no box the double-precision ray meets is ever missed; the rounding of
-/// the float arithmetic itself is covered by widening the exit distance, as in pbrt-v4.
+/// the float arithmetic itself is covered by widening the exit distances, as in pbrt-v4
+/// (here through the reciprocal they are multiplied by).
 struct WideRay {
     Float4 nearOrigin[3], farOrigin[3], invDir[3];
-    int nearFace[3]; ///< index into WideBvhNode::faces: `hi` when the ray runs towards -axis
-    int farFace[3];
+    Float4 widenedInvDir[3]; ///< invDir · kWiden, rounded: for exit distances
+    /// Byte offsets into WideBvhNode::faces of the face met first (`hi` when the ray runs
+    /// towards -axis) and last; offsets rather than indices save the scaling per node.
+    size_t nearFace[3];
+    size_t farFace[3];
 
     explicit WideRay(const Ray& ray);
 
     /// Entry distances of the four boxes; returns the mask of boxes the segment (0, tMax)
-    /// meets (bit i for slot i), given limit = widenedLimit(tMax).
-    int hits(const WideBvhNode& node, float limit, Float4& entry) const {
+    /// meets (bit i for slot i), given limit = widenedLimit(tMax) in every lane.
+    int hits(const WideBvhNode& node, Float4 limit, Float4& entry) const {
         Float4 enter = {0, 0, 0, 0};
-        Float4 exit = {limit, limit, limit, limit};
+        Float4 exit = limit;
         for (int axis = 0; axis < 3; ++axis) {
-            Float4 tNear = (node.faces[nearFace[axis]] - nearOrigin[axis]) * invDir[axis];
-            Float4 tFar = (node.faces[farFace[axis]] - farOrigin[axis]) * invDir[axis];
+            Float4 tNear = (face(node, nearFace[axis]) - nearOrigin[axis]) * invDir[axis];
+            Float4 tFar = (face(node, farFace[axis]) - farOrigin[axis]) * widenedInvDir[axis];
             // A NaN (0 · ∞: the ray lies in a face plane) fails the comparison and leaves the
             // running value alone, which keeps the test conservative.
             enter = tNear > enter ? tNear : enter;
             exit = tFar < exit ? tFar : exit;
         }
         entry = enter;
-        return laneMask(enter <= exit * kWiden);
+        return laneMask(enter <= exit);
     }
 
     /// A float at least as large as tMax and as any float distance computed for a true
@@ -135,7 +139,17 @@ struct WideRay {
                                                         : std::numeric_limits<float>::infinity();
     }
 
+    static Float4 widenedLimit4(double tMax) {
+        const float limit = widenedLimit(tMax);
+        return Float4{limit, limit, limit, limit};
+    }
+
     static constexpr float kWiden = 1 + 2 * 3 * std::numeric_limits<float>::epsilon();
+
+private:
+    static const Float4& face(const WideBvhNode& node, size_t offset) {
+        return *reinterpret_cast<const Float4*>(reinterpret_cast<const char*>(node.faces) + offset);
+    }
 };
 
 class Bvh {
@@ -189,7 +203,7 @@ private:
         Pending stack[3 * kMaxWideDepth + 4];
         int top = 0;
         Pending current{0, 0, 0};
-        float limit = WideRay::widenedLimit(tMax); // tMax changes only in visit()
+        Float4 limit = WideRay::widenedLimit4(tMax); // tMax changes only in visit()
         while (true) {
             if (current.child < 0) {
                 const int32_t first = ~current.child;
@@ -199,7 +213,7 @@ private:
                         return false;
                     }
                 }
-                limit = WideRay::widenedLimit(tMax);
+                limit = WideRay::widenedLimit4(tMax);
             } else {
                 const WideBvhNode& node = nodes_[current.child];
                 tested += node.used;
@@ -236,7 +250,7 @@ private:
                     return true;
                 }
                 --top;
-            } while (stack[top].entry > limit);
+            } while (stack[top].entry > limit[0]);
             current = stack[top];
         }
     }
