@@ -39,7 +39,7 @@ Bounds3 AxialSolid::bounds() const {
     return padded(b);
 }
 
-void AxialSolid::crossLine(const Ray& ray, CrossingList& out) const {
+CRT_FMA_VERSIONS void AxialSolid::crossLine(const Ray& ray, CrossingList& out) const {
     out.count = 0;
     out.startsInside = false;
     if (empty_) return;

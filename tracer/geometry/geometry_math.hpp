@@ -7,6 +7,16 @@
 #include <algorithm>
 #include <cmath>
 
+/// Put on the hot functions whose accuracy rests on std::fma: they get a second version for
+/// processors with the FMA instruction, picked when the program loads, in which std::fma is
+/// that instruction instead of a call into libm. Both give the same bits: fma rounds once
+/// either way, and the build never fuses anything else (-ffp-contract=off).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__FMA__)
+#define CRT_FMA_VERSIONS [[gnu::target_clones("fma", "default")]]
+#else
+#define CRT_FMA_VERSIONS
+#endif
+
 namespace crt::tracer {
 
 /// a·b − c·d with about one rounding of error (Kahan's fma algorithm): a discriminant near

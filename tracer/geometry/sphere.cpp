@@ -13,7 +13,7 @@ Bounds3 SphereGeometry::bounds() const {
     return padded({center_ - Vec3(radius_), center_ + Vec3(radius_)});
 }
 
-void SphereGeometry::crossLine(const Ray& ray, CrossingList& out) const {
+CRT_FMA_VERSIONS void SphereGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     out.count = 0;
     out.startsInside = false;
     if (!(radius_ > 0)) return;

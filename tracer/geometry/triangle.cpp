@@ -55,7 +55,7 @@ bool TriangleGeometry::intersect(const Ray& ray, double& t, Vec3& weights) const
     return std::isfinite(t);
 }
 
-void TriangleGeometry::crossLine(const Ray& ray, CrossingList& out) const {
+CRT_FMA_VERSIONS void TriangleGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     out.count = 0;
     out.startsInside = false;
     double t;
