@@ -156,7 +156,6 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
     PixelBuffer& frame = outcome.frame;
     frame.width = s.width;
     frame.height = s.height;
-    frame.rgb.assign(static_cast<size_t>(s.width) * s.height * 3, 0.0f);
     int tilesX = (s.width + kTileSize - 1) / kTileSize, tilesY = (s.height + kTileSize - 1) / kTileSize;
     int tileCount = tilesX * tilesY;
     std::atomic<int> nextTile{0}, doneTiles{0};
@@ -166,12 +165,10 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
     std::vector<RayStats> stats(threadCount);
     FinishedRows finishedRows(frame, tilesX, tilesY, settings.onRowsDone);
 
-    std::latch threadsStarted(1);
+    std::latch ready(1); // the threads are started and the frame is allocated
     auto worker = [&](unsigned index) {
-        if (index + 1 == threadCount && index > 0 && settings.beforeLastWorker) {
-            threadsStarted.wait();
-            settings.beforeLastWorker();
-        }
+        if (index > 0) ready.wait();
+        if (index + 1 == threadCount && index > 0 && settings.beforeLastWorker) settings.beforeLastWorker();
         TraceContext context;
         while (true) {
             if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) break;
@@ -210,7 +207,10 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
         });
     }
     if (settings.onThreadsStarted) settings.onThreadsStarted();
-    threadsStarted.count_down();
+    // Zeroing the frame (25 MB at 1920×1080) faults in every page: done after the threads
+    // start, it overlaps whatever onThreadsStarted began (crtc's image module load).
+    frame.rgb.assign(static_cast<size_t>(s.width) * s.height * 3, 0.0f);
+    ready.count_down();
     worker(0);
     for (std::thread& t : threads) t.join();
     if (reporter.joinable()) {
