@@ -60,7 +60,7 @@ private:
         for (int a = 0; a < 4; ++a)
             for (int b = a + 1; b < 4; ++b)
                 {
-                    Vec3 d = glm::abs(corners[a] - corners[b]);
+                    Vec3 d = absolute(corners[a] - corners[b]);
                     spread = std::max({spread, d.x, d.y, d.z});
                 }
         if (spread > settings_.aaThreshold && level < settings_.aaDepth) {

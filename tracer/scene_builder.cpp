@@ -221,7 +221,7 @@ private:
             world.include(t.point(c));
         }
         // Rounding of the transformed corners must not cut off a grazing hit.
-        Vec3 pad = errorGamma(4) * glm::max(glm::abs(world.lo), glm::abs(world.hi));
+        Vec3 pad = errorGamma(4) * glm::max(absolute(world.lo), absolute(world.hi));
         return {world.lo - pad, world.hi + pad};
     }
 

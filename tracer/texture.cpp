@@ -32,7 +32,7 @@ Vec2 Texture::imageCoordinates(const Vec3& p, const Vec2& uv) const {
     case TextureMapping::Cylindrical:
         return {0.5 + std::atan2(p.x, p.z) / (2 * kPi), fract(-p.y / desc_.size)};
     case TextureMapping::Cubic: {
-        Vec3 a = glm::abs(p);
+        Vec3 a = absolute(p);
         if (a.x >= a.y && a.x >= a.z) return {fract(p.z / desc_.size), fract(-p.y / desc_.size)};
         if (a.y >= a.z) return {fract(p.x / desc_.size), fract(p.z / desc_.size)};
         return {fract(p.x / desc_.size), fract(-p.y / desc_.size)};

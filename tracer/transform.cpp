@@ -65,8 +65,8 @@ Transform Transform::inverse() const {
 Vec3 Transform::pointError(const Vec3& p, const Vec3& pError) const {
     if (identity_) return pError;
     glm::dmat3 absLinear;
-    for (int c = 0; c < 3; ++c) absLinear[c] = glm::abs(linear_[c]);
-    Vec3 fromRounding = errorGamma(3) * (absLinear * glm::abs(p) + glm::abs(offset_));
+    for (int c = 0; c < 3; ++c) absLinear[c] = absolute(linear_[c]);
+    Vec3 fromRounding = errorGamma(3) * (absLinear * absolute(p) + absolute(offset_));
     return (1 + errorGamma(3)) * (absLinear * pError) + fromRounding;
 }
 

@@ -40,8 +40,8 @@ SurfacePoint DiscGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, b
     double distance = glm::dot(n, rel);
     // As the plane's: rounding relative to |p| + |centre|, and the normalised normal's tilt (one
     // rounding per component) times the distance from the centre along each axis.
-    double distanceError = errorGamma(6) * glm::dot(glm::abs(n), glm::abs(p) + glm::abs(center_)) +
-                           errorGamma(2) * glm::dot(glm::abs(n), glm::abs(rel)) +
+    double distanceError = errorGamma(6) * glm::dot(absolute(n), absolute(p) + absolute(center_)) +
+                           errorGamma(2) * glm::dot(absolute(n), absolute(rel)) +
                            errorGamma(3) * std::abs(distance);
     RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n, 2 * radius_);
     SurfacePoint sp;

@@ -98,14 +98,14 @@ struct RefinedPoint {
 /// A factor 2 covers the second-order (curvature) terms and the rounding of n itself.
 inline RefinedPoint refineOntoSurface(const Ray& ray, double t, const Vec3& p, double distance,
                                       double distanceError, const Vec3& n, double cap) {
-    Vec3 an = glm::abs(n);
-    Vec3 ad = glm::abs(ray.dir);
-    Vec3 evalError = errorGamma(2) * (glm::abs(ray.origin) + glm::abs(t * ray.dir));
+    Vec3 an = absolute(n);
+    Vec3 ad = absolute(ray.dir);
+    Vec3 evalError = errorGamma(2) * (absolute(ray.origin) + absolute(t * ray.dir));
     double away = std::abs(distance) + distanceError + glm::dot(an, evalError);
     double nd = std::abs(glm::dot(n, ray.dir));
     double slide = nd > 0 ? away / nd : kInfinity;
     Vec3 point = p - distance * n;
-    Vec3 moveError = errorGamma(2) * (glm::abs(p) + std::abs(distance) * an);
+    Vec3 moveError = errorGamma(2) * (absolute(p) + std::abs(distance) * an);
     Vec3 error;
     for (int i = 0; i < 3; ++i) {
         double along = ad[i] > 0 ? std::min(slide * ad[i], cap) : 0.0;

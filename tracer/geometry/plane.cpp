@@ -37,8 +37,8 @@ SurfacePoint PlaneGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, 
     // covered by the last term): the plane tilts by one rounding of n_i per axis, which moves
     // it by that much times the distance from `position` along that axis.
     double distanceError =
-        errorGamma(6) * glm::dot(glm::abs(n), glm::abs(p) + glm::abs(position_)) +
-        errorGamma(2) * glm::dot(glm::abs(n), glm::abs(rel)) + errorGamma(3) * std::abs(distance);
+        errorGamma(6) * glm::dot(absolute(n), absolute(p) + absolute(position_)) +
+        errorGamma(2) * glm::dot(absolute(n), absolute(rel)) + errorGamma(3) * std::abs(distance);
     RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n,
                                        std::numeric_limits<double>::max());
     SurfacePoint sp;

@@ -19,7 +19,7 @@ QuadGeometry::QuadGeometry(const QuadShape& desc)
     Vec3 crossError(std::abs(edgeA_.y * edgeB_.z) + std::abs(edgeA_.z * edgeB_.y),
                     std::abs(edgeA_.z * edgeB_.x) + std::abs(edgeA_.x * edgeB_.z),
                     std::abs(edgeA_.x * edgeB_.y) + std::abs(edgeA_.y * edgeB_.x));
-    tilt_ = errorGamma(4) * crossError / len + errorGamma(2) * glm::abs(normal_);
+    tilt_ = errorGamma(4) * crossError / len + errorGamma(2) * absolute(normal_);
 }
 
 Bounds3 QuadGeometry::bounds() const {
@@ -48,8 +48,8 @@ SurfacePoint QuadGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, b
     Vec3 p = ray.at(crossing.t);
     Vec3 rel = p - corner_;
     double distance = glm::dot(n, rel);
-    double distanceError = errorGamma(6) * glm::dot(glm::abs(n), glm::abs(p) + glm::abs(corner_)) +
-                           glm::dot(tilt_, glm::abs(rel)) + errorGamma(3) * std::abs(distance);
+    double distanceError = errorGamma(6) * glm::dot(absolute(n), absolute(p) + absolute(corner_)) +
+                           glm::dot(tilt_, absolute(rel)) + errorGamma(3) * std::abs(distance);
     RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n,
                                        sumAbs(edgeA_) + sumAbs(edgeB_));
     Vec3 onPlane = r.point - corner_;

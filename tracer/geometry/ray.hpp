@@ -34,6 +34,12 @@ struct Ray {
     Vec3 at(double t) const { return origin + t * dir; }
 };
 
+/// |v| per component, without branches (glm::abs compares and negates each component of a
+/// double vector, which costs mispredicted branches in the hot paths that bound rounding).
+inline Vec3 absolute(const Vec3& v) {
+    return {std::abs(v.x), std::abs(v.y), std::abs(v.z)};
+}
+
 /// The next representable double above / below v (pbrt's NextFloatUp/Down, without libm's
 /// call: this runs for every spawned ray).
 inline double nextUp(double v) {
@@ -54,7 +60,7 @@ inline double nextDown(double v) {
 /// Moves a surface point off the surface by its error bound, to the side `w` points to,
 /// so a ray spawned from it cannot hit the same surface again.
 inline Vec3 offsetRayOrigin(const Vec3& point, const Vec3& pointError, const Vec3& normal, const Vec3& w) {
-    double distance = glm::dot(glm::abs(normal), pointError);
+    double distance = glm::dot(absolute(normal), pointError);
     Vec3 offset = distance * normal;
     if (glm::dot(w, normal) < 0) offset = -offset;
     Vec3 origin = point + offset;

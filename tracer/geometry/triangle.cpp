@@ -16,7 +16,7 @@ TriangleGeometry::TriangleGeometry(const TriangleShape& desc) : p_{desc.a, desc.
     Vec3 crossError(std::abs(e1.y * e2.z) + std::abs(e1.z * e2.y),
                     std::abs(e1.z * e2.x) + std::abs(e1.x * e2.z),
                     std::abs(e1.x * e2.y) + std::abs(e1.y * e2.x));
-    tilt_ = errorGamma(6) * crossError / len + errorGamma(2) * glm::abs(normal_);
+    tilt_ = errorGamma(6) * crossError / len + errorGamma(2) * absolute(normal_);
 }
 
 Bounds3 TriangleGeometry::bounds() const {
@@ -31,7 +31,7 @@ bool TriangleGeometry::intersect(const Ray& ray, double& t, Vec3& weights) const
     // Translate to the origin, permute so the direction's largest component is z, and shear
     // the direction onto +z: the test becomes 2D edge functions at (0, 0), evaluated the same
     // way for an edge shared by two triangles.
-    Vec3 ad = glm::abs(ray.dir);
+    Vec3 ad = absolute(ray.dir);
     int kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
     if (ray.dir[kz] == 0) return false;
     int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
@@ -83,8 +83,8 @@ SurfacePoint TriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossin
     Vec3 p = ray.at(crossing.t);
     Vec3 rel = p - p_[0];
     double distance = glm::dot(n, rel);
-    double distanceError = errorGamma(6) * glm::dot(glm::abs(n), glm::abs(p) + glm::abs(p_[0])) +
-                           glm::dot(tilt_, glm::abs(rel)) + errorGamma(3) * std::abs(distance);
+    double distanceError = errorGamma(6) * glm::dot(absolute(n), absolute(p) + absolute(p_[0])) +
+                           glm::dot(tilt_, absolute(rel)) + errorGamma(3) * std::abs(distance);
     RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n,
                                        sumAbs(p_[1] - p_[0]) + sumAbs(p_[2] - p_[0]));
     Vec3 b = barycentrics(ray, crossing);
