@@ -17,16 +17,15 @@ namespace crt::tracer {
 struct BoxRay {
     Vec3 origin;
     Vec3 invDir;
-    int dirIsNegative[3];
     int nearFace[3]; ///< index into Bounds3 viewed as {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}
     int farFace[3];
 
     explicit BoxRay(const Ray& ray)
-        : origin(ray.origin), invDir(1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z),
-          dirIsNegative{invDir.x < 0, invDir.y < 0, invDir.z < 0} {
+        : origin(ray.origin), invDir(1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z) {
         for (int i = 0; i < 3; ++i) {
-            nearFace[i] = dirIsNegative[i] ? 3 + i : i;
-            farFace[i] = dirIsNegative[i] ? i : 3 + i;
+            const int negative = invDir[i] < 0; // then the `hi` face comes first
+            nearFace[i] = i + 3 * negative;
+            farFace[i] = i + 3 - 3 * negative;
         }
     }
 
