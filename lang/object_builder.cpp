@@ -230,7 +230,7 @@ struct ObjectBuilder {
     int slot(std::string_view name) const {
         for (uint8_t given : givenSlots) {
             std::string_view candidate = info.attributes[given].name;
-            if (candidate.size() == name.size() && candidate == name) return given;
+            if (candidate.size() == name.size() && candidate[0] == name[0] && candidate == name) return given;
         }
         return -1;
     }
@@ -313,8 +313,8 @@ tracer::SourceSpan Interpreter::span(SourceRange range) const {
 }
 
 int32_t Interpreter::addEntity(tracer::EntityDesc entity, EntityInfo info) {
-    scene_.entities.push_back(std::move(entity));
-    entityInfo_.push_back(info);
+    appendGrowing(scene_.entities, std::move(entity));
+    appendGrowing(entityInfo_, info);
     return static_cast<int32_t>(scene_.entities.size() - 1);
 }
 
@@ -326,7 +326,7 @@ void Interpreter::warnOnce(WarningKind kind, SourceRange where, std::string mess
 
 int32_t Interpreter::defaultMaterial() {
     if (defaultMaterial_ < 0) {
-        scene_.materials.push_back(tracer::MaterialDesc{});
+        appendGrowing(scene_.materials, tracer::MaterialDesc{});
         defaultMaterial_ = static_cast<int32_t>(scene_.materials.size() - 1);
     }
     return defaultMaterial_;
@@ -456,7 +456,7 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
         return entity(tracer::MeshShape{b.text("file"), resolved}, false);
     }
     case ObjectType::Material: {
-        tracer::MaterialDesc& m = scene_.materials.emplace_back();
+        tracer::MaterialDesc& m = appendGrowing(scene_.materials, tracer::MaterialDesc{});
         m.color = b.colour("color", m.color);
         m.reflectivity = b.number("reflectivity", 0);
         m.transparency = b.number("transparency", 0);

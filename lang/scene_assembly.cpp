@@ -40,6 +40,22 @@ template <typename F> void forEachChild(tracer::EntityDesc& entity, F&& visit) {
 
 } // namespace
 
+void Interpreter::dropUnreachable(const std::vector<bool>& keepEntity, const std::vector<bool>& keepMaterial,
+                                  const std::vector<bool>& keepTexture) {
+    std::vector<int32_t> entityMap = compact(scene_.entities, keepEntity);
+    std::vector<int32_t> materialMap = compact(scene_.materials, keepMaterial);
+    std::vector<int32_t> textureMap = compact(scene_.textures, keepTexture);
+    for (tracer::EntityDesc& entity : scene_.entities) {
+        if (entity.material >= 0) entity.material = materialMap[static_cast<size_t>(entity.material)];
+        forEachChild(entity, [&](int32_t& child) { child = entityMap[static_cast<size_t>(child)]; });
+    }
+    for (int32_t& root : scene_.drawn) root = entityMap[static_cast<size_t>(root)];
+    for (tracer::MaterialDesc& material : scene_.materials) {
+        if (material.texture >= 0) material.texture = textureMap[static_cast<size_t>(material.texture)];
+        if (material.bump >= 0) material.bump = textureMap[static_cast<size_t>(material.bump)];
+    }
+}
+
 void Interpreter::assembleScene() {
     tracer::SettingsDesc& s = scene_.settings;
     const ObjectInfo& info = objectInfo(ObjectType::Settings);
@@ -141,17 +157,10 @@ void Interpreter::assembleScene() {
         }
     }
     reachable_ = keepEntity;
-    std::vector<int32_t> entityMap = compact(scene_.entities, keepEntity);
-    std::vector<int32_t> materialMap = compact(scene_.materials, keepMaterial);
-    std::vector<int32_t> textureMap = compact(scene_.textures, keepTexture);
-    for (tracer::EntityDesc& entity : scene_.entities) {
-        if (entity.material >= 0) entity.material = materialMap[static_cast<size_t>(entity.material)];
-        forEachChild(entity, [&](int32_t& child) { child = entityMap[static_cast<size_t>(child)]; });
-    }
-    for (int32_t& root : scene_.drawn) root = entityMap[static_cast<size_t>(root)];
-    for (tracer::MaterialDesc& material : scene_.materials) {
-        if (material.texture >= 0) material.texture = textureMap[static_cast<size_t>(material.texture)];
-        if (material.bump >= 0) material.bump = textureMap[static_cast<size_t>(material.bump)];
+    // Usually everything is reachable, and there is nothing to renumber.
+    auto allTrue = [](const std::vector<bool>& keep) { return std::find(keep.begin(), keep.end(), false) == keep.end(); };
+    if (!allTrue(keepEntity) || !allTrue(keepMaterial) || !allTrue(keepTexture)) {
+        dropUnreachable(keepEntity, keepMaterial, keepTexture);
     }
 
     for (uint32_t i = 0; i < compilation_.sources.fileCount(); ++i) {
@@ -171,20 +180,27 @@ void Interpreter::reportUnused() {
         }
     }
     // A literal run many times (in a loop or a macro) is used if any of its values is:
-    // one warning per literal of the main script, in source order.
-    std::unordered_map<uint32_t, bool> literalUsed;
-    literalUsed.reserve(entityInfo_.size());
+    // one warning per literal of the main script, in source order. Consecutive entities
+    // mostly come from the same literal, so a run of them looks the literal up once.
+    struct LiteralUse {
+        const EntityInfo* first;
+        bool used;
+    };
+    std::unordered_map<uint32_t, LiteralUse> literals;
+    LiteralUse* run = nullptr;
+    uint32_t runBegin = 0;
     for (size_t i = 0; i < entityInfo_.size(); ++i) {
         const EntityInfo& info = entityInfo_[i];
-        if (info.literal && info.range.file == 0) literalUsed[info.range.begin] |= reachable_[i];
+        if (!info.literal || info.range.file != 0) continue;
+        if (!run || info.range.begin != runBegin) {
+            runBegin = info.range.begin;
+            run = &literals.try_emplace(runBegin, LiteralUse{&info, false}).first->second;
+        }
+        run->used = run->used || reachable_[i];
     }
     std::vector<const EntityInfo*> unused;
-    for (const EntityInfo& info : entityInfo_) {
-        if (!info.literal || info.range.file != 0) continue;
-        bool& used = literalUsed[info.range.begin];
-        if (used) continue;
-        used = true; // report each literal once
-        unused.push_back(&info);
+    for (const auto& [begin, literal] : literals) {
+        if (!literal.used) unused.push_back(literal.first);
     }
     std::sort(unused.begin(), unused.end(),
               [](const EntityInfo* a, const EntityInfo* b) { return a->range.begin < b->range.begin; });
