@@ -268,50 +268,10 @@ Value b_len(BuiltinCall& call) {
 }
 
 Value b_range(BuiltinCall& call) {
-    for (size_t i = 0; i < call.args.size(); ++i) number(call, i);
-    bool ints = allInts(call);
-    const auto& args = call.args;
-    double start = args.size() == 1 ? 0.0 : args[0].asDouble();
-    double stop = args.size() == 1 ? args[0].asDouble() : args[1].asDouble();
-    double stride = args.size() == 3 ? args[2].asDouble() : 1.0;
-    if (stride == 0) call.interpreter.fail(call.interpreter.argRange(call.site, 2), "range: the step must not be zero");
-    uint64_t limit = call.interpreter.limits().maxEntities;
+    RangeSequence sequence(call);
     std::vector<Value> items;
-    if (ints) {
-        int64_t a = args.size() == 1 ? 0 : args[0].i;
-        int64_t b = args.size() == 1 ? args[0].i : args[1].i;
-        int64_t s = args.size() == 3 ? args[2].i : 1;
-        // Count first, so an oversized range fails before allocating.
-        __int128 count = s > 0 ? (b > a ? (static_cast<__int128>(b) - a + s - 1) / s : 0)
-                               : (a > b ? (static_cast<__int128>(a) - b + (-static_cast<__int128>(s)) - 1) / -static_cast<__int128>(s) : 0);
-        if (count > static_cast<__int128>(limit)) {
-            call.interpreter.fail(call.site->range,
-                                  fmt::format("range has {} items, more than the limit of {}; raise it "
-                                              "with --max-entities",
-                                              static_cast<uint64_t>(count), limit));
-        }
-        items.reserve(static_cast<size_t>(count));
-        // a + i·s stays between a and b, so it fits, but i·s alone may not.
-        for (int64_t i = 0; i < static_cast<int64_t>(count); ++i) {
-            items.push_back(Value::integer(static_cast<int64_t>(a + static_cast<__int128>(i) * s)));
-        }
-    } else {
-        if (!std::isfinite(start) || !std::isfinite(stop) || !std::isfinite(stride)) {
-            call.interpreter.fail(call.site->range, "range: the bounds and step must be finite");
-        }
-        double count = std::ceil((stop - start) / stride);
-        if (count > static_cast<double>(limit)) {
-            call.interpreter.fail(call.site->range,
-                                  fmt::format("range has more than {} items; raise the limit with "
-                                              "--max-entities",
-                                              limit));
-        }
-        for (uint64_t i = 0;; ++i) {
-            double value = start + static_cast<double>(i) * stride;
-            if (stride > 0 ? value >= stop : value <= stop) break;
-            items.push_back(Value::number(value));
-        }
-    }
+    items.reserve(static_cast<size_t>(sequence.sizeHint()));
+    for (Value item; sequence.next(item);) items.push_back(item);
     return Value::listOf(call.interpreter.newList(std::move(items)));
 }
 
@@ -372,6 +332,64 @@ constexpr BuiltinInfo kBuiltins[] = {
 constexpr uint32_t kFunctionCount = static_cast<uint32_t>(std::size(kBuiltins));
 
 } // namespace
+
+RangeSequence::RangeSequence(BuiltinCall& call) {
+    for (size_t i = 0; i < call.args.size(); ++i) number(call, i);
+    ints_ = allInts(call);
+    const auto& args = call.args;
+    const size_t n = args.size();
+    start_ = n == 1 ? 0.0 : args[0].asDouble();
+    stop_ = n == 1 ? args[0].asDouble() : args[1].asDouble();
+    stride_ = n == 3 ? args[2].asDouble() : 1.0;
+    if (stride_ == 0) call.interpreter.fail(call.interpreter.argRange(call.site, 2), "range: the step must not be zero");
+    const uint64_t limit = call.interpreter.limits().maxEntities;
+    if (ints_) {
+        const int64_t a = n == 1 ? 0 : args[0].i;
+        const int64_t b = n == 1 ? args[0].i : args[1].i;
+        const int64_t s = n == 3 ? args[2].i : 1;
+        // Counted first, so an oversized range fails before anything runs.
+        __int128 count = s > 0 ? (b > a ? (static_cast<__int128>(b) - a + s - 1) / s : 0)
+                               : (a > b ? (static_cast<__int128>(a) - b + (-static_cast<__int128>(s)) - 1) / -static_cast<__int128>(s) : 0);
+        if (count > static_cast<__int128>(limit)) {
+            call.interpreter.fail(call.site->range,
+                                  fmt::format("range has {} items, more than the limit of {}; raise it "
+                                              "with --max-entities",
+                                              static_cast<uint64_t>(count), limit));
+        }
+        intStart_ = a;
+        intStep_ = s;
+        count_ = static_cast<uint64_t>(count);
+        return;
+    }
+    if (!std::isfinite(start_) || !std::isfinite(stop_) || !std::isfinite(stride_)) {
+        call.interpreter.fail(call.site->range, "range: the bounds and step must be finite");
+    }
+    if (std::ceil((stop_ - start_) / stride_) > static_cast<double>(limit)) {
+        call.interpreter.fail(call.site->range,
+                              fmt::format("range has more than {} items; raise the limit with "
+                                          "--max-entities",
+                                          limit));
+    }
+}
+
+uint64_t RangeSequence::sizeHint() const {
+    return ints_ ? count_ : 0;
+}
+
+bool RangeSequence::next(Value& item) {
+    if (ints_) {
+        if (index_ == count_) return false;
+        // a + i·s stays between a and b, so it fits, but i·s alone may not.
+        item = Value::integer(static_cast<int64_t>(intStart_ + static_cast<__int128>(index_) * intStep_));
+        ++index_;
+        return true;
+    }
+    double value = start_ + static_cast<double>(index_) * stride_;
+    if (stride_ > 0 ? value >= stop_ : value <= stop_) return false;
+    item = Value::number(value);
+    ++index_;
+    return true;
+}
 
 std::span<const BuiltinInfo> builtinFunctions() { return kBuiltins; }
 uint32_t preludeSize() { return kFunctionCount + 2; }

@@ -32,6 +32,24 @@ struct BuiltinInfo {
 
 std::span<const BuiltinInfo> builtinFunctions();
 
+/// The numbers range(...) yields, one at a time: `for … in range(…)` runs through them
+/// without building the list. The constructor checks the arguments as range() does.
+class RangeSequence {
+public:
+    explicit RangeSequence(BuiltinCall& call);
+    /// Stores the next number in `item`; false after the last.
+    bool next(Value& item);
+    /// The number of items if known in advance (integer ranges), else 0.
+    uint64_t sizeHint() const;
+
+private:
+    bool ints_ = true;
+    int64_t intStart_ = 0, intStep_ = 1;
+    uint64_t count_ = 0;
+    double start_ = 0, stop_ = 0, stride_ = 1;
+    uint64_t index_ = 0;
+};
+
 /// Prelude slots: the functions in table order, then t, then clock.
 uint32_t preludeSize();
 uint32_t preludeSlotOfT();

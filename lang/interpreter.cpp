@@ -148,7 +148,33 @@ Value Interpreter::exec(const Node* node) {
     }
 }
 
+std::optional<RangeSequence> Interpreter::rangeSequence(const Expr* iterable) {
+    if (iterable->kind != NodeKind::Call) return std::nullopt;
+    const auto* call = static_cast<const CallExpr*>(iterable);
+    // Reading a variable has no effect, so evaluating the callee again on the general
+    // path (when it is not range) changes nothing.
+    if (call->callee->kind != NodeKind::Var || call->args.size() > 3) return std::nullopt;
+    Value callee = evalVar(static_cast<const VarExpr*>(call->callee));
+    if (callee.kind != ValueKind::Builtin) return std::nullopt;
+    const BuiltinInfo& info = builtinFunctions()[callee.index];
+    if (info.name != "range") return std::nullopt;
+    if (!arityFits(info, call->args.size())) arityError(info, call);
+    std::array<Value, 3> storage;
+    std::span<Value> args(storage.data(), call->args.size());
+    evalArguments(call, args);
+    BuiltinCall builtinCall{*this, call, args};
+    return RangeSequence(builtinCall);
+}
+
 void Interpreter::execFor(const ForStmt* node) {
+    if (std::optional<RangeSequence> numbers = rangeSequence(node->iterable)) {
+        for (Value item; numbers->next(item);) {
+            step(node->iterable->range);
+            store(node->resolution, item);
+            execStatements(node->body->statements);
+        }
+        return;
+    }
     Value iterable = eval(node->iterable);
     if (iterable.kind != ValueKind::List) {
         fail(node->iterable->range,
@@ -427,7 +453,11 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
     for (size_t i = 0; i < args.size(); ++i) locals_[i] = args[i];
     enclosing_ = closure->enclosing;
 
-    std::vector<Value> emitted;
+    // Each call depth reuses one buffer for what its macro emits: most calls emit one
+    // entity, and a fresh vector per call cost an allocation.
+    if (emitBuffers_.size() <= depth_) emitBuffers_.resize(depth_ + 1);
+    std::vector<Value>& emitted = emitBuffers_[depth_];
+    emitted.clear();
     emitMode_ = EmitMode::Macro;
     emitted_ = &emitted;
     ++depth_;

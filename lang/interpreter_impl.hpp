@@ -1,6 +1,7 @@
 // The interpreter's internals, shared by its source files (not a public header).
 #pragma once
 
+#include "builtins.hpp"
 #include "interpreter.hpp"
 
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 #include <set>
 #include <tuple>
 #include <filesystem>
+#include <optional>
 #include <compare>
 #include <span>
 #include <string>
@@ -100,6 +102,21 @@ private:
     [[gnu::noinline]] Value binaryOnValues(const BinaryExpr* node, const Value& a, const Value& b);
     Value evalUnary(const UnaryExpr* node);
     Value evalCall(const CallExpr* node);
+    /// Evaluates a call's arguments, left to right, into `args` (one slot per argument).
+    void evalArguments(const CallExpr* node, std::span<Value> args) {
+        for (size_t i = 0; i < node->args.size(); ++i) {
+            args[i] = eval(node->args[i]);
+            if (args[i].kind == ValueKind::None) fail(node->args[i]->range, "this argument has no value (none)");
+        }
+    }
+    static bool arityFits(const BuiltinInfo& info, size_t count) {
+        int n = static_cast<int>(count);
+        return n >= info.minArgs && (info.maxArgs < 0 || n <= info.maxArgs);
+    }
+    /// Reports a call passing more or fewer arguments than the built-in takes.
+    [[noreturn, gnu::cold, gnu::noinline]] void arityError(const BuiltinInfo& info, const CallExpr* node);
+    /// For `for … in range(…)` with the built-in range: its numbers, without the list.
+    std::optional<RangeSequence> rangeSequence(const Expr* iterable);
     Value evalIndex(const IndexExpr* node);
     Value evalModify(const ModifyExpr* node);
     Value evalList(const ListExpr* node);
@@ -147,6 +164,7 @@ private:
 
     EmitMode emitMode_ = EmitMode::None;
     std::vector<Value>* emitted_ = nullptr;
+    std::deque<std::vector<Value>> emitBuffers_; ///< per macro call depth; a deque keeps them in place
 
     std::deque<std::string> strings_;
     std::deque<std::vector<Value>> lists_;

@@ -452,6 +452,20 @@ Value Interpreter::evalModify(const ModifyExpr* node) {
     return Value::object(ValueKind::Entity, target.objectType, static_cast<uint32_t>(index));
 }
 
+void Interpreter::arityError(const BuiltinInfo& info, const CallExpr* node) {
+    int count = static_cast<int>(node->args.size());
+    std::string expected = info.minArgs == info.maxArgs
+                               ? fmt::format("{}", info.minArgs)
+                               : info.maxArgs < 0 ? fmt::format("at least {}", info.minArgs)
+                                                  : fmt::format("{} to {}", info.minArgs, info.maxArgs);
+    bool singular = info.maxArgs == 1 || (info.maxArgs < 0 && info.minArgs == 1);
+    Diagnostic& d = diagnostics_.error(node->range, fmt::format("{} takes {} argument{}, but {} {} given",
+                                                                info.name, expected, singular ? "" : "s",
+                                                                count, count == 1 ? "was" : "were"));
+    d.notes.push_back({node->callee->range, fmt::format("signature: {}", info.signature)});
+    throw EvalError{};
+}
+
 Value Interpreter::evalCall(const CallExpr* node) {
     Value callee = eval(node->callee);
     if (callee.kind != ValueKind::Builtin && callee.kind != ValueKind::Macro) {
@@ -471,29 +485,11 @@ Value Interpreter::evalCall(const CallExpr* node) {
         large.resize(node->args.size());
         args = large;
     }
-    for (size_t i = 0; i < node->args.size(); ++i) {
-        args[i] = eval(node->args[i]);
-        if (args[i].kind == ValueKind::None) {
-            fail(node->args[i]->range, "this argument has no value (none)");
-        }
-    }
+    evalArguments(node, args);
     if (callee.kind == ValueKind::Macro) return callMacro(callee.closure, node, args);
 
     const BuiltinInfo& info = builtinFunctions()[callee.index];
-    int count = static_cast<int>(args.size());
-    if (count < info.minArgs || (info.maxArgs >= 0 && count > info.maxArgs)) {
-        std::string expected = info.minArgs == info.maxArgs
-                                   ? fmt::format("{}", info.minArgs)
-                                   : info.maxArgs < 0 ? fmt::format("at least {}", info.minArgs)
-                                                      : fmt::format("{} to {}", info.minArgs, info.maxArgs);
-        bool singular = info.maxArgs == 1 || (info.maxArgs < 0 && info.minArgs == 1);
-        Diagnostic& d = diagnostics_.error(node->range, fmt::format("{} takes {} argument{}, but {} {} given",
-                                                                    info.name, expected,
-                                                                    singular ? "" : "s", count,
-                                                                    count == 1 ? "was" : "were"));
-        d.notes.push_back({node->callee->range, fmt::format("signature: {}", info.signature)});
-        throw EvalError{};
-    }
+    if (!arityFits(info, node->args.size())) arityError(info, node);
     BuiltinCall call{*this, node, args};
     return info.function(call);
 }
