@@ -38,8 +38,8 @@ struct LightInfo {
 /// bookkeeping), which reach millions of entries in generated scripts. Their capacity grows
 /// eightfold instead of doubling, up to 256 MiB: capacity never written costs address space
 /// but no memory (its pages are never touched), while every reallocation copies, and so
-/// page-faults in again, everything built so far. That was half the time of `--check` on a
-/// script of 100,000 objects.
+/// page-faults in again, everything built so far: 7,000 of the 19,600 page faults of
+/// checking a script of 100,000 spheres with doubling.
 template <typename T> T& appendGrowing(std::vector<T>& items, T item) {
     if (items.size() == items.capacity()) {
         constexpr size_t kEightfoldUpTo = (size_t{256} << 20) / sizeof(T);
