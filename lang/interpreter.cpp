@@ -167,12 +167,13 @@ std::optional<RangeSequence> Interpreter::rangeSequence(const Expr* iterable) {
 }
 
 void Interpreter::execFor(const ForStmt* node) {
+    auto runBody = [&](const Value& item) {
+        step(node->iterable->range);
+        store(node->resolution, item);
+        execStatements(node->body->statements);
+    };
     if (std::optional<RangeSequence> numbers = rangeSequence(node->iterable)) {
-        for (Value item; numbers->next(item);) {
-            step(node->iterable->range);
-            store(node->resolution, item);
-            execStatements(node->body->statements);
-        }
+        for (Value item; numbers->next(item);) runBody(item);
         return;
     }
     Value iterable = eval(node->iterable);
@@ -181,12 +182,7 @@ void Interpreter::execFor(const ForStmt* node) {
              fmt::format("'for' needs a list or a range, not {}", typeName(iterable)));
     }
     // The list is immutable, so iterating it while the body runs is safe.
-    const std::vector<Value>& items = *iterable.list;
-    for (const Value& item : items) {
-        step(node->iterable->range);
-        store(node->resolution, item);
-        execStatements(node->body->statements);
-    }
+    for (const Value& item : *iterable.list) runBody(item);
 }
 
 void Interpreter::execScene(const SceneStmt* node) {
