@@ -2,6 +2,7 @@
 #include "ast_dump.hpp"
 #include "diagnostic_printer.hpp"
 #include "formatter.hpp"
+#include "huge_page_heap.hpp"
 #include "interpreter.hpp"
 #include "large_stack.hpp"
 #include "options.hpp"
@@ -149,6 +150,7 @@ int run(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
+    crt::driver::useHugePageHeap();
     int status = run(argc, argv);
     // Never exit while the image module is still being loaded: its libraries' constructors
     // would run alongside the exit handlers (seen as aborts inside dlopen on Ctrl-C).

@@ -1,0 +1,41 @@
+// Transparent huge pages for crtc's heap (see huge_page_heap.hpp).
+//
+// Why: on the virtual machines crtc is measured on, a first touch of a 4 KB page costs
+// 3 to 15 µs, so the 33 MB description of a 100,000-sphere scene spent more time in page
+// faults than in building it. A 2 MB page is one fault for 512 of them.
+//
+// How, with documented mallopt(3) settings only: all threads allocate from the main arena
+// (the front end runs on a thread of its own), nothing is served by a separate mmap, and
+// the heap is extended once, by a large pad, then never trimmed; that one region is then
+// advised with MADV_HUGEPAGE. The pad is address space only: pages not touched cost nothing.
+#include "huge_page_heap.hpp"
+
+#include <cstdint>
+#include <cstdlib>
+#include <malloc.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+namespace crt::driver {
+
+void useHugePageHeap() {
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+    constexpr uintptr_t kHugePage = uintptr_t{2} << 20;
+    constexpr size_t kPad = size_t{1} << 30;
+    if (mallopt(M_ARENA_MAX, 1) == 0 || mallopt(M_MMAP_MAX, 0) == 0 ||
+        mallopt(M_TRIM_THRESHOLD, INT32_MAX) == 0 || mallopt(M_TOP_PAD, static_cast<int>(kPad)) == 0) {
+        return;
+    }
+    auto before = reinterpret_cast<uintptr_t>(sbrk(0));
+    // Larger than what is left of the heap's top: the allocator extends the heap by it and the
+    // pad. Through a volatile pointer, or the compiler removes the pair.
+    void* volatile block = std::malloc(size_t{1} << 20);
+    std::free(block);
+    auto after = reinterpret_cast<uintptr_t>(sbrk(0));
+    uintptr_t begin = (before + kHugePage - 1) & ~(kHugePage - 1);
+    uintptr_t end = after & ~(kHugePage - 1);
+    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#endif
+}
+
+} // namespace crt::driver

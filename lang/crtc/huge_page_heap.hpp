@@ -1,0 +1,12 @@
+// Backs crtc's heap with transparent huge pages, so building a large scene faults in 2 MB
+// pages instead of 4 KB ones.
+#pragma once
+
+namespace crt::driver {
+
+/// Sets up the C library's allocator so that every allocation of the process comes from
+/// one heap advised to use transparent huge pages. Call first thing in main, before any
+/// thread starts. Does nothing in sanitizer builds (their allocator is not the C library's).
+void useHugePageHeap();
+
+} // namespace crt::driver
