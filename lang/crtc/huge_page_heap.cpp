@@ -18,23 +18,29 @@
 
 namespace crt::driver {
 
-void useHugePageHeap() {
-#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+bool useHugePageHeap() {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    return false;
+#else
     constexpr uintptr_t kHugePage = uintptr_t{2} << 20;
     constexpr size_t kPad = size_t{1} << 30;
     if (mallopt(M_ARENA_MAX, 1) == 0 || mallopt(M_MMAP_MAX, 0) == 0 ||
         mallopt(M_TRIM_THRESHOLD, INT32_MAX) == 0 || mallopt(M_TOP_PAD, static_cast<int>(kPad)) == 0) {
-        return;
+        return false;
     }
     auto before = reinterpret_cast<uintptr_t>(sbrk(0));
+    uintptr_t heapStart = before - mallinfo2().arena; // one arena so far: the heap below the break
     // Larger than what is left of the heap's top: the allocator extends the heap by it and the
     // pad. Through a volatile pointer, or the compiler removes the pair.
     void* volatile block = std::malloc(size_t{1} << 20);
     std::free(block);
     auto after = reinterpret_cast<uintptr_t>(sbrk(0));
-    uintptr_t begin = (before + kHugePage - 1) & ~(kHugePage - 1);
+    // From the huge page holding the old top (memory freed below it joins what is added),
+    // unless that page begins before the heap.
+    uintptr_t begin = before & ~(kHugePage - 1);
+    if (begin < heapStart) begin += kHugePage;
     uintptr_t end = after & ~(kHugePage - 1);
-    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+    return end > begin && madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE) == 0;
 #endif
 }
 

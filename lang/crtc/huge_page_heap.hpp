@@ -6,7 +6,9 @@ namespace crt::driver {
 
 /// Sets up the C library's allocator so that every allocation of the process comes from
 /// one heap advised to use transparent huge pages. Call first thing in main, before any
-/// thread starts. Does nothing in sanitizer builds (their allocator is not the C library's).
-void useHugePageHeap();
+/// thread starts. Returns whether the heap was advised; false in sanitizer builds (their
+/// allocator is not the C library's) and on kernels without transparent huge pages, where
+/// allocation works as before.
+bool useHugePageHeap();
 
 } // namespace crt::driver
