@@ -10,6 +10,7 @@
 // advised with MADV_HUGEPAGE. The pad is address space only: pages not touched cost nothing.
 #include "huge_page_heap.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <malloc.h>
@@ -17,6 +18,19 @@
 #include <unistd.h>
 
 namespace crt::driver {
+
+namespace {
+
+/// mallopt(3)'s defaults for what useHugePageHeap changes.
+void restoreAllocatorDefaults() {
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    mallopt(M_ARENA_MAX, static_cast<int>(8 * std::max(cores, 1L))); // the 64-bit default
+    mallopt(M_MMAP_MAX, 65536);
+    mallopt(M_TRIM_THRESHOLD, 128 * 1024);
+    mallopt(M_TOP_PAD, 128 * 1024);
+}
+
+} // namespace
 
 bool useHugePageHeap() {
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
@@ -26,6 +40,7 @@ bool useHugePageHeap() {
     constexpr size_t kPad = size_t{1} << 30;
     if (mallopt(M_ARENA_MAX, 1) == 0 || mallopt(M_MMAP_MAX, 0) == 0 ||
         mallopt(M_TRIM_THRESHOLD, INT32_MAX) == 0 || mallopt(M_TOP_PAD, static_cast<int>(kPad)) == 0) {
+        restoreAllocatorDefaults();
         return false;
     }
     auto before = reinterpret_cast<uintptr_t>(sbrk(0));
@@ -40,7 +55,13 @@ bool useHugePageHeap() {
     uintptr_t begin = before & ~(kHugePage - 1);
     if (begin < heapStart) begin += kHugePage;
     uintptr_t end = after & ~(kHugePage - 1);
-    return end > begin && madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE) == 0;
+    if (end > begin && madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE) == 0) {
+        return true;
+    }
+    // No such region (the break could not move by the pad, as under strict overcommit) or no
+    // transparent huge pages: the settings would only cost, so the allocator gets its own back.
+    restoreAllocatorDefaults();
+    return false;
 #endif
 }
 
