@@ -456,23 +456,25 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
         return entity(tracer::MeshShape{b.text("file"), resolved}, false);
     }
     case ObjectType::Material: {
+        tracer::FinishDesc f;
+        f.reflectivity = b.number("reflectivity", 0);
+        f.transparency = b.number("transparency", 0);
+        f.ior = b.number("ior", 1);
+        f.diffuse = b.number("diffuse", std::max(0.0, 1.0 - f.reflectivity - f.transparency));
+        f.specular = b.number("specular", 0);
+        f.shininess = b.number("shininess", 3);
+        f.metallic = b.flag("metallic", false);
+        f.glossiness = b.number("glossiness", 0);
+        f.fresnel = b.flag("fresnel", false);
+        f.absorption = b.colour("absorption", f.absorption);
+        f.emission = b.colour("emission", f.emission);
+        f.texture = b.get("texture") ? static_cast<int32_t>(b.get("texture")->index) : -1;
+        f.bump = b.get("bump") ? static_cast<int32_t>(b.get("bump")->index) : -1;
+        if (f.ior <= 0) fail(b.where("ior"), "the index of refraction must be positive");
+        if (f.glossiness < 0 || f.glossiness > 1) fail(b.where("glossiness"), "glossiness must be between 0 and 1");
         tracer::MaterialDesc& m = appendGrowing(scene_.materials, tracer::MaterialDesc{});
         m.color = b.colour("color", m.color);
-        m.reflectivity = b.number("reflectivity", 0);
-        m.transparency = b.number("transparency", 0);
-        m.ior = b.number("ior", 1);
-        m.diffuse = b.number("diffuse", std::max(0.0, 1.0 - m.reflectivity - m.transparency));
-        m.specular = b.number("specular", 0);
-        m.shininess = b.number("shininess", 3);
-        m.metallic = b.flag("metallic", false);
-        m.glossiness = b.number("glossiness", 0);
-        m.fresnel = b.flag("fresnel", false);
-        m.absorption = b.colour("absorption", m.absorption);
-        m.emission = b.colour("emission", m.emission);
-        m.texture = b.get("texture") ? static_cast<int32_t>(b.get("texture")->index) : -1;
-        m.bump = b.get("bump") ? static_cast<int32_t>(b.get("bump")->index) : -1;
-        if (m.ior <= 0) fail(b.where("ior"), "the index of refraction must be positive");
-        if (m.glossiness < 0 || m.glossiness > 1) fail(b.where("glossiness"), "glossiness must be between 0 and 1");
+        m.finish = scene_.internFinish(f);
         m.source = span(node->range);
         return Value::object(ValueKind::Material, node->type, static_cast<uint32_t>(scene_.materials.size() - 1));
     }

@@ -50,9 +50,10 @@ void Interpreter::dropUnreachable(const std::vector<bool>& keepEntity, const std
         forEachChild(entity, [&](int32_t& child) { child = entityMap[static_cast<size_t>(child)]; });
     }
     for (int32_t& root : scene_.drawn) root = entityMap[static_cast<size_t>(root)];
-    for (tracer::MaterialDesc& material : scene_.materials) {
-        if (material.texture >= 0) material.texture = textureMap[static_cast<size_t>(material.texture)];
-        if (material.bump >= 0) material.bump = textureMap[static_cast<size_t>(material.bump)];
+    // A finish of dropped materials only may name a dropped texture: it becomes -1, unused.
+    for (tracer::FinishDesc& finish : scene_.finishes) {
+        if (finish.texture >= 0) finish.texture = textureMap[static_cast<size_t>(finish.texture)];
+        if (finish.bump >= 0) finish.bump = textureMap[static_cast<size_t>(finish.bump)];
     }
 }
 
@@ -152,7 +153,8 @@ void Interpreter::assembleScene() {
     std::vector<bool> keepTexture(scene_.textures.size(), false);
     for (size_t i = 0; i < scene_.materials.size(); ++i) {
         if (!keepMaterial[i]) continue;
-        for (int32_t t : {scene_.materials[i].texture, scene_.materials[i].bump}) {
+        const tracer::FinishDesc& finish = scene_.finishOf(scene_.materials[i]);
+        for (int32_t t : {finish.texture, finish.bump}) {
             if (t >= 0) keepTexture[static_cast<size_t>(t)] = true;
         }
     }

@@ -223,13 +223,14 @@ std::string sceneToJson(const t::SceneDesc& scene, int indent) {
     root["background"] = std::move(background);
 
     Json materials = Json::array();
-    for (const t::MaterialDesc& m : scene.materials) {
-        materials.push_back(Json{{"color", colour(m.color)}, {"reflectivity", m.reflectivity},
+    for (const t::MaterialDesc& material : scene.materials) {
+        const t::FinishDesc& m = scene.finishOf(material);
+        materials.push_back(Json{{"color", colour(material.color)}, {"reflectivity", m.reflectivity},
                                  {"transparency", m.transparency}, {"ior", m.ior}, {"diffuse", m.diffuse},
                                  {"specular", m.specular}, {"shininess", m.shininess}, {"metallic", m.metallic},
                                  {"glossiness", m.glossiness}, {"fresnel", m.fresnel},
                                  {"absorption", colour(m.absorption)}, {"emission", colour(m.emission)},
-                                 {"texture", m.texture}, {"bump", m.bump}, {"source", source(m.source)}});
+                                 {"texture", m.texture}, {"bump", m.bump}, {"source", source(material.source)}});
     }
     root["materials"] = std::move(materials);
 

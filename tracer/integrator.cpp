@@ -8,7 +8,7 @@ namespace crt::tracer {
 
 struct Integrator::ShadingPoint {
     SurfaceInteraction si;
-    const MaterialDesc* material;
+    const ShadingMaterial* material;
     Vec3 color;        ///< C: the material colour or its texture
     Vec3 tint;         ///< K: C for metallic materials, else white
     Vec3 n;            ///< shading normal, facing the incoming ray
@@ -22,7 +22,7 @@ Integrator::Integrator(const RenderScene& scene, const SettingsDesc& settings, s
                        const Background& background, std::vector<Texture> textures)
     : scene_(scene), settings_(settings), lights_(std::move(lights)), background_(background),
       textures_(std::move(textures)), ambient_(rgb(settings.ambient)) {
-    for (const MaterialDesc& m : scene.materials) {
+    for (const ShadingMaterial& m : scene.materials) {
         features_.reflection |= m.reflectivity > 0 || (m.fresnel && m.transparency > 0);
         features_.refraction |= m.transparency > 0;
         features_.transparentShadows |= m.transparency > 0;
@@ -55,7 +55,7 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
     ShadingPoint sp;
     sp.si = scene_.interaction(ray, hit);
     sp.material = &scene_.materials[sp.si.material];
-    const MaterialDesc& m = *sp.material;
+    const ShadingMaterial& m = *sp.material;
     sp.d = ray.dir;
     sp.v = -ray.dir;
     sp.pathLength = pathLength + hit.t;
@@ -116,7 +116,7 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
 }
 
 Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) const {
-    const MaterialDesc& m = *sp.material;
+    const ShadingMaterial& m = *sp.material;
     Vec3 c(0.0);
     Vec3 diffuseColor = sp.color * m.diffuse;
     for (const Light& light : lights_) {
@@ -154,7 +154,7 @@ Vec3 Integrator::transmittance(const Ray& ray, double tMax, TraceContext& contex
     Vec3 through(1.0);
     const RenderScene& scene = scene_;
     scene_.forEachCrossing(ray, tMax, context.scratch, context.stats, [&](int32_t primitive, double) {
-        const MaterialDesc& m = scene.materials[scene.primitives[primitive].material];
+        const ShadingMaterial& m = scene.materials[scene.primitives[primitive].material];
         if (m.transparency <= 0) {
             through = Vec3(0.0);
             return false;
@@ -166,7 +166,7 @@ Vec3 Integrator::transmittance(const Ray& ray, double tMax, TraceContext& contex
 }
 
 Vec3 Integrator::reflect(const ShadingPoint& sp, int depth, int32_t medium, TraceContext& context) const {
-    const MaterialDesc& m = *sp.material;
+    const ShadingMaterial& m = *sp.material;
     Vec3 mirror = glm::normalize(sp.d - 2 * glm::dot(sp.d, sp.n) * sp.n);
     auto traceFrom = [&](const Vec3& dir) {
         ++context.stats.reflectionRays;

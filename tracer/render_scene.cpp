@@ -160,7 +160,7 @@ bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch&
 
 SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) const {
     const Primitive& p = primitives[hit.primitive];
-    const MaterialDesc& m = materials[p.material];
+    const ShadingMaterial& m = materials[p.material];
     SurfacePoint sp = surfaceAt(p.geometry, objectRay(p, ray), hit.crossing, m.texture >= 0 || m.bump >= 0);
     SurfaceInteraction si;
     si.objectPoint = sp.point;

@@ -106,13 +106,18 @@ struct QueryScratch {
     std::vector<int32_t> stack;
 };
 
+/// A material as shading reads it: its colour beside its finish, in one place.
+struct ShadingMaterial : FinishDesc {
+    Color color = MaterialDesc{}.color;
+};
+
 /// Built by buildRenderScene; read-only while rendering, shared by every thread.
 class RenderScene {
 public:
     std::vector<Primitive> primitives;
     std::vector<TransformPair> transforms;
     std::vector<CsgTreeNode> csgNodes;
-    std::vector<MaterialDesc> materials;
+    std::vector<ShadingMaterial> materials;
 
     /// Nearest hit with 0 < t < tMax.
     bool intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats) const;

@@ -14,9 +14,12 @@ public:
         : desc_(desc), scene_(scene), error_(error) {}
 
     bool build() {
-        scene_.materials = desc_.materials;
+        scene_.materials.reserve(desc_.materials.size() + 1);
+        for (const MaterialDesc& m : desc_.materials) {
+            scene_.materials.push_back({desc_.finishOf(m), m.color});
+        }
         defaultMaterial_ = static_cast<int32_t>(scene_.materials.size());
-        scene_.materials.emplace_back();
+        scene_.materials.push_back({FinishDesc{}, MaterialDesc{}.color});
         for (int32_t root : desc_.drawn)
             if (!addDrawn(root, Transform())) return false;
         finishAcceleration();

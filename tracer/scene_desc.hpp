@@ -25,6 +25,8 @@ struct SourceSpan {
 /// A linear RGB colour with alpha (alpha is carried, not used for shading).
 struct Color {
     double r = 0, g = 0, b = 0, a = 1;
+
+    bool operator==(const Color&) const = default;
 };
 
 enum class ModifierKind : uint8_t { Translate, Rotate, Scale };
@@ -57,21 +59,30 @@ struct TextureDesc {
     SourceSpan source;
 };
 
-struct MaterialDesc {
-    Color color{0.5, 0.5, 0.5, 1};
+/// Everything a material is besides its colour. Materials that agree on all of it share one
+/// entry of SceneDesc::finishes: a generated scene of 100,000 spheres, each with its own
+/// colour, keeps 100,000 small materials and one finish.
+struct FinishDesc {
     double reflectivity = 0;
     double transparency = 0;
     double ior = 1;
     double diffuse = 1; ///< default max(0, 1 - reflectivity - transparency)
     double specular = 0;
     double shininess = 3;
-    bool metallic = false;
     double glossiness = 0;
+    bool metallic = false;
     bool fresnel = false;
     Color absorption{0, 0, 0, 1};
     Color emission{0, 0, 0, 1};
     int32_t texture = -1; ///< replaces color
     int32_t bump = -1;
+
+    bool operator==(const FinishDesc&) const = default;
+};
+
+struct MaterialDesc {
+    Color color{0.5, 0.5, 0.5, 1};
+    int32_t finish = -1; ///< index into SceneDesc::finishes; -1: the default FinishDesc
     SourceSpan source;
 };
 
@@ -194,12 +205,26 @@ struct SceneDesc {
     std::vector<LightDesc> lights; ///< the lights of Settings.lights, in order
     BackgroundDesc background;
     std::vector<MaterialDesc> materials;
+    std::vector<FinishDesc> finishes; ///< shared by materials
     std::vector<TextureDesc> textures;
     std::vector<EntityDesc> entities;
     std::vector<int32_t> drawn; ///< roots: entities drawn by Scene blocks, in order
     double time = 0;            ///< t of this evaluation
     int frame = 0;
     int frameCount = 1;
+
+    /// The finish of `material`.
+    const FinishDesc& finishOf(const MaterialDesc& material) const {
+        static const FinishDesc kDefault;
+        return material.finish < 0 ? kDefault : finishes[static_cast<size_t>(material.finish)];
+    }
+    /// The index in finishes for `finish`: -1 for the default one, the last one added if
+    /// equal (materials built in a loop), else a new entry.
+    int32_t internFinish(const FinishDesc& finish) {
+        if (finish == FinishDesc{}) return -1;
+        if (finishes.empty() || !(finishes.back() == finish)) finishes.push_back(finish);
+        return static_cast<int32_t>(finishes.size() - 1);
+    }
 };
 
 } // namespace crt::tracer

@@ -55,8 +55,9 @@ TEST_CASE("demo01: the mirror room") {
     const t::EntityDesc& back = s.entities[static_cast<size_t>(s.drawn[3])];
     const t::EntityDesc& front = s.entities[static_cast<size_t>(s.drawn[4])];
     CHECK(back.material == front.material);
-    CHECK(s.materials[static_cast<size_t>(back.material)].reflectivity == Approx(0.93));
-    CHECK(s.materials[static_cast<size_t>(back.material)].diffuse == Approx(0.07));
+    const t::FinishDesc& mirror = s.finishOf(s.materials[static_cast<size_t>(back.material)]);
+    CHECK(mirror.reflectivity == Approx(0.93));
+    CHECK(mirror.diffuse == Approx(0.07));
     CHECK(s.background.kind == t::BackgroundKind::Solid);
     CHECK(s.background.color.r == 1.0);
 }
@@ -104,7 +105,7 @@ TEST_CASE("demo02: rand() is deterministic and in range") {
     for (size_t i = 0; i < a.scene->materials.size(); ++i) {
         const t::Color& x = a.scene->materials[i].color;
         CHECK(x.r == b.scene->materials[i].color.r);
-        if (a.scene->materials[i].reflectivity != 0.5) continue; // the seven spheres
+        if (a.scene->finishOf(a.scene->materials[i]).reflectivity != 0.5) continue; // the seven spheres
         ++randomColours;
         for (double channel : {x.r, x.g, x.b}) CHECK((channel >= 0.0 && channel < 1.0));
     }

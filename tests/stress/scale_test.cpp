@@ -28,22 +28,22 @@ SceneDesc scaledScene(double s) {
     m.desc.background.horizon = Color{0.8, 0.85, 0.9, 1};
     m.desc.background.sky = Color{0.3, 0.5, 0.9, 1};
 
-    MaterialDesc floor;
+    ShadingMaterial floor;
     floor.color = Color{0.6, 0.6, 0.55, 1};
     floor.reflectivity = 0.2;
     floor.diffuse = 0.8;
     m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(floor)));
-    MaterialDesc red;
+    ShadingMaterial red;
     red.color = Color{0.8, 0.3, 0.2, 1};
     red.specular = 0.4;
     red.shininess = 20;
     m.draw(m.sphere(DVec3(0, 1, 0) * s, 1 * s, m.material(red))); // touches the floor
-    MaterialDesc mirror;
+    ShadingMaterial mirror;
     mirror.color = Color{0.9, 0.9, 0.9, 1};
     mirror.reflectivity = 0.9;
     mirror.diffuse = 0.1;
     m.draw(m.sphere(DVec3(1.9, 0.8, 0.6) * s, 0.8 * s, m.material(mirror)));
-    MaterialDesc wall = mirror;
+    ShadingMaterial wall = mirror;
     wall.reflectivity = 0.7;
     wall.diffuse = 0.3;
     m.draw(m.plane({0, 0, -1}, DVec3(0, 0, 4) * s, m.material(wall)));
@@ -99,7 +99,7 @@ TEST_CASE("A lit floor and sphere have no shadow acne at scales 1e-3, 1 and 1e5"
         SceneMaker m;
         m.desc = blankScene(96, 72, lookAt(DVec3(0.5, 2.2, -5) * s, DVec3(0.3, 0.8, 0) * s, 50));
         const Color C{0.7, 0.6, 0.5, 1};
-        MaterialDesc mat;
+        ShadingMaterial mat;
         mat.color = C;
         int32_t id = m.material(mat);
         const DVec3 center = DVec3(0, 1, 0) * s;

@@ -30,18 +30,18 @@ SceneDesc stochasticScene() {
     m.desc.background.horizon = Color{0.8, 0.85, 0.9, 1};
     m.desc.background.sky = Color{0.2, 0.4, 0.9, 1};
 
-    MaterialDesc floor;
+    ShadingMaterial floor;
     floor.color = Color{0.6, 0.6, 0.5, 1};
     floor.reflectivity = 0.5;
     floor.diffuse = 0.5;
     floor.glossiness = 0.4;
     m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(floor)));
-    MaterialDesc ball;
+    ShadingMaterial ball;
     ball.color = Color{0.9, 0.3, 0.2, 1};
     ball.specular = 0.5;
     ball.shininess = 20;
     m.draw(m.sphere({0, 0.6, 0.5}, 0.6, m.material(ball)));
-    MaterialDesc far;
+    ShadingMaterial far;
     far.color = Color{0.2, 0.5, 0.9, 1};
     far.reflectivity = 0.3;
     far.diffuse = 0.7;

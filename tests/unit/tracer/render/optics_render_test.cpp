@@ -14,16 +14,16 @@ using namespace crt::tracer::test;
 
 namespace {
 
-MaterialDesc emissive(Color e) {
-    MaterialDesc m;
+ShadingMaterial emissive(Color e) {
+    ShadingMaterial m;
     m.color = Color{0, 0, 0, 1};
     m.diffuse = 0;
     m.emission = e;
     return m;
 }
 
-MaterialDesc glass(double ior, double transparency = 1) {
-    MaterialDesc m;
+ShadingMaterial glass(double ior, double transparency = 1) {
+    ShadingMaterial m;
     m.color = Color{1, 1, 1, 1};
     m.transparency = transparency;
     m.diffuse = 0;
@@ -45,7 +45,7 @@ TEST_CASE("A mirror reflects a known colour exactly and recursion depth 0 gives 
     const Color background{0.9, 0.1, 0.2, 1};
     const Color E{0.3, 0.5, 0.7, 1};
     m.desc.background.color = background;
-    MaterialDesc mirror;
+    ShadingMaterial mirror;
     mirror.color = Color{0.25, 0.25, 0.25, 1}; // not metallic: reflections are untinted (K = white)
     mirror.reflectivity = 1;
     mirror.diffuse = 0;
@@ -134,7 +134,7 @@ TEST_CASE("Refraction through a glass slab shifts a stripe pattern by what Snell
     stripes.size = stripe;
     stripes.axis = {1, 0, 0};
     m.desc.textures.push_back(stripes);
-    MaterialDesc wall;
+    ShadingMaterial wall;
     wall.texture = 0;
     m.draw(m.plane({0, 0, -1}, {0, 0, wallZ}, m.material(wall)));
     PixelBuffer image = renderOk(m.desc);
@@ -172,7 +172,7 @@ TEST_CASE("Beer-Lambert absorption through a slab is exp(-a d) over the refracte
     m.desc.background.color = background;
     const double thickness = 2, ior = 1.5;
     const DVec3 a(0.3, 0.8, 1.5);
-    MaterialDesc tinted = glass(ior);
+    ShadingMaterial tinted = glass(ior);
     tinted.absorption = Color{a.x, a.y, a.z, 1};
     m.draw(m.box({-50, -50, 0}, {50, 50, thickness}, m.material(tinted)));
     PixelBuffer image = renderOk(m.desc);
@@ -254,7 +254,7 @@ TEST_CASE("Fresnel moves kt*F into reflection: kr' = kr + kt F, kt' = kt (1 - F)
     m.desc.background.color = background;
     const double kr = 0.2, kt = 0.8, ior = 1.5;
     // A glass half-space y ≤ 0: the refracted ray never leaves it and sees the background.
-    MaterialDesc water = glass(ior, kt);
+    ShadingMaterial water = glass(ior, kt);
     water.reflectivity = kr;
     water.fresnel = true;
     m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(water)));

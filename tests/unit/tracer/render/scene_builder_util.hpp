@@ -1,6 +1,7 @@
 // Helpers that build small scene descriptions in code for the render-core tests.
 #pragma once
 
+#include "tracer/render_scene.hpp"
 #include "tracer/scene_desc.hpp"
 
 #include <utility>
@@ -12,8 +13,9 @@ class SceneMaker {
 public:
     SceneDesc desc;
 
-    int32_t material(MaterialDesc m) {
-        desc.materials.push_back(m);
+    /// A material given with its finish in one struct, as shading sees it.
+    int32_t material(const ShadingMaterial& m) {
+        desc.materials.push_back({m.color, desc.internFinish(m), {}});
         return static_cast<int32_t>(desc.materials.size() - 1);
     }
     int32_t entity(Shape shape, int32_t material = -1, bool solid = true) {
@@ -35,14 +37,14 @@ public:
     }
     void draw(int32_t e) { desc.drawn.push_back(e); }
     int32_t colored(double r, double g, double b) {
-        MaterialDesc m;
+        ShadingMaterial m;
         m.color = Color{r, g, b, 1};
         return material(m);
     }
 
 private:
     int32_t defaultMaterial() {
-        if (default_ < 0) default_ = material(MaterialDesc{});
+        if (default_ < 0) default_ = material(ShadingMaterial{});
         return default_;
     }
     int32_t default_ = -1;

@@ -53,7 +53,7 @@ TEST_CASE("A Lambert sphere under a parallel light is color x light x cos(theta)
     const double radius = 1;
     const Color C{0.8, 0.6, 0.4, 1};
     const Color L{0.9, 0.7, 1.0, 1};
-    MaterialDesc mat;
+    ShadingMaterial mat;
     mat.color = C; // diffuse 1, specular 0, no ambient anywhere
     m.draw(m.sphere(center, radius, m.material(mat)));
     const DVec3 from(-3, 2, -1), pointing(0, 0, 0);
@@ -96,7 +96,7 @@ TEST_CASE("A point light's falloff is falloff / (d + path)^2 on a plane, ambient
     const double falloff = 10, lightAmbient = 0.1;
     const DVec3 A(0.05, 0.04, 0.03);
     m.desc.settings.ambient = Color{A.x, A.y, A.z, 1};
-    MaterialDesc mat;
+    ShadingMaterial mat;
     mat.color = C;
     m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(mat)));
     LightDesc light = pointLight(lightPos, L, falloff);
@@ -136,7 +136,7 @@ TEST_CASE("A spot light is full inside its cone, zero outside and smooth in betw
     SceneMaker m;
     m.desc = blankScene(W, H, lookAt({0, 5, -4}, {0, 0, 0.5}, 40));
     const Color C{0.8, 0.8, 0.8, 1};
-    MaterialDesc mat;
+    ShadingMaterial mat;
     mat.color = C;
     m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(mat)));
     const DVec3 lightPos(0, 3, 0), axis(0, -1, 0);
@@ -201,9 +201,9 @@ struct ShadowScene {
     DVec3 lightPos{0.3, 3, 0.2};
     Color planeColor{0.6, 0.6, 0.6, 1};
 
-    explicit ShadowScene(const MaterialDesc& occluder) {
+    explicit ShadowScene(const ShadingMaterial& occluder) {
         m.desc = blankScene(W, H, lookAt({0, 4, -4}, {0, 0, 0.3}, 50));
-        MaterialDesc ground;
+        ShadingMaterial ground;
         ground.color = planeColor;
         m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(ground)));
         m.draw(m.sphere(center, radius, m.material(occluder)));
@@ -233,7 +233,7 @@ struct ShadowScene {
 } // namespace
 
 TEST_CASE("An opaque sphere casts a black shadow and leaves lit points untouched", "[render][analytic]") {
-    MaterialDesc opaque;
+    ShadingMaterial opaque;
     opaque.color = Color{0.9, 0.2, 0.2, 1};
     ShadowScene scene(opaque);
     PixelBuffer image = renderOk(scene.m.desc);
@@ -254,7 +254,7 @@ TEST_CASE("An opaque sphere casts a black shadow and leaves lit points untouched
 }
 
 TEST_CASE("A transparent occluder attenuates by transparency x colour per surface crossing", "[render][analytic]") {
-    MaterialDesc glass;
+    ShadingMaterial glass;
     glass.color = Color{1.0, 0.5, 0.25, 1};
     glass.transparency = 0.5;
     glass.diffuse = 0.5;
