@@ -19,7 +19,7 @@ public:
             scene_.materials.push_back({desc_.finishOf(m), m.color});
         }
         defaultMaterial_ = static_cast<int32_t>(scene_.materials.size());
-        scene_.materials.push_back({FinishDesc{}, MaterialDesc{}.color});
+        scene_.materials.emplace_back(); // the default material
         for (int32_t root : desc_.drawn)
             if (!addDrawn(root, Transform())) return false;
         finishAcceleration();
