@@ -22,7 +22,7 @@ namespace crt::driver {
 namespace {
 
 /// mallopt(3)'s defaults for what useHugePageHeap changes.
-void restoreAllocatorDefaults() {
+[[maybe_unused]] void restoreAllocatorDefaults() { // unused in sanitizer builds
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     mallopt(M_ARENA_MAX, static_cast<int>(8 * std::max(cores, 1L))); // the 64-bit default
     mallopt(M_MMAP_MAX, 65536);
