@@ -13,6 +13,8 @@
 
 namespace {
 
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__) // else unused
+
 /// The VmFlags line of the mapping in /proc/self/smaps that holds `address` ("" if none).
 std::string mappingFlags(const void* address) {
     auto where = reinterpret_cast<uintptr_t>(address);
@@ -36,6 +38,8 @@ bool kernelHasTransparentHugePages() {
     struct stat info {};
     return stat("/sys/kernel/mm/transparent_hugepage", &info) == 0;
 }
+
+#endif
 
 } // namespace
 
