@@ -25,8 +25,13 @@ namespace image_io = tracer::image_io;
 namespace {
 
 std::atomic<bool> interrupted{false};
+/// Set by Ctrl-C or by an output that failed: either way the rest of the render is of no use.
+std::atomic<bool> stopRendering{false};
 
-extern "C" void onInterrupt(int) { interrupted.store(true); }
+extern "C" void onInterrupt(int) {
+    interrupted.store(true);
+    stopRendering.store(true);
+}
 
 const std::regex& framePattern() {
     static const std::regex pattern("%0?[0-9]*d");
@@ -169,7 +174,7 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
             ProgressReporter progress(options.quiet, frames > 1 ? fmt::format("frame {}/{} ", frame + 1, frames) : "");
             tracer::RenderSettings settings;
             settings.threads = options.threads;
-            settings.cancel = &interrupted;
+            settings.cancel = &stopRendering;
             if (!options.quiet) settings.onProgress = [&](int done, int all) { progress.update(done, all); };
             // The image module (OpenImageIO, about 0.2 s to load) loads while the frame is
             // traced; not earlier, since no thread can start while it loads.
@@ -177,21 +182,23 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
             settings.beforeLastWorker = [] { image_io::finishLoading(); };
             std::optional<StreamedOutput> streamed;
             if (!gif) {
-                streamed.emplace(target, width, height, write);
+                streamed.emplace(target, width, height, write, stopRendering);
                 settings.onRowsDone = [&](int yBegin, int yEnd, std::span<const float> rgb) {
                     streamed->addRows(yBegin, yEnd, rgb);
                 };
             }
             tracer::RenderOutcome r = tracer::renderScene(scene, settings);
             progress.finish();
-            if (r.cancelled || interrupted.load()) {
+            if (interrupted.load()) {
                 std::cerr << "crtc: interrupted; no image written\n";
                 return 130;
             }
-            if (!r.ok) {
+            if (!r.ok && !r.cancelled) {
                 std::cerr << "crtc: " << r.error << "\n";
                 return 1;
             }
+            // A render stopped without Ctrl-C was stopped by its output's failure, which
+            // finish() reports.
             std::string error;
             if (streamed && !streamed->finish(error)) {
                 std::cerr << "crtc: " << error << "\n";

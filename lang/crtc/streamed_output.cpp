@@ -4,8 +4,10 @@ namespace crt::lang::driver {
 
 namespace image_io = tracer::image_io;
 
-StreamedOutput::StreamedOutput(std::string path, int width, int height, image_io::WriteOptions options)
-    : path_(std::move(path)), width_(width), height_(height), options_(options), writer_([this] { write(); }) {}
+StreamedOutput::StreamedOutput(std::string path, int width, int height, image_io::WriteOptions options,
+                               std::atomic<bool>& failed)
+    : path_(std::move(path)), width_(width), height_(height), options_(options), failed_(failed),
+      writer_([this] { write(); }) {}
 
 StreamedOutput::~StreamedOutput() {
     stopWriter();
@@ -41,9 +43,13 @@ void StreamedOutput::write() {
             opened = true;
             error.clear();
             stream = image_io::ImageStream::open(path_, width_, height_, 3, options_, error);
+            if (!stream) failed_ = true;
         }
         // After a failure the remaining rows are only drained: the error is reported once.
-        if (stream && !stream->writeRows(band.yBegin, band.yEnd, band.rgb, error)) stream.reset();
+        if (stream && !stream->writeRows(band.yBegin, band.yEnd, band.rgb, error)) {
+            stream.reset();
+            failed_ = true;
+        }
     }
     std::lock_guard<std::mutex> lock(mutex_);
     stream_ = std::move(stream);

@@ -5,6 +5,7 @@
 
 #include "tracer/image_io/image_io.hpp"
 
+#include <atomic>
 #include <condition_variable>
 #include <deque>
 #include <memory>
@@ -18,8 +19,10 @@ namespace crt::lang::driver {
 
 class StreamedOutput {
 public:
-    /// Starts the writer thread, which opens `path` when the first rows arrive.
-    StreamedOutput(std::string path, int width, int height, tracer::image_io::WriteOptions options);
+    /// Starts the writer thread, which opens `path` when the first rows arrive. If opening or
+    /// writing fails, `failed` is set, so that the render can stop: its image has nowhere to go.
+    StreamedOutput(std::string path, int width, int height, tracer::image_io::WriteOptions options,
+                   std::atomic<bool>& failed);
     /// Destroying an unfinished output (an interrupted or failed render) leaves no file.
     ~StreamedOutput();
     StreamedOutput(const StreamedOutput&) = delete;
@@ -43,6 +46,7 @@ private:
     std::string path_;
     int width_, height_;
     tracer::image_io::WriteOptions options_;
+    std::atomic<bool>& failed_;
     std::unique_ptr<tracer::image_io::ImageStream> stream_;
     std::string error_; ///< the first failure, written by the writer thread
     std::mutex mutex_;

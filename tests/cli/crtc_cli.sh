@@ -195,6 +195,17 @@ Scene {
     for i in range(40) { Sphere { center -> vec3(i % 8 - 3.5, i / 8 - 2.0, 3.0 + i % 3) radius -> 0.45 material -> m } }
 }
 CRT
+# An output that cannot be written stops the render at the first finished rows, rather than after
+# tracing the whole image: the progress lines (standard error is not a terminal) stop short of 100 %.
+expect_status 2 "a long render to a folder that does not exist" \
+    "$crtc" -o "$work/images/missing/heavy.png" "$work/scenes/heavy.crt"
+expect_text "$work/err" "cannot write .*missing/heavy.png.*does not exist" "the failed output is named"
+if grep -q "100%" "$work/err"; then
+    echo "FAIL: a render whose output failed went on to the end"
+    failures=$((failures + 1))
+fi
+expect_no_file "$work/images/missing" "nothing is created for the failed output"
+
 # The handler is installed once the script is evaluated; a signal before that kills crtc with the
 # same status 130 but proves less, so wait longer until crtc reports the interruption itself.
 for delay in 0.5 1.5 4; do
