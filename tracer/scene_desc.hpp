@@ -80,6 +80,7 @@ struct FinishDesc {
     bool operator==(const FinishDesc&) const = default;
 };
 
+/// A material: its own colour, its (possibly shared) finish, and where the script built it.
 struct MaterialDesc {
     Color color{0.5, 0.5, 0.5, 1};
     int32_t finish = -1; ///< index into SceneDesc::finishes; -1: the default FinishDesc
