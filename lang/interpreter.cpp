@@ -167,12 +167,18 @@ std::optional<RangeSequence> Interpreter::rangeSequence(const Expr* iterable) {
 }
 
 void Interpreter::execFor(const ForStmt* node) {
+    uint64_t iterations = 0; // if known in advance
+    SceneCounts before = sceneCounts();
+    bool first = true;
     auto runBody = [&](const Value& item) {
         step(node->iterable->range);
         store(node->resolution, item);
         execStatements(node->body->statements);
+        if (first && iterations > 1) reserveForIterations(before, iterations - 1);
+        first = false;
     };
     if (std::optional<RangeSequence> numbers = rangeSequence(node->iterable)) {
+        iterations = numbers->sizeHint();
         for (Value item; numbers->next(item);) runBody(item);
         return;
     }
@@ -181,8 +187,27 @@ void Interpreter::execFor(const ForStmt* node) {
         fail(node->iterable->range,
              fmt::format("'for' needs a list or a range, not {}", typeName(iterable)));
     }
+    iterations = iterable.list->size();
     // The list is immutable, so iterating it while the body runs is safe.
     for (const Value& item : *iterable.list) runBody(item);
+}
+
+void Interpreter::reserveForIterations(const SceneCounts& before, uint64_t remaining) {
+    // At most the entity limit: a loop that adds only in its first iteration, or stops with
+    // an error, leaves address space unused, not memory.
+    auto wanted = [&](size_t now, size_t was) -> size_t {
+        uint64_t added = now - was;
+        if (added == 0) return 0;
+        uint64_t limit = options_.limits.maxEntities;
+        return static_cast<size_t>(std::min(limit, now + std::min(limit, added * std::min(limit, remaining))));
+    };
+    if (size_t n = wanted(scene_.entities.size(), before.entities); n > scene_.entities.capacity()) {
+        scene_.entities.reserve(n);
+        entityInfo_.reserve(n);
+    }
+    if (size_t n = wanted(scene_.materials.size(), before.materials); n > scene_.materials.capacity()) {
+        scene_.materials.reserve(n);
+    }
 }
 
 void Interpreter::execScene(const SceneStmt* node) {

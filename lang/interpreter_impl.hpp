@@ -124,6 +124,15 @@ private:
     Value callMacro(const Closure* closure, const CallExpr* site, std::span<const Value> args);
     Value csg(BinaryOp op, const Value& left, const Value& right, const BinaryExpr* node);
     bool condition(const Expr* node, std::string_view what);
+    /// What the scene's growing vectors hold, to see what one loop iteration adds.
+    struct SceneCounts {
+        size_t entities, materials;
+    };
+    SceneCounts sceneCounts() const { return {scene_.entities.size(), scene_.materials.size()}; }
+    /// After the first of a loop's iterations: room for `remaining` more like it in the
+    /// scene's vectors, so that they are not regrown (copied, and so faulted in again) during
+    /// the loop. Capacity never written costs no memory.
+    void reserveForIterations(const SceneCounts& before, uint64_t remaining);
     void step(SourceRange where);
     void keepGlobalValues();
 
