@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <sstream>
 
 namespace crt::lang {
@@ -192,21 +193,36 @@ void Interpreter::execFor(const ForStmt* node) {
     for (const Value& item : *iterable.list) runBody(item);
 }
 
+namespace {
+
+/// The capacity `items` needs for `remaining` more iterations that each add what the first
+/// added (0 if it added nothing): at most the entity limit, and at most 1 GB, so that a guess
+/// made under a raised limit never asks for more address space than a scene could use.
+template <typename T>
+size_t capacityFor(const std::vector<T>& items, size_t before, uint64_t remaining, uint64_t limit) {
+    constexpr uint64_t kMaxBytes = uint64_t{1} << 30;
+    uint64_t added = items.size() - before;
+    if (added == 0) return 0;
+    uint64_t cap = std::min<uint64_t>(limit, kMaxBytes / sizeof(T));
+    return static_cast<size_t>(std::min(cap, items.size() + std::min(cap, added * std::min(cap, remaining))));
+}
+
+} // namespace
+
 void Interpreter::reserveForIterations(const SceneCounts& before, uint64_t remaining) {
-    // At most the entity limit: a loop that adds only in its first iteration, or stops with
-    // an error, leaves address space unused, not memory.
-    auto wanted = [&](size_t now, size_t was) -> size_t {
-        uint64_t added = now - was;
-        if (added == 0) return 0;
-        uint64_t limit = options_.limits.maxEntities;
-        return static_cast<size_t>(std::min(limit, now + std::min(limit, added * std::min(limit, remaining))));
-    };
-    if (size_t n = wanted(scene_.entities.size(), before.entities); n > scene_.entities.capacity()) {
-        scene_.entities.reserve(n);
-        entityInfo_.reserve(n);
-    }
-    if (size_t n = wanted(scene_.materials.size(), before.materials); n > scene_.materials.capacity()) {
-        scene_.materials.reserve(n);
+    // A loop that adds only in its first iteration, or stops with an error, leaves address
+    // space unused, not memory.
+    uint64_t limit = options_.limits.maxEntities;
+    try {
+        if (size_t n = capacityFor(scene_.entities, before.entities, remaining, limit); n > scene_.entities.capacity()) {
+            scene_.entities.reserve(n);
+            entityInfo_.reserve(n);
+        }
+        if (size_t n = capacityFor(scene_.materials, before.materials, remaining, limit); n > scene_.materials.capacity()) {
+            scene_.materials.reserve(n);
+        }
+    } catch (const std::bad_alloc&) {
+        // Only a saving: without the room the vectors grow as they go.
     }
 }
 

@@ -53,3 +53,19 @@ Scene {
     REQUIRE(scene.entities.size() == 300);
     CHECK(scene.entities.capacity() == 300); // not 100,000: the first loop added nothing
 }
+
+TEST_CASE("under a raised entity limit, a loop's reservation stays bounded and evaluation goes on", "[scene]") {
+    EvalOptions options;
+    options.checkFiles = false;
+    options.limits.maxEntities = 100'000'000'000; // raised: 10^9 entities would be ~112 GB
+    Compilation c = compile("g.crt", R"(
+Scene {
+    for i in range(1000000000) {
+        if (i == 0) { Sphere { center -> vec3(0, 0, 0) radius -> 1.0 } }
+        if (i == 2) { x = 1 / 0 }
+    }
+}
+)", options);
+    REQUIRE(c.diagnostics.hasErrors());
+    CHECK(c.diagnostics.items().front().message == "integer division by zero");
+}
