@@ -1,25 +1,67 @@
-// Loops reserve room in the scene description once, after their first iteration, so that
-// the entity and material vectors are not regrown (copied and faulted in again) while they run.
+// The scene description the interpreter builds: materials (each its own colour, finishes
+// shared where equal) and loops that reserve room in its vectors once, after their first
+// iteration, so they are not regrown (copied and faulted in again) while they run.
 #include <catch2/catch.hpp>
 
 #include "interpreter.hpp"
 
+#include <set>
 #include <string>
 
 using namespace crt::lang;
+namespace t = crt::tracer;
 
 namespace {
 
 Compilation compileScript(const std::string& text) {
     EvalOptions options;
     options.checkFiles = false;
-    Compilation c = compile("g.crt", text, options);
+    Compilation c = compile("s.crt", text, options);
     REQUIRE_FALSE(c.diagnostics.hasErrors());
     REQUIRE(c.scene.has_value());
     return c;
 }
 
 } // namespace
+
+TEST_CASE("materials built in a loop keep their colours and share one finish", "[scene]") {
+    Compilation c = compileScript(R"(
+Scene {
+    for i in range(1000) {
+        Sphere { center -> vec3(i, 0, 0) radius -> 0.4
+                 material -> Material { color -> rgb(i / 1000.0, 0, 0) reflectivity -> 0.25 } }
+    }
+}
+)");
+    const t::SceneDesc& s = *c.scene;
+    REQUIRE(s.materials.size() == 1000);
+    REQUIRE(s.finishes.size() == 1);
+    std::set<double> reds;
+    for (const t::MaterialDesc& m : s.materials) {
+        reds.insert(m.color.r);
+        CHECK(s.finishOf(m).reflectivity == 0.25);
+        CHECK(s.finishOf(m).diffuse == 0.75); // its default follows the reflectivity
+    }
+    CHECK(reds.size() == 1000);
+}
+
+TEST_CASE("materials with the default finish store none, different finishes stay apart", "[scene]") {
+    Compilation c = compileScript(R"(
+Scene {
+    for i in range(6) {
+        Sphere { center -> vec3(i, 0, 0) radius -> 0.4
+                 material -> Material { color -> rgb(1, 1, 1) specular -> i % 3 / 2.0 } }
+    }
+}
+)");
+    const t::SceneDesc& s = *c.scene;
+    REQUIRE(s.materials.size() == 6);
+    for (size_t i = 0; i < s.materials.size(); ++i) {
+        CHECK(s.finishOf(s.materials[i]).specular == static_cast<double>(i % 3) / 2.0);
+        CHECK(s.finishOf(s.materials[i]).shininess == 3);
+        CHECK((s.materials[i].finish < 0) == (i % 3 == 0)); // specular 0 is the default finish
+    }
+}
 
 TEST_CASE("nested loops size the scene's vectors to what they build", "[scene]") {
     Compilation c = compileScript(R"(
