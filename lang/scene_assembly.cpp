@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <map>
-#include <unordered_map>
 
 namespace crt::lang {
 
@@ -182,34 +181,36 @@ void Interpreter::reportUnused() {
         }
     }
     // A literal run many times (in a loop or a macro) is used if any of its values is:
-    // one warning per literal of the main script, in source order. Consecutive entities
-    // mostly come from the same literal, so a run of them looks the literal up once.
-    struct LiteralUse {
-        const EntityInfo* first;
-        bool used;
-    };
-    std::unordered_map<uint32_t, LiteralUse> literals;
-    LiteralUse* run = nullptr;
-    uint32_t runBegin = 0;
+    // one warning per literal of the main script, in source order. Usually every value is
+    // used, so a first pass only collects the literals with an unused value (by where they
+    // begin); only those are looked at again, for a used value and their first one.
+    auto isMainLiteral = [](const EntityInfo& info) { return info.literal && info.range.file == 0; };
+    std::vector<uint32_t> suspects;
     for (size_t i = 0; i < entityInfo_.size(); ++i) {
         const EntityInfo& info = entityInfo_[i];
-        if (!info.literal || info.range.file != 0) continue;
-        if (!run || info.range.begin != runBegin) {
-            runBegin = info.range.begin;
-            run = &literals.try_emplace(runBegin, LiteralUse{&info, false}).first->second;
+        if (!isMainLiteral(info) || reachable_[i]) continue;
+        if (suspects.empty() || suspects.back() != info.range.begin) suspects.push_back(info.range.begin);
+    }
+    std::sort(suspects.begin(), suspects.end());
+    suspects.erase(std::unique(suspects.begin(), suspects.end()), suspects.end());
+    std::vector<const EntityInfo*> firstValue(suspects.size(), nullptr);
+    std::vector<bool> used(suspects.size(), false);
+    if (!suspects.empty()) {
+        for (size_t i = 0; i < entityInfo_.size(); ++i) {
+            const EntityInfo& info = entityInfo_[i];
+            if (!isMainLiteral(info)) continue;
+            auto at = std::lower_bound(suspects.begin(), suspects.end(), info.range.begin);
+            if (at == suspects.end() || *at != info.range.begin) continue;
+            size_t k = static_cast<size_t>(at - suspects.begin());
+            if (!firstValue[k]) firstValue[k] = &info;
+            if (reachable_[i]) used[k] = true;
         }
-        run->used = run->used || reachable_[i];
     }
-    std::vector<const EntityInfo*> unused;
-    for (const auto& [begin, literal] : literals) {
-        if (!literal.used) unused.push_back(literal.first);
-    }
-    std::sort(unused.begin(), unused.end(),
-              [](const EntityInfo* a, const EntityInfo* b) { return a->range.begin < b->range.begin; });
-    for (const EntityInfo* info : unused) {
-        diagnostics_.warning(WarningKind::EntityNeverDrawn, info->range,
+    for (size_t k = 0; k < suspects.size(); ++k) {
+        if (used[k]) continue;
+        diagnostics_.warning(WarningKind::EntityNeverDrawn, firstValue[k]->range,
                              fmt::format("this {} is defined but never drawn nor used",
-                                         objectInfo(info->type).name));
+                                         objectInfo(firstValue[k]->type).name));
     }
     // Lights likewise: a literal shines if any of its values is listed. By source order.
     std::map<uint32_t, std::pair<const LightInfo*, bool>> lightLiterals;
