@@ -4,7 +4,6 @@
 #include "diagnostic.hpp"
 #include "token.hpp"
 
-#include <optional>
 #include <vector>
 
 namespace crt::lang {
@@ -15,12 +14,26 @@ public:
     Lexer(const SourceFile& file, uint32_t fileIndex, DiagnosticBag& diagnostics);
 
     /// The next token, comments and whitespace skipped. After the end, EndOfFile forever.
-    Token next();
+    /// Inline: the parser asks for every token through it.
+    Token next() {
+        Token token;
+        if (hasPending_) [[unlikely]] {
+            hasPending_ = false;
+            token = pending_;
+        } else {
+            token = scan();
+        }
+        if (token.kind == TokenKind::Less) [[unlikely]] classifyLess(token);
+        return token;
+    }
     /// Comments seen so far are appended here (for semantic highlighting and folding).
     void collectComments(std::vector<Token>* comments) { comments_ = comments; }
 
 private:
     Token scan();
+    /// A '<' opens a modifier list exactly when the next token is a modifier keyword; that
+    /// token is kept for the next call.
+    void classifyLess(Token& less);
     Token scanString(const char* start);
     void reportInvalid(const char* start, const char* end);
     uint32_t offset(const char* p) const { return static_cast<uint32_t>(p - begin_); }
@@ -35,7 +48,8 @@ private:
     DiagnosticBag& diagnostics_;
     std::vector<Token>* comments_ = nullptr;
     bool lineStart_ = true;
-    std::optional<Token> pending_;
+    bool hasPending_ = false;
+    Token pending_;
 };
 
 /// Lexes a whole file (for tests and tools): every token but the final EndOfFile.

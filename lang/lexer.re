@@ -187,24 +187,14 @@ Token Lexer::scan() {
     }
 }
 
-Token Lexer::next() {
-    Token token;
-    if (pending_) {
-        token = *pending_;
-        pending_.reset();
-    } else {
-        token = scan();
+void Lexer::classifyLess(Token& less) {
+    Token following = scan();
+    if (following.kind == TokenKind::KwScale || following.kind == TokenKind::KwTranslate ||
+        following.kind == TokenKind::KwRotate) {
+        less.kind = TokenKind::ModifierOpen;
     }
-    if (token.kind == TokenKind::Less) {
-        // A '<' opens a modifier list exactly when the next token is a modifier keyword.
-        Token following = scan();
-        if (following.kind == TokenKind::KwScale || following.kind == TokenKind::KwTranslate ||
-            following.kind == TokenKind::KwRotate) {
-            token.kind = TokenKind::ModifierOpen;
-        }
-        pending_ = following;
-    }
-    return token;
+    pending_ = following;
+    hasPending_ = true;
 }
 
 std::vector<Token> lexAll(const SourceFile& file, uint32_t fileIndex, DiagnosticBag& diagnostics,

@@ -20,6 +20,14 @@ struct ListMark {
     uint32_t count;
 };
 
+/// The parser's location of a symbol: byte offsets in the file being parsed. The file index
+/// is added when a node or a diagnostic is made (ParseContext::at), which keeps the parser's
+/// stack entries small.
+struct ParseRange {
+    uint32_t begin = 0;
+    uint32_t end = 0;
+};
+
 /// A token's text as the parser's semantic value (a plain pair, unlike string_view).
 struct TextRef {
     const char* data;
@@ -55,6 +63,7 @@ struct ParseContext {
         : file(f), fileIndex(index), arena(a), diagnostics(d), lexer(f, index, d) {}
 
     SourceRange range(uint32_t begin, uint32_t end) const { return {fileIndex, begin, end}; }
+    SourceRange at(ParseRange where) const { return {fileIndex, where.begin, where.end}; }
     std::string_view text(const Token& token) const {
         return file.text().substr(token.begin, token.end - token.begin);
     }
@@ -95,7 +104,12 @@ struct ParseContext {
     }
 
     /// The next token for the parser, after error recovery's skipping.
-    Token nextToken();
+    Token nextToken() {
+        Token token = lexer.next();
+        return skipping ? skipToResumePoint(token) : token;
+    }
+    /// Error recovery: drops tokens from `token` on up to a resume point, which it returns.
+    Token skipToResumePoint(Token token);
     /// Decodes the escapes of a string token into the arena.
     std::string_view decodeString(const Token& token);
 };

@@ -43,9 +43,7 @@ bool isResumePoint(const Token& token) {
 
 } // namespace
 
-Token ParseContext::nextToken() {
-    Token token = lexer.next();
-    if (!skipping) return token;
+Token ParseContext::skipToResumePoint(Token token) {
     int depth = skipDepth;
     skipDepth = 0;
     for (;; token = lexer.next()) {
@@ -138,7 +136,7 @@ int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseCo
         ctx.recovering = false;
         if (ctx.queued.empty()) ctx.queued.push_back(ctx.nextToken());
         uint32_t at = ctx.queued.front().begin;
-        *location = ctx.range(at, at);
+        *location = {at, at};
         return T::TOK_RECOVERED;
     }
     Token token;
@@ -149,7 +147,7 @@ int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseCo
         token = ctx.nextToken();
     }
     ctx.lastToken = token;
-    *location = ctx.range(token.begin, token.end);
+    *location = {token.begin, token.end};
     auto text = [&](std::string_view s) {
         value->text = TextRef{s.data(), static_cast<uint32_t>(s.size())};
     };
@@ -162,7 +160,7 @@ int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseCo
         value->integer = 0;
         auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value->integer);
         if (error != std::errc()) {
-            ctx.diagnostics.error(*location, "integer literal does not fit in 64 bits; write it "
+            ctx.diagnostics.error(ctx.at(*location), "integer literal does not fit in 64 bits; write it "
                                              "as a float");
         }
         return T::TOK_INT;
@@ -170,7 +168,7 @@ int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseCo
     case TokenKind::Float:
         value->number = 0;
         if (!parseFloat(ctx.text(token), value->number)) {
-            ctx.diagnostics.error(*location, "float literal is out of range");
+            ctx.diagnostics.error(ctx.at(*location), "float literal is out of range");
         }
         return T::TOK_FLOAT;
     case TokenKind::Invalid: value->number = 0; return T::TOK_FLOAT; // reported by the lexer
@@ -224,7 +222,7 @@ int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseCo
 }
 
 void Parser::error(const location_type& where, const std::string& message) {
-    ctx.diagnostics.error(where, message);
+    ctx.diagnostics.error(ctx.at(where), message);
 }
 
 void Parser::report_syntax_error(const context& yyctx) const {
