@@ -2,6 +2,7 @@
 # crtc's command line: exit statuses, modes and the diagnostic format.
 set -u
 crtc=$1
+null_module=${2:-} # the benchmark's raw-pixel image module, if given
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -227,6 +228,21 @@ leftovers=$(find "$work/images" -name '*heavy*' | head -3)
 if [ -n "$leftovers" ]; then
     echo "FAIL: an interrupted render left files: $leftovers"
     failures=$((failures + 1))
+fi
+
+# The render benchmark's "no OIIO" column: CRT_IMAGE_IO_MODULE names another image module,
+# here one that stores the raw 8-bit pixels (40 x 30 x 3 bytes), renamed into place.
+if [ -n "$null_module" ]; then
+    CRT_IMAGE_IO_MODULE=$null_module expect_status 0 "a render through the null image module" \
+        "$crtc" -q --width 40 --height 30 -o "$work/images/raw_pixels.png" "$work/scenes/tiny.crt"
+    size=$(stat -c %s "$work/images/raw_pixels.png" 2>/dev/null || echo none)
+    if [ "$size" != 3600 ]; then
+        echo "FAIL: the null image module wrote $size bytes, expected 40 x 30 x 3 = 3600"
+        failures=$((failures + 1))
+    fi
+    CRT_IMAGE_IO_MODULE=$work/no_such_module.so expect_status 2 "a missing image module" \
+        "$crtc" -q -o "$work/images/none.png" "$work/scenes/tiny.crt"
+    expect_text "$work/err" "no_such_module" "the missing module is named"
 fi
 
 if [ "$failures" -gt 0 ]; then
