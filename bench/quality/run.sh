@@ -17,6 +17,7 @@
 #   THREADS      render threads of both tools (default 2)
 #   REFERENCE    crtc's grid of the reference image: N x N samples per pixel (default 16)
 #   CRTC_GRIDS   crtc's points: supersampling values (default "1 2 3 4 6 8")
+#   CRTC_ADAPTIVE crtc's adaptive points, THRESHOLD:DEPTH each (default "0.1:2 0.1:3 0.03:3")
 #   POV_DEPTHS   POV-Ray's points: +AM1 +A0.0 antialias depths (default "1 2 3 4 6 8")
 #   BENCH_OUT    folder for the images and logs (default: a temporary folder, removed at exit)
 #   POVRAY       POV-Ray binary (default /usr/bin/povray)
@@ -30,7 +31,7 @@ source "$here/../common.sh"
 root=$(cd "$here/../.." && pwd)
 scenes_dir=$root/bench/render
 
-usage() { sed -n '2,24p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,25p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 
 size=400x300
 runs=3
@@ -61,12 +62,16 @@ threads=${THREADS:-2}
 reference=${REFERENCE:-16}
 crtc_grids=${CRTC_GRIDS:-1 2 3 4 6 8}
 pov_depths=${POV_DEPTHS:-1 2 3 4 6 8}
+crtc_adaptive=${CRTC_ADAPTIVE:-0.1:2 0.1:3 0.03:3}
 
 positive() { [[ $1 =~ ^[1-9][0-9]*$ ]]; }
 positive "$runs" || { echo "$0: --runs must be a positive integer, got '$runs'" >&2; exit 2; }
 positive "$threads" || { echo "$0: THREADS must be a positive integer, got '$threads'" >&2; exit 2; }
 positive "$reference" || { echo "$0: REFERENCE must be a positive integer, got '$reference'" >&2; exit 2; }
 for n in $crtc_grids; do positive "$n" || { echo "$0: bad CRTC_GRIDS value '$n'" >&2; exit 2; }; done
+for a in $crtc_adaptive; do
+    [[ $a =~ ^[0-9]*\.?[0-9]+:[1-9]$ ]] || { echo "$0: bad CRTC_ADAPTIVE value '$a' (want THRESHOLD:DEPTH)" >&2; exit 2; }
+done
 for n in $pov_depths; do
     [[ $n =~ ^[1-9]$ ]] || { echo "$0: POV_DEPTHS values are 1 to 9 (POV-Ray's limit), got '$n'" >&2; exit 2; }
 done
@@ -90,14 +95,20 @@ bench_output_folder quality
 
 elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", (b - a) / 1e9 }'; }
 
-# crtc_image SCENE GRID NAME -> renders $out/NAME.png with GRID x GRID samples per pixel;
-# sets wall (seconds)
+# crtc_image SCENE SAMPLING NAME [--stats] -> renders $out/NAME.png; SAMPLING is a grid size
+# N (N x N samples per pixel) or THRESHOLD:DEPTH (adaptive anti-aliasing); sets wall
+# (seconds)
 crtc_image() {
-    local w=$1 n=$2 name=$3 script=$out/$1.ss$2.crt t0 t1
-    sed "s/supersampling -> 1\$/supersampling -> $n/" "$scenes_dir/$w.crt" >"$script"
-    grep -q "supersampling -> $n\$" "$script" || { echo "$0: $w.crt has no 'supersampling -> 1' line" >&2; return 1; }
+    local w=$1 sampling=$2 name=$3 extra=${4:-} script=$out/$3.crt settings t0 t1
+    if [[ $sampling == *:* ]]; then
+        settings="supersampling -> 1 antialias -> \"adaptive\" aathreshold -> ${sampling%:*} aadepth -> ${sampling#*:}"
+    else
+        settings="supersampling -> $sampling"
+    fi
+    sed "s/supersampling -> 1\$/$settings/" "$scenes_dir/$w.crt" >"$script"
+    grep -qF "$settings" "$script" || { echo "$0: $w.crt has no 'supersampling -> 1' line" >&2; return 1; }
     t0=$(now_ns)
-    "$crtc" "$script" -o "$out/$name.png" --width "$W" --height "$H" --threads "$threads" -q \
+    "$crtc" "$script" -o "$out/$name.png" --width "$W" --height "$H" --threads "$threads" -q $extra \
         2>"$logs/$name.err" || { echo "crtc failed on $script; log: $logs/$name.err$keep_hint" >&2; return 1; }
     t1=$(now_ns)
     wall=$(elapsed "$t0" "$t1")
@@ -141,7 +152,15 @@ point() {
     done
     e=$(rmse_of "$out/$w.$setting.png" "$out/$w.reference.png")
     [[ -n $e ]] || { echo "could not compare $w.$setting.png with the reference" >&2; return 1; }
-    [[ $tool == crtc ]] && spp=$((${label#ss } * ${label#ss }))
+    if [[ $tool == crtc && $label == "ss "* ]]; then
+        spp=$((${label#ss } * ${label#ss }))
+    elif [[ $tool == crtc ]]; then
+        # adaptive: the camera rays of one more (untimed) run, per pixel
+        local sampling=${setting#crtc_adaptive_}
+        crtc_image "$w" "${sampling/_/:}" "$w.$setting.stats" --stats || return 1
+        spp=$(sed -n 's/.*rays: camera \([0-9]*\).*/\1/p' "$logs/$w.$setting.stats.err" |
+            awk -v p=$((W * H)) '{ printf "%.2f", $1 / p }')
+    fi
     echo "$tool|$label|$spp|$(median "${walls[@]}")|$e" >>"$out/$w.points"
 }
 
@@ -162,6 +181,10 @@ for w in "${scene_list[@]}"; do
     for n in $crtc_grids; do
         echo "$w: crtc supersampling $n ..." >&2
         point crtc "ss $n" "$w" "crtc_ss$n" crtc_image "$w" "$n" "$w.crtc_ss$n" || failed=1
+    done
+    for a in $crtc_adaptive; do
+        echo "$w: crtc adaptive, threshold ${a%:*}, depth ${a#*:} ..." >&2
+        point crtc "adaptive $a" "$w" "crtc_adaptive_${a/:/_}" crtc_image "$w" "$a" "$w.crtc_adaptive_${a/:/_}" || failed=1
     done
     for d in $pov_depths; do
         echo "$w: POV-Ray +AM1 +A0.0 +R$d ..." >&2
@@ -193,7 +216,11 @@ for w in "${scene_list[@]}"; do
         name=crtc
         [[ $tool == pov ]] && name=POV-Ray
         setting=$label
-        [[ $tool == crtc ]] && setting="supersampling ${label#ss }"
+        [[ $tool == crtc && $label == "ss "* ]] && setting="supersampling ${label#ss }"
+        if [[ $label == "adaptive "* ]]; then
+            a=${label#adaptive }
+            setting="antialias \"adaptive\", aathreshold ${a%:*}, aadepth ${a#*:}"
+        fi
         echo "| $name | \`$setting\` | $spp | $wall | $e |"
     done <"$out/$w.points"
 done
@@ -233,7 +260,7 @@ if [[ -n $svg ]]; then
             x0 = floor(lx(minx)); x1 = ceil(lx(maxx)); y0 = floor(lx(miny)); y1 = ceil(lx(maxy))
             if (x1 == x0) x1++
             if (y1 == y0) y1++
-            width = scenes * (pw + gap) + 40; height = top + ph + 70
+            width = scenes * (pw + gap) + 40; height = top + ph + 88
             printf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" font-family=\"sans-serif\" font-size=\"12\">\n", width, height
             printf "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n"
             printf "<text x=\"20\" y=\"22\" font-size=\"15\">%s</text>\n", title
@@ -265,15 +292,15 @@ if [[ -n $svg ]]; then
                     want = t == 1 ? "crtc" : "pov"; colour = t == 1 ? "#c0392b" : "#2c6fbb"; path = ""
                     for (i = 1; i <= count[w]; i++) {
                         if (tool[w, i] != want) continue
-                        series = want == "crtc" || label[w, i] ~ /AM1 \+A0.0/
+                        series = (want == "crtc" && label[w, i] ~ /^ss /) || label[w, i] ~ /AM1 \+A0.0/
                         if (series) path = path sprintf("%s%.1f,%.1f", path == "" ? "" : " ", px(wall[w, i]), py(err[w, i]))
                         printf "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%d\" fill=\"%s\"/>\n", px(wall[w, i]), py(err[w, i]), series ? 3 : 5, series ? colour : "none\" stroke=\"" colour
                     }
                     if (path != "") printf "<polyline points=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"1.5\"/>\n", path, colour
                 }
             }
-            printf "<text x=\"20\" y=\"%d\" fill=\"#c0392b\">crtc: supersampling %s</text>\n", height - 12, grids
-            printf "<text x=\"290\" y=\"%d\" fill=\"#2c6fbb\">POV-Ray: +AM1 +A0.0 -J, %s (line); +A0.3 +J and +AM2 (open circles)</text>\n", height - 12, depths
+            printf "<text x=\"20\" y=\"%d\" fill=\"#c0392b\">crtc: supersampling %s (line); adaptive anti-aliasing (open circles)</text>\n", height - 30, grids
+            printf "<text x=\"20\" y=\"%d\" fill=\"#2c6fbb\">POV-Ray: +AM1 +A0.0 -J, %s (line); +A0.3 +J and +AM2 (open circles)</text>\n", height - 12, depths
             print "</svg>"
         }' >"$svg"
     echo >&2
