@@ -1,21 +1,28 @@
 #!/usr/bin/env bash
 # Render time against error: crtc and POV-Ray 3.7 render the same scenes with more and more
-# samples per pixel; each image is compared with a converged reference, and the script prints
-# wall time against RMSE for both tools as Markdown tables (and, with --svg, a log-log plot).
+# samples per pixel (anti-aliasing, and lens samples for depth of field); each image is
+# compared with a converged reference, and the script prints wall time against RMSE for both
+# tools as Markdown tables (and, with --svg, a log-log plot).
 # See bench/README.md, "Render time against error".
 #
 # usage: bench/quality/run.sh [--size WxH] [--runs N] [--scenes a,b] [--svg FILE] [CRTC]
 #
 #   --size WxH    image size of every render (default 400x300)
 #   --runs N      timed runs per point; the median wall time is reported (default 3)
-#   --scenes LIST comma-separated subset of sphere_grid,csg (default both); the scenes are
-#                 those of bench/render/, whose images agree between the two tools
+#   --scenes LIST comma-separated subset of sphere_grid,csg,dof (default all): the first two
+#                 are bench/render/'s (anti-aliasing), dof is bench/quality/dof.crt and
+#                 dof.pov (depth of field); each pair's images agree between the tools
 #   --svg FILE    also draw the curves, one panel per scene, into FILE
+#   --replot DIR  render nothing: print the tables (and draw --svg) again from the results a
+#                 run kept in DIR (its BENCH_OUT)
 #   CRTC          path of the crtc binary (default: $CRTC, else build/lang/crtc)
 #
 # environment:
 #   THREADS      render threads of both tools (default 2)
 #   REFERENCE    crtc's grid of the reference image: N x N samples per pixel (default 16)
+#   REFERENCE_DOF  dof's reference, SxD: supersampling S, dofsamples D (default 6x64)
+#   CRTC_DOF     crtc's dof points, SxD each (default "1x4 1x16 2x4 2x9 2x16 3x16 4x16")
+#   POV_BLUR     POV-Ray's dof points: blur_samples, all taken (default "4 7 19 37 64 128 256")
 #   CRTC_GRIDS   crtc's points: supersampling values (default "1 2 3 4 6 8")
 #   CRTC_ADAPTIVE crtc's adaptive points, THRESHOLD:DEPTH each (default "0.1:2 0.1:3 0.03:3")
 #   POV_DEPTHS   POV-Ray's points: +AM1 +A0.0 antialias depths (default "1 2 3 4 6 8")
@@ -31,12 +38,13 @@ source "$here/../common.sh"
 root=$(cd "$here/../.." && pwd)
 scenes_dir=$root/bench/render
 
-usage() { sed -n '2,25p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,30p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 
 size=400x300
 runs=3
-scenes=sphere_grid,csg
+scenes=sphere_grid,csg,dof
 svg=
+replot=
 crtc_arg=
 while [[ $# -gt 0 ]]; do
     case $1 in
@@ -49,6 +57,8 @@ while [[ $# -gt 0 ]]; do
         --scenes=*) scenes=${1#--scenes=}; shift ;;
         --svg) svg=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
         --svg=*) svg=${1#--svg=}; shift ;;
+        --replot) replot=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
+        --replot=*) replot=${1#--replot=}; shift ;;
         -*) echo "$0: unknown option '$1'" >&2; usage >&2; exit 2 ;;
         *)
             if [[ -n $crtc_arg ]]; then echo "$0: more than one CRTC given" >&2; exit 2; fi
@@ -63,6 +73,9 @@ reference=${REFERENCE:-16}
 crtc_grids=${CRTC_GRIDS:-1 2 3 4 6 8}
 pov_depths=${POV_DEPTHS:-1 2 3 4 6 8}
 crtc_adaptive=${CRTC_ADAPTIVE:-0.1:2 0.1:3 0.03:3}
+reference_dof=${REFERENCE_DOF:-6x64}
+crtc_dof=${CRTC_DOF:-1x4 1x16 2x4 2x9 2x16 3x16 4x16}
+pov_blur=${POV_BLUR:-4 7 19 37 64 128 256}
 
 positive() { [[ $1 =~ ^[1-9][0-9]*$ ]]; }
 positive "$runs" || { echo "$0: --runs must be a positive integer, got '$runs'" >&2; exit 2; }
@@ -72,6 +85,10 @@ for n in $crtc_grids; do positive "$n" || { echo "$0: bad CRTC_GRIDS value '$n'"
 for a in $crtc_adaptive; do
     [[ $a =~ ^[0-9]*\.?[0-9]+:[1-9]$ ]] || { echo "$0: bad CRTC_ADAPTIVE value '$a' (want THRESHOLD:DEPTH)" >&2; exit 2; }
 done
+for a in $reference_dof $crtc_dof; do
+    [[ $a =~ ^[1-9][0-9]*x[1-9][0-9]*$ ]] || { echo "$0: bad dof sampling '$a' (want SxD, e.g. 2x16)" >&2; exit 2; }
+done
+for n in $pov_blur; do positive "$n" || { echo "$0: bad POV_BLUR value '$n'" >&2; exit 2; }; done
 for n in $pov_depths; do
     [[ $n =~ ^[1-9]$ ]] || { echo "$0: POV_DEPTHS values are 1 to 9 (POV-Ray's limit), got '$n'" >&2; exit 2; }
 done
@@ -80,32 +97,48 @@ W=${size%x*} H=${size#*x}
 IFS=, read -r -a scene_list <<<"$scenes"
 for w in "${scene_list[@]}"; do
     case $w in
-        sphere_grid | csg) ;;
-        *) echo "$0: unknown scene '$w' (sphere_grid, csg)" >&2; exit 2 ;;
+        sphere_grid | csg | dof) ;;
+        *) echo "$0: unknown scene '$w' (sphere_grid, csg, dof)" >&2; exit 2 ;;
     esac
 done
-if [[ ! -x $povray ]]; then
+if [[ -z $replot && ! -x $povray ]]; then
     echo "$0: POV-Ray not found at $povray: scripts/setup.sh --bench (or set POVRAY)" >&2
     exit 2
 fi
-command -v oiiotool >/dev/null || { echo "$0: oiiotool is needed (openimageio-tools)" >&2; exit 2; }
-[[ -x $crtc ]] || { echo "$0: crtc not found at '$crtc'; build it or pass its path" >&2; exit 2; }
+command -v oiiotool >/dev/null || [[ -n $replot ]] || { echo "$0: oiiotool is needed (openimageio-tools)" >&2; exit 2; }
+[[ -x $crtc || -n $replot ]] || { echo "$0: crtc not found at '$crtc'; build it or pass its path" >&2; exit 2; }
 
-bench_output_folder quality
+if [[ -n $replot ]]; then
+    [[ -d $replot ]] || { echo "$0: --replot: no folder '$replot'" >&2; exit 2; }
+    out=$replot
+    # the size and thread count the results were made with
+    [[ -f $out/run.txt ]] && read -r size threads <"$out/run.txt"
+    for w in "${scene_list[@]}"; do
+        [[ -s $out/$w.points ]] || { echo "$0: --replot: no results for $w in $out" >&2; exit 2; }
+    done
+else
+    bench_output_folder quality
+    echo "$size $threads" >"$out/run.txt"
+fi
 
 elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", (b - a) / 1e9 }'; }
 
+# the folder of a scene's .crt and .pov
+scene_dir() { if [[ $1 == dof ]]; then echo "$here"; else echo "$scenes_dir"; fi; }
+
 # crtc_image SCENE SAMPLING NAME [--stats] -> renders $out/NAME.png; SAMPLING is a grid size
-# N (N x N samples per pixel) or THRESHOLD:DEPTH (adaptive anti-aliasing); sets wall
-# (seconds)
+# N (N x N samples per pixel), THRESHOLD:DEPTH (adaptive anti-aliasing) or SxD (supersampling
+# S and dofsamples D); sets wall (seconds)
 crtc_image() {
     local w=$1 sampling=$2 name=$3 extra=${4:-} script=$out/$3.crt settings t0 t1
     if [[ $sampling == *:* ]]; then
         settings="supersampling -> 1 antialias -> \"adaptive\" aathreshold -> ${sampling%:*} aadepth -> ${sampling#*:}"
+    elif [[ $sampling == *x* ]]; then
+        settings="supersampling -> ${sampling%x*} dofsamples -> ${sampling#*x}"
     else
         settings="supersampling -> $sampling"
     fi
-    sed "s/supersampling -> 1\$/$settings/" "$scenes_dir/$w.crt" >"$script"
+    sed -e "s/supersampling -> 1\$/$settings/" -e '/^ *dofsamples -> 1$/d' "$(scene_dir "$w")/$w.crt" >"$script"
     grep -qF "$settings" "$script" || { echo "$0: $w.crt has no 'supersampling -> 1' line" >&2; return 1; }
     t0=$(now_ns)
     "$crtc" "$script" -o "$out/$name.png" --width "$W" --height "$H" --threads "$threads" -q $extra \
@@ -120,7 +153,7 @@ pov_image() {
     local w=$1 name=$2 t0 t1
     shift 2
     t0=$(now_ns)
-    (cd "$scenes_dir" &&
+    (cd "$(scene_dir "$w")" &&
         HOME=$povhome "$povray" "+I$w.pov" "+O$out/$name.png" +FN "+W$W" "+H$H" -D -V -P \
             "+WT$threads" File_Gamma=1.0 Antialias_Gamma=1.0 "$@" >"$logs/$name.out" 2>"$logs/$name.err") ||
         { echo "POV-Ray failed on $w.pov; log: $logs/$name.err$keep_hint" >&2; return 1; }
@@ -154,6 +187,12 @@ point() {
     [[ -n $e ]] || { echo "could not compare $w.$setting.png with the reference" >&2; return 1; }
     if [[ $tool == crtc && $label == "ss "* ]]; then
         spp=$((${label#ss } * ${label#ss }))
+    elif [[ $tool == crtc && $label == "dof "* ]]; then
+        local sd=${label#dof }
+        spp=$((${sd%x*} * ${sd%x*} * ${sd#*x}))
+    elif [[ $tool == pov && $label == "blur_samples "*", variance 0" ]]; then
+        spp=${label#blur_samples }
+        spp=${spp%%,*}
     elif [[ $tool == crtc ]]; then
         # adaptive: the camera rays of one more (untimed) run, per pixel
         local sampling=${setting#crtc_adaptive_}
@@ -164,20 +203,25 @@ point() {
     echo "$tool|$label|$spp|$(median "${walls[@]}")|$e" >>"$out/$w.points"
 }
 
-echo "POV-Ray: $povray; crtc: $crtc; $size, $threads threads, median of $runs runs" >&2
-failed=0
-for w in "${scene_list[@]}"; do
-    : >"$out/$w.points"
-    echo "$w: reference (crtc, ${reference}x$reference samples per pixel) ..." >&2
-    crtc_image "$w" "$reference" "$w.reference" || { failed=1; continue; }
-    ref_wall=$wall
-    # How converged the reference is: the next smaller grid's distance from it.
-    half=$((reference * 3 / 4))
-    [[ $half -ge 1 ]] || half=1
-    crtc_image "$w" "$half" "$w.reference_check" || { failed=1; continue; }
-    ref_check=$(rmse_of "$out/$w.reference_check.png" "$out/$w.reference.png")
-    echo "$w|$reference|$ref_wall|$half|$ref_check" >"$out/$w.reference.txt"
+# the reference of scene W, and how converged it is: a smaller sampling's distance from it
+reference_of() {
+    local w=$1 ref check
+    if [[ $w == dof ]]; then
+        ref=$reference_dof
+        check="$(( ${ref%x*} * 3 / 4 > 0 ? ${ref%x*} * 3 / 4 : 1 ))x$(( ${ref#*x} * 3 / 4 > 0 ? ${ref#*x} * 3 / 4 : 1 ))"
+    else
+        ref=$reference
+        check=$((reference * 3 / 4 > 0 ? reference * 3 / 4 : 1))
+    fi
+    echo "$w: reference (crtc, sampling $ref) ..." >&2
+    crtc_image "$w" "$ref" "$w.reference" || return 1
+    local ref_wall=$wall
+    crtc_image "$w" "$check" "$w.reference_check" || return 1
+    echo "$w|$ref|$ref_wall|$check|$(rmse_of "$out/$w.reference_check.png" "$out/$w.reference.png")" >"$out/$w.reference.txt"
+}
 
+anti_aliasing_points() {
+    local w=$1 n a d
     for n in $crtc_grids; do
         echo "$w: crtc supersampling $n ..." >&2
         point crtc "ss $n" "$w" "crtc_ss$n" crtc_image "$w" "$n" "$w.crtc_ss$n" || failed=1
@@ -194,6 +238,33 @@ for w in "${scene_list[@]}"; do
     point pov "+A0.3 +AM1 +R3 +J" "$w" pov_default pov_image "$w" "$w.pov_default" +A0.3 +AM1 +R3 +J || failed=1
     echo "$w: POV-Ray adaptive (+AM2 +A0.0 +R3) ..." >&2
     point pov "+AM2 +A0.0 -J +R3" "$w" pov_m2_r3 pov_image "$w" "$w.pov_m2_r3" +AM2 +A0.0 -J +R3 || failed=1
+}
+
+# Depth of field: crtc's lens samples (per grid sample) against POV-Ray's focal blur, which
+# also spreads its samples over the pixel (no separate anti-aliasing: -A).
+dof_points() {
+    local w=$1 sd n
+    for sd in $crtc_dof; do
+        echo "$w: crtc supersampling ${sd%x*}, dofsamples ${sd#*x} ..." >&2
+        point crtc "dof $sd" "$w" "crtc_dof$sd" crtc_image "$w" "$sd" "$w.crtc_dof$sd" || failed=1
+    done
+    for n in $pov_blur; do
+        echo "$w: POV-Ray blur_samples $n, variance 0 ..." >&2
+        point pov "blur_samples $n, variance 0" "$w" "pov_blur$n" pov_image "$w" "$w.pov_blur$n" -A \
+            "Declare=Blur=$n" Declare=Variance=0 || failed=1
+    done
+    echo "$w: POV-Ray blur_samples 64 with its default confidence and variance ..." >&2
+    point pov "blur_samples 64, confidence 0.9, variance 1/128" "$w" pov_blur_default pov_image "$w" \
+        "$w.pov_blur_default" -A Declare=Blur=64 || failed=1
+}
+
+[[ -z $replot ]] && echo "POV-Ray: $povray; crtc: $crtc; $size, $threads threads, median of $runs runs" >&2
+failed=0
+for w in "${scene_list[@]}"; do
+    [[ -n $replot ]] && break
+    : >"$out/$w.points"
+    reference_of "$w" || { failed=1; continue; }
+    if [[ $w == dof ]]; then dof_points "$w"; else anti_aliasing_points "$w"; fi
 done
 
 # ---------------------------------------------------------------------------
@@ -204,11 +275,19 @@ for w in "${scene_list[@]}"; do
     echo
     echo "### $w, $size"
     echo
-    echo "Reference: crtc with ${rn} × ${rn} samples per pixel (${rwall} s); the ${rhalf} × ${rhalf}"
-    echo "image differs from it by ${rcheck}/255 RMSE, so smaller errors are not resolved."
+    describe() { # a reference's sampling in words
+        if [[ $1 == *x* ]]; then echo "supersampling ${1%x*} and dofsamples ${1#*x}"; else echo "$1 × $1 samples per pixel"; fi
+    }
+    echo "Reference: crtc with $(describe "$rn") (${rwall} s); the image with $(describe "$rhalf")"
+    echo "differs from it by ${rcheck}/255 RMSE, so smaller errors are not resolved."
     echo
-    echo "POV-Ray's samples per pixel are its own statistic (\`Smpls/Pxl\`); with a threshold above 0"
-    echo "it counts only the samples of the pixels it supersampled."
+    if [[ $w == dof ]]; then
+        echo "Samples per pixel are camera rays per pixel: crtc's supersampling² × dofsamples, POV-Ray's"
+        echo "blur_samples (with variance 0 it takes them all; with its defaults it stops earlier)."
+    else
+        echo "POV-Ray's samples per pixel are its own statistic (\`Smpls/Pxl\`); with a threshold above 0"
+        echo "it counts only the samples of the pixels it supersampled."
+    fi
     echo
     echo "| tool | setting | samples / pixel | wall time (s) | RMSE vs reference (/255) |"
     echo "| --- | --- | ---: | ---: | ---: |"
@@ -217,6 +296,11 @@ for w in "${scene_list[@]}"; do
         [[ $tool == pov ]] && name=POV-Ray
         setting=$label
         [[ $tool == crtc && $label == "ss "* ]] && setting="supersampling ${label#ss }"
+        if [[ $tool == crtc && $label == "dof "* ]]; then
+            sd=${label#dof }
+            setting="supersampling ${sd%x*}, dofsamples ${sd#*x}"
+        fi
+        [[ $label == "blur_samples 64, confidence"* ]] && spp="≤ 64"
         if [[ $label == "adaptive "* ]]; then
             a=${label#adaptive }
             setting="antialias \"adaptive\", aathreshold ${a%:*}, aadepth ${a#*:}"
@@ -289,18 +373,25 @@ if [[ -n $svg ]]; then
                     printf "<text x=\"%d\" y=\"%.1f\" fill=\"#555\" font-size=\"10\">reference resolution</text>\n", left + 4, py(floor_of[w]) + 12
                 }
                 for (t = 1; t <= 2; t++) {
-                    want = t == 1 ? "crtc" : "pov"; colour = t == 1 ? "#c0392b" : "#2c6fbb"; path = ""
+                    want = t == 1 ? "crtc" : "pov"; colour = t == 1 ? "#c0392b" : "#2c6fbb"; path = ""; m = 0
                     for (i = 1; i <= count[w]; i++) {
                         if (tool[w, i] != want) continue
-                        series = (want == "crtc" && label[w, i] ~ /^ss /) || label[w, i] ~ /AM1 \+A0.0/
-                        if (series) path = path sprintf("%s%.1f,%.1f", path == "" ? "" : " ", px(wall[w, i]), py(err[w, i]))
+                        series = (want == "crtc" && label[w, i] ~ /^(ss|dof) /) || label[w, i] ~ /AM1 \+A0.0|variance 0/
+                        if (series) { xs[++m] = px(wall[w, i]); ys[m] = py(err[w, i]) }
                         printf "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%d\" fill=\"%s\"/>\n", px(wall[w, i]), py(err[w, i]), series ? 3 : 5, series ? colour : "none\" stroke=\"" colour
                     }
+                    # joined in order of time (a sampling list need not be in that order)
+                    for (a = 2; a <= m; a++)
+                        for (b = a; b > 1 && xs[b - 1] > xs[b]; b--) {
+                            tx = xs[b]; xs[b] = xs[b - 1]; xs[b - 1] = tx
+                            ty = ys[b]; ys[b] = ys[b - 1]; ys[b - 1] = ty
+                        }
+                    for (a = 1; a <= m; a++) path = path sprintf("%s%.1f,%.1f", a == 1 ? "" : " ", xs[a], ys[a])
                     if (path != "") printf "<polyline points=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"1.5\"/>\n", path, colour
                 }
             }
-            printf "<text x=\"20\" y=\"%d\" fill=\"#c0392b\">crtc: supersampling %s (line); adaptive anti-aliasing (open circles)</text>\n", height - 30, grids
-            printf "<text x=\"20\" y=\"%d\" fill=\"#2c6fbb\">POV-Ray: +AM1 +A0.0 -J, %s (line); +A0.3 +J and +AM2 (open circles)</text>\n", height - 12, depths
+            printf "<text x=\"20\" y=\"%d\" fill=\"#c0392b\">crtc: supersampling %s, or supersampling × dofsamples (line); adaptive anti-aliasing (open circles)</text>\n", height - 30, grids
+            printf "<text x=\"20\" y=\"%d\" fill=\"#2c6fbb\">POV-Ray: +AM1 +A0.0 -J, %s, or blur_samples with variance 0 (line); +A0.3 +J, +AM2, default focal blur (open circles)</text>\n", height - 12, depths
             print "</svg>"
         }' >"$svg"
     echo >&2
