@@ -140,7 +140,7 @@ Value Interpreter::exec(const Node* node) {
     case NodeKind::Scene: execScene(static_cast<const SceneStmt*>(node)); return Value::none();
     case NodeKind::Include: execInclude(static_cast<const IncludeStmt*>(node)); return Value::none();
     case NodeKind::Error: return Value::none();
-    case NodeKind::Assign: eval(static_cast<const Expr*>(node)); return Value::none();
+    case NodeKind::Assign: assign(static_cast<const AssignExpr*>(node)); return Value::none();
     default: {
         Value value = eval(static_cast<const Expr*>(node));
         if (emitMode_ != EmitMode::None) emit(value, node);
@@ -431,15 +431,11 @@ void Interpreter::unboundVariable(const VarExpr* node) {
     throw EvalError{};
 }
 
-void Interpreter::store(const Resolution& r, const Value& value) {
-    switch (r.binding) {
-    case Binding::Local: locals_[r.slot] = value; return;
-    case Binding::Global:
-        if (r.slot >= globalValues_.size()) globalValues_.resize(globals_.size());
-        globalValues_[r.slot] = value;
-        return;
-    default: return; // the resolver only assigns locals and globals
-    }
+void Interpreter::storeElsewhere(const Resolution& r, const Value& value) {
+    if (r.binding != Binding::Global) return; // the resolver only assigns locals and globals
+    // A global first assigned after the table was sized (by an include, say).
+    if (r.slot >= globalValues_.size()) globalValues_.resize(globals_.size());
+    globalValues_[r.slot] = value;
 }
 
 // ---------------------------------------------------------------- macros

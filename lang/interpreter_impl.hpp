@@ -92,16 +92,36 @@ private:
     Value eval(const Expr* node);
     Value evalVar(const VarExpr* node);
     Value evalString(const StringLit* node);
-    Value evalAssign(const AssignExpr* node);
+    Value evalAssign(const AssignExpr* node) { return assign(node); }
+    /// Stores an assignment's value (none for a value-less one) and returns it. Inline, so
+    /// that an assignment statement, whose value is dropped, does not copy it back.
+    [[gnu::always_inline]] Value assign(const AssignExpr* node) {
+        Value value = eval(node->value);
+        if (value.kind == ValueKind::Unset) value = Value::none();
+        store(node->resolution, value);
+        return value;
+    }
     Value evalTernary(const TernaryExpr* node);
     [[noreturn, gnu::cold, gnu::noinline]] Value notAnExpression(const Expr* node);
     [[noreturn, gnu::cold, gnu::noinline]] void unboundVariable(const VarExpr* node);
-    void store(const Resolution& resolution, const Value& value);
+    /// Inline for the common slots (a set local or global); the rest out of line.
+    void store(const Resolution& resolution, const Value& value) {
+        if (resolution.binding == Binding::Local) {
+            locals_[resolution.slot] = value;
+        } else if (resolution.binding == Binding::Global && resolution.slot < globalValues_.size()) {
+            globalValues_[resolution.slot] = value;
+        } else {
+            storeElsewhere(resolution, value);
+        }
+    }
+    void storeElsewhere(const Resolution& resolution, const Value& value);
     Value evalBinary(const BinaryExpr* node);
     Value evalLogical(const BinaryExpr* node);
     [[gnu::noinline]] Value binaryOnValues(const BinaryExpr* node, const Value& a, const Value& b);
     Value evalUnary(const UnaryExpr* node);
     Value evalCall(const CallExpr* node);
+    /// The call itself, once the callee is known to be callable: `args` has a slot per argument.
+    Value callWith(const Value& callee, const CallExpr* node, std::span<Value> args);
     /// Evaluates a call's arguments, left to right, into `args` (one slot per argument).
     void evalArguments(const CallExpr* node, std::span<Value> args) {
         for (size_t i = 0; i < node->args.size(); ++i) {

@@ -157,13 +157,6 @@ Value Interpreter::evalString(const StringLit* node) {
     return Value::string(newString(std::string(node->value)));
 }
 
-Value Interpreter::evalAssign(const AssignExpr* node) {
-    Value value = eval(node->value);
-    if (value.kind == ValueKind::Unset) value = Value::none();
-    store(node->resolution, value);
-    return value;
-}
-
 Value Interpreter::evalTernary(const TernaryExpr* node) {
     return eval(condition(node->condition, "?:") ? node->then : node->otherwise);
 }
@@ -466,32 +459,31 @@ void Interpreter::arityError(const BuiltinInfo& info, const CallExpr* node) {
     throw EvalError{};
 }
 
+// Inline in evalCall (its only caller), for both places the arguments can live.
+[[gnu::always_inline]] inline Value Interpreter::callWith(const Value& callee, const CallExpr* node, std::span<Value> args) {
+    evalArguments(node, args);
+    if (callee.kind == ValueKind::Macro) return callMacro(callee.closure, node, args);
+    const BuiltinInfo& info = builtinFunctions()[callee.index];
+    if (!arityFits(info, node->args.size())) arityError(info, node);
+    BuiltinCall call{*this, node, args};
+    return info.function(call);
+}
+
 Value Interpreter::evalCall(const CallExpr* node) {
     Value callee = eval(node->callee);
     if (callee.kind != ValueKind::Builtin && callee.kind != ValueKind::Macro) {
         fail(node->callee->range, fmt::format("cannot call {}; only macros and functions can be called",
                                               typeName(callee)));
     }
-    // Arguments evaluate left to right, before the call. Most calls have a few: keep
-    // them on the C++ stack, uninitialised until evaluated.
-    alignas(Value) std::byte small[8 * sizeof(Value)];
-    std::vector<Value> large;
-    std::span<Value> args;
-    if (node->args.size() <= 8) {
-        Value* first = reinterpret_cast<Value*>(small);
-        for (size_t i = 0; i < node->args.size(); ++i) new (first + i) Value();
-        args = std::span<Value>(first, node->args.size());
-    } else {
-        large.resize(node->args.size());
-        args = large;
+    // Arguments evaluate left to right, before the call. Most calls have a few: they stay
+    // on the C++ stack (Value is an implicit-lifetime type: the bytes need no constructor).
+    constexpr size_t kOnStack = 8;
+    if (node->args.size() > kOnStack) [[unlikely]] {
+        std::vector<Value> many(node->args.size());
+        return callWith(callee, node, many);
     }
-    evalArguments(node, args);
-    if (callee.kind == ValueKind::Macro) return callMacro(callee.closure, node, args);
-
-    const BuiltinInfo& info = builtinFunctions()[callee.index];
-    if (!arityFits(info, node->args.size())) arityError(info, node);
-    BuiltinCall call{*this, node, args};
-    return info.function(call);
+    alignas(Value) std::byte storage[kOnStack * sizeof(Value)];
+    return callWith(callee, node, std::span<Value>(reinterpret_cast<Value*>(storage), node->args.size()));
 }
 
 } // namespace crt::lang
