@@ -5,7 +5,7 @@
 # tools as Markdown tables (and, with --svg, a log-log plot).
 # See bench/README.md, "Render time against error".
 #
-# usage: bench/quality/run.sh [--size WxH] [--runs N] [--scenes a,b] [--svg FILE] [CRTC]
+# usage: bench/quality/run.sh [--size WxH] [--runs N] [--scenes a,b] [--svg FILE] [--replot DIR] [CRTC]
 #
 #   --size WxH    image size of every render (default 400x300)
 #   --runs N      timed runs per point; the median wall time is reported (default 3)
@@ -38,7 +38,7 @@ source "$here/../common.sh"
 root=$(cd "$here/../.." && pwd)
 scenes_dir=$root/bench/render
 
-usage() { sed -n '2,30p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,32p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 
 size=400x300
 runs=3
