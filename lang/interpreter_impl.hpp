@@ -92,7 +92,6 @@ private:
     Value eval(const Expr* node);
     Value evalVar(const VarExpr* node);
     Value evalString(const StringLit* node);
-    Value evalAssign(const AssignExpr* node) { return assign(node); }
     /// Stores an assignment's value (none for a value-less one) and returns it. Inline, so
     /// that an assignment statement, whose value is dropped, does not copy it back.
     [[gnu::always_inline]] Value assign(const AssignExpr* node) {

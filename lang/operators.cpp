@@ -137,7 +137,7 @@ Value Interpreter::eval(const Expr* node) {
     case NodeKind::BoolLit: return Value::boolean(static_cast<const BoolLit*>(node)->value);
     case NodeKind::StringLit: return evalString(static_cast<const StringLit*>(node));
     case NodeKind::Var: return evalVar(static_cast<const VarExpr*>(node));
-    case NodeKind::Assign: return evalAssign(static_cast<const AssignExpr*>(node));
+    case NodeKind::Assign: return assign(static_cast<const AssignExpr*>(node));
     case NodeKind::Unary: return evalUnary(static_cast<const UnaryExpr*>(node));
     case NodeKind::Binary: return evalBinary(static_cast<const BinaryExpr*>(node));
     case NodeKind::Ternary: return evalTernary(static_cast<const TernaryExpr*>(node));
