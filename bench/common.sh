@@ -38,6 +38,9 @@ bench_output_folder() {
 
 now_ns() { date +%s%N; }
 
+# seconds between two nanosecond stamps, with DECIMALS digits (default 3)
+elapsed() { awk -v a="$1" -v b="$2" -v d="${3:-3}" 'BEGIN { printf("%." d "f", (b - a) / 1e9) }'; }
+
 # median of the numbers given as arguments (lower middle for an even count)
 median() {
     printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'

@@ -69,9 +69,6 @@ bench_output_folder frontend
 
 # ---------------------------------------------------------------------------
 
-# seconds between two nanosecond stamps
-elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.4f", (b - a) / 1e9 }'; }
-
 mb() { awk -v k="$1" 'BEGIN { printf "%.1f", k / 1024 }'; }
 
 # file of a workload for a tool (crt | pov)
@@ -102,7 +99,7 @@ run_pov() {
             "$povray" +W16 +H16 -D -F +WT2 "+I$(basename "$file")" \
             >"$log.out" 2>"$log.err") || rc=$?
     t1=$(now_ns)
-    pov_wall=$(elapsed "$t0" "$t1")
+    pov_wall=$(elapsed "$t0" "$t1" 4)
     pov_kb=$(tail -n 1 "$log.mem")
     pov_parse=$(sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' "$log.err" | head -n 1)
     pov_bound=$(sed -n 's/.*Bounding Time:.*(\([0-9.]*\) seconds).*/\1/p' "$log.err" | head -n 1)
@@ -128,7 +125,7 @@ run_crtc() {
     rc=0
     "$timebin" -f '%M' -o "$log.mem" "$crtc" --check "$file" >"$log.out" 2>"$log.err" || rc=$?
     t1=$(now_ns)
-    crtc_wall=$(elapsed "$t0" "$t1")
+    crtc_wall=$(elapsed "$t0" "$t1" 4)
     crtc_kb=$(tail -n 1 "$log.mem")
     if [[ $rc -ne 0 ]]; then
         echo "crtc --check failed on $file (exit $rc); log: $log.err$keep_hint" >&2

@@ -121,7 +121,6 @@ else
     echo "$size $threads" >"$out/run.txt"
 fi
 
-elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", (b - a) / 1e9 }'; }
 
 # the folder of a scene's .crt and .pov
 scene_dir() { if [[ $1 == dof ]]; then echo "$here"; else echo "$scenes_dir"; fi; }

@@ -99,9 +99,6 @@ bench_output_folder render
 
 # ---------------------------------------------------------------------------
 
-# seconds between two nanosecond stamps
-elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", (b - a) / 1e9 }'; }
-
 # user + system CPU seconds from a GNU time log written with -f '%U %S'
 cpu_of() { tail -n 1 "$1" | awk '{ printf "%.2f", $1 + $2 }'; }
 
