@@ -5,11 +5,13 @@
 #include "value_format.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <numbers>
 #include <ostream>
+#include <utility>
 
 namespace crt::lang {
 
@@ -130,10 +132,8 @@ glm::dvec3 vector(BuiltinCall& call, size_t index) {
 Value fromVector(glm::dvec3 v) { return Value::vec3(v.x, v.y, v.z); }
 
 #define MATH1(name, expr)                                                                      \
-    Value b_##name(BuiltinCall& call) {                                                        \
-        double x = number(call, 0);                                                            \
-        return checked(call, (expr), #name);                                                   \
-    }
+    double m_##name(double x) { return (expr); }                                               \
+    Value b_##name(BuiltinCall& call) { return checked(call, m_##name(number(call, 0)), #name); }
 
 Value b_vec3(BuiltinCall& call) {
     double x = number(call, 0), y = number(call, 1), z = number(call, 2);
@@ -331,6 +331,23 @@ constexpr BuiltinInfo kBuiltins[] = {
 
 constexpr uint32_t kFunctionCount = static_cast<uint32_t>(std::size(kBuiltins));
 
+/// The MATH1 built-ins by name, for unaryMath().
+constexpr std::pair<std::string_view, UnaryMath> kUnaryMath[] = {
+    {"sin", m_sin}, {"cos", m_cos}, {"tan", m_tan}, {"exp", m_exp},
+    {"radians", m_radians}, {"degrees", m_degrees}, {"atan", m_atan},
+};
+
+/// unaryMath() per built-in index, matched by name when compiled.
+constexpr std::array<UnaryMath, kFunctionCount> kUnaryMathByIndex = [] {
+    std::array<UnaryMath, kFunctionCount> table{};
+    for (uint32_t i = 0; i < kFunctionCount; ++i) {
+        for (const auto& [name, function] : kUnaryMath) {
+            if (kBuiltins[i].name == name) table[i] = function;
+        }
+    }
+    return table;
+}();
+
 } // namespace
 
 RangeSequence::RangeSequence(BuiltinCall& call) {
@@ -392,6 +409,8 @@ bool RangeSequence::next(Value& item) {
 }
 
 std::span<const BuiltinInfo> builtinFunctions() { return kBuiltins; }
+
+UnaryMath unaryMath(uint32_t index) { return index < kFunctionCount ? kUnaryMathByIndex[index] : nullptr; }
 uint32_t preludeSize() { return kFunctionCount + 2; }
 uint32_t preludeSlotOfT() { return kFunctionCount; }
 uint32_t preludeSlotOfClock() { return kFunctionCount + 1; }

@@ -32,6 +32,13 @@ struct BuiltinInfo {
 
 std::span<const BuiltinInfo> builtinFunctions();
 
+using UnaryMath = double (*)(double);
+/// For a one-argument math built-in (sin, cos, tan, exp, atan, radians, degrees): the
+/// function on numbers, whose result the built-in returns unless it is a NaN (a domain
+/// error, or a NaN argument). Null for every other built-in. Calls with a number use it and
+/// skip the general path; anything else goes through BuiltinInfo::function.
+UnaryMath unaryMath(uint32_t index);
+
 /// The numbers range(...) yields, one at a time: `for … in range(…)` runs through them
 /// without building the list. The constructor checks the arguments as range() does.
 class RangeSequence {

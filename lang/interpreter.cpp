@@ -26,6 +26,7 @@ Interpreter::Interpreter(Compilation& compilation, const EvalOptions& options)
     // clock runs from 0 to 1 over the frames of an animation; a single frame is at 0.
     double clock = options.frameCount > 1 ? static_cast<double>(options.frame) / (options.frameCount - 1) : 0.0;
     prelude_[preludeSlotOfClock()] = Value::number(clock);
+    nextStepCheck_ = nextCheckAfter(0);
 }
 
 void Interpreter::fail(SourceRange where, std::string message) {
@@ -55,17 +56,23 @@ SourceRange Interpreter::argRange(const CallExpr* site, size_t index) const {
     return index < site->args.size() ? site->args[index]->range : site->range;
 }
 
-void Interpreter::step(SourceRange where) {
-    // Only the language server sets a callback; it is polled every 64th step, which keeps
-    // the cost small while a loop whose body is slow still stops in time.
-    if (options_.interrupt && (steps_ & 63) == 63 && options_.interrupt()) {
-        fail(where, "evaluation was stopped before it finished (time budget exceeded)");
-    }
-    if (++steps_ > options_.limits.maxSteps) {
+void Interpreter::checkSteps(SourceRange where) {
+    if (steps_ > options_.limits.maxSteps) {
         fail(where, fmt::format("evaluation exceeded {} steps (loop iterations and macro "
                                 "calls); raise the limit with --max-steps",
                                 options_.limits.maxSteps));
     }
+    if (options_.interrupt && options_.interrupt()) {
+        fail(where, "evaluation was stopped before it finished (time budget exceeded)");
+    }
+    nextStepCheck_ = nextCheckAfter(steps_);
+}
+
+uint64_t Interpreter::nextCheckAfter(uint64_t steps) const {
+    // Past the limit, or (with a callback, which only the language server sets) at the next
+    // 64th step: polling that often keeps its cost small while a slow loop still stops in time.
+    uint64_t limit = options_.limits.maxSteps == UINT64_MAX ? UINT64_MAX : options_.limits.maxSteps + 1;
+    return options_.interrupt ? std::min(limit, steps + 64) : limit;
 }
 
 void Interpreter::run(bool evaluate) {
@@ -394,9 +401,7 @@ Value Interpreter::evalVar(const VarExpr* node) {
     const Value* slot = nullptr;
     switch (r.binding) {
     case Binding::Local: slot = &locals_[r.slot]; break;
-    case Binding::Global:
-        if (r.slot < globalValues_.size()) slot = &globalValues_[r.slot];
-        break;
+    case Binding::Global: slot = &globalValues_[r.slot]; break; // sized after every resolve
     case Binding::Builtin: return prelude_[r.slot];
     case Binding::Enclosing: {
         Frame* frame = enclosing_;
@@ -429,13 +434,6 @@ void Interpreter::unboundVariable(const VarExpr* node) {
                                        suggestion));
     if (!suggestion.empty()) d.fixits.push_back({node->range, suggestion});
     throw EvalError{};
-}
-
-void Interpreter::storeElsewhere(const Resolution& r, const Value& value) {
-    if (r.binding != Binding::Global) return; // the resolver only assigns locals and globals
-    // A global first assigned after the table was sized (by an include, say).
-    if (r.slot >= globalValues_.size()) globalValues_.resize(globals_.size());
-    globalValues_[r.slot] = value;
 }
 
 // ---------------------------------------------------------------- macros

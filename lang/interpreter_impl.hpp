@@ -103,17 +103,15 @@ private:
     Value evalTernary(const TernaryExpr* node);
     [[noreturn, gnu::cold, gnu::noinline]] Value notAnExpression(const Expr* node);
     [[noreturn, gnu::cold, gnu::noinline]] void unboundVariable(const VarExpr* node);
-    /// Inline for the common slots (a set local or global); the rest out of line.
+    /// Inline: loops store every iteration. The resolver assigns only locals and globals, and
+    /// the table of globals is sized after every resolve.
     void store(const Resolution& resolution, const Value& value) {
         if (resolution.binding == Binding::Local) {
             locals_[resolution.slot] = value;
-        } else if (resolution.binding == Binding::Global && resolution.slot < globalValues_.size()) {
+        } else if (resolution.binding == Binding::Global) {
             globalValues_[resolution.slot] = value;
-        } else {
-            storeElsewhere(resolution, value);
         }
     }
-    void storeElsewhere(const Resolution& resolution, const Value& value);
     Value evalBinary(const BinaryExpr* node);
     Value evalLogical(const BinaryExpr* node);
     [[gnu::noinline]] Value binaryOnValues(const BinaryExpr* node, const Value& a, const Value& b);
@@ -152,7 +150,13 @@ private:
     /// scene's vectors, so that they are not regrown (copied, and so faulted in again) during
     /// the loop. Capacity never written costs no memory.
     void reserveForIterations(const SceneCounts& before, uint64_t remaining);
-    void step(SourceRange where);
+    /// Counts a loop iteration or macro call against the step limit; inline, since loops
+    /// pay it every iteration, and the checks themselves only every so often.
+    void step(SourceRange where) {
+        if (++steps_ >= nextStepCheck_) [[unlikely]] checkSteps(where);
+    }
+    [[gnu::cold, gnu::noinline]] void checkSteps(SourceRange where);
+    uint64_t nextCheckAfter(uint64_t steps) const;
     void keepGlobalValues();
 
     // objects (object_builder.cpp)
@@ -189,6 +193,7 @@ private:
     Frame* enclosing_ = nullptr; ///< the running macro's closure environment
     uint32_t depth_ = 0;
     uint64_t steps_ = 0;
+    uint64_t nextStepCheck_ = 0; ///< when step() next calls checkSteps (set by the constructor)
 
     EmitMode emitMode_ = EmitMode::None;
     std::vector<Value>* emitted_ = nullptr;

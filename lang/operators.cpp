@@ -463,6 +463,14 @@ void Interpreter::arityError(const BuiltinInfo& info, const CallExpr* node) {
 [[gnu::always_inline]] inline Value Interpreter::callWith(const Value& callee, const CallExpr* node, std::span<Value> args) {
     evalArguments(node, args);
     if (callee.kind == ValueKind::Macro) return callMacro(callee.closure, node, args);
+    // sin(x) and its kind on a number, the loops' usual call, skip the general path; a NaN
+    // result goes the general way, where the built-in tells a domain error from a NaN given.
+    if (args.size() == 1 && args[0].isNumber()) {
+        if (UnaryMath math = unaryMath(callee.index)) {
+            double result = math(args[0].asDouble());
+            if (!std::isnan(result)) return Value::number(result);
+        }
+    }
     const BuiltinInfo& info = builtinFunctions()[callee.index];
     if (!arityFits(info, node->args.size())) arityError(info, node);
     BuiltinCall call{*this, node, args};
@@ -470,7 +478,10 @@ void Interpreter::arityError(const BuiltinInfo& info, const CallExpr* node) {
 }
 
 Value Interpreter::evalCall(const CallExpr* node) {
-    Value callee = eval(node->callee);
+    // A built-in's name (resolved statically, and never reassigned) needs no evaluation.
+    const auto* name = node->callee->kind == NodeKind::Var ? static_cast<const VarExpr*>(node->callee) : nullptr;
+    Value callee = name && name->resolution.binding == Binding::Builtin ? prelude_[name->resolution.slot]
+                                                                         : eval(node->callee);
     if (callee.kind != ValueKind::Builtin && callee.kind != ValueKind::Macro) {
         fail(node->callee->range, fmt::format("cannot call {}; only macros and functions can be called",
                                               typeName(callee)));
