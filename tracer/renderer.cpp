@@ -9,6 +9,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <latch>
+#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -96,14 +97,38 @@ private:
     int dofSamples_;
 };
 
-/// Reports bands of rows as they become final: a tile row is final when all its tiles are,
-/// and bands go out in order, so a finished row waits for the rows above it.
-class FinishedRows {
+/// Where the workers put pixels, and the reports of bands of rows as they become final: a
+/// tile row is final when all its tiles are, and bands go out in order, so a finished row
+/// waits for the rows above it. Unless the whole frame is kept, each tile row has a buffer
+/// of its own, taken when its first tile starts and given back once the row is reported:
+/// a render streamed to its file then holds the rows in flight, not the whole image (a
+/// 1920×1080 frame of floats is 25 MB, and first touches of fresh memory cost as much as
+/// the trace of a simple scene).
+class FrameRows {
 public:
     using Report = std::function<void(int yBegin, int yEnd, std::span<const float> rgb)>;
 
-    FinishedRows(const PixelBuffer& frame, int tilesX, int tilesY, const Report& report)
-        : frame_(frame), report_(report), tilesLeft_(static_cast<size_t>(tilesY), tilesX) {}
+    FrameRows(PixelBuffer& frame, bool keepFrame, int tilesX, int tilesY, const Report& report)
+        : frame_(frame), keep_(keepFrame || !report), report_(report),
+          rowValues_(static_cast<size_t>(frame.width) * 3), tilesLeft_(static_cast<size_t>(tilesY), tilesX),
+          rowBuffers_(keep_ ? 0 : static_cast<size_t>(tilesY)) {}
+
+    /// Allocates the kept frame; a separate step so that the caller decides when its pages
+    /// are first touched.
+    void allocate() {
+        if (keep_) frame_.rgb.assign(rowValues_ * static_cast<size_t>(frame_.height), 0.0f);
+    }
+
+    /// The first value of the first image row of tile row `tileRow`, for a tile being traced;
+    /// the rows below follow every width × 3 floats.
+    float* firstRowOf(int tileRow) {
+        if (keep_) return frame_.rgb.data() + static_cast<size_t>(tileRow) * kTileSize * rowValues_;
+        std::lock_guard<std::mutex> lock(mutex_);
+        std::unique_ptr<float[]>& buffer = rowBuffers_[static_cast<size_t>(tileRow)];
+        // Left uninitialised: the row's tiles write every value before it is reported.
+        if (!buffer) buffer.reset(new float[rowValues_ * kTileSize]);
+        return buffer.get();
+    }
 
     void tileDone(int tileRow) {
         if (!report_) return;
@@ -111,19 +136,27 @@ public:
         if (--tilesLeft_[static_cast<size_t>(tileRow)] > 0) return;
         while (nextRow_ < static_cast<int>(tilesLeft_.size()) && tilesLeft_[static_cast<size_t>(nextRow_)] == 0) {
             const int yBegin = nextRow_ * kTileSize, yEnd = std::min(yBegin + kTileSize, frame_.height);
-            const size_t rowValues = static_cast<size_t>(frame_.width) * 3;
-            report_(yBegin, yEnd,
-                    std::span<const float>(frame_.rgb.data() + yBegin * rowValues, (yEnd - yBegin) * rowValues));
+            const size_t values = static_cast<size_t>(yEnd - yBegin) * rowValues_;
+            if (keep_) {
+                report_(yBegin, yEnd, std::span<const float>(frame_.rgb.data() + yBegin * rowValues_, values));
+            } else {
+                std::unique_ptr<float[]>& buffer = rowBuffers_[static_cast<size_t>(nextRow_)];
+                report_(yBegin, yEnd, std::span<const float>(buffer.get(), values));
+                buffer.reset();
+            }
             ++nextRow_;
         }
     }
 
 private:
-    const PixelBuffer& frame_;
+    PixelBuffer& frame_;
+    const bool keep_;
     const Report& report_;
+    const size_t rowValues_; ///< floats per image row
     std::mutex mutex_;
     std::vector<int> tilesLeft_; ///< per tile row
     int nextRow_ = 0;            ///< the first tile row not reported
+    std::vector<std::unique_ptr<float[]>> rowBuffers_; ///< per tile row, when the frame is not kept
 };
 
 } // namespace
@@ -163,7 +196,8 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
                                                 : std::max(1u, std::thread::hardware_concurrency());
     threadCount = std::min<unsigned>(threadCount, static_cast<unsigned>(tileCount));
     std::vector<RayStats> stats(threadCount);
-    FinishedRows finishedRows(frame, tilesX, tilesY, settings.onRowsDone);
+    FrameRows rows(frame, settings.keepFrame, tilesX, tilesY, settings.onRowsDone);
+    const size_t rowValues = static_cast<size_t>(s.width) * 3;
 
     std::latch ready(1); // the threads are started and the frame is allocated
     auto worker = [&](unsigned index) {
@@ -174,18 +208,20 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
             if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) break;
             int tile = nextTile.fetch_add(1);
             if (tile >= tileCount) break;
-            int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
+            const int tileRow = tile / tilesX;
+            int x0 = (tile % tilesX) * kTileSize, y0 = tileRow * kTileSize;
+            float* tileStart = rows.firstRowOf(tileRow) + 3 * static_cast<size_t>(x0);
             for (int y = y0; y < std::min(y0 + kTileSize, s.height); ++y) {
-                for (int x = x0; x < std::min(x0 + kTileSize, s.width); ++x) {
+                float* out = tileStart + static_cast<size_t>(y - y0) * rowValues;
+                for (int x = x0; x < std::min(x0 + kTileSize, s.width); ++x, out += 3) {
                     Vec3 c = sampler.pixel(x, y, context);
-                    float* out = &frame.rgb[3 * (static_cast<size_t>(y) * s.width + x)];
                     out[0] = static_cast<float>(c.r);
                     out[1] = static_cast<float>(c.g);
                     out[2] = static_cast<float>(c.b);
                 }
             }
             doneTiles.fetch_add(1);
-            finishedRows.tileDone(tile / tilesX);
+            rows.tileDone(tileRow);
         }
         stats[index] = context.stats;
     };
@@ -207,9 +243,9 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
         });
     }
     if (settings.onThreadsStarted) settings.onThreadsStarted();
-    // Zeroing the frame (25 MB at 1920×1080) faults in every page: done after the threads
+    // Zeroing a kept frame (25 MB at 1920×1080) faults in every page: done after the threads
     // start, it overlaps whatever onThreadsStarted began (crtc's image module load).
-    frame.rgb.assign(static_cast<size_t>(s.width) * s.height * 3, 0.0f);
+    rows.allocate();
     ready.count_down();
     worker(0);
     for (std::thread& t : threads) t.join();

@@ -28,6 +28,10 @@ struct RenderSettings {
     /// in order from the top, one call at a time, from a worker thread: it should only copy
     /// them and hand them over (to an image file being written while the render goes on).
     std::function<void(int yBegin, int yEnd, std::span<const float> rgb)> onRowsDone;
+    /// False (with onRowsDone): the rows go only to onRowsDone, and RenderOutcome::frame
+    /// comes back with its size but no pixels. The render then holds only the rows in
+    /// flight: for an image streamed to a file that nobody reads back.
+    bool keepFrame = true;
     /// Called once all the render's threads have been created, before the calling thread
     /// starts tracing (crtc starts loading the image module then; see image_io::startLoading).
     std::function<void()> onThreadsStarted;

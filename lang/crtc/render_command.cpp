@@ -186,6 +186,8 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
                 settings.onRowsDone = [&](int yBegin, int yEnd, std::span<const float> rgb) {
                     streamed->addRows(yBegin, yEnd, rgb);
                 };
+                // Only animations read a frame back (to reuse it when the next is the same).
+                settings.keepFrame = frames > 1;
             }
             tracer::RenderOutcome r = tracer::renderScene(scene, settings);
             progress.finish();

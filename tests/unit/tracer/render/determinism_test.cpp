@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <thread>
+#include <utility>
 
 using namespace crt::tracer;
 using namespace crt::tracer::test;
@@ -86,13 +87,15 @@ TEST_CASE("Finished rows are reported once each, in order, with their final valu
     SceneDesc desc = stochasticScene();
     desc.settings.width = 53; // a last tile row and column of 5 pixels
     desc.settings.height = 37;
-    for (int threads : {1, 3}) {
-        INFO("threads " << threads);
+    const PixelBuffer reference = renderOk(desc, 2);
+    for (auto [threads, keepFrame] : {std::pair{1, true}, {3, true}, {1, false}, {3, false}}) {
+        INFO("threads " << threads << (keepFrame ? ", frame kept" : ", frame not kept"));
         std::vector<float> streamed;
         int nextRow = 0, calls = 0;
         bool ordered = true;
         RenderSettings settings;
         settings.threads = threads;
+        settings.keepFrame = keepFrame;
         settings.onRowsDone = [&](int yBegin, int yEnd, std::span<const float> rgb) {
             ordered = ordered && yBegin == nextRow && yEnd > yBegin &&
                       rgb.size() == std::size_t(yEnd - yBegin) * 53 * 3;
@@ -105,7 +108,11 @@ TEST_CASE("Finished rows are reported once each, in order, with their final valu
         CHECK(ordered);
         CHECK(nextRow == 37);
         CHECK(calls == 3); // tile rows of 16, 16 and 5
-        CHECK(streamed == r.frame.rgb);
+        CHECK(streamed == reference.rgb);
+        // Not kept: the rows went only to the callback, from buffers of their own.
+        CHECK(r.frame.rgb.size() == (keepFrame ? reference.rgb.size() : 0));
+        CHECK(r.frame.width == 53);
+        CHECK(r.frame.height == 37);
     }
 }
 
