@@ -7,6 +7,7 @@
 // which groups such crossings as one event, runs instead.
 #include "tracer/render_scene.hpp"
 
+#include <algorithm>
 
 namespace crt::tracer {
 
@@ -18,18 +19,14 @@ bool apart(const CsgRay& q, double x, double y) {
 }
 
 /// The same for the crossings of two spans, a0 ≤ a1 and b0 ≤ b1: each must be apart from
-/// the next in their merged order.
+/// the next in their merged order. That order needs no merge: the first is the earlier
+/// entry, the last the later exit, and between them lie the later entry and the earlier
+/// exit, in either order (minima and maxima, not branches on the ray's data).
 bool apart(const CsgRay& q, const ConvexSpan& a, const ConvexSpan& b) {
-    const double ts[2][2] = {{a.enter.t, a.exit.t}, {b.enter.t, b.exit.t}};
-    int next[2] = {0, 0};
-    double previous = 0;
-    for (int k = 0; k < 4; ++k) {
-        int from = next[1] >= 2 || (next[0] < 2 && ts[0][next[0]] <= ts[1][next[1]]) ? 0 : 1;
-        double t = ts[from][next[from]++];
-        if (k > 0 && !apart(q, previous, t)) return false;
-        previous = t;
-    }
-    return true;
+    const double first = std::min(a.enter.t, b.enter.t), last = std::max(a.exit.t, b.exit.t);
+    const double laterEntry = std::max(a.enter.t, b.enter.t), earlierExit = std::min(a.exit.t, b.exit.t);
+    const double second = std::min(laterEntry, earlierExit), third = std::max(laterEntry, earlierExit);
+    return apart(q, first, second) & apart(q, second, third) & apart(q, third, last);
 }
 
 /// A crossing of a subtracted solid bounds the difference from the other side.
