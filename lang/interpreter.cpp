@@ -528,7 +528,7 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
         solid = solid && scene_.entities[member.index].solid;
     }
     tracer::EntityDesc entity{std::move(group), -1, solid, span(site->range)};
-    int32_t index = addEntity(std::move(entity), EntityInfo{ObjectType::Count, site->range, false});
+    int32_t index = addEntity(std::move(entity), EntityInfo{site->range, ObjectType::Count, false});
     return Value::object(ValueKind::Entity, ObjectType::Count, static_cast<uint32_t>(index));
 }
 

@@ -23,10 +23,11 @@ struct EvalError {};
 
 /// Per-entity facts the scene description does not carry, for warnings and str().
 struct EntityInfo {
-    ObjectType type = ObjectType::Count; ///< Count for CSG, transforms and groups
     SourceRange range{};
+    ObjectType type = ObjectType::Count; ///< Count for CSG, transforms and groups
     bool literal = false; ///< built by an object literal (so "never drawn" is worth saying)
 };
+static_assert(sizeof(EntityInfo) <= 16, "one per entity: keep it small");
 
 struct LightInfo {
     ObjectType type;

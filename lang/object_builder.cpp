@@ -387,7 +387,7 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
     auto entity = [&](tracer::Shape shape, bool zeroSize) {
         int32_t material = b.get("material") ? static_cast<int32_t>(b.get("material")->index) : defaultMaterial();
         int32_t index = addEntity(tracer::EntityDesc{std::move(shape), material, info.solid, span(node->range)},
-                                  EntityInfo{node->type, node->range, true});
+                                  EntityInfo{node->range, node->type, true});
         // An animated script (one reading t or clock) often starts from zero size.
         if (zeroSize && !animated_) {
             warnOnce(WarningKind::ZeroSizeEntity, node->typeRange,

@@ -386,7 +386,7 @@ Value Interpreter::csg(BinaryOp op, const Value& left, const Value& right, const
     csg.left = static_cast<int32_t>(left.index);
     csg.right = static_cast<int32_t>(right.index);
     int32_t index = addEntity(tracer::EntityDesc{csg, -1, true, span(node->range)},
-                              EntityInfo{ObjectType::Count, node->range, false});
+                              EntityInfo{node->range, ObjectType::Count, false});
     return Value::object(ValueKind::Entity, ObjectType::Count, static_cast<uint32_t>(index));
 }
 
@@ -441,7 +441,7 @@ Value Interpreter::evalModify(const ModifyExpr* node) {
     bool solid = scene_.entities[static_cast<size_t>(child)].solid;
     int32_t index = addEntity(tracer::EntityDesc{tracer::TransformNode{child, std::move(modifiers)}, -1,
                                                  solid, span(node->range)},
-                              EntityInfo{target.objectType, node->range, false});
+                              EntityInfo{node->range, target.objectType, false});
     return Value::object(ValueKind::Entity, target.objectType, static_cast<uint32_t>(index));
 }
 
