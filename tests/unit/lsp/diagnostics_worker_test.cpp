@@ -78,8 +78,9 @@ TEST_CASE("the worker hands over each quiet version evaluated and indexed", "[wo
     const Symbol* corner = analysis->lookup("corner", 0);
     REQUIRE(corner);
     CHECK(corner->definition.has_value());
+    const auto& symbols = analysis->symbols; // a structured binding: clang 14 cannot capture one
     auto uses = std::count_if(analysis->occurrences.begin(), analysis->occurrences.end(), [&](const Occurrence& o) {
-        return &analysis->symbols[o.symbol] == corner;
+        return &symbols[o.symbol] == corner;
     });
     CHECK(uses == 3);
 }
