@@ -139,10 +139,10 @@ crtc_image() {
     fi
     sed -e "s/supersampling -> 1\$/$settings/" -e '/^ *dofsamples -> 1$/d' "$(scene_dir "$w")/$w.crt" >"$script"
     grep -qF "$settings" "$script" || { echo "$0: $w.crt has no 'supersampling -> 1' line" >&2; return 1; }
-    t0=$(now_ns)
+    stamp t0
     "$crtc" "$script" -o "$out/$name.png" --width "$W" --height "$H" --threads "$threads" -q $extra \
         2>"$logs/$name.err" || { echo "crtc failed on $script; log: $logs/$name.err$keep_hint" >&2; return 1; }
-    t1=$(now_ns)
+    stamp t1
     wall=$(elapsed "$t0" "$t1")
 }
 
@@ -151,12 +151,13 @@ crtc_image() {
 pov_image() {
     local w=$1 name=$2 t0 t1
     shift 2
-    t0=$(now_ns)
-    (cd "$(scene_dir "$w")" &&
-        HOME=$povhome "$povray" "+I$w.pov" "+O$out/$name.png" +FN "+W$W" "+H$H" -D -V -P \
-            "+WT$threads" File_Gamma=1.0 Antialias_Gamma=1.0 "$@" >"$logs/$name.out" 2>"$logs/$name.err") ||
-        { echo "POV-Ray failed on $w.pov; log: $logs/$name.err$keep_hint" >&2; return 1; }
-    t1=$(now_ns)
+    cd "$(scene_dir "$w")" # in this shell: a subshell would add its start to the time
+    stamp t0
+    HOME=$povhome "$povray" "+I$w.pov" "+O$out/$name.png" +FN "+W$W" "+H$H" -D -V -P \
+        "+WT$threads" File_Gamma=1.0 Antialias_Gamma=1.0 "$@" >"$logs/$name.out" 2>"$logs/$name.err" ||
+        { cd "$OLDPWD"; echo "POV-Ray failed on $w.pov; log: $logs/$name.err$keep_hint" >&2; return 1; }
+    stamp t1
+    cd "$OLDPWD"
     wall=$(elapsed "$t0" "$t1")
     spp=$(sed -n 's/.*Smpls\/Pxl: *\([0-9.]*\).*/\1/p' "$logs/$name.err" | tail -n 1)
 }

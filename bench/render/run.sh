@@ -56,7 +56,6 @@ done
 crtc=${crtc_arg:-${CRTC:-$root/build/lang/crtc}}
 povray=${POVRAY:-/usr/bin/povray}
 threads=${THREADS:-2}
-timebin=/usr/bin/time
 null_module=${NULL_MODULE:-$(dirname "$crtc")/../bench/crt_image_io_null.so}
 
 if ! [[ $runs =~ ^[1-9][0-9]*$ ]]; then
@@ -81,10 +80,6 @@ for w in "${scene_list[@]}"; do
         *) echo "$0: unknown scene '$w' (mirror_room, sphere_grid, csg)" >&2; exit 2 ;;
     esac
 done
-if [[ ! -x $timebin ]] || ! "$timebin" -f '%e' -o /dev/null true 2>/dev/null; then
-    echo "$0: GNU time ($timebin) is needed for CPU times: apt-get install time" >&2
-    exit 2
-fi
 if [[ ! -x $povray ]]; then
     echo "$0: POV-Ray not found at $povray: apt-get install povray, scripts/setup.sh --bench (or set POVRAY)" >&2
     exit 2
@@ -99,25 +94,28 @@ bench_output_folder render
 
 # ---------------------------------------------------------------------------
 
-# user + system CPU seconds from a GNU time log written with -f '%U %S'
-cpu_of() { tail -n 1 "$1" | awk '{ printf "%.2f", $1 + $2 }'; }
+# seconds, 2 decimals, between two children_cpu_ms readings
+cpu_between() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (b - a) / 1000 }'; }
 
 failed=0
 
 # run_pov SCENE W H RUN -> sets pov_wall, pov_cpu, pov_parse, pov_trace; image $out/SCENE.WxH.pov.png
 run_pov() {
-    local w=$1 W=$2 H=$3 r=$4 log t0 t1 rc
+    local w=$1 W=$2 H=$3 r=$4 log t0 t1 c0 c1 rc
     log=$logs/$w.${W}x$H.pov.$r
-    t0=$(now_ns)
+    # Started from this shell, in the scenes' folder, as crtc is: a subshell or GNU time
+    # around it would add their own start to the time.
+    cd "$here"
+    children_cpu_ms c0
+    stamp t0
     rc=0
-    (cd "$here" &&
-        HOME=$povhome "$timebin" -f '%U %S' -o "$log.time" \
-            "$povray" "+I$w.pov" "+O$out/$w.${W}x$H.pov.png" +FN "+W$W" "+H$H" \
-            -D -V -P -A "+WT$threads" File_Gamma=1.0 \
-            >"$log.out" 2>"$log.err") || rc=$?
-    t1=$(now_ns)
+    HOME=$povhome "$povray" "+I$w.pov" "+O$out/$w.${W}x$H.pov.png" +FN "+W$W" "+H$H" \
+        -D -V -P -A "+WT$threads" File_Gamma=1.0 >"$log.out" 2>"$log.err" || rc=$?
+    stamp t1
+    children_cpu_ms c1
+    cd "$OLDPWD"
     pov_wall=$(elapsed "$t0" "$t1")
-    pov_cpu=$(cpu_of "$log.time")
+    pov_cpu=$(cpu_between "$c0" "$c1")
     pov_parse=$(sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' "$log.err" | head -n 1)
     pov_trace=$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$log.err" | head -n 1)
     if [[ $rc -ne 0 ]] || grep -q 'Parse Error' "$log.err"; then
@@ -129,16 +127,17 @@ run_pov() {
 
 # run_crtc SCENE W H RUN [--stats] -> sets crtc_wall, crtc_cpu; image $out/SCENE.WxH.crtc.png
 run_crtc() {
-    local w=$1 W=$2 H=$3 r=$4 extra=${5:-} log t0 t1 rc
+    local w=$1 W=$2 H=$3 r=$4 extra=${5:-} log t0 t1 c0 c1 rc
     log=$logs/$w.${W}x$H.crtc.$r
-    t0=$(now_ns)
+    children_cpu_ms c0
+    stamp t0
     rc=0
-    "$timebin" -f '%U %S' -o "$log.time" \
-        "$crtc" "$here/$w.crt" -o "$out/$w.${W}x$H.crtc.png" --width "$W" --height "$H" \
+    "$crtc" "$here/$w.crt" -o "$out/$w.${W}x$H.crtc.png" --width "$W" --height "$H" \
         --threads "$threads" -q $extra >"$log.out" 2>"$log.err" || rc=$?
-    t1=$(now_ns)
+    stamp t1
+    children_cpu_ms c1
     crtc_wall=$(elapsed "$t0" "$t1")
-    crtc_cpu=$(cpu_of "$log.time")
+    crtc_cpu=$(cpu_between "$c0" "$c1")
     if [[ $rc -ne 0 ]]; then
         echo "crtc failed on $w.crt at ${W}x$H (exit $rc); log: $log.err$keep_hint" >&2
         head -n 20 "$log.err" >&2
@@ -154,11 +153,11 @@ run_crtc() {
 run_crtc_raw() {
     local w=$1 W=$2 H=$3 r=$4 log t0 t1 rc
     log=$logs/$w.${W}x$H.raw.$r
-    t0=$(now_ns)
+    stamp t0
     rc=0
     CRT_IMAGE_IO_MODULE=$null_module "$crtc" "$here/$w.crt" -o "$out/$w.${W}x$H.raw.png" \
         --width "$W" --height "$H" --threads "$threads" -q >"$log.out" 2>"$log.err" || rc=$?
-    t1=$(now_ns)
+    stamp t1
     raw_wall=$(elapsed "$t0" "$t1")
     if [[ $rc -ne 0 ]]; then
         echo "crtc with the null image module failed on $w.crt at ${W}x$H (exit $rc); log: $log.err$keep_hint" >&2
@@ -204,7 +203,7 @@ elif [[ $have_crtc -eq 1 ]]; then
     echo "note: no null image module at $null_module: the \"no OIIO\" column stays empty" >&2
 fi
 echo "runs per tool, scene and size: $runs (median reported), $threads threads" >&2
-start_all=$(now_ns)
+stamp start_all
 
 declare -A P_WALL P_CPU P_PARSE P_TRACE P_SINGLE C_WALL C_CPU C_SINGLE R_WALL RMSE MAXERR OVER2 STATUS STATS
 
@@ -261,7 +260,8 @@ for w in "${scene_list[@]}"; do
         [[ $status != ok ]] && failed=1
     done
 done
-total=$(elapsed "$start_all" "$(now_ns)")
+stamp end_all
+total=$(elapsed "$start_all" "$end_all")
 
 # ---------------------------------------------------------------------------
 
