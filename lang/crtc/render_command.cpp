@@ -135,9 +135,9 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
     }
     std::signal(SIGINT, onInterrupt);
 
-    std::vector<image_io::ImageBuffer> gifFrames;
+    image_io::GifFrames gifFrames; // as 8-bit codes: a long animation fits in memory
     std::string previousKey;
-    image_io::ImageBuffer previous;
+    image_io::ImageBuffer previous; // for numbered frames, written again when unchanged
     tracer::RenderOutcome total;
     uint64_t cachedFrames = 0;
     image_io::WriteOptions write;
@@ -166,9 +166,10 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
         const std::string target = numbered ? numberedOutput(output, frame) : output;
         bool written = false; // streamed to `target` while rendering
         std::string key = frames > 1 ? sceneKey(scene) : std::string();
-        if (frame > 0 && key == previousKey) {
+        const bool unchanged = frame > 0 && key == previousKey;
+        if (unchanged) {
             // Nothing the renderer sees changed since the previous frame: reuse its image.
-            image = previous;
+            if (!gif) image = previous;
             ++cachedFrames;
         } else {
             ProgressReporter progress(options.quiet, frames > 1 ? fmt::format("frame {}/{} ", frame + 1, frames) : "");
@@ -219,16 +220,21 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
         previousKey = std::move(key);
         std::string error;
         if (gif) {
-            gifFrames.push_back(image);
+            if (unchanged) {
+                gifFrames.repeatLast();
+            } else if (!gifFrames.add(image, write, error)) {
+                std::cerr << fmt::format("crtc: cannot write '{}': {}\n", output, error);
+                return 2;
+            }
         } else if (!written && !image_io::writeImage(target, image, write, error)) {
             std::cerr << "crtc: " << error << "\n";
             return 2;
         }
-        if (frames > 1) previous = std::move(image);
+        if (frames > 1 && !gif) previous = std::move(image);
     }
     if (gif) {
         std::string error;
-        if (!image_io::writeAnimatedGif(output, gifFrames, options.fps, write, error)) {
+        if (!image_io::writeAnimatedGif(output, gifFrames, options.fps, error)) {
             std::cerr << "crtc: " << error << "\n";
             return 2;
         }

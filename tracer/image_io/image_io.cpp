@@ -355,54 +355,80 @@ bool writeImage(const std::string& path, const ImageBuffer& image, const WriteOp
            stream->finish(error);
 }
 
-bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& frames, double fps,
-                      const WriteOptions& options, std::string& error) {
-    std::string problem;
-    if (lowerExtension(path) != ".gif") {
-        problem = "an animation is written as a GIF, so the name must end in .gif";
-    } else if (frames.empty()) {
-        problem = "an animation needs at least one frame";
-    } else if (!(fps > 0.0) || !std::isfinite(fps)) {
-        problem = "the frame rate must be a positive number";
-    } else if (checkOptions(options, problem)) {
-        for (std::size_t i = 0; i < frames.size() && problem.empty(); ++i) {
-            if (!checkBuffer(frames[i], problem)) {
-                problem = "frame " + std::to_string(i) + ": " + problem;
-            } else if (frames[i].width != frames[0].width || frames[i].height != frames[0].height ||
-                       frames[i].channels != frames[0].channels) {
-                problem = "frame " + std::to_string(i) + " differs in size from frame 0";
-            }
-        }
+bool GifFrames::add(const ImageBuffer& frame, const WriteOptions& options, std::string& problem) {
+    const std::string which = "frame " + std::to_string(frames_.size());
+    if (!checkOptions(options, problem) || !checkBuffer(frame, problem)) {
+        problem = which + ": " + problem;
+        return false;
     }
-    if (!problem.empty()) {
+    // GIF stores colour: a grey frame becomes three equal channels.
+    const int channels = frame.channels == 1 ? 3 : frame.channels;
+    if (!frames_.empty() && (frame.width != width_ || frame.height != height_ || channels != channels_)) {
+        problem = which + " differs in size from frame 0";
+        return false;
+    }
+    width_ = frame.width;
+    height_ = frame.height;
+    channels_ = channels;
+    frames_.push_back(std::make_shared<const std::vector<std::uint8_t>>(
+        frame.channels == 1 ? quantiseColour(expandGrey(frame.pixels), 3, options)
+                            : quantiseColour(frame.pixels, frame.channels, options)));
+    return true;
+}
+
+void GifFrames::repeatLast() { frames_.push_back(frames_.back()); }
+
+std::vector<const std::uint8_t*> GifFrames::framePointers() const {
+    std::vector<const std::uint8_t*> pointers;
+    pointers.reserve(frames_.size());
+    for (const auto& codes : frames_) pointers.push_back(codes->data());
+    return pointers;
+}
+
+namespace {
+
+/// Why an animation cannot be written to `path` at `fps` (before looking at its frames).
+std::string animationProblem(const std::string& path, std::size_t frameCount, double fps) {
+    if (lowerExtension(path) != ".gif") return "an animation is written as a GIF, so the name must end in .gif";
+    if (frameCount == 0) return "an animation needs at least one frame";
+    if (!(fps > 0.0) || !std::isfinite(fps)) return "the frame rate must be a positive number";
+    return {};
+}
+
+} // namespace
+
+bool writeAnimatedGif(const std::string& path, const GifFrames& frames, double fps, std::string& error) {
+    if (std::string problem = animationProblem(path, frames.size(), fps); !problem.empty()) {
         error = "cannot write " + quotedName(path) + ": " + problem;
         return false;
     }
     const CrtImageIoModule* module = moduleFor("cannot write " + quotedName(path), error);
     if (!module) return false;
-
-    const bool expand = frames[0].channels == 1;
-    std::vector<std::vector<std::uint8_t>> codes;
-    std::vector<const std::uint8_t*> framePointers;
-    codes.reserve(frames.size());
-    for (const ImageBuffer& frame : frames) {
-        codes.push_back(expand ? quantiseColour(expandGrey(frame.pixels), 3, options)
-                               : quantiseColour(frame.pixels, frame.channels, options));
-        framePointers.push_back(codes.back().data());
-    }
+    const std::vector<const std::uint8_t*> framePointers = frames.framePointers();
     // GIF keeps a frame's delay in hundredths of a second. OIIO derives it from the rate in
     // float and truncates, so 100 / delay can come out one short (delay 45 gave 44); a rate of
     // 400 / (4·delay + 1) puts OIIO's quotient at delay + ¼, which truncates or rounds alike.
     const long delay = std::clamp(std::lround(100.0 / fps), 1L, 65535L);
     return writeThroughTemporary(path, error, [&](const std::string& temporary, std::string& why) {
         CallContext context;
-        const int ok = module->writeAnimatedGif(temporary.c_str(), frames[0].width,
-                                                frames[0].height, expand ? 3 : frames[0].channels,
+        const int ok = module->writeAnimatedGif(temporary.c_str(), frames.width(), frames.height(), frames.channels(),
                                                 int(frames.size()), framePointers.data(), 400,
                                                 int(4 * delay + 1), storeError, &context);
         why = context.error;
         return ok != 0;
     });
+}
+
+bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& frames, double fps,
+                      const WriteOptions& options, std::string& error) {
+    std::string problem = animationProblem(path, frames.size(), fps);
+    GifFrames codes;
+    for (std::size_t i = 0; i < frames.size() && problem.empty(); ++i) codes.add(frames[i], options, problem);
+    if (!problem.empty()) {
+        error = "cannot write " + quotedName(path) + ": " + problem;
+        return false;
+    }
+    return writeAnimatedGif(path, codes, fps, error);
 }
 
 std::optional<ImageInfo> describeImage(const std::string& path, std::string& error) {

@@ -7,6 +7,8 @@
 // variable CRT_IMAGE_IO_MODULE names it explicitly. All functions are thread-safe.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
@@ -103,9 +105,36 @@ private:
     int nextRow_ = 0;
 };
 
-/// Writes an animated GIF (`path` must end in .gif): one subimage per frame, all frames of one
-/// size, `fps` frames per second, looping forever; same quantisation and temporary-file rule as
-/// writeImage. GIF stores a delay in hundredths of a second, so the rate is rounded to 100/n.
+/// The frames of an animated GIF as they are made, kept as the 8-bit codes the file stores:
+/// 3 bytes an RGB pixel instead of the 12 of a float frame, and nothing more for a frame that
+/// repeats the one before. A long animation then fits in memory.
+class GifFrames {
+public:
+    /// Quantises `frame` with `options` (as writeImage would) and keeps it; false, with the
+    /// problem in `problem`, for a malformed frame or one of another size than the first.
+    bool add(const ImageBuffer& frame, const WriteOptions& options, std::string& problem);
+    /// Keeps the last frame once more (there must be one).
+    void repeatLast();
+    std::size_t size() const { return frames_.size(); }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int channels() const { return channels_; } ///< 3 (RGB) or 4 (RGBA)
+    /// Each frame's codes, row-major from the top.
+    std::vector<const std::uint8_t*> framePointers() const;
+
+private:
+    int width_ = 0;
+    int height_ = 0;
+    int channels_ = 3;
+    std::vector<std::shared_ptr<const std::vector<std::uint8_t>>> frames_; ///< repeats share
+};
+
+/// Writes an animated GIF (`path` must end in .gif): one subimage per frame, `fps` frames per
+/// second, looping forever, through a temporary file as writeImage. GIF stores a delay in
+/// hundredths of a second, so the rate is rounded to 100/n.
+bool writeAnimatedGif(const std::string& path, const GifFrames& frames, double fps, std::string& error);
+
+/// The same from float frames, all of one size, each quantised with `options`.
 bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& frames, double fps,
                       const WriteOptions& options, std::string& error);
 

@@ -290,6 +290,40 @@ TEST_CASE("alpha is dropped on read and not premultiplied", "[image_io]") {
     CHECK(info->channels == 4);
 }
 
+TEST_CASE("GIF frames are kept as 8-bit codes, and a repeated frame shares the one before", "[image_io]") {
+    GifFrames frames;
+    std::string problem;
+    REQUIRE(frames.add(solid(16, 12, 0.0f, 1.0f, 0.0f), {}, problem));
+    frames.repeatLast();
+    REQUIRE(frames.add(solid(16, 12, 1.0f, 0.0f, 0.0f), {}, problem));
+    REQUIRE(frames.size() == 3);
+    CHECK(frames.channels() == 3);
+    const std::vector<const std::uint8_t*> codes = frames.framePointers();
+    CHECK(codes[1] == codes[0]); // the repeat holds no copy
+    CHECK(codes[2] != codes[0]);
+    CHECK((codes[0][0] == 0 && codes[0][1] == 255 && codes[0][2] == 0));
+    CHECK((codes[2][0] == 255 && codes[2][1] == 0 && codes[2][2] == 0));
+    // Each frame is quantised with its own options: ½ is 128 linear, 186 through gamma 2.2.
+    REQUIRE(frames.add(solid(16, 12, 0.5f, 0.5f, 0.5f), {2.2, false}, problem));
+    CHECK(frames.framePointers()[3][0] == encodeGamma8(0.5f, 2.2));
+    CHECK_FALSE(frames.add(solid(8, 8, 0, 0, 0), {}, problem));
+    CHECK_THAT(problem, Catch::Contains("frame 4 differs in size"));
+    CHECK_FALSE(frames.add(solid(16, 12, 0, 0, 0), {0.0, false}, problem));
+    CHECK_THAT(problem, Catch::Contains("gamma"));
+    CHECK(frames.size() == 4); // the refused frames were not kept
+
+    const std::string path = scratchFile("codes.gif");
+    std::string error;
+    REQUIRE(writeAnimatedGif(path, frames, 10.0, error));
+    const std::optional<ImageInfo> info = describeImage(path, error);
+    INFO(error);
+    REQUIRE(info);
+    CHECK(info->subimages == 4);
+    CHECK(info->width == 16);
+    CHECK_FALSE(writeAnimatedGif(scratchFile("none.gif"), GifFrames{}, 10.0, error));
+    CHECK_THAT(error, Catch::Contains("at least one frame"));
+}
+
 TEST_CASE("an animated GIF has one subimage per frame, the frame rate, and loops", "[image_io]") {
     std::vector<ImageBuffer> frames;
     for (int i = 0; i < 5; ++i) frames.push_back(solid(16, 12, i / 4.0f, 1.0f - i / 4.0f, 0.0f));
