@@ -131,9 +131,22 @@ glm::dvec3 vector(BuiltinCall& call, size_t index) {
 
 Value fromVector(glm::dvec3 v) { return Value::vec3(v.x, v.y, v.z); }
 
+// The one-argument math built-ins, listed once: each gets its function on numbers (m_name,
+// what unaryMath() returns) and its built-in (b_name).
+#define CRT_MATH1_BUILTINS(X)                                                                  \
+    X(sin, std::sin(x))                                                                        \
+    X(cos, std::cos(x))                                                                        \
+    X(tan, std::tan(x))                                                                        \
+    X(exp, std::exp(x))                                                                        \
+    X(radians, x * std::numbers::pi / 180.0)                                                   \
+    X(degrees, x * 180.0 / std::numbers::pi)                                                   \
+    X(atan, std::atan(x))
+
 #define MATH1(name, expr)                                                                      \
     double m_##name(double x) { return (expr); }                                               \
     Value b_##name(BuiltinCall& call) { return checked(call, m_##name(number(call, 0)), #name); }
+CRT_MATH1_BUILTINS(MATH1)
+#undef MATH1
 
 Value b_vec3(BuiltinCall& call) {
     double x = number(call, 0), y = number(call, 1), z = number(call, 2);
@@ -147,13 +160,6 @@ Value b_rgba(BuiltinCall& call) {
     double r = number(call, 0), g = number(call, 1), b = number(call, 2), a = number(call, 3);
     return Value::colour(r, g, b, a);
 }
-MATH1(sin, std::sin(x))
-MATH1(cos, std::cos(x))
-MATH1(tan, std::tan(x))
-MATH1(exp, std::exp(x))
-MATH1(radians, x * std::numbers::pi / 180.0)
-MATH1(degrees, x * 180.0 / std::numbers::pi)
-MATH1(atan, std::atan(x))
 
 Value b_asin(BuiltinCall& call) {
     double x = number(call, 0);
@@ -290,8 +296,6 @@ Value b_print(BuiltinCall& call) {
     return Value::none();
 }
 
-#undef MATH1
-
 constexpr BuiltinInfo kBuiltins[] = {
     {"vec3", 3, 3, "vec3(x, y, z)", "A 3D vector.", b_vec3},
     {"rgb", 3, 3, "rgb(r, g, b)", "A linear colour; components may exceed 1.", b_rgb},
@@ -331,11 +335,11 @@ constexpr BuiltinInfo kBuiltins[] = {
 
 constexpr uint32_t kFunctionCount = static_cast<uint32_t>(std::size(kBuiltins));
 
-/// The MATH1 built-ins by name, for unaryMath().
-constexpr std::pair<std::string_view, UnaryMath> kUnaryMath[] = {
-    {"sin", m_sin}, {"cos", m_cos}, {"tan", m_tan}, {"exp", m_exp},
-    {"radians", m_radians}, {"degrees", m_degrees}, {"atan", m_atan},
-};
+/// The one-argument math built-ins by name, for unaryMath().
+#define MATH1_ENTRY(name, expr) {#name, m_##name},
+constexpr std::pair<std::string_view, UnaryMath> kUnaryMath[] = {CRT_MATH1_BUILTINS(MATH1_ENTRY)};
+#undef MATH1_ENTRY
+#undef CRT_MATH1_BUILTINS
 
 /// unaryMath() per built-in index, matched by name when compiled.
 constexpr std::array<UnaryMath, kFunctionCount> kUnaryMathByIndex = [] {

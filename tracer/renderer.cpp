@@ -120,7 +120,7 @@ public:
     }
 
     /// The first value of the first image row of tile row `tileRow`, for a tile being traced;
-    /// the rows below follow every width × 3 floats.
+    /// the rows below follow every rowValues() floats.
     float* firstRowOf(int tileRow) {
         if (keep_) return frame_.rgb.data() + static_cast<size_t>(tileRow) * kTileSize * rowValues_;
         std::lock_guard<std::mutex> lock(mutex_);
@@ -129,6 +129,8 @@ public:
         if (!buffer) buffer.reset(new float[rowValues_ * kTileSize]);
         return buffer.get();
     }
+
+    size_t rowValues() const { return rowValues_; }
 
     void tileDone(int tileRow) {
         if (!report_) return;
@@ -152,7 +154,7 @@ private:
     PixelBuffer& frame_;
     const bool keep_;
     const Report& report_;
-    const size_t rowValues_; ///< floats per image row
+    const size_t rowValues_; ///< floats per image row (width × 3)
     std::mutex mutex_;
     std::vector<int> tilesLeft_; ///< per tile row
     int nextRow_ = 0;            ///< the first tile row not reported
@@ -197,7 +199,6 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
     threadCount = std::min<unsigned>(threadCount, static_cast<unsigned>(tileCount));
     std::vector<RayStats> stats(threadCount);
     FrameRows rows(frame, settings.keepFrame, tilesX, tilesY, settings.onRowsDone);
-    const size_t rowValues = static_cast<size_t>(s.width) * 3;
 
     std::latch ready(1); // the threads are started and the frame is allocated
     auto worker = [&](unsigned index) {
@@ -212,7 +213,7 @@ RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings)
             int x0 = (tile % tilesX) * kTileSize, y0 = tileRow * kTileSize;
             float* tileStart = rows.firstRowOf(tileRow) + 3 * static_cast<size_t>(x0);
             for (int y = y0; y < std::min(y0 + kTileSize, s.height); ++y) {
-                float* out = tileStart + static_cast<size_t>(y - y0) * rowValues;
+                float* out = tileStart + static_cast<size_t>(y - y0) * rows.rowValues();
                 for (int x = x0; x < std::min(x0 + kTileSize, s.width); ++x, out += 3) {
                     Vec3 c = sampler.pixel(x, y, context);
                     out[0] = static_cast<float>(c.r);

@@ -423,7 +423,9 @@ bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& f
                       const WriteOptions& options, std::string& error) {
     std::string problem = animationProblem(path, frames.size(), fps);
     GifFrames codes;
-    for (std::size_t i = 0; i < frames.size() && problem.empty(); ++i) codes.add(frames[i], options, problem);
+    for (std::size_t i = 0; i < frames.size() && problem.empty(); ++i) {
+        if (!codes.add(frames[i], options, problem)) break;
+    }
     if (!problem.empty()) {
         error = "cannot write " + quotedName(path) + ": " + problem;
         return false;
