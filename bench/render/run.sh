@@ -18,9 +18,6 @@
 #               removed at exit)
 #   POVRAY      POV-Ray binary (default /usr/bin/povray)
 #   STRICT=1    exit with status 1 when a goal is not met
-#   NULL_MODULE the benchmark's raw-pixel image module (default: bench/crt_image_io_null.so
-#               in the build tree of CRTC); when it exists, each crtc run is repeated with
-#               it, to show the renders' time without OpenImageIO ("no OIIO" column)
 #
 # exit status: 0 done; 1 a run failed (or a goal was missed with STRICT=1);
 #              2 bad usage or missing tool; 3 crtc not found (POV-Ray side only).
@@ -56,7 +53,6 @@ done
 crtc=${crtc_arg:-${CRTC:-$root/build/lang/crtc}}
 povray=${POVRAY:-/usr/bin/povray}
 threads=${THREADS:-2}
-null_module=${NULL_MODULE:-$(dirname "$crtc")/../bench/crt_image_io_null.so}
 
 if ! [[ $runs =~ ^[1-9][0-9]*$ ]]; then
     echo "$0: --runs must be a positive integer, got '$runs'" >&2
@@ -149,23 +145,6 @@ run_crtc() {
     fi
 }
 
-# run_crtc_raw SCENE W H RUN -> sets raw_wall: the same render, written by the null module
-run_crtc_raw() {
-    local w=$1 W=$2 H=$3 r=$4 log t0 t1 rc
-    log=$logs/$w.${W}x$H.raw.$r
-    stamp t0
-    rc=0
-    CRT_IMAGE_IO_MODULE=$null_module "$crtc" "$here/$w.crt" -o "$out/$w.${W}x$H.raw.png" \
-        --width "$W" --height "$H" --threads "$threads" -q >"$log.out" 2>"$log.err" || rc=$?
-    stamp t1
-    raw_wall=$(elapsed "$t0" "$t1")
-    if [[ $rc -ne 0 ]]; then
-        echo "crtc with the null image module failed on $w.crt at ${W}x$H (exit $rc); log: $log.err$keep_hint" >&2
-        head -n 5 "$log.err" >&2
-        return 1
-    fi
-}
-
 # compare SCENE W H -> sets rmse (in 1/255), maxerr (in 1/255), over2 (% of pixels over 2/255)
 compare() {
     local w=$1 W=$2 H=$3 a b log
@@ -195,24 +174,17 @@ compare() {
 
 echo "POV-Ray: $povray ($(HOME=$povhome "$povray" --version 2>&1 | grep -m1 -o 'POV-Ray [0-9][0-9.a-z]*' || echo unknown version))" >&2
 [[ $have_crtc -eq 1 ]] && echo "crtc:    $crtc" >&2
-have_raw=0
-if [[ $have_crtc -eq 1 && -f $null_module ]]; then
-    have_raw=1
-    echo "null image module (the \"no OIIO\" column): $null_module" >&2
-elif [[ $have_crtc -eq 1 ]]; then
-    echo "note: no null image module at $null_module: the \"no OIIO\" column stays empty" >&2
-fi
 echo "runs per tool, scene and size: $runs (median reported), $threads threads" >&2
 stamp start_all
 
-declare -A P_WALL P_CPU P_PARSE P_TRACE P_SINGLE C_WALL C_CPU C_SINGLE R_WALL RMSE MAXERR OVER2 STATUS STATS
+declare -A P_WALL P_CPU P_PARSE P_TRACE P_SINGLE C_WALL C_CPU C_SINGLE RMSE MAXERR OVER2 STATUS STATS
 
 for w in "${scene_list[@]}"; do
     for s in "${size_list[@]}"; do
         W=${s%x*} H=${s#*x}
         k="$w $s"
         echo "running $w at $s ..." >&2
-        pwalls=() pcpus=() pparses=() ptraces=() cwalls=() ccpus=() rwalls=()
+        pwalls=() pcpus=() pparses=() ptraces=() cwalls=() ccpus=()
         status=ok
         crtc_ok=$have_crtc
         for ((r = 1; r <= runs; r++)); do
@@ -229,9 +201,6 @@ for w in "${scene_list[@]}"; do
                     status=crtc-error
                     crtc_ok=0
                 fi
-                if [[ $crtc_ok -eq 1 && $have_raw -eq 1 ]] && run_crtc_raw "$w" "$W" "$H" "$r"; then
-                    rwalls+=("$raw_wall")
-                fi
             fi
         done
         if [[ ${#pwalls[@]} -eq $runs ]]; then
@@ -245,7 +214,6 @@ for w in "${scene_list[@]}"; do
             C_WALL[$k]=$(median "${cwalls[@]}")
             C_CPU[$k]=$(median "${ccpus[@]}")
             C_SINGLE[$k]=${cwalls[*]}
-            [[ ${#rwalls[@]} -eq $runs ]] && R_WALL[$k]=$(median "${rwalls[@]}")
             # one more, untimed run with --stats (the counters cost a little)
             if run_crtc "$w" "$W" "$H" stats --stats; then
                 STATS[$k]=$(grep 'stats:' "$logs/$w.${W}x$H.crtc.stats.err" | sed 's/^crtc: stats: //' | paste -sd ';' | sed 's/;/; /g')
@@ -268,8 +236,8 @@ total=$(elapsed "$start_all" "$end_all")
 goal_missed=0
 
 echo
-echo "| scene | size | POV-Ray (s) | crtc (s) | ratio (POV/crtc) | RMSE (/255) | goal met? (ratio ≥ 3, RMSE ≤ 2) | crtc, no OIIO (s) |"
-echo "| --- | --- | ---: | ---: | ---: | ---: | --- | ---: |"
+echo "| scene | size | POV-Ray (s) | crtc (s) | ratio (POV/crtc) | RMSE (/255) | goal met? (ratio ≥ 3, RMSE ≤ 2) |"
+echo "| --- | --- | ---: | ---: | ---: | ---: | --- |"
 for w in "${scene_list[@]}"; do
     for s in "${size_list[@]}"; do
         k="$w $s"
@@ -293,15 +261,10 @@ for w in "${scene_list[@]}"; do
             fi
         fi
         [[ $met != yes ]] && goal_missed=1
-        echo "| $w | $s | ${pw:-error} | $cw_cell | $ratio | $e_cell | $met | ${R_WALL[$k]:-—} |"
+        echo "| $w | $s | ${pw:-error} | $cw_cell | $ratio | $e_cell | $met |"
     done
 done
 
-if [[ $have_raw -eq 1 ]]; then
-    echo
-    echo "\"crtc, no OIIO\": the same crtc runs with the benchmark's null image module, which stores"
-    echo "raw pixels and loads no OpenImageIO (median wall time; not an image format crtc offers)."
-fi
 echo
 echo "Details: median CPU time (user + system) of the whole process and its ratio, POV-Ray's own"
 echo "parse and trace times (medians), every single wall time in run order, and how the images differ:"

@@ -177,10 +177,13 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
             settings.threads = options.threads;
             settings.cancel = &stopRendering;
             if (!options.quiet) settings.onProgress = [&](int done, int all) { progress.update(done, all); };
-            // The image module (OpenImageIO, about 0.2 s to load) loads while the frame is
-            // traced; not earlier, since no thread can start while it loads.
-            settings.onThreadsStarted = [] { image_io::startLoading(); };
-            settings.beforeLastWorker = [] { image_io::finishLoading(); };
+            // An output that needs the image module (OpenImageIO, about 0.2 s to load; a PNG
+            // does not) has it loaded while the frame is traced; not earlier, since no thread
+            // can start while it loads.
+            if (image_io::writingNeedsModule(output)) {
+                settings.onThreadsStarted = [] { image_io::startLoading(); };
+                settings.beforeLastWorker = [] { image_io::finishLoading(); };
+            }
             std::optional<StreamedOutput> streamed;
             if (!gif) {
                 streamed.emplace(target, width, height, write, stopRendering);

@@ -1,8 +1,10 @@
-// Image input and output: checks, quantisation and temporary files here, pixels through the module.
+// Image input and output: checks, quantisation and temporary files here, pixels through the
+// module (or, for PNG, the built-in writer).
 #include "tracer/image_io/image_io.hpp"
 
 #include "tracer/image_io/encoding.hpp"
 #include "tracer/image_io/module_loader.hpp"
+#include "tracer/image_io/png_writer.hpp"
 
 #include <unistd.h>
 
@@ -25,13 +27,14 @@ struct OutputFormat {
     const char* oiioName;
     bool eightBit;
     bool needsRgb; ///< the format stores no single-channel images
+    bool builtin;  ///< written by builtinPngWriter, without the module
 };
 
 constexpr OutputFormat kOutputFormats[] = {
-    {".png", "png", true, false},   {".jpg", "jpeg", true, false},
-    {".jpeg", "jpeg", true, false}, {".tif", "tiff", true, false},
-    {".tiff", "tiff", true, false}, {".exr", "openexr", false, false},
-    {".hdr", "hdr", false, true},   {".gif", "gif", true, true},
+    {".png", "png", true, false, true},     {".jpg", "jpeg", true, false, false},
+    {".jpeg", "jpeg", true, false, false},  {".tif", "tiff", true, false, false},
+    {".tiff", "tiff", true, false, false},  {".exr", "openexr", false, false, false},
+    {".hdr", "hdr", false, true, false},    {".gif", "gif", true, true, false},
 };
 
 std::string lowerExtension(const std::string& path) {
@@ -230,6 +233,11 @@ bool isSupportedOutput(const std::string& path) {
     return outputFormatOf(path) != nullptr;
 }
 
+bool writingNeedsModule(const std::string& path) {
+    const OutputFormat* format = outputFormatOf(path);
+    return format && !format->builtin;
+}
+
 std::optional<ImageBuffer> readImage(const std::string& path, std::string& error, bool* eightBit) {
     std::error_code ec;
     if (!fs::exists(path, ec)) {
@@ -265,7 +273,8 @@ std::unique_ptr<ImageStream> ImageStream::open(const std::string& path, int widt
         return nullptr;
     }
     if (!checkTarget(path, error)) return nullptr;
-    const CrtImageIoModule* module = moduleFor("cannot write " + quotedName(path), error);
+    const CrtImageIoModule* module =
+        format->builtin ? &builtinPngWriter() : moduleFor("cannot write " + quotedName(path), error);
     if (!module) return nullptr;
 
     std::unique_ptr<ImageStream> stream(new ImageStream());

@@ -4,7 +4,8 @@
 // 0.4 s and 130 MB to load on Debian) lives in crt_image_io_oiio.so, which is dlopen'ed by
 // the first call, or earlier on a background thread by startLoading(). The module is looked
 // for next to the running executable, then in <exe dir>/../lib/crt/; the environment
-// variable CRT_IMAGE_IO_MODULE names it explicitly. All functions are thread-safe.
+// variable CRT_IMAGE_IO_MODULE names it explicitly. PNG, the default output, is written
+// without it (png_writer.hpp). All functions are thread-safe.
 #pragma once
 
 #include <cstddef>
@@ -140,6 +141,9 @@ bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& f
 
 /// Whether the extension names a format writeImage supports.
 bool isSupportedOutput(const std::string& path);
+
+/// Whether writing `path` loads the module: true for a supported format other than PNG.
+bool writingNeedsModule(const std::string& path);
 
 /// What a file's header says, as OpenImageIO reads it.
 struct ImageInfo {
