@@ -21,6 +21,11 @@ namespace crt::driver {
 
 namespace {
 
+constexpr uintptr_t kHugePage = uintptr_t{2} << 20;
+
+/// Whether useHugePageHeap set the heap up.
+bool heapAdvised = false;
+
 /// mallopt(3)'s defaults for what useHugePageHeap changes.
 [[maybe_unused]] void restoreAllocatorDefaults() { // unused in sanitizer builds
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
@@ -36,7 +41,6 @@ bool useHugePageHeap() {
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
     return false;
 #else
-    constexpr uintptr_t kHugePage = uintptr_t{2} << 20;
     constexpr size_t kPad = size_t{1} << 30;
     if (mallopt(M_ARENA_MAX, 1) == 0 || mallopt(M_MMAP_MAX, 0) == 0 ||
         mallopt(M_TRIM_THRESHOLD, INT32_MAX) == 0 || mallopt(M_TOP_PAD, static_cast<int>(kPad)) == 0) {
@@ -56,6 +60,7 @@ bool useHugePageHeap() {
     if (begin < heapStart) begin += kHugePage;
     uintptr_t end = after & ~(kHugePage - 1);
     if (end > begin && madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE) == 0) {
+        heapAdvised = true;
         return true;
     }
     // No such region (the break could not move by the pad, as under strict overcommit) or no
@@ -63,6 +68,32 @@ bool useHugePageHeap() {
     restoreAllocatorDefaults();
     return false;
 #endif
+}
+
+HeapPrefault::HeapPrefault(size_t bytes) {
+#if !defined(MADV_POPULATE_WRITE)
+    (void)bytes;
+#else
+    if (!heapAdvised || bytes == 0) return;
+    // The free top of the heap: the allocator carves new blocks from its bottom.
+    const auto heapEnd = reinterpret_cast<uintptr_t>(sbrk(0));
+    const uintptr_t top = heapEnd - mallinfo2().keepcost;
+    const uintptr_t begin = (top + kHugePage - 1) & ~(kHugePage - 1);
+    const uintptr_t end = std::min<uintptr_t>(heapEnd & ~(kHugePage - 1), begin + bytes);
+    if (end <= begin) return;
+    thread_ = std::thread([this, begin, end] {
+        // Populating only simulates write faults: what the allocator has already put there
+        // is left as it is. An error (an older kernel) just ends the thread.
+        for (uintptr_t at = begin; at < end && !stop_.load(std::memory_order_relaxed); at += kHugePage) {
+            if (madvise(reinterpret_cast<void*>(at), kHugePage, MADV_POPULATE_WRITE) != 0) break;
+        }
+    });
+#endif
+}
+
+HeapPrefault::~HeapPrefault() {
+    stop_ = true;
+    if (thread_.joinable()) thread_.join();
 }
 
 } // namespace crt::driver
