@@ -137,7 +137,7 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
 
     image_io::GifFrames gifFrames; // as 8-bit codes: a long animation fits in memory
     std::string previousKey;
-    image_io::ImageBuffer previous; // for numbered frames, written again when unchanged
+    std::string previousTarget; // for numbered frames: an unchanged frame copies its file
     tracer::RenderOutcome total;
     uint64_t cachedFrames = 0;
     image_io::WriteOptions write;
@@ -164,12 +164,16 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
 
         image_io::ImageBuffer image;
         const std::string target = numbered ? numberedOutput(output, frame) : output;
-        bool written = false; // streamed to `target` while rendering
         std::string key = frames > 1 ? sceneKey(scene) : std::string();
         const bool unchanged = frame > 0 && key == previousKey;
         if (unchanged) {
-            // Nothing the renderer sees changed since the previous frame: reuse its image.
-            if (!gif) image = previous;
+            // Nothing the renderer sees changed since the previous frame: reuse its image
+            // (a GIF repeats its codes below; a numbered image is the previous file again).
+            std::string error;
+            if (numbered && !image_io::copyImage(previousTarget, target, error)) {
+                std::cerr << "crtc: " << error << "\n";
+                return 2;
+            }
             ++cachedFrames;
         } else {
             ProgressReporter progress(options.quiet, frames > 1 ? fmt::format("frame {}/{} ", frame + 1, frames) : "");
@@ -190,8 +194,8 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
                 settings.onRowsDone = [&](int yBegin, int yEnd, std::span<const float> rgb) {
                     streamed->addRows(yBegin, yEnd, rgb);
                 };
-                // Only animations read a frame back (to reuse it when the next is the same).
-                settings.keepFrame = frames > 1;
+                // Streamed images are not read back: an unchanged next frame copies the file.
+                settings.keepFrame = false;
             }
             tracer::RenderOutcome r = tracer::renderScene(scene, settings);
             progress.finish();
@@ -210,7 +214,6 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
                 std::cerr << "crtc: " << error << "\n";
                 return 2;
             }
-            written = streamed.has_value();
             samples = r.samples;
             total.stats += r.stats;
             total.buildSeconds += r.buildSeconds;
@@ -218,22 +221,17 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
             total.primitives = r.primitives;
             total.bvhNodes = r.bvhNodes;
             total.bvhDepth = r.bvhDepth;
-            image = toBuffer(std::move(r.frame));
+            if (gif) image = toBuffer(std::move(r.frame)); // other images were streamed
         }
         previousKey = std::move(key);
+        previousTarget = target;
         std::string error;
-        if (gif) {
-            if (unchanged) {
-                gifFrames.repeatLast();
-            } else if (!gifFrames.add(image, write, error)) {
-                std::cerr << fmt::format("crtc: cannot write '{}': {}\n", output, error);
-                return 2;
-            }
-        } else if (!written && !image_io::writeImage(target, image, write, error)) {
-            std::cerr << "crtc: " << error << "\n";
+        if (gif && unchanged) {
+            gifFrames.repeatLast();
+        } else if (gif && !gifFrames.add(image, write, error)) {
+            std::cerr << fmt::format("crtc: cannot write '{}': {}\n", output, error);
             return 2;
         }
-        if (frames > 1 && !gif) previous = std::move(image);
     }
     if (gif) {
         std::string error;

@@ -151,6 +151,22 @@ Scene { Sphere { center -> vec3(0.1 * t, 0, 1) radius -> 0.5 } }
 CRT
 expect_status 0 "--frames 3 of a moving scene" "$crtc" --stats --frames 3 -o "$work/images/moving.gif" "$work/scenes/moving.crt"
 expect_text "$work/err" "frames reused unchanged 0" "changing frames are all rendered"
+# In a numbered sequence an unchanged frame is the previous file again; a changed one is not.
+expect_status 0 "--frames 3 -o still_%d.png" "$crtc" --stats --frames 3 -o "$work/images/still_%d.png" "$work/scenes/tiny.crt"
+expect_text "$work/err" "frames reused unchanged 2" "unchanged numbered frames are reused"
+if ! cmp -s "$work/images/still_0.png" "$work/images/still_2.png"; then
+    echo "FAIL: an unchanged numbered frame differs from the first"
+    failures=$((failures + 1))
+fi
+expect_status 0 "--frames 2 -o moving_%d.png" "$crtc" -q --frames 2 -o "$work/images/moving_%d.png" "$work/scenes/moving.crt"
+if cmp -s "$work/images/moving_0.png" "$work/images/moving_1.png"; then
+    echo "FAIL: two frames of a moving scene are the same file"
+    failures=$((failures + 1))
+fi
+if ls -a "$work/images" | grep -q '\.tmp$'; then
+    echo "FAIL: a temporary file was left among the images"
+    failures=$((failures + 1))
+fi
 
 # A bad OBJ file is an error naming the file and line.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n' >"$work/scenes/broken.obj"

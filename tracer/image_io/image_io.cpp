@@ -364,6 +364,15 @@ bool writeImage(const std::string& path, const ImageBuffer& image, const WriteOp
            stream->finish(error);
 }
 
+bool copyImage(const std::string& from, const std::string& to, std::string& error) {
+    return writeThroughTemporary(to, error, [&](const std::string& temporary, std::string& why) {
+        std::error_code ec;
+        fs::copy_file(from, temporary, fs::copy_options::overwrite_existing, ec);
+        if (ec) why = "cannot copy " + quotedName(from) + ": " + ec.message();
+        return !ec;
+    });
+}
+
 bool GifFrames::add(const ImageBuffer& frame, const WriteOptions& options, std::string& problem) {
     const std::string which = "frame " + std::to_string(frames_.size());
     if (!checkOptions(options, problem) || !checkBuffer(frame, problem)) {

@@ -139,6 +139,10 @@ bool writeAnimatedGif(const std::string& path, const GifFrames& frames, double f
 bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& frames, double fps,
                       const WriteOptions& options, std::string& error);
 
+/// Copies the image file `from` to `to` (an unchanged frame of a numbered sequence), through
+/// a temporary file renamed into place like every write; false with a message on failure.
+bool copyImage(const std::string& from, const std::string& to, std::string& error);
+
 /// Whether the extension names a format writeImage supports.
 bool isSupportedOutput(const std::string& path);
 
