@@ -84,8 +84,10 @@ HeapPrefault::HeapPrefault(size_t bytes) {
     thread_ = std::thread([this, begin, end] {
         // Populating only simulates write faults: what the allocator has already put there
         // is left as it is. An error (an older kernel) just ends the thread.
-        for (uintptr_t at = begin; at < end && !stop_.load(std::memory_order_relaxed); at += kHugePage) {
-            if (madvise(reinterpret_cast<void*>(at), kHugePage, MADV_POPULATE_WRITE) != 0) break;
+        for (uintptr_t at = begin; at < end; at += kHugePage) {
+            if (stop_.load(std::memory_order_relaxed) ||
+                madvise(reinterpret_cast<void*>(at), kHugePage, MADV_POPULATE_WRITE) != 0)
+                break;
         }
     });
 #endif

@@ -12,10 +12,10 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <unistd.h>
 
@@ -110,7 +110,8 @@ int run(int argc, char** argv) {
     std::error_code sizeError;
     const std::uintmax_t scriptSize = fs::file_size(options.script, sizeError);
     std::optional<crt::driver::HeapPrefault> prefault;
-    if (!sizeError && scriptSize >= kPrefaultFrom) prefault.emplace(std::min<std::uintmax_t>(scriptSize * 8, kPrefaultAtMost));
+    if (!sizeError && scriptSize >= kPrefaultFrom)
+        prefault.emplace(std::min<std::uintmax_t>(scriptSize * 8, kPrefaultAtMost));
 
     std::optional<std::string> text = readFile(options.script);
     if (!text) {

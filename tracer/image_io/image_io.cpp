@@ -273,8 +273,9 @@ std::unique_ptr<ImageStream> ImageStream::open(const std::string& path, int widt
         return nullptr;
     }
     if (!checkTarget(path, error)) return nullptr;
-    const CrtImageIoModule* module =
-        format->builtin ? &builtinPngWriter() : moduleFor("cannot write " + quotedName(path), error);
+    const CrtImageIoModule* module = format->builtin
+                                         ? &builtinPngWriter()
+                                         : moduleFor("cannot write " + quotedName(path), error);
     if (!module) return nullptr;
 
     std::unique_ptr<ImageStream> stream(new ImageStream());

@@ -49,7 +49,8 @@ std::string systemError(const char* what) {
 }
 
 // A chunk is its length, its type, its data and the CRC of type and data.
-bool writeChunk(std::FILE* file, const char (&type)[5], const unsigned char* data, std::size_t size) {
+bool writeChunk(std::FILE* file, const char (&type)[5], const unsigned char* data,
+                std::size_t size) {
     unsigned char head[8];
     putBigEndian32(head, static_cast<unsigned>(size));
     std::memcpy(head + 4, type, 4);
@@ -57,7 +58,8 @@ bool writeChunk(std::FILE* file, const char (&type)[5], const unsigned char* dat
     if (size > 0) crc = crc32(crc, data, static_cast<uInt>(size));
     unsigned char tail[4];
     putBigEndian32(tail, static_cast<unsigned>(crc));
-    return std::fwrite(head, 1, 8, file) == 8 && (size == 0 || std::fwrite(data, 1, size, file) == size) &&
+    return std::fwrite(head, 1, 8, file) == 8 &&
+           (size == 0 || std::fwrite(data, 1, size, file) == size) &&
            std::fwrite(tail, 1, 4, file) == 4;
 }
 
@@ -65,9 +67,9 @@ bool writeHeader(PngFile& png, bool srgb) {
     unsigned char header[13];
     putBigEndian32(header, static_cast<unsigned>(png.width));
     putBigEndian32(header + 4, static_cast<unsigned>(png.height));
-    header[8] = 8; // bits per sample
+    header[8] = 8;                                                 // bits per sample
     header[9] = png.channels == 1 ? 0 : png.channels == 3 ? 2 : 6; // grey, RGB, RGBA
-    header[10] = 0; // deflate
+    header[10] = 0;                                                // deflate
     header[11] = 0; // adaptive filtering, one filter byte a row
     header[12] = 0; // not interlaced
     if (std::fwrite(kSignature, 1, sizeof kSignature, png.file) != sizeof kSignature ||
@@ -104,9 +106,10 @@ bool deflateInto(PngFile& png, int flush, std::string& problem) {
     }
 }
 
-void* openPng(const char* path, const char* format, int width, int height, int channels, int isFloat,
-              int srgb, int compression, CrtImageErrorFn error, void* context) {
-    if (std::strcmp(format, "png") != 0 || isFloat || (channels != 1 && channels != 3 && channels != 4)) {
+void* openPng(const char* path, const char* format, int width, int height, int channels,
+              int isFloat, int srgb, int compression, CrtImageErrorFn error, void* context) {
+    if (std::strcmp(format, "png") != 0 || isFloat ||
+        (channels != 1 && channels != 3 && channels != 4)) {
         error(context, "the built-in PNG writer stores 8-bit grey, RGB or RGBA images only");
         return nullptr;
     }

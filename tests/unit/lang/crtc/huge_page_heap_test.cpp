@@ -91,7 +91,8 @@ TEST_CASE("HeapPrefault faults in the free top of the heap on its own thread", "
     auto block = std::make_unique<unsigned char[]>(kAhead / 2);
     for (size_t i = 0; i < kAhead / 2; i += 4096) block[i] = static_cast<unsigned char>(i >> 12);
     bool intact = true;
-    for (size_t i = 0; i < kAhead / 2; i += 4096) intact = intact && block[i] == static_cast<unsigned char>(i >> 12);
+    for (size_t i = 0; i < kAhead / 2; i += 4096)
+        intact = intact && block[i] == static_cast<unsigned char>(i >> 12);
     CHECK(intact);
 #endif
 }

@@ -32,7 +32,8 @@ struct DecodedPng {
 };
 
 std::uint32_t bigEndian32(const std::uint8_t* at) {
-    return std::uint32_t(at[0]) << 24 | std::uint32_t(at[1]) << 16 | std::uint32_t(at[2]) << 8 | at[3];
+    return std::uint32_t(at[0]) << 24 | std::uint32_t(at[1]) << 16 | std::uint32_t(at[2]) << 8 |
+           at[3];
 }
 
 // The CRC-32 of ISO 3309 computed bit by bit, independent of zlib's table-driven one.
@@ -48,7 +49,8 @@ std::uint32_t referenceCrc(const std::uint8_t* data, std::size_t size) {
 // Decodes what the writer produces (8 bits, no interlace; filters None and Sub only).
 DecodedPng decode(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
-    const std::vector<std::uint8_t> file{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::vector<std::uint8_t> file{std::istreambuf_iterator<char>(in),
+                                         std::istreambuf_iterator<char>()};
     const std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     REQUIRE(file.size() >= 8);
     REQUIRE(std::equal(signature, signature + 8, file.begin()));
@@ -59,10 +61,12 @@ DecodedPng decode(const std::string& path) {
         const std::uint32_t size = bigEndian32(&file[at]);
         REQUIRE(at + 12 + size <= file.size());
         Chunk chunk{std::string(file.begin() + long(at) + 4, file.begin() + long(at) + 8),
-                    std::vector<std::uint8_t>(file.begin() + long(at) + 8, file.begin() + long(at) + 8 + size)};
+                    std::vector<std::uint8_t>(file.begin() + long(at) + 8,
+                                              file.begin() + long(at) + 8 + size)};
         INFO("chunk " << chunk.type);
         CHECK(bigEndian32(&file[at + 8 + size]) == referenceCrc(&file[at + 4], 4 + size));
-        if (chunk.type == "IDAT") deflated.insert(deflated.end(), chunk.data.begin(), chunk.data.end());
+        if (chunk.type == "IDAT")
+            deflated.insert(deflated.end(), chunk.data.begin(), chunk.data.end());
         png.chunks.push_back(std::move(chunk));
         at += 12 + size;
     }
@@ -88,7 +92,8 @@ DecodedPng decode(const std::string& path) {
         REQUIRE(row[0] <= 1); // None or Sub
         const std::size_t start = png.codes.size();
         for (std::size_t i = 0; i < rowBytes; ++i) {
-            const std::uint8_t left = row[0] == 1 && i >= channels ? png.codes[start + i - channels] : 0;
+            const std::uint8_t left =
+                row[0] == 1 && i >= channels ? png.codes[start + i - channels] : 0;
             png.codes.push_back(std::uint8_t(row[1 + i] + left));
         }
     }
@@ -98,7 +103,8 @@ DecodedPng decode(const std::string& path) {
 std::vector<std::string> chunkTypes(const DecodedPng& png) {
     std::vector<std::string> types;
     for (const Chunk& chunk : png.chunks)
-        if (types.empty() || chunk.type != types.back() || chunk.type != "IDAT") types.push_back(chunk.type);
+        if (types.empty() || chunk.type != types.back() || chunk.type != "IDAT")
+            types.push_back(chunk.type);
     return types;
 }
 
@@ -160,7 +166,8 @@ TEST_CASE("the built-in PNG writer stores grey, RGB and RGBA codes exactly", "[i
     }
 }
 
-TEST_CASE("an sRGB PNG says so, and alpha is stored without the transfer function", "[image_io][png]") {
+TEST_CASE("an sRGB PNG says so, and alpha is stored without the transfer function",
+          "[image_io][png]") {
     const ScratchPath file("srgb.png");
     const ImageBuffer image{2, 1, 4, {0.5f, 0.25f, 0.0f, 0.5f, 1.0f, 0.1f, 0.9f, 0.25f}};
     WriteOptions options;
@@ -169,11 +176,12 @@ TEST_CASE("an sRGB PNG says so, and alpha is stored without the transfer functio
     REQUIRE(writeImage(file.path.string(), image, options, error));
     const DecodedPng png = decode(file.path.string());
     CHECK(chunkTypes(png) == std::vector<std::string>{"IHDR", "sRGB", "gAMA", "IDAT", "IEND"});
-    CHECK(png.codes == std::vector<std::uint8_t>{encodeSrgb8(0.5f), encodeSrgb8(0.25f), 0, 128,
-                                                 255, encodeSrgb8(0.1f), encodeSrgb8(0.9f), 64});
+    CHECK(png.codes == std::vector<std::uint8_t>{encodeSrgb8(0.5f), encodeSrgb8(0.25f), 0, 128, 255,
+                                                 encodeSrgb8(0.1f), encodeSrgb8(0.9f), 64});
 }
 
-TEST_CASE("a large PNG streamed in bands spans many data chunks and decodes exactly", "[image_io][png]") {
+TEST_CASE("a large PNG streamed in bands spans many data chunks and decodes exactly",
+          "[image_io][png]") {
     const ImageBuffer image = pattern(301, 211, 3); // about 190 kB of codes
     for (int level : {0, 2, 9}) {
         INFO("level " << level);
@@ -181,13 +189,15 @@ TEST_CASE("a large PNG streamed in bands spans many data chunks and decodes exac
         WriteOptions options;
         options.pngCompression = level;
         std::string error;
-        auto stream = ImageStream::open(file.path.string(), image.width, image.height, 3, options, error);
+        auto stream =
+            ImageStream::open(file.path.string(), image.width, image.height, 3, options, error);
         REQUIRE(stream);
         const std::size_t rowValues = std::size_t(image.width) * 3;
         for (int y = 0; y < image.height; y += 16) {
             const int end = std::min(y + 16, image.height);
             REQUIRE(stream->writeRows(
-                y, end, std::span<const float>(image.pixels.data() + y * rowValues, (end - y) * rowValues),
+                y, end,
+                std::span<const float>(image.pixels.data() + y * rowValues, (end - y) * rowValues),
                 error));
         }
         REQUIRE(stream->finish(error));
