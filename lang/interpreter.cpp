@@ -216,6 +216,12 @@ size_t capacityFor(const std::vector<T>& items, size_t before, uint64_t remainin
 
 } // namespace
 
+template <typename T> void Interpreter::announceRoom(std::vector<T>& items) const {
+    if (options_.readyMemory && items.capacity() > items.size())
+        options_.readyMemory(items.data() + items.size(),
+                             (items.capacity() - items.size()) * sizeof(T));
+}
+
 void Interpreter::reserveForIterations(const SceneCounts& before, uint64_t remaining) {
     // A loop that adds only in its first iteration, or stops with an error, leaves address
     // space unused, not memory.
@@ -224,9 +230,12 @@ void Interpreter::reserveForIterations(const SceneCounts& before, uint64_t remai
         if (size_t n = capacityFor(scene_.entities, before.entities, remaining, limit); n > scene_.entities.capacity()) {
             scene_.entities.reserve(n);
             entityInfo_.reserve(n);
+            announceRoom(scene_.entities);
+            announceRoom(entityInfo_);
         }
         if (size_t n = capacityFor(scene_.materials, before.materials, remaining, limit); n > scene_.materials.capacity()) {
             scene_.materials.reserve(n);
+            announceRoom(scene_.materials);
         }
     } catch (const std::bad_alloc&) {
         // Only a saving: without the room the vectors grow as they go.

@@ -42,6 +42,10 @@ struct EvalOptions {
     /// Polled every few thousand steps; returning true stops evaluation with an error. The
     /// language server uses it for its time budget and to drop analyses of stale text.
     std::function<bool()> interrupt;
+    /// Told of the room a loop has just reserved for the entities and materials of its
+    /// remaining iterations, before they fill it, so that a driver can fault that memory in
+    /// on another core meanwhile (crtc does). May be empty.
+    std::function<void(void* begin, size_t bytes)> readyMemory;
     /// Keep a short text form of every global's final value (Compilation::globalValues),
     /// for the language server's hover.
     bool keepGlobalValues = false;

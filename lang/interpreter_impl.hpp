@@ -151,6 +151,8 @@ private:
     /// scene's vectors, so that they are not regrown (copied, and so faulted in again) during
     /// the loop. Capacity never written costs no memory.
     void reserveForIterations(const SceneCounts& before, uint64_t remaining);
+    /// Passes a vector's reserved room to EvalOptions::readyMemory.
+    template <typename T> void announceRoom(std::vector<T>& items) const;
     /// Counts a loop iteration or macro call against the step limit; inline, since loops
     /// pay it every iteration, and the checks themselves only every so often.
     void step(SourceRange where) {

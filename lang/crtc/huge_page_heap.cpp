@@ -21,8 +21,6 @@ namespace crt::driver {
 
 namespace {
 
-constexpr uintptr_t kHugePage = uintptr_t{2} << 20;
-
 /// Whether useHugePageHeap set the heap up.
 bool heapAdvised = false;
 
@@ -41,6 +39,7 @@ bool useHugePageHeap() {
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
     return false;
 #else
+    constexpr uintptr_t kHugePage = uintptr_t{2} << 20;
     constexpr size_t kPad = size_t{1} << 30;
     if (mallopt(M_ARENA_MAX, 1) == 0 || mallopt(M_MMAP_MAX, 0) == 0 ||
         mallopt(M_TRIM_THRESHOLD, INT32_MAX) == 0 || mallopt(M_TOP_PAD, static_cast<int>(kPad)) == 0) {
@@ -70,32 +69,8 @@ bool useHugePageHeap() {
 #endif
 }
 
-HeapPrefault::HeapPrefault(size_t bytes) {
-#if !defined(MADV_POPULATE_WRITE)
-    (void)bytes;
-#else
-    if (!heapAdvised || bytes == 0) return;
-    // The free top of the heap: the allocator carves new blocks from its bottom.
-    const auto heapEnd = reinterpret_cast<uintptr_t>(sbrk(0));
-    const uintptr_t top = heapEnd - mallinfo2().keepcost;
-    const uintptr_t begin = (top + kHugePage - 1) & ~(kHugePage - 1);
-    const uintptr_t end = std::min<uintptr_t>(heapEnd & ~(kHugePage - 1), begin + bytes);
-    if (end <= begin) return;
-    thread_ = std::thread([this, begin, end] {
-        // Populating only simulates write faults: what the allocator has already put there
-        // is left as it is. An error (an older kernel) just ends the thread.
-        for (uintptr_t at = begin; at < end; at += kHugePage) {
-            if (stop_.load(std::memory_order_relaxed) ||
-                madvise(reinterpret_cast<void*>(at), kHugePage, MADV_POPULATE_WRITE) != 0)
-                break;
-        }
-    });
-#endif
-}
-
-HeapPrefault::~HeapPrefault() {
-    stop_ = true;
-    if (thread_.joinable()) thread_.join();
+bool hugePageHeapInUse() {
+    return heapAdvised;
 }
 
 } // namespace crt::driver

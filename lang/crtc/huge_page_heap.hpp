@@ -2,10 +2,6 @@
 // pages instead of 4 KB ones.
 #pragma once
 
-#include <atomic>
-#include <cstddef>
-#include <thread>
-
 namespace crt::driver {
 
 /// Sets up the C library's allocator so that every allocation of the process comes from
@@ -15,21 +11,7 @@ namespace crt::driver {
 /// allocation works as before.
 bool useHugePageHeap();
 
-/// Faults in, on a thread of its own, up to `bytes` of the heap above what is in use, in
-/// steps of one huge page, so that the memory a large script is about to fill is ready when
-/// the front end reaches it (a first touch costs about 1 ms per MB on the machines crtc is
-/// measured on, half the time of checking a 12 MB script). Does nothing unless
-/// useHugePageHeap succeeded. The destructor stops the thread and waits for it.
-class HeapPrefault {
-public:
-    explicit HeapPrefault(size_t bytes);
-    ~HeapPrefault();
-    HeapPrefault(const HeapPrefault&) = delete;
-    HeapPrefault& operator=(const HeapPrefault&) = delete;
-
-private:
-    std::atomic<bool> stop_{false};
-    std::thread thread_;
-};
+/// Whether useHugePageHeap set the heap up (the Prefaulter works only then).
+bool hugePageHeapInUse();
 
 } // namespace crt::driver

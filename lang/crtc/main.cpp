@@ -6,6 +6,7 @@
 #include "interpreter.hpp"
 #include "large_stack.hpp"
 #include "options.hpp"
+#include "prefaulter.hpp"
 #include "render_command.hpp"
 #include "scene_json.hpp"
 #include "tracer/image_io/image_io.hpp"
@@ -24,7 +25,7 @@ using namespace crt::lang;
 
 namespace {
 
-// Scripts from this size on get their memory faulted in ahead (driver::HeapPrefault), up to
+// Scripts from this size on get the heap's free top faulted in ahead (driver::Prefaulter), up to
 // eight times their size (a script of literal spheres fills about nine), at most this much.
 constexpr std::uintmax_t kPrefaultFrom = std::uintmax_t{1} << 20;
 constexpr std::uintmax_t kPrefaultAtMost = std::uintmax_t{512} << 20;
@@ -105,13 +106,16 @@ int run(int argc, char** argv) {
     driver::Options& options = *parsed.options;
     options.eval.stdlibDir = findStdlib(argv[0]);
 
-    // A large script builds a syntax tree and a scene several times its size: the second
-    // core readies that memory while the first reads and checks the script.
+    // A second core readies memory the front end is about to fill: for a large script, the
+    // heap where its syntax tree will go; in a loop, the room reserved for its objects.
+    crt::driver::Prefaulter prefaulter;
     std::error_code sizeError;
     const std::uintmax_t scriptSize = fs::file_size(options.script, sizeError);
-    std::optional<crt::driver::HeapPrefault> prefault;
     if (!sizeError && scriptSize >= kPrefaultFrom)
-        prefault.emplace(std::min<std::uintmax_t>(scriptSize * 8, kPrefaultAtMost));
+        prefaulter.addHeapTop(std::min<std::uintmax_t>(scriptSize * 8, kPrefaultAtMost));
+    options.eval.readyMemory = [&prefaulter](void* begin, size_t bytes) {
+        prefaulter.add(begin, bytes);
+    };
 
     std::optional<std::string> text = readFile(options.script);
     if (!text) {
