@@ -72,6 +72,8 @@ TEST_CASE("crtc's heap is advised for huge pages, for the front end's thread too
 
 namespace {
 
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__) // else unused
+
 // The share of the pages of [begin, begin + bytes) that are in memory.
 double residentShare(const void* begin, size_t bytes) {
     const auto page = static_cast<uintptr_t>(sysconf(_SC_PAGESIZE));
@@ -91,6 +93,8 @@ bool becomesResident(const void* begin, size_t bytes) {
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     return residentShare(begin, bytes) == 1.0;
 }
+
+#endif
 
 } // namespace
 
