@@ -51,23 +51,23 @@ std::string Interpreter::str(const Value& value) const {
     default: break;
     }
     // Objects: their type and where they were made.
-    tracer::SourceSpan where;
+    scene::SourceSpan where;
     std::string type = typeName(value);
     switch (value.kind) {
     case ValueKind::Entity: {
         where = scene_.entities[value.index].source;
         if (value.objectType == ObjectType::Count) {
             // A moved CSG result or group is named after what was moved.
-            const tracer::Shape* moved = &scene_.entities[value.index].shape;
-            while (auto* transform = std::get_if<tracer::TransformNode>(moved)) {
+            const scene::Shape* moved = &scene_.entities[value.index].shape;
+            while (auto* transform = std::get_if<scene::TransformNode>(moved)) {
                 moved = &scene_.entities[static_cast<size_t>(transform->child)].shape;
             }
-            const tracer::Shape& shape = *moved;
-            if (auto* csg = std::get_if<tracer::CsgNode>(&shape)) {
-                type = csg->op == tracer::CsgOp::Union        ? "Union"
-                       : csg->op == tracer::CsgOp::Difference ? "Difference"
+            const scene::Shape& shape = *moved;
+            if (auto* csg = std::get_if<scene::CsgNode>(&shape)) {
+                type = csg->op == scene::CsgOp::Union        ? "Union"
+                       : csg->op == scene::CsgOp::Difference ? "Difference"
                                                               : "Intersection";
-            } else if (std::holds_alternative<tracer::GroupNode>(shape)) {
+            } else if (std::holds_alternative<scene::GroupNode>(shape)) {
                 type = "Group";
             }
         }

@@ -175,18 +175,12 @@ std::optional<RangeSequence> Interpreter::rangeSequence(const Expr* iterable) {
 }
 
 void Interpreter::execFor(const ForStmt* node) {
-    uint64_t iterations = 0; // if known in advance
-    SceneCounts before = sceneCounts();
-    bool first = true;
     auto runBody = [&](const Value& item) {
         step(node->iterable->range);
         store(node->resolution, item);
         execStatements(node->body->statements);
-        if (first && iterations > 1) reserveForIterations(before, iterations - 1);
-        first = false;
     };
     if (std::optional<RangeSequence> numbers = rangeSequence(node->iterable)) {
-        iterations = numbers->sizeHint();
         for (Value item; numbers->next(item);) runBody(item);
         return;
     }
@@ -195,51 +189,8 @@ void Interpreter::execFor(const ForStmt* node) {
         fail(node->iterable->range,
              fmt::format("'for' needs a list or a range, not {}", typeName(iterable)));
     }
-    iterations = iterable.list->size();
     // The list is immutable, so iterating it while the body runs is safe.
     for (const Value& item : *iterable.list) runBody(item);
-}
-
-namespace {
-
-/// The capacity `items` needs for `remaining` more iterations that each add what the first
-/// added (0 if it added nothing): at most the entity limit, and at most 1 GB, so that a guess
-/// made under a raised limit never asks for more address space than a scene could use.
-template <typename T>
-size_t capacityFor(const std::vector<T>& items, size_t before, uint64_t remaining, uint64_t limit) {
-    constexpr uint64_t kMaxBytes = uint64_t{1} << 30;
-    uint64_t added = items.size() - before;
-    if (added == 0) return 0;
-    uint64_t cap = std::min<uint64_t>(limit, kMaxBytes / sizeof(T));
-    return static_cast<size_t>(std::min(cap, items.size() + std::min(cap, added * std::min(cap, remaining))));
-}
-
-} // namespace
-
-template <typename T> void Interpreter::announceRoom(std::vector<T>& items) const {
-    if (options_.readyMemory && items.capacity() > items.size())
-        options_.readyMemory(items.data() + items.size(),
-                             (items.capacity() - items.size()) * sizeof(T));
-}
-
-void Interpreter::reserveForIterations(const SceneCounts& before, uint64_t remaining) {
-    // A loop that adds only in its first iteration, or stops with an error, leaves address
-    // space unused, not memory.
-    uint64_t limit = options_.limits.maxEntities;
-    try {
-        if (size_t n = capacityFor(scene_.entities, before.entities, remaining, limit); n > scene_.entities.capacity()) {
-            scene_.entities.reserve(n);
-            entityInfo_.reserve(n);
-            announceRoom(scene_.entities);
-            announceRoom(entityInfo_);
-        }
-        if (size_t n = capacityFor(scene_.materials, before.materials, remaining, limit); n > scene_.materials.capacity()) {
-            scene_.materials.reserve(n);
-            announceRoom(scene_.materials);
-        }
-    } catch (const std::bad_alloc&) {
-        // Only a saving: without the room the vectors grow as they go.
-    }
 }
 
 void Interpreter::execScene(const SceneStmt* node) {
@@ -273,7 +224,7 @@ void Interpreter::emit(const Value& value, const Node* where) {
 }
 
 uint64_t Interpreter::countMembers(int32_t entity) const {
-    const auto* group = std::get_if<tracer::GroupNode>(&scene_.entities[static_cast<size_t>(entity)].shape);
+    const auto* group = std::get_if<scene::GroupNode>(&scene_.entities[static_cast<size_t>(entity)].shape);
     if (!group) return 1;
     uint64_t count = 0;
     for (int32_t member : group->members) count += countMembers(member);
@@ -335,35 +286,17 @@ void Interpreter::draw(const Value& value, const Node* where) {
 void Interpreter::execInclude(const IncludeStmt* node) {
     std::string name(node->path->value);
     const SourceFile& including = compilation_.sources.file(node->range.file);
-    std::vector<fs::path> searched;
-    searched.push_back(folderOf(including.path()));
-    for (const std::string& dir : options_.includeDirs) searched.push_back(fs::absolute(dir));
-    if (const char* crtPath = std::getenv("CRT_PATH")) {
-        std::stringstream folders(crtPath);
-        for (std::string dir; std::getline(folders, dir, ':');) {
-            if (!dir.empty()) searched.push_back(fs::absolute(dir));
-        }
-    }
-    if (!options_.stdlibDir.empty()) searched.push_back(fs::absolute(options_.stdlibDir));
-
-    std::error_code error;
-    fs::path found;
-    if (fs::path(name).is_absolute()) {
-        if (fs::is_regular_file(name, error)) found = name;
-        searched = {fs::path(name).parent_path()};
-    } else {
-        for (const fs::path& dir : searched) {
-            if (fs::is_regular_file(dir / name, error)) {
-                found = dir / name;
-                break;
-            }
-        }
-    }
+    const fs::path folder = folderOf(including.path());
+    const fs::path found = options_.includes.find(name, folder);
     if (found.empty()) {
+        const std::vector<fs::path> searched = fs::path(name).is_absolute()
+                                                   ? std::vector{fs::path(name).parent_path()}
+                                                   : options_.includes.folders(folder);
         std::string folders;
         for (const fs::path& dir : searched) folders += fmt::format("\n  {}", dir.lexically_normal().string());
         fail(node->path->range, fmt::format("cannot find include file \"{}\"; searched:{}", name, folders));
     }
+    std::error_code error;
     std::string canonical = fs::weakly_canonical(found, error).string();
     for (size_t i = 0; i < includeStack_.size(); ++i) {
         if (includeStack_[i] != canonical) continue;
@@ -529,14 +462,14 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
 
     if (emitted.empty()) return last;
     if (emitted.size() == 1) return emitted.front();
-    tracer::GroupNode group;
+    scene::GroupNode group;
     bool solid = true;
     group.members.reserve(emitted.size());
     for (const Value& member : emitted) {
         group.members.push_back(static_cast<int32_t>(member.index));
         solid = solid && scene_.entities[member.index].solid;
     }
-    tracer::EntityDesc entity{std::move(group), -1, solid, span(site->range)};
+    scene::EntityDesc entity{std::move(group), -1, solid, span(site->range)};
     int32_t index = addEntity(std::move(entity), EntityInfo{site->range, ObjectType::Count, false});
     return Value::object(ValueKind::Entity, ObjectType::Count, static_cast<uint32_t>(index));
 }

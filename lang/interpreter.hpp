@@ -3,11 +3,12 @@
 
 #include "ast.hpp"
 #include "diagnostic.hpp"
+#include "include_search.hpp"
 #include "resolver.hpp"
 #include "token.hpp"
 #include "value.hpp"
 
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 #include <cstdint>
 #include <deque>
@@ -30,9 +31,8 @@ struct Limits {
 
 struct EvalOptions {
     Limits limits;
-    std::vector<std::string> includeDirs; ///< -I, in order
+    IncludeSearch includes;               ///< -I, CRT_PATH, the standard library
     std::vector<std::string> assetRoots;  ///< --assets; empty: the script's folder and parents
-    std::string stdlibDir;                ///< the installed standard library
     uint64_t seed = 0;                    ///< seeds rand()
     int frame = 0;                        ///< t with --frames
     int frameCount = 1;
@@ -42,10 +42,6 @@ struct EvalOptions {
     /// Polled every few thousand steps; returning true stops evaluation with an error. The
     /// language server uses it for its time budget and to drop analyses of stale text.
     std::function<bool()> interrupt;
-    /// Told of the room a loop has just reserved for the entities and materials of its
-    /// remaining iterations, before they fill it, so that a driver can fault that memory in
-    /// on another core meanwhile (crtc does). May be empty.
-    std::function<void(void* begin, size_t bytes)> readyMemory;
     /// Keep a short text form of every global's final value (Compilation::globalValues),
     /// for the language server's hover.
     bool keepGlobalValues = false;
@@ -60,7 +56,7 @@ struct Compilation {
     std::unique_ptr<Arena> arena = std::make_unique<Arena>();
     Script main;
     std::vector<Token> comments;
-    std::optional<tracer::SceneDesc> scene; ///< set when evaluation finished without errors
+    std::optional<scene::SceneDesc> scene; ///< set when evaluation finished without errors
     bool resolved = false; ///< names were resolved (the main script has no syntax errors)
     /// The global scope the resolver built, and whether the script reads t or clock: kept so
     /// that a compilation resolved by compile(..., false) can be evaluated later (evaluate()).

@@ -35,21 +35,6 @@ struct LightInfo {
     bool listed = false;
 };
 
-/// Appends to one of the vectors that grow with the scene (entities, materials and their
-/// bookkeeping), which reach millions of entries in generated scripts. Their capacity grows
-/// eightfold instead of doubling, up to 256 MiB: capacity never written costs address space
-/// but no memory (its pages are never touched), while every reallocation copies, and so
-/// page-faults in again, everything built so far: 7,000 of the 19,600 page faults of
-/// checking a script of 100,000 spheres with doubling.
-template <typename T> T& appendGrowing(std::vector<T>& items, T item) {
-    if (items.size() == items.capacity()) {
-        constexpr size_t kEightfoldUpTo = (size_t{256} << 20) / sizeof(T);
-        size_t capacity = items.capacity();
-        items.reserve(capacity < 64 ? 64 : capacity < kEightfoldUpTo ? capacity * 8 : capacity * 2);
-    }
-    return items.emplace_back(std::move(item));
-}
-
 /// What a statement's value is used for.
 enum class EmitMode : uint8_t { None, Scene, Macro };
 
@@ -142,17 +127,6 @@ private:
     Value callMacro(const Closure* closure, const CallExpr* site, std::span<const Value> args);
     Value csg(BinaryOp op, const Value& left, const Value& right, const BinaryExpr* node);
     bool condition(const Expr* node, std::string_view what);
-    /// What the scene's growing vectors hold, to see what one loop iteration adds.
-    struct SceneCounts {
-        size_t entities, materials;
-    };
-    SceneCounts sceneCounts() const { return {scene_.entities.size(), scene_.materials.size()}; }
-    /// After the first of a loop's iterations: room for `remaining` more like it in the
-    /// scene's vectors, so that they are not regrown (copied, and so faulted in again) during
-    /// the loop. Capacity never written costs no memory.
-    void reserveForIterations(const SceneCounts& before, uint64_t remaining);
-    /// Passes a vector's reserved room to EvalOptions::readyMemory.
-    template <typename T> void announceRoom(std::vector<T>& items) const;
     /// Counts a loop iteration or macro call against the step limit; inline, since loops
     /// pay it every iteration, and the checks themselves only every so often.
     void step(SourceRange where) {
@@ -165,10 +139,10 @@ private:
     // objects (object_builder.cpp)
     Value evalObject(const ObjectExpr* node);
     int32_t defaultMaterial();
-    int32_t addEntity(tracer::EntityDesc entity, EntityInfo info);
+    int32_t addEntity(scene::EntityDesc entity, EntityInfo info);
     /// A warning reported once per construct, however often evaluation passes it.
     void warnOnce(WarningKind kind, SourceRange where, std::string message);
-    tracer::SourceSpan span(SourceRange range) const;
+    scene::SourceSpan span(SourceRange range) const;
 
     // the end (scene_assembly.cpp)
     void assembleScene();
@@ -178,7 +152,7 @@ private:
     void reportUnused();
     struct SpanCacheEntry {
         SourceRange range{~0u, 0, 0};
-        tracer::SourceSpan span;
+        scene::SourceSpan span;
     };
     mutable std::array<SpanCacheEntry, 16> spanCache_{};
 
@@ -211,15 +185,15 @@ private:
     bool animated_ = false; ///< the script reads t or clock
 
     // scene under construction
-    tracer::SceneDesc scene_;
+    scene::SceneDesc scene_;
     std::vector<EntityInfo> entityInfo_;
     uint64_t drawnCount_ = 0;     ///< entities drawn so far, group members counted
     std::vector<bool> reachable_; ///< per entity: drawn, or part of something drawn
     std::set<std::tuple<WarningKind, uint32_t, uint32_t>> warnedOnce_;
-    std::vector<tracer::LightDesc> lights_;
+    std::vector<scene::LightDesc> lights_;
     std::vector<LightInfo> lightInfo_;
-    std::vector<tracer::CameraDesc> cameras_;
-    std::vector<tracer::BackgroundDesc> backgrounds_;
+    std::vector<scene::CameraDesc> cameras_;
+    std::vector<scene::BackgroundDesc> backgrounds_;
     int32_t defaultMaterial_ = -1;
     const SettingsStmt* settings_ = nullptr;
     std::array<Value, kMaxAttributes> settingsValues_{};

@@ -28,7 +28,7 @@ bool isBumpType(ObjectType type) {
     return type == ObjectType::NoiseBump || type == ObjectType::ImageBump;
 }
 
-tracer::Color toColor(const Value& v) { return {v.v[0], v.v[1], v.v[2], v.v[3]}; }
+scene::Color toColor(const Value& v) { return {v.v[0], v.v[1], v.v[2], v.v[3]}; }
 glm::dvec3 toVec(const Value& v) { return {v.v[0], v.v[1], v.v[2]}; }
 
 } // namespace
@@ -258,7 +258,7 @@ struct ObjectBuilder {
         const Value* v = get(name);
         return v ? toVec(*v) : fallback;
     }
-    tracer::Color colour(std::string_view name, tracer::Color fallback) const {
+    scene::Color colour(std::string_view name, scene::Color fallback) const {
         const Value* v = get(name);
         return v ? toColor(*v) : fallback;
     }
@@ -301,7 +301,7 @@ void addIntFixIt(Diagnostic& diagnostic, const Value& given, SourceRange where) 
     diagnostic.fixits.push_back({where, fixed});
 }
 
-tracer::SourceSpan Interpreter::span(SourceRange range) const {
+scene::SourceSpan Interpreter::span(SourceRange range) const {
     // Literals in a loop are converted over and over: remember recent ones.
     SpanCacheEntry& entry = spanCache_[(range.begin * 2654435761u) >> 28];
     if (entry.range == range) return entry.span;
@@ -312,9 +312,9 @@ tracer::SourceSpan Interpreter::span(SourceRange range) const {
     return entry.span;
 }
 
-int32_t Interpreter::addEntity(tracer::EntityDesc entity, EntityInfo info) {
-    appendGrowing(scene_.entities, std::move(entity));
-    appendGrowing(entityInfo_, info);
+int32_t Interpreter::addEntity(scene::EntityDesc entity, EntityInfo info) {
+    scene_.entities.push_back(std::move(entity));
+    entityInfo_.push_back(info);
     return static_cast<int32_t>(scene_.entities.size() - 1);
 }
 
@@ -326,7 +326,7 @@ void Interpreter::warnOnce(WarningKind kind, SourceRange where, std::string mess
 
 int32_t Interpreter::defaultMaterial() {
     if (defaultMaterial_ < 0) {
-        appendGrowing(scene_.materials, tracer::MaterialDesc{});
+        scene_.materials.emplace_back();
         defaultMaterial_ = static_cast<int32_t>(scene_.materials.size() - 1);
     }
     return defaultMaterial_;
@@ -384,9 +384,9 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
         return found;
     };
 
-    auto entity = [&](tracer::Shape shape, bool zeroSize) {
+    auto entity = [&](scene::Shape shape, bool zeroSize) {
         int32_t material = b.get("material") ? static_cast<int32_t>(b.get("material")->index) : defaultMaterial();
-        int32_t index = addEntity(tracer::EntityDesc{std::move(shape), material, info.solid, span(node->range)},
+        int32_t index = addEntity(scene::EntityDesc{std::move(shape), material, info.solid, span(node->range)},
                                   EntityInfo{node->range, node->type, true});
         // An animated script (one reading t or clock) often starts from zero size.
         if (zeroSize && !animated_) {
@@ -399,28 +399,28 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
     switch (node->type) {
     case ObjectType::Sphere: {
         bool zero = b.nonNegative("radius");
-        return entity(tracer::SphereShape{b.vec("center"), b.number("radius", 0)}, zero);
+        return entity(scene::SphereShape{b.vec("center"), b.number("radius", 0)}, zero);
     }
     case ObjectType::Box: {
         glm::dvec3 a = b.vec("cornerA"), c = b.vec("cornerB");
         // Identical corners are a mistake, except in an animation growing a box from a point.
         if (a == c && !animated_) fail(b.where("cornerB"), "the corners of this Box are the same point");
         bool zero = a.x == c.x || a.y == c.y || a.z == c.z;
-        return entity(tracer::BoxShape{a, c}, zero);
+        return entity(scene::BoxShape{a, c}, zero);
     }
     case ObjectType::Plane:
         b.nonZeroVector("normal", "a plane needs a direction");
-        return entity(tracer::PlaneShape{b.vec("normal"), b.vec("position")}, false);
+        return entity(scene::PlaneShape{b.vec("normal"), b.vec("position")}, false);
     case ObjectType::Cylinder: {
         bool zero = b.nonNegative("radius");
         if (b.vec("base") == b.vec("top")) fail(b.where("top"), "the base and top of this Cylinder are the same point");
-        return entity(tracer::CylinderShape{b.vec("base"), b.vec("top"), b.number("radius", 0), b.flag("open", false)}, zero);
+        return entity(scene::CylinderShape{b.vec("base"), b.vec("top"), b.number("radius", 0), b.flag("open", false)}, zero);
     }
     case ObjectType::Cone: {
         bool zeroBase = b.nonNegative("baseradius");
         bool zeroTop = b.nonNegative("topradius");
         if (b.vec("base") == b.vec("top")) fail(b.where("top"), "the base and top of this Cone are the same point");
-        return entity(tracer::ConeShape{b.vec("base"), b.number("baseradius", 0), b.vec("top"),
+        return entity(scene::ConeShape{b.vec("base"), b.number("baseradius", 0), b.vec("top"),
                                         b.number("topradius", 0), b.flag("open", false)},
                       zeroBase && zeroTop);
     }
@@ -428,7 +428,7 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
         bool zeroMajor = b.nonNegative("major");
         bool zeroMinor = b.nonNegative("minor");
         b.nonZeroVector("axis", "a torus needs an axis");
-        return entity(tracer::TorusShape{b.vec("center"), b.number("major", 0), b.number("minor", 0),
+        return entity(scene::TorusShape{b.vec("center"), b.number("major", 0), b.number("minor", 0),
                                          b.vec("axis", {0, 1, 0})},
                       zeroMinor || (zeroMajor && zeroMinor));
     }
@@ -439,24 +439,24 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
         if (b.number("hole", 0) > b.number("radius", 0)) {
             fail(b.where("hole"), "the hole of this Disc is larger than its radius");
         }
-        return entity(tracer::DiscShape{b.vec("center"), b.vec("normal"), b.number("radius", 0), b.number("hole", 0)},
+        return entity(scene::DiscShape{b.vec("center"), b.vec("normal"), b.number("radius", 0), b.number("hole", 0)},
                       zero || b.number("hole", 0) == b.number("radius", 0));
     }
     case ObjectType::Quad: {
         bool zero = glm::length(glm::cross(b.vec("edgeA"), b.vec("edgeB"))) == 0;
-        return entity(tracer::QuadShape{b.vec("corner"), b.vec("edgeA"), b.vec("edgeB")}, zero);
+        return entity(scene::QuadShape{b.vec("corner"), b.vec("edgeA"), b.vec("edgeB")}, zero);
     }
     case ObjectType::Triangle: {
         glm::dvec3 p = b.vec("a"), q = b.vec("b"), r = b.vec("c");
         bool zero = glm::length(glm::cross(q - p, r - p)) == 0;
-        return entity(tracer::TriangleShape{p, q, r}, zero);
+        return entity(scene::TriangleShape{p, q, r}, zero);
     }
     case ObjectType::Mesh: {
         std::string resolved = resolveFile("file", "mesh");
-        return entity(tracer::MeshShape{b.text("file"), resolved}, false);
+        return entity(scene::MeshShape{b.text("file"), resolved}, false);
     }
     case ObjectType::Material: {
-        tracer::FinishDesc f;
+        scene::FinishDesc f;
         f.reflectivity = b.number("reflectivity", 0);
         f.transparency = b.number("transparency", 0);
         f.ior = b.number("ior", 1);
@@ -472,14 +472,14 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
         f.bump = b.get("bump") ? static_cast<int32_t>(b.get("bump")->index) : -1;
         if (f.ior <= 0) fail(b.where("ior"), "the index of refraction must be positive");
         if (f.glossiness < 0 || f.glossiness > 1) fail(b.where("glossiness"), "glossiness must be between 0 and 1");
-        tracer::MaterialDesc& m = appendGrowing(scene_.materials, tracer::MaterialDesc{});
+        scene::MaterialDesc& m = scene_.materials.emplace_back();
         m.color = b.colour("color", m.color);
         m.finish = scene_.internFinish(f);
         m.source = span(node->range);
         return Value::object(ValueKind::Material, node->type, static_cast<uint32_t>(scene_.materials.size() - 1));
     }
     case ObjectType::Camera: {
-        tracer::CameraDesc c;
+        scene::CameraDesc c;
         c.position = b.vec("position");
         c.pointing = b.vec("pointing");
         if (c.position == c.pointing) fail(b.where("pointing"), "the camera points at its own position");
@@ -491,7 +491,7 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
         if (c.focalDistance <= 0) fail(b.where("focaldistance"), "focaldistance must be positive");
         if (const Value* shape = b.get("apertureshape")) {
             if (shape->kind == ValueKind::Int) {
-                c.apertureShape = tracer::ApertureShape::Polygon;
+                c.apertureShape = scene::ApertureShape::Polygon;
                 c.apertureBlades = static_cast<int>(std::min<int64_t>(shape->i, 1000));
             } else {
                 std::string name = b.lowerText("apertureshape", "circle");
@@ -499,19 +499,19 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
                     {"triangle", 3}, {"square", 4}, {"pentagon", 5}, {"hexagon", 6}, {"octagon", 8}};
                 for (auto [polygon, sides] : polygons) {
                     if (name == polygon) {
-                        c.apertureShape = tracer::ApertureShape::Polygon;
+                        c.apertureShape = scene::ApertureShape::Polygon;
                         c.apertureBlades = sides;
                     }
                 }
-                if (name == "gaussian") c.apertureShape = tracer::ApertureShape::Gaussian;
-                if (name == "line") c.apertureShape = tracer::ApertureShape::Line;
+                if (name == "gaussian") c.apertureShape = scene::ApertureShape::Gaussian;
+                if (name == "line") c.apertureShape = scene::ApertureShape::Line;
             }
         }
         c.up = b.vec("up", {0, 1, 0});
         b.nonZeroVector("up", "the camera needs an up direction");
         c.roll = b.number("roll", 0);
-        c.projection = b.lowerText("projection", "pinhole") == "spherical" ? tracer::Projection::Spherical
-                                                                           : tracer::Projection::Pinhole;
+        c.projection = b.lowerText("projection", "pinhole") == "spherical" ? scene::Projection::Spherical
+                                                                           : scene::Projection::Pinhole;
         c.source = span(node->range);
         cameras_.push_back(c);
         return Value::object(ValueKind::Camera, node->type, static_cast<uint32_t>(cameras_.size() - 1));
@@ -520,11 +520,11 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
     case ObjectType::ParallelLight:
     case ObjectType::SpotLight:
     case ObjectType::AreaLight: {
-        tracer::LightDesc l;
-        l.kind = node->type == ObjectType::PointLight      ? tracer::LightKind::Point
-                 : node->type == ObjectType::ParallelLight ? tracer::LightKind::Parallel
-                 : node->type == ObjectType::SpotLight     ? tracer::LightKind::Spot
-                                                           : tracer::LightKind::Area;
+        scene::LightDesc l;
+        l.kind = node->type == ObjectType::PointLight      ? scene::LightKind::Point
+                 : node->type == ObjectType::ParallelLight ? scene::LightKind::Parallel
+                 : node->type == ObjectType::SpotLight     ? scene::LightKind::Spot
+                                                           : scene::LightKind::Area;
         l.origin = node->type == ObjectType::AreaLight ? b.vec("corner") : b.vec("origin");
         l.from = b.vec("from");
         l.pointing = b.vec("pointing");
@@ -552,7 +552,7 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
         return Value::object(ValueKind::Light, node->type, static_cast<uint32_t>(lights_.size() - 1));
     }
     case ObjectType::Background: {
-        tracer::BackgroundDesc bg;
+        scene::BackgroundDesc bg;
         int modes = (b.get("color") ? 1 : 0) + (b.get("horizon") || b.get("sky") ? 1 : 0) + (b.get("image") ? 1 : 0);
         if (modes > 1) {
             fail(node->typeRange, "a Background takes exactly one of 'color', 'horizon' + 'sky', or 'image'");
@@ -563,14 +563,14 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
         }
         if (b.get("angle") && !b.get("image")) fail(b.where("angle"), "'angle' only applies to an 'image' Background");
         if (b.get("color")) {
-            bg.kind = tracer::BackgroundKind::Solid;
+            bg.kind = scene::BackgroundKind::Solid;
             bg.color = b.colour("color", bg.color);
         } else if (b.get("horizon")) {
-            bg.kind = tracer::BackgroundKind::Gradient;
+            bg.kind = scene::BackgroundKind::Gradient;
             bg.horizon = b.colour("horizon", bg.horizon);
             bg.sky = b.colour("sky", bg.sky);
         } else {
-            bg.kind = tracer::BackgroundKind::Image;
+            bg.kind = scene::BackgroundKind::Image;
             bg.image = b.text("image");
             bg.resolvedImage = resolveFile("image", "image");
             bg.angle = b.number("angle", 0);
@@ -583,8 +583,8 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
     }
 
     // Textures.
-    tracer::TextureDesc t;
-    t.kind = static_cast<tracer::TextureKind>(static_cast<int>(node->type) - static_cast<int>(ObjectType::Checker));
+    scene::TextureDesc t;
+    t.kind = static_cast<scene::TextureKind>(static_cast<int>(node->type) - static_cast<int>(ObjectType::Checker));
     t.a = b.colour("a", t.a);
     t.b = b.colour("b", t.b);
     t.size = b.number("size", 1);
@@ -602,10 +602,10 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
         t.file = b.text("file");
         t.resolvedFile = resolveFile("file", "image");
         std::string mapping = b.lowerText("mapping", "uv");
-        static const std::pair<std::string_view, tracer::TextureMapping> mappings[] = {
-            {"uv", tracer::TextureMapping::Uv}, {"planar", tracer::TextureMapping::Planar},
-            {"spherical", tracer::TextureMapping::Spherical}, {"cylindrical", tracer::TextureMapping::Cylindrical},
-            {"cubic", tracer::TextureMapping::Cubic}};
+        static const std::pair<std::string_view, scene::TextureMapping> mappings[] = {
+            {"uv", scene::TextureMapping::Uv}, {"planar", scene::TextureMapping::Planar},
+            {"spherical", scene::TextureMapping::Spherical}, {"cylindrical", scene::TextureMapping::Cylindrical},
+            {"cubic", scene::TextureMapping::Cubic}};
         for (auto [name, kind] : mappings) {
             if (mapping == name) t.mapping = kind;
         }

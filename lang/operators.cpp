@@ -379,13 +379,13 @@ Value Interpreter::csg(BinaryOp op, const Value& left, const Value& right, const
                                            typeName(*operand), opSpelling(op)));
         }
     }
-    tracer::CsgNode csg;
-    csg.op = op == BinaryOp::Add   ? tracer::CsgOp::Union
-             : op == BinaryOp::Sub ? tracer::CsgOp::Difference
-                                   : tracer::CsgOp::Intersection;
+    scene::CsgNode csg;
+    csg.op = op == BinaryOp::Add   ? scene::CsgOp::Union
+             : op == BinaryOp::Sub ? scene::CsgOp::Difference
+                                   : scene::CsgOp::Intersection;
     csg.left = static_cast<int32_t>(left.index);
     csg.right = static_cast<int32_t>(right.index);
-    int32_t index = addEntity(tracer::EntityDesc{csg, -1, true, span(node->range)},
+    int32_t index = addEntity(scene::EntityDesc{csg, -1, true, span(node->range)},
                               EntityInfo{node->range, ObjectType::Count, false});
     return Value::object(ValueKind::Entity, ObjectType::Count, static_cast<uint32_t>(index));
 }
@@ -396,13 +396,13 @@ Value Interpreter::evalModify(const ModifyExpr* node) {
         fail(node->target->range,
              fmt::format("cannot apply modifiers to {}; only entities and textures move", typeName(target)));
     }
-    std::vector<tracer::Modifier> modifiers;
+    std::vector<scene::Modifier> modifiers;
     for (const Modifier& m : node->modifiers) {
         Value arg = eval(m.argument);
-        tracer::Modifier mod;
-        mod.kind = m.op == ModifierOp::Translate ? tracer::ModifierKind::Translate
-                   : m.op == ModifierOp::Rotate  ? tracer::ModifierKind::Rotate
-                                                 : tracer::ModifierKind::Scale;
+        scene::Modifier mod;
+        mod.kind = m.op == ModifierOp::Translate ? scene::ModifierKind::Translate
+                   : m.op == ModifierOp::Rotate  ? scene::ModifierKind::Rotate
+                                                 : scene::ModifierKind::Scale;
         if (arg.kind == ValueKind::Vec3) {
             mod.value = {arg.v[0], arg.v[1], arg.v[2]};
         } else if (m.op == ModifierOp::Scale && arg.isNumber()) {
@@ -423,7 +423,7 @@ Value Interpreter::evalModify(const ModifyExpr* node) {
         modifiers.push_back(mod);
     }
     if (target.kind == ValueKind::Texture) {
-        tracer::TextureDesc texture = scene_.textures[target.index];
+        scene::TextureDesc texture = scene_.textures[target.index];
         texture.modifiers.insert(texture.modifiers.end(), modifiers.begin(), modifiers.end());
         texture.source = span(node->range);
         scene_.textures.push_back(std::move(texture));
@@ -432,14 +432,14 @@ Value Interpreter::evalModify(const ModifyExpr* node) {
     }
     // Modifying a transformed entity extends its list rather than nesting transforms.
     int32_t child = static_cast<int32_t>(target.index);
-    if (auto* inner = std::get_if<tracer::TransformNode>(&scene_.entities[target.index].shape)) {
-        std::vector<tracer::Modifier> combined = inner->modifiers;
+    if (auto* inner = std::get_if<scene::TransformNode>(&scene_.entities[target.index].shape)) {
+        std::vector<scene::Modifier> combined = inner->modifiers;
         combined.insert(combined.end(), modifiers.begin(), modifiers.end());
         modifiers = std::move(combined);
         child = inner->child;
     }
     bool solid = scene_.entities[static_cast<size_t>(child)].solid;
-    int32_t index = addEntity(tracer::EntityDesc{tracer::TransformNode{child, std::move(modifiers)}, -1,
+    int32_t index = addEntity(scene::EntityDesc{scene::TransformNode{child, std::move(modifiers)}, -1,
                                                  solid, span(node->range)},
                               EntityInfo{node->range, target.objectType, false});
     return Value::object(ValueKind::Entity, target.objectType, static_cast<uint32_t>(index));

@@ -26,13 +26,13 @@ template <typename T> std::vector<int32_t> compact(std::vector<T>& items, const 
 }
 
 /// Calls `visit` on every entity index a node refers to.
-template <typename F> void forEachChild(tracer::EntityDesc& entity, F&& visit) {
-    if (auto* csg = std::get_if<tracer::CsgNode>(&entity.shape)) {
+template <typename F> void forEachChild(scene::EntityDesc& entity, F&& visit) {
+    if (auto* csg = std::get_if<scene::CsgNode>(&entity.shape)) {
         visit(csg->left);
         visit(csg->right);
-    } else if (auto* transform = std::get_if<tracer::TransformNode>(&entity.shape)) {
+    } else if (auto* transform = std::get_if<scene::TransformNode>(&entity.shape)) {
         visit(transform->child);
-    } else if (auto* group = std::get_if<tracer::GroupNode>(&entity.shape)) {
+    } else if (auto* group = std::get_if<scene::GroupNode>(&entity.shape)) {
         for (int32_t& member : group->members) visit(member);
     }
 }
@@ -44,20 +44,20 @@ void Interpreter::dropUnreachable(const std::vector<bool>& keepEntity, const std
     std::vector<int32_t> entityMap = compact(scene_.entities, keepEntity);
     std::vector<int32_t> materialMap = compact(scene_.materials, keepMaterial);
     std::vector<int32_t> textureMap = compact(scene_.textures, keepTexture);
-    for (tracer::EntityDesc& entity : scene_.entities) {
+    for (scene::EntityDesc& entity : scene_.entities) {
         if (entity.material >= 0) entity.material = materialMap[static_cast<size_t>(entity.material)];
         forEachChild(entity, [&](int32_t& child) { child = entityMap[static_cast<size_t>(child)]; });
     }
     for (int32_t& root : scene_.drawn) root = entityMap[static_cast<size_t>(root)];
     // A finish of dropped materials only may name a dropped texture: it becomes -1, unused.
-    for (tracer::FinishDesc& finish : scene_.finishes) {
+    for (scene::FinishDesc& finish : scene_.finishes) {
         if (finish.texture >= 0) finish.texture = textureMap[static_cast<size_t>(finish.texture)];
         if (finish.bump >= 0) finish.bump = textureMap[static_cast<size_t>(finish.bump)];
     }
 }
 
 void Interpreter::assembleScene() {
-    tracer::SettingsDesc& s = scene_.settings;
+    scene::SettingsDesc& s = scene_.settings;
     const ObjectInfo& info = objectInfo(ObjectType::Settings);
     auto value = [&](std::string_view name) -> const Value* {
         int slot = findAttribute(info, name);
@@ -106,9 +106,9 @@ void Interpreter::assembleScene() {
     s.recursionDepth = atLeast("recursiondepth", 3, 0, 1000);
     std::string antialias = value("antialias") ? text("antialias") : "grid";
     for (char& c : antialias) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    s.antialias = antialias == "adaptive"       ? tracer::Antialias::Adaptive
-                  : antialias == "showadaptive" ? tracer::Antialias::ShowAdaptive
-                                                : tracer::Antialias::Grid;
+    s.antialias = antialias == "adaptive"       ? scene::Antialias::Adaptive
+                  : antialias == "showadaptive" ? scene::Antialias::ShowAdaptive
+                                                : scene::Antialias::Grid;
     s.aaThreshold = number("aathreshold", 0.1);
     if (s.aaThreshold < 0) fail(where("aathreshold"), "aathreshold must not be negative");
     s.aaDepth = atLeast("aadepth", 2, 0, 8);
@@ -127,7 +127,7 @@ void Interpreter::assembleScene() {
     }
     if (const Value* background = value("background")) {
         if (background->kind == ValueKind::Colour) {
-            scene_.background.kind = tracer::BackgroundKind::Solid;
+            scene_.background.kind = scene::BackgroundKind::Solid;
             scene_.background.color = {background->v[0], background->v[1], background->v[2], background->v[3]};
             scene_.background.source = span(where("background"));
         } else {
@@ -152,7 +152,7 @@ void Interpreter::assembleScene() {
     std::vector<bool> keepTexture(scene_.textures.size(), false);
     for (size_t i = 0; i < scene_.materials.size(); ++i) {
         if (!keepMaterial[i]) continue;
-        const tracer::FinishDesc& finish = scene_.finishOf(scene_.materials[i]);
+        const scene::FinishDesc& finish = scene_.finishOf(scene_.materials[i]);
         for (int32_t t : {finish.texture, finish.bump}) {
             if (t >= 0) keepTexture[static_cast<size_t>(t)] = true;
         }

@@ -21,28 +21,10 @@ using namespace lang;
 
 // ---------------------------------------------------------------- includes
 
-std::vector<std::string> includeFolders(const std::string& folder, const AnalysisOptions& options) {
-    std::vector<std::string> folders{folder};
-    for (const std::string& dir : options.includeDirs) folders.push_back(dir);
-    if (const char* crtPath = std::getenv("CRT_PATH")) {
-        std::stringstream list(crtPath);
-        for (std::string dir; std::getline(list, dir, ':');) {
-            if (!dir.empty()) folders.push_back(dir);
-        }
-    }
-    if (!options.stdlibDir.empty()) folders.push_back(options.stdlibDir);
-    return folders;
-}
-
 std::string findInclude(const std::string& name, const std::string& folder,
                         const AnalysisOptions& options) {
-    std::error_code error;
-    if (fs::path(name).is_absolute()) return fs::is_regular_file(name, error) ? name : "";
-    for (const std::string& dir : includeFolders(folder, options)) {
-        fs::path candidate = fs::path(dir) / name;
-        if (fs::is_regular_file(candidate, error)) return candidate.lexically_normal().string();
-    }
-    return "";
+    fs::path found = options.includes.find(name, folder);
+    return found.empty() ? std::string() : found.lexically_normal().string();
 }
 
 namespace {
@@ -272,8 +254,7 @@ std::shared_ptr<const Analysis> analyze(const std::string& path, std::string tex
                                         const AnalysisOptions& options, IncludeCache& cache) {
     EvalOptions eval;
     eval.limits = options.limits;
-    eval.includeDirs = options.includeDirs;
-    eval.stdlibDir = options.stdlibDir;
+    eval.includes = options.includes;
     return analyze(compile(path, std::move(text), eval, false), options, cache);
 }
 

@@ -17,8 +17,7 @@ namespace crt::lsp {
 
 /// How the server runs the front end; set from the command line and initializationOptions.
 struct AnalysisOptions {
-    std::vector<std::string> includeDirs; ///< as crtc -I
-    std::string stdlibDir;
+    lang::IncludeSearch includes; ///< as crtc's -I and standard library
     /// Tighter than crtc's defaults: an editor wants an answer, not a finished render.
     lang::Limits limits{5'000'000, 1'000, 1'000'000, 16'384};
     std::chrono::milliseconds timeBudget{1500}; ///< wall-clock limit of one evaluation
@@ -146,11 +145,9 @@ void index(Analysis& analysis, const lang::SourceFile& file, const AnalysisOptio
 std::shared_ptr<const Analysis> lexOnly(const std::string& path, std::string text);
 
 /// Where `include "name"` in a file of folder `folder` finds its file, as the interpreter
-/// looks: the folder, -I folders, CRT_PATH, the standard library. Empty if nowhere.
+/// looks (lang::IncludeSearch). Empty if nowhere.
 std::string findInclude(const std::string& name, const std::string& folder,
                         const AnalysisOptions& options);
-/// The folders an include is looked up in, in order.
-std::vector<std::string> includeFolders(const std::string& folder, const AnalysisOptions& options);
 
 /// A short static description of what an expression yields ("vec3", "Sphere", "macro (a, b)").
 /// Looks at most `depth` levels into the expression.

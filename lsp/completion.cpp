@@ -364,12 +364,12 @@ private:
         std::error_code error;
         std::string folder = fs::absolute(a_.file().path(), error).parent_path().string();
         std::set<std::string> seen;
-        for (const std::string& dir : includeFolders(folder, options_)) {
+        for (const fs::path& dir : options_.includes.folders(folder)) {
             for (fs::directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
                 if (!it->is_regular_file(error) || it->path().extension() != ".crt") continue;
                 std::string name = it->path().filename().string();
                 if (it->path() == fs::path(a_.file().path()) || !seen.insert(name).second) continue;
-                add({name, CompletionKind::File, dir, "", quote ? fmt::format("\"{}\"", name) : name, false, "0"});
+                add({name, CompletionKind::File, dir.string(), "", quote ? fmt::format("\"{}\"", name) : name, false, "0"});
                 if (seen.size() > 500) return;
             }
         }

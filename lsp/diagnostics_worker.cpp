@@ -38,8 +38,7 @@ void DiagnosticsWorker::forget(const std::string& uri) {
 lang::EvalOptions DiagnosticsWorker::evalOptions() const {
     lang::EvalOptions eval;
     eval.limits = options_.limits;
-    eval.includeDirs = options_.includeDirs;
-    eval.stdlibDir = options_.stdlibDir;
+    eval.includes = options_.includes;
     eval.keepGlobalValues = true;
     return eval;
 }

@@ -169,10 +169,10 @@ json Server::initialize(const json& params) {
         const json& init = params["initializationOptions"];
         if (init.contains("includeDirs") && init["includeDirs"].is_array()) {
             for (const json& dir : init["includeDirs"]) {
-                if (dir.is_string()) options_.analysis.includeDirs.push_back(dir);
+                if (dir.is_string()) options_.analysis.includes.dirs.push_back(dir);
             }
         }
-        if (init.contains("stdlib") && init["stdlib"].is_string()) options_.analysis.stdlibDir = init["stdlib"];
+        if (init.contains("stdlib") && init["stdlib"].is_string()) options_.analysis.includes.stdlibDir = init["stdlib"];
         if (init.contains("debounceMs") && init["debounceMs"].is_number_integer()) {
             options_.debounce = std::chrono::milliseconds(std::max<int64_t>(0, init["debounceMs"].get<int64_t>()));
         }

@@ -83,9 +83,9 @@ RenameCheck prepareRename(const Analysis& a, uint32_t offset, const AnalysisOpti
     if (!o) return {std::nullopt, "", "there is no variable, parameter or macro here"};
     const Symbol& s = a.symbols[o->symbol];
     if (s.builtin()) return {std::nullopt, "", "built-ins cannot be renamed"};
-    if (isGlobal(s) && !options.stdlibDir.empty()) {
+    if (isGlobal(s) && !options.includes.stdlibDir.empty()) {
         std::error_code error;
-        auto stdlib = std::filesystem::weakly_canonical(options.stdlibDir, error).string();
+        auto stdlib = std::filesystem::weakly_canonical(options.includes.stdlibDir, error).string();
         for (const auto& included : a.includes) {
             auto path = std::filesystem::weakly_canonical(included->path, error).string();
             if (!path.starts_with(stdlib)) continue;

@@ -6,7 +6,7 @@ scripts/setup.sh
 scripts/build.sh
 demo=${1:-demos/piano_foot.crt}
 echo "== crtc --check $demo"
-build/lang/crtc --check "$demo"
+build/bin/crtc --check "$demo"
 echo "== crtc $demo -o build/demo.png"
-build/lang/crtc "$demo" -o build/demo.png --stats
+build/bin/crtc "$demo" -o build/demo.png --stats
 echo "== wrote build/demo.png"

@@ -4,7 +4,7 @@
 #   scripts/render_gallery.sh [path/to/crtc]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-crtc="${1:-build/lang/crtc}"
+crtc="${1:-build/bin/crtc}"
 out=docs/gallery
 mkdir -p "$out"
 render() { # script output [options...]

@@ -8,18 +8,18 @@
 
 namespace crt::tracer {
 
-Background::Background(const BackgroundDesc& desc, const Image* panorama)
+Background::Background(const scene::BackgroundDesc& desc, const Image* panorama)
     : kind_(desc.kind), color_(rgb(desc.color)), horizon_(rgb(desc.horizon)), sky_(rgb(desc.sky)),
       panorama_(panorama), angle_(desc.angle) {}
 
 Vec3 Background::radiance(const Vec3& d) const {
     switch (kind_) {
-    case BackgroundKind::Solid: return color_;
-    case BackgroundKind::Gradient: {
+    case scene::BackgroundKind::Solid: return color_;
+    case scene::BackgroundKind::Gradient: {
         double e = std::min(std::abs(d.y), 1.0);
         return horizon_ + (sky_ - horizon_) * e;
     }
-    case BackgroundKind::Image: {
+    case scene::BackgroundKind::Image: {
         if (!panorama_ || panorama_->width == 0) return color_;
         double a = std::fmod(angle_ + std::atan2(-d.x, d.z) + kPi, 2 * kPi);
         if (a < 0) a += 2 * kPi;

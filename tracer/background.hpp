@@ -2,19 +2,19 @@
 #pragma once
 
 #include "tracer/image.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace crt::tracer {
 
 class Background {
 public:
     /// `panorama` is the decoded image of an image background (null otherwise).
-    Background(const BackgroundDesc& desc, const Image* panorama);
+    Background(const scene::BackgroundDesc& desc, const Image* panorama);
     /// The colour seen along the unit direction d.
     Vec3 radiance(const Vec3& d) const;
 
 private:
-    BackgroundKind kind_;
+    scene::BackgroundKind kind_;
     Vec3 color_, horizon_, sky_;
     const Image* panorama_;
     double angle_;

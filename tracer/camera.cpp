@@ -8,7 +8,7 @@
 
 namespace crt::tracer {
 
-Camera::Camera(const CameraDesc& desc, int width, int height, int dofSamples)
+Camera::Camera(const scene::CameraDesc& desc, int width, int height, int dofSamples)
     : position_(desc.position), tanHalfFov_(std::tan(desc.fov * kPi / 360.0)),
       aspect_(static_cast<double>(width) / height), width_(width), height_(height),
       projection_(desc.projection), shape_(desc.apertureShape), blades_(desc.apertureBlades),
@@ -31,7 +31,7 @@ Camera::Camera(const CameraDesc& desc, int width, int height, int dofSamples)
 }
 
 Ray Camera::ray(double u, double v) const {
-    if (projection_ == Projection::Spherical) {
+    if (projection_ == scene::Projection::Spherical) {
         double longitude = (2 * u / width_ - 1) * kPi;
         double latitude = (1 - 2 * v / height_) * (kPi / 2);
         Vec3 d = std::cos(latitude) * (std::sin(longitude) * right_ + std::cos(longitude) * forward_) +
@@ -44,15 +44,15 @@ Ray Camera::ray(double u, double v) const {
 
 Vec2 Camera::aperturePoint(const Vec2& sample) const {
     switch (shape_) {
-    case ApertureShape::Circle: return concentricDisc(sample);
-    case ApertureShape::Line: return {2 * sample.x - 1, 0};
-    case ApertureShape::Gaussian: {
+    case scene::ApertureShape::Circle: return concentricDisc(sample);
+    case scene::ApertureShape::Line: return {2 * sample.x - 1, 0};
+    case scene::ApertureShape::Gaussian: {
         // Box–Muller with σ = the radius (1 here).
         double r = std::sqrt(-2 * std::log(std::max(1 - sample.x, 1e-300)));
         double phi = 2 * kPi * sample.y;
         return {r * std::cos(phi), r * std::sin(phi)};
     }
-    case ApertureShape::Polygon: break;
+    case scene::ApertureShape::Polygon: break;
     }
     // A regular polygon with a vertex on +right: pick a fan triangle by the first
     // coordinate, reuse its remainder, and sample the triangle uniformly.

@@ -2,13 +2,13 @@
 #pragma once
 
 #include "tracer/geometry/ray.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace crt::tracer {
 
 class Camera {
 public:
-    Camera(const CameraDesc& desc, int width, int height, int dofSamples);
+    Camera(const scene::CameraDesc& desc, int width, int height, int dofSamples);
 
     /// Whether depth of field is on: aperture > 0 and more than one DOF sample (as the original).
     bool usesLens() const { return usesLens_; }
@@ -29,8 +29,8 @@ private:
     Vec3 position_, forward_, right_, up_;
     double tanHalfFov_, aspect_;
     double width_, height_;
-    Projection projection_;
-    ApertureShape shape_;
+    scene::Projection projection_;
+    scene::ApertureShape shape_;
     int blades_;
     double lensRadius_, focalDistance_;
     bool usesLens_;

@@ -18,7 +18,7 @@ struct Integrator::ShadingPoint {
     double pathLength; ///< from the camera to this point
 };
 
-Integrator::Integrator(const RenderScene& scene, const SettingsDesc& settings, std::vector<Light> lights,
+Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& settings, std::vector<Light> lights,
                        const Background& background, std::vector<Texture> textures)
     : scene_(scene), settings_(settings), lights_(std::move(lights)), background_(background),
       textures_(std::move(textures)), ambient_(rgb(settings.ambient)) {

@@ -31,7 +31,7 @@ struct SceneFeatures {
 
 class Integrator {
 public:
-    Integrator(const RenderScene& scene, const SettingsDesc& settings, std::vector<Light> lights,
+    Integrator(const RenderScene& scene, const scene::SettingsDesc& settings, std::vector<Light> lights,
                const Background& background, std::vector<Texture> textures);
 
     /// The colour seen along `ray` (unit direction) with `depth` reflections/refractions left;
@@ -50,7 +50,7 @@ private:
     Vec3 reflect(const ShadingPoint& sp, int depth, int32_t medium, TraceContext& context) const;
 
     const RenderScene& scene_;
-    const SettingsDesc& settings_;
+    const scene::SettingsDesc& settings_;
     std::vector<Light> lights_;
     const Background& background_;
     std::vector<Texture> textures_;

@@ -6,12 +6,12 @@
 
 namespace crt::tracer {
 
-Light::Light(const LightDesc& desc, int shadowSamples)
+Light::Light(const scene::LightDesc& desc, int shadowSamples)
     : kind_(desc.kind), color_(rgb(desc.color)), ambient_(desc.ambient), falloff_(desc.falloff) {
     switch (desc.kind) {
-    case LightKind::Point: position_ = desc.origin; break;
-    case LightKind::Parallel: direction_ = glm::normalize(desc.pointing - desc.from); break;
-    case LightKind::Spot: {
+    case scene::LightKind::Point: position_ = desc.origin; break;
+    case scene::LightKind::Parallel: direction_ = glm::normalize(desc.pointing - desc.from); break;
+    case scene::LightKind::Spot: {
         position_ = desc.origin;
         direction_ = glm::normalize(desc.pointing - desc.origin);
         double half = std::clamp(desc.angle, 0.0, 360.0) * kPi / 360.0;
@@ -20,7 +20,7 @@ Light::Light(const LightDesc& desc, int shadowSamples)
         cosInner_ = std::cos(inner);
         break;
     }
-    case LightKind::Area: {
+    case scene::LightKind::Area: {
         position_ = desc.origin;
         edgeA_ = desc.edgeA;
         edgeB_ = desc.edgeB;
@@ -43,7 +43,7 @@ double Light::spotFactor(const Vec3& fromLight) const {
 
 LightSample Light::sample(const Vec3& point, int index, const Vec2& jitter) const {
     LightSample s;
-    if (kind_ == LightKind::Parallel) {
+    if (kind_ == scene::LightKind::Parallel) {
         s.toLight = -direction_;
         s.atInfinity = true;
         s.color = color_;
@@ -51,7 +51,7 @@ LightSample Light::sample(const Vec3& point, int index, const Vec2& jitter) cons
     }
     Vec3 target = position_;
     Vec3 color = color_;
-    if (kind_ == LightKind::Area) {
+    if (kind_ == scene::LightKind::Area) {
         int sx = index % strataX_, sy = index / strataX_;
         double a = (sx + jitter.x) / strataX_, b = (sy + jitter.y) / strataY_;
         target = position_ + std::min(a, 1.0) * edgeA_ + std::min(b, 1.0) * edgeB_;
@@ -61,7 +61,7 @@ LightSample Light::sample(const Vec3& point, int index, const Vec2& jitter) cons
     s.distance = glm::length(offset);
     s.toLight = s.distance > 0 ? offset / s.distance : Vec3(0, 1, 0);
     s.target = target;
-    if (kind_ == LightKind::Spot) color *= spotFactor(-s.toLight);
+    if (kind_ == scene::LightKind::Spot) color *= spotFactor(-s.toLight);
     s.color = color;
     return s;
 }

@@ -2,13 +2,13 @@
 #pragma once
 
 #include "tracer/geometry/ray.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 #include <vector>
 
 namespace crt::tracer {
 
-inline Vec3 rgb(const Color& c) { return {c.r, c.g, c.b}; }
+inline Vec3 rgb(const scene::Color& c) { return {c.r, c.g, c.b}; }
 
 /// One sample of a light seen from a point.
 struct LightSample {
@@ -21,7 +21,7 @@ struct LightSample {
 
 class Light {
 public:
-    explicit Light(const LightDesc& desc, int shadowSamples);
+    explicit Light(const scene::LightDesc& desc, int shadowSamples);
 
     /// How many samples shading takes: shadowsamples for an area light, else one.
     int sampleCount() const { return sampleCount_; }
@@ -31,12 +31,12 @@ public:
     Vec3 color() const { return color_; }
     double ambient() const { return ambient_; }
     double falloff() const { return falloff_; }
-    LightKind kind() const { return kind_; }
+    scene::LightKind kind() const { return kind_; }
 
 private:
     double spotFactor(const Vec3& fromLight) const;
 
-    LightKind kind_;
+    scene::LightKind kind_;
     Vec3 position_{0.0}, direction_{0.0}, edgeA_{0.0}, edgeB_{0.0};
     Vec3 color_{0.0};
     double ambient_ = 0, falloff_ = 0;

@@ -4,7 +4,7 @@
 
 #include "tracer/bvh.hpp"
 #include "tracer/geometry/geometry.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 #include "tracer/stats.hpp"
 #include "tracer/transform.hpp"
 
@@ -107,8 +107,8 @@ struct QueryScratch {
 };
 
 /// A material as shading reads it: its colour beside its finish, in one place.
-struct ShadingMaterial : FinishDesc {
-    Color color = MaterialDesc{}.color;
+struct ShadingMaterial : scene::FinishDesc {
+    scene::Color color = scene::MaterialDesc{}.color;
 };
 
 /// Built by buildRenderScene; read-only while rendering, shared by every thread.
@@ -164,7 +164,7 @@ private:
 
 /// Builds the render scene; returns nullptr and sets `error` ("file:line: message") when
 /// a mesh cannot be read.
-std::unique_ptr<RenderScene> buildRenderScene(const SceneDesc& desc, std::string& error);
+std::unique_ptr<RenderScene> buildRenderScene(const scene::SceneDesc& desc, std::string& error);
 
 } // namespace crt::tracer
 

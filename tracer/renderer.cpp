@@ -7,8 +7,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <condition_variable>
-#include <latch>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -17,8 +15,6 @@ namespace crt::tracer {
 
 namespace {
 
-constexpr int kTileSize = 16;
-
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -26,17 +22,17 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 /// Computes pixels; one per thread, sharing the read-only scene.
 class PixelSampler {
 public:
-    PixelSampler(const Integrator& integrator, const Camera& camera, const SettingsDesc& settings)
+    PixelSampler(const Integrator& integrator, const Camera& camera, const scene::SettingsDesc& settings)
         : integrator_(integrator), camera_(camera), settings_(settings),
           dofSamples_(camera.usesLens() ? std::max(settings.dofSamples, 1) : 1) {}
 
     Vec3 pixel(int x, int y, TraceContext& context) const {
         uint64_t pixelIndex = static_cast<uint64_t>(y) * settings_.width + x;
-        if (settings_.antialias != Antialias::Grid) {
+        if (settings_.antialias != scene::Antialias::Grid) {
             bool subdivides = false;
             uint32_t sampleIndex = 0;
             Vec3 c = region(x + 0.5, y + 0.5, 1.0, 0, pixelIndex, sampleIndex, subdivides, context);
-            if (settings_.antialias == Antialias::ShowAdaptive && subdivides) return {1, 0, 0};
+            if (settings_.antialias == scene::Antialias::ShowAdaptive && subdivides) return {1, 0, 0};
             return c;
         }
         int n = std::max(settings_.supersampling, 1);
@@ -66,7 +62,7 @@ private:
                 }
         if (spread > settings_.aaThreshold && level < settings_.aaDepth) {
             subdivides = true;
-            if (settings_.antialias == Antialias::ShowAdaptive) return corners[0];
+            if (settings_.antialias == scene::Antialias::ShowAdaptive) return corners[0];
             for (int k = 0; k < 4; ++k)
                 corners[k] = region(cx + offsets[k][0], cy + offsets[k][1], size / 2, level + 1, pixelIndex,
                                     sampleIndex, subdivides, context);
@@ -93,175 +89,135 @@ private:
 
     const Integrator& integrator_;
     const Camera& camera_;
-    const SettingsDesc& settings_;
+    const scene::SettingsDesc& settings_;
     int dofSamples_;
 };
 
-/// Where the workers put pixels, and the reports of bands of rows as they become final: a
-/// tile row is final when all its tiles are, and bands go out in order, so a finished row
-/// waits for the rows above it. Unless the whole frame is kept, each tile row has a buffer
-/// of its own, taken when its first tile starts and given back once the row is reported:
-/// a render streamed to its file then holds the rows in flight, not the whole image (a
-/// 1920×1080 frame of floats is 25 MB, and first touches of fresh memory cost as much as
-/// the trace of a simple scene).
-class FrameRows {
-public:
-    using Report = std::function<void(int yBegin, int yEnd, std::span<const float> rgb)>;
-
-    FrameRows(PixelBuffer& frame, bool keepFrame, int tilesX, int tilesY, const Report& report)
-        : frame_(frame), keep_(keepFrame || !report), report_(report),
-          rowValues_(static_cast<size_t>(frame.width) * 3), tilesLeft_(static_cast<size_t>(tilesY), tilesX),
-          rowBuffers_(keep_ ? 0 : static_cast<size_t>(tilesY)) {}
-
-    /// Allocates the kept frame; a separate step so that the caller decides when its pages
-    /// are first touched.
-    void allocate() {
-        if (keep_) frame_.rgb.assign(rowValues_ * static_cast<size_t>(frame_.height), 0.0f);
+/// The scene's settings with the job's sample budget applied.
+scene::SettingsDesc withBudget(scene::SettingsDesc settings, const SampleBudget& budget) {
+    if (budget.grid > 0) {
+        settings.antialias = scene::Antialias::Grid;
+        settings.supersampling = budget.grid;
     }
+    return settings;
+}
 
-    /// The first value of the first image row of tile row `tileRow`, for a tile being traced;
-    /// the rows below follow every rowValues() floats.
-    float* firstRowOf(int tileRow) {
-        if (keep_) return frame_.rgb.data() + static_cast<size_t>(tileRow) * kTileSize * rowValues_;
-        std::lock_guard<std::mutex> lock(mutex_);
-        std::unique_ptr<float[]>& buffer = rowBuffers_[static_cast<size_t>(tileRow)];
-        // Left uninitialised: the row's tiles write every value before it is reported.
-        if (!buffer) buffer.reset(new float[rowValues_ * kTileSize]);
-        return buffer.get();
-    }
+/// Everything built from a scene description before its first ray.
+struct PreparedScene {
+    std::unique_ptr<RenderScene> geometry;
+    SceneImages images;
+    std::unique_ptr<Background> background;
+    std::unique_ptr<Integrator> integrator;
+    std::unique_ptr<Camera> camera;
+};
 
-    size_t rowValues() const { return rowValues_; }
+bool prepare(const scene::SceneDesc& desc, PreparedScene& out, std::string& error) {
+    const scene::SettingsDesc& s = desc.settings;
+    out.geometry = buildRenderScene(desc, error);
+    if (!out.geometry) return false;
+    if (!loadSceneImages(desc, out.images, error)) return false;
+    std::vector<Light> lights;
+    for (const scene::LightDesc& l : desc.lights) lights.emplace_back(l, s.shadowSamples);
+    std::vector<Texture> textures;
+    for (const scene::TextureDesc& t : desc.textures)
+        textures.emplace_back(t, out.images.find(scene::fileToOpen(t.resolvedFile, t.file)));
+    out.background = std::make_unique<Background>(
+        desc.background,
+        out.images.find(scene::fileToOpen(desc.background.resolvedImage, desc.background.image)));
+    out.integrator = std::make_unique<Integrator>(*out.geometry, s, std::move(lights),
+                                                  *out.background, std::move(textures));
+    out.camera = std::make_unique<Camera>(desc.camera, s.width, s.height, s.dofSamples);
+    return true;
+}
 
-    void tileDone(int tileRow) {
-        if (!report_) return;
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (--tilesLeft_[static_cast<size_t>(tileRow)] > 0) return;
-        while (nextRow_ < static_cast<int>(tilesLeft_.size()) && tilesLeft_[static_cast<size_t>(nextRow_)] == 0) {
-            const int yBegin = nextRow_ * kTileSize, yEnd = std::min(yBegin + kTileSize, frame_.height);
-            const size_t values = static_cast<size_t>(yEnd - yBegin) * rowValues_;
-            if (keep_) {
-                report_(yBegin, yEnd, std::span<const float>(frame_.rgb.data() + yBegin * rowValues_, values));
-            } else {
-                std::unique_ptr<float[]>& buffer = rowBuffers_[static_cast<size_t>(nextRow_)];
-                report_(yBegin, yEnd, std::span<const float>(buffer.get(), values));
-                buffer.reset();
-            }
-            ++nextRow_;
+/// Traces one tile into `rgb` (row-major, 3 floats a pixel).
+void traceTile(const PixelSampler& sampler, const Tile& tile, std::vector<float>& rgb,
+               TraceContext& context) {
+    rgb.resize(static_cast<size_t>(tile.width()) * tile.height() * 3);
+    float* out = rgb.data();
+    for (int y = tile.y0; y < tile.y1; ++y) {
+        for (int x = tile.x0; x < tile.x1; ++x, out += 3) {
+            Vec3 c = sampler.pixel(x, y, context);
+            out[0] = static_cast<float>(c.r);
+            out[1] = static_cast<float>(c.g);
+            out[2] = static_cast<float>(c.b);
         }
     }
-
-private:
-    PixelBuffer& frame_;
-    const bool keep_;
-    const Report& report_;
-    const size_t rowValues_; ///< floats per image row (width × 3)
-    std::mutex mutex_;
-    std::vector<int> tilesLeft_; ///< per tile row
-    int nextRow_ = 0;            ///< the first tile row not reported
-    std::vector<std::unique_ptr<float[]>> rowBuffers_; ///< per tile row, when the frame is not kept
-};
+}
 
 } // namespace
 
-RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings) {
+std::vector<Tile> imageTiles(int width, int height, int size) {
+    std::vector<Tile> tiles;
+    for (int y = 0; y < height; y += size)
+        for (int x = 0; x < width; x += size)
+            tiles.push_back({x, y, std::min(x + size, width), std::min(y + size, height)});
+    return tiles;
+}
+
+PixelBuffer::PixelBuffer(int width, int height)
+    : width(width), height(height), rgb(static_cast<size_t>(width) * height * 3, 0.0f) {}
+
+void PixelBuffer::place(const TileResult& result) {
+    const Tile& t = result.tile;
+    const size_t rowValues = static_cast<size_t>(t.width()) * 3;
+    for (int y = t.y0; y < t.y1; ++y) {
+        std::copy_n(result.rgb.data() + static_cast<size_t>(y - t.y0) * rowValues, rowValues,
+                    rgb.data() + (static_cast<size_t>(y) * width + t.x0) * 3);
+    }
+}
+
+RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     RenderOutcome outcome;
     auto buildStart = std::chrono::steady_clock::now();
-    const SettingsDesc& s = desc.settings;
-    std::unique_ptr<RenderScene> scene = buildRenderScene(desc, outcome.error);
-    if (!scene) return outcome;
-    SceneImages images;
-    if (!loadSceneImages(desc, images, outcome.error)) return outcome;
-    std::vector<Light> lights;
-    for (const LightDesc& l : desc.lights) lights.emplace_back(l, s.shadowSamples);
-    std::vector<Texture> textures;
-    for (const TextureDesc& t : desc.textures)
-        textures.emplace_back(t, images.find(fileToOpen(t.resolvedFile, t.file)));
-    Background background(desc.background,
-                          images.find(fileToOpen(desc.background.resolvedImage, desc.background.image)));
-    Integrator integrator(*scene, s, std::move(lights), background, std::move(textures));
-    Camera camera(desc.camera, s.width, s.height, s.dofSamples);
-    PixelSampler sampler(integrator, camera, s);
+    PreparedScene prepared;
+    if (!prepare(desc, prepared, outcome.error)) return outcome;
+    const scene::SettingsDesc settings = withBudget(desc.settings, job.samples);
+    PixelSampler sampler(*prepared.integrator, *prepared.camera, settings);
     outcome.buildSeconds = secondsSince(buildStart);
-    outcome.primitives = scene->primitives.size();
-    outcome.bvhNodes = scene->bvh.nodeCount();
-    outcome.bvhDepth = scene->bvh.depth();
-    outcome.samples = s.antialias == Antialias::Grid ? static_cast<uint64_t>(s.supersampling) * s.supersampling : 4;
+    outcome.primitives = prepared.geometry->primitives.size();
+    outcome.bvhNodes = prepared.geometry->bvh.nodeCount();
+    outcome.bvhDepth = prepared.geometry->bvh.depth();
+    outcome.samples = settings.antialias == scene::Antialias::Grid
+                          ? static_cast<uint64_t>(settings.supersampling) * settings.supersampling
+                          : 4;
 
     auto renderStart = std::chrono::steady_clock::now();
-    PixelBuffer& frame = outcome.frame;
-    frame.width = s.width;
-    frame.height = s.height;
-    int tilesX = (s.width + kTileSize - 1) / kTileSize, tilesY = (s.height + kTileSize - 1) / kTileSize;
-    int tileCount = tilesX * tilesY;
+    const std::vector<Tile> tiles =
+        job.tiles.empty() ? imageTiles(settings.width, settings.height) : job.tiles;
+    const int tileCount = static_cast<int>(tiles.size());
+    outcome.tileCount = tileCount;
     std::atomic<int> nextTile{0}, doneTiles{0};
-    unsigned threadCount = settings.threads > 0 ? static_cast<unsigned>(settings.threads)
-                                                : std::max(1u, std::thread::hardware_concurrency());
-    threadCount = std::min<unsigned>(threadCount, static_cast<unsigned>(tileCount));
+    unsigned threadCount = job.threads > 0 ? static_cast<unsigned>(job.threads)
+                                           : std::max(1u, std::thread::hardware_concurrency());
+    threadCount = std::max(1u, std::min<unsigned>(threadCount, static_cast<unsigned>(tileCount)));
     std::vector<RayStats> stats(threadCount);
-    FrameRows rows(frame, settings.keepFrame, tilesX, tilesY, settings.onRowsDone);
+    std::mutex callbackMutex; // the caller's callback sees one tile at a time
 
-    std::latch ready(1); // the threads are started and the frame is allocated
     auto worker = [&](unsigned index) {
-        if (index > 0) ready.wait();
-        if (index + 1 == threadCount && index > 0 && settings.beforeLastWorker) settings.beforeLastWorker();
         TraceContext context;
-        while (true) {
-            if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) break;
-            int tile = nextTile.fetch_add(1);
+        std::vector<float> rgb;
+        while (!(job.cancel && job.cancel->load(std::memory_order_relaxed))) {
+            const int tile = nextTile.fetch_add(1);
             if (tile >= tileCount) break;
-            const int tileRow = tile / tilesX;
-            int x0 = (tile % tilesX) * kTileSize, y0 = tileRow * kTileSize;
-            float* tileStart = rows.firstRowOf(tileRow) + 3 * static_cast<size_t>(x0);
-            for (int y = y0; y < std::min(y0 + kTileSize, s.height); ++y) {
-                float* out = tileStart + static_cast<size_t>(y - y0) * rows.rowValues();
-                for (int x = x0; x < std::min(x0 + kTileSize, s.width); ++x, out += 3) {
-                    Vec3 c = sampler.pixel(x, y, context);
-                    out[0] = static_cast<float>(c.r);
-                    out[1] = static_cast<float>(c.g);
-                    out[2] = static_cast<float>(c.b);
-                }
+            traceTile(sampler, tiles[static_cast<size_t>(tile)], rgb, context);
+            if (job.onTileDone) {
+                std::lock_guard lock(callbackMutex);
+                job.onTileDone(TileResult{tiles[static_cast<size_t>(tile)], tile, rgb});
             }
             doneTiles.fetch_add(1);
-            rows.tileDone(tileRow);
         }
         stats[index] = context.stats;
     };
     std::vector<std::thread> threads;
     for (unsigned i = 1; i < threadCount; ++i) threads.emplace_back(worker, i);
-    // Report from a helper so the caller's callback runs while the workers trace. It waits
-    // on a condition the end of the render signals, so the render never waits out a period.
-    std::mutex reportMutex;
-    std::condition_variable reportWake;
-    bool finished = false;
-    std::thread reporter;
-    if (settings.onProgress) {
-        reporter = std::thread([&] {
-            std::unique_lock lock(reportMutex);
-            while (!finished) {
-                settings.onProgress(doneTiles.load(), tileCount);
-                reportWake.wait_for(lock, std::chrono::milliseconds(100), [&] { return finished; });
-            }
-        });
-    }
-    if (settings.onThreadsStarted) settings.onThreadsStarted();
-    // Zeroing a kept frame (25 MB at 1920×1080) faults in every page: done after the threads
-    // start, it overlaps whatever onThreadsStarted began (crtc's image module load).
-    rows.allocate();
-    ready.count_down();
     worker(0);
     for (std::thread& t : threads) t.join();
-    if (reporter.joinable()) {
-        {
-            std::lock_guard lock(reportMutex);
-            finished = true;
-        }
-        reportWake.notify_one();
-        reporter.join();
-        settings.onProgress(doneTiles.load(), tileCount);
-    }
+
     for (const RayStats& st : stats) outcome.stats += st;
     outcome.renderSeconds = secondsSince(renderStart);
-    outcome.cancelled = settings.cancel && settings.cancel->load() && doneTiles.load() < tileCount;
+    outcome.tilesDone = doneTiles.load();
+    outcome.cancelled = outcome.tilesDone < tileCount;
     outcome.ok = !outcome.cancelled;
     return outcome;
 }

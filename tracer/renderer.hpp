@@ -1,7 +1,8 @@
-// Renders a SceneDesc into linear RGB pixels: tiles handed to std::thread workers.
+// Renders a scene description: tiles of the image traced by std::thread workers, each finished
+// tile handed to the caller.
 #pragma once
 
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 #include "tracer/stats.hpp"
 
 #include <atomic>
@@ -12,51 +13,76 @@
 
 namespace crt::tracer {
 
-/// Linear RGB floats, row-major, top row first.
-struct PixelBuffer {
-    int width = 0;
-    int height = 0;
-    std::vector<float> rgb;
+/// A rectangle of the image: columns [x0, x1) of rows [y0, y1), row 0 at the top.
+struct Tile {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+    bool operator==(const Tile&) const = default;
 };
 
-struct RenderSettings {
-    int threads = 0;                          ///< 0: all cores
-    const std::atomic<bool>* cancel = nullptr; ///< set (e.g. by SIGINT) to stop early
-    /// Called from the calling thread about ten times a second with finished/total tiles.
-    std::function<void(int done, int total)> onProgress;
-    /// Called with rows [yBegin, yEnd) of the image (RGB floats) as soon as they are final,
-    /// in order from the top, one call at a time, from a worker thread: it should only copy
-    /// them and hand them over (to an image file being written while the render goes on).
-    std::function<void(int yBegin, int yEnd, std::span<const float> rgb)> onRowsDone;
-    /// False (with onRowsDone): the rows go only to onRowsDone, and RenderOutcome::frame
-    /// comes back with its size but no pixels. The render then holds only the rows in
-    /// flight: for an image streamed to a file that nobody reads back.
-    bool keepFrame = true;
-    /// Called once all the render's threads have been created, before the calling thread
-    /// starts tracing (crtc starts loading the image module then; see image_io::startLoading).
-    std::function<void()> onThreadsStarted;
-    /// With two or more threads, one of them calls this (after onThreadsStarted) before it
-    /// starts tracing and may be held up by it: crtc holds it until the image module, which
-    /// keeps a core busy while it loads, is loaded. The load then has a core of its own
-    /// instead of a share of every core, and ends before the render rather than after it.
-    std::function<void()> beforeLastWorker;
+/// The side of the tiles imageTiles cuts an image into by default.
+inline constexpr int kTileSize = 16;
+
+/// A `width` × `height` image cut into square tiles of `size` pixels (narrower at the right
+/// edge, shorter at the bottom), row by row from the top.
+std::vector<Tile> imageTiles(int width, int height, int size = kTileSize);
+
+/// A finished tile: its linear RGB floats, row-major from its top row.
+struct TileResult {
+    Tile tile;
+    int index = 0;                ///< its place in RenderJob::tiles
+    std::span<const float> rgb;   ///< tile.width() × tile.height() × 3 values
+};
+
+/// The camera samples a pixel gets.
+struct SampleBudget {
+    /// 0: as the scene's settings say (grid or adaptive anti-aliasing); n > 0: an n × n grid,
+    /// whatever the scene asks for (a quick preview's 1).
+    int grid = 0;
+};
+
+/// What to render of a scene, and how.
+struct RenderJob {
+    std::vector<Tile> tiles; ///< the region to render; empty: the whole image (imageTiles)
+    SampleBudget samples;
+    int threads = 0;                           ///< 0: all cores
+    const std::atomic<bool>* cancel = nullptr; ///< once set, no further tile is started
+    /// Called once for every finished tile, from the worker that traced it, one call at a time;
+    /// `rgb` is valid during the call only. A tile's pixels do not depend on which thread traced
+    /// it, nor on the other tiles of the job: the same tile of the same scene is the same bits.
+    std::function<void(const TileResult&)> onTileDone;
 };
 
 struct RenderOutcome {
     bool ok = false;
     bool cancelled = false;
     std::string error; ///< why it failed, e.g. "scene.obj:12: bad vertex index"
-    PixelBuffer frame;
+    int tilesDone = 0;
+    int tileCount = 0;
     RayStats stats;
     double buildSeconds = 0;  ///< scene build: BVH, images, textures
     double renderSeconds = 0; ///< tracing
     size_t primitives = 0;
     size_t bvhNodes = 0;
     int bvhDepth = 0;
-    uint64_t samples = 0; ///< camera samples per pixel (before DOF)
+    uint64_t samples = 0; ///< camera samples per pixel (before depth of field)
 };
 
-/// Renders `desc` at its settings' width and height.
-RenderOutcome renderScene(const SceneDesc& desc, const RenderSettings& settings);
+/// Renders the tiles of `job` of `scene` at its settings' width and height.
+RenderOutcome render(const scene::SceneDesc& scene, const RenderJob& job);
+
+/// Linear RGB floats of a whole image, row-major, top row first.
+struct PixelBuffer {
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgb;
+
+    PixelBuffer() = default;
+    PixelBuffer(int width, int height);
+    /// Copies a finished tile into its place.
+    void place(const TileResult& tile);
+};
 
 } // namespace crt::tracer

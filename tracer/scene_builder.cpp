@@ -10,12 +10,12 @@ namespace crt::tracer {
 
 class RenderSceneBuilder {
 public:
-    RenderSceneBuilder(const SceneDesc& desc, RenderScene& scene, std::string& error)
+    RenderSceneBuilder(const scene::SceneDesc& desc, RenderScene& scene, std::string& error)
         : desc_(desc), scene_(scene), error_(error) {}
 
     bool build() {
         scene_.materials.reserve(desc_.materials.size() + 1);
-        for (const MaterialDesc& m : desc_.materials) {
+        for (const scene::MaterialDesc& m : desc_.materials) {
             scene_.materials.push_back({desc_.finishOf(m), m.color});
         }
         defaultMaterial_ = static_cast<int32_t>(scene_.materials.size());
@@ -39,18 +39,18 @@ private:
         while (!pending.empty()) {
             Operand op = std::move(pending.back());
             pending.pop_back();
-            const EntityDesc& e = desc_.entities[op.entity];
-            if (auto* t = std::get_if<TransformNode>(&e.shape)) {
+            const scene::EntityDesc& e = desc_.entities[op.entity];
+            if (auto* t = std::get_if<scene::TransformNode>(&e.shape)) {
                 pending.push_back({t->child, op.transform.compose(Transform::fromModifiers(t->modifiers))});
-            } else if (auto* g = std::get_if<GroupNode>(&e.shape)) {
+            } else if (auto* g = std::get_if<scene::GroupNode>(&e.shape)) {
                 for (auto it = g->members.rbegin(); it != g->members.rend(); ++it) pending.push_back({*it, op.transform});
-            } else if (auto* c = std::get_if<CsgNode>(&e.shape); c && c->op == CsgOp::Union) {
+            } else if (auto* c = std::get_if<scene::CsgNode>(&e.shape); c && c->op == scene::CsgOp::Union) {
                 pending.push_back({c->right, op.transform});
                 pending.push_back({c->left, op.transform});
-            } else if (std::holds_alternative<CsgNode>(e.shape)) {
+            } else if (std::holds_alternative<scene::CsgNode>(e.shape)) {
                 int32_t node = addCsg(op);
                 if (node >= 0) scene_.objects.push_back(~node);
-            } else if (auto* m = std::get_if<MeshShape>(&e.shape)) {
+            } else if (auto* m = std::get_if<scene::MeshShape>(&e.shape)) {
                 if (!addMesh(*m, e, op.transform)) return false;
             } else {
                 int32_t p = addPrimitive(e, op.transform);
@@ -60,7 +60,7 @@ private:
         return true;
     }
 
-    int32_t materialOf(const EntityDesc& e) const { return e.material >= 0 ? e.material : defaultMaterial_; }
+    int32_t materialOf(const scene::EntityDesc& e) const { return e.material >= 0 ? e.material : defaultMaterial_; }
 
     int32_t addTransform(const Transform& toWorld) {
         if (toWorld.isIdentity()) return -1;
@@ -73,15 +73,15 @@ private:
         return static_cast<int32_t>(scene_.transforms.size() - 1);
     }
 
-    int32_t addPrimitive(const EntityDesc& e, const Transform& toWorld) {
+    int32_t addPrimitive(const scene::EntityDesc& e, const Transform& toWorld) {
         std::optional<Geometry> geometry = makeGeometry(e.shape);
         if (!geometry) return -1;
         scene_.primitives.push_back({std::move(*geometry), addTransform(toWorld), materialOf(e)});
         return static_cast<int32_t>(scene_.primitives.size() - 1);
     }
 
-    bool addMesh(const MeshShape& mesh, const EntityDesc& e, const Transform& toWorld) {
-        const std::string& path = fileToOpen(mesh.resolvedFile, mesh.file);
+    bool addMesh(const scene::MeshShape& mesh, const scene::EntityDesc& e, const Transform& toWorld) {
+        const std::string& path = scene::fileToOpen(mesh.resolvedFile, mesh.file);
         auto cached = meshes_.find(path);
         if (cached == meshes_.end()) {
             std::optional<MeshData> data = readObj(path, error_);
@@ -97,17 +97,17 @@ private:
     }
 
     /// The operands of a chain of one associative operator, through transforms and groups.
-    void collectChain(const Operand& start, CsgOp op, std::vector<Operand>& operands) {
+    void collectChain(const Operand& start, scene::CsgOp op, std::vector<Operand>& operands) {
         std::vector<Operand> pending{start};
         while (!pending.empty()) {
             Operand o = std::move(pending.back());
             pending.pop_back();
-            const EntityDesc& e = desc_.entities[o.entity];
-            if (auto* t = std::get_if<TransformNode>(&e.shape)) {
+            const scene::EntityDesc& e = desc_.entities[o.entity];
+            if (auto* t = std::get_if<scene::TransformNode>(&e.shape)) {
                 pending.push_back({t->child, o.transform.compose(Transform::fromModifiers(t->modifiers))});
-            } else if (auto* g = std::get_if<GroupNode>(&e.shape); g && op == CsgOp::Union) {
+            } else if (auto* g = std::get_if<scene::GroupNode>(&e.shape); g && op == scene::CsgOp::Union) {
                 for (int32_t m : g->members) pending.push_back({m, o.transform});
-            } else if (auto* c = std::get_if<CsgNode>(&e.shape); c && c->op == op) {
+            } else if (auto* c = std::get_if<scene::CsgNode>(&e.shape); c && c->op == op) {
                 pending.push_back({c->right, o.transform});
                 pending.push_back({c->left, o.transform});
             } else {
@@ -119,11 +119,11 @@ private:
     /// Adds a CSG tree; chains are rebalanced ((a − b) − c = a − (b ∪ c), unions and
     /// intersections regrouped by position) so evaluation depth grows like log n.
     int32_t addCsg(const Operand& operand) {
-        const EntityDesc& e = desc_.entities[operand.entity];
-        if (auto* t = std::get_if<TransformNode>(&e.shape))
+        const scene::EntityDesc& e = desc_.entities[operand.entity];
+        if (auto* t = std::get_if<scene::TransformNode>(&e.shape))
             return addCsg({t->child, operand.transform.compose(Transform::fromModifiers(t->modifiers))});
-        const CsgNode* c = std::get_if<CsgNode>(&e.shape);
-        if (!c && !std::holds_alternative<GroupNode>(e.shape)) {
+        const scene::CsgNode* c = std::get_if<scene::CsgNode>(&e.shape);
+        if (!c && !std::holds_alternative<scene::GroupNode>(e.shape)) {
             int32_t p = addPrimitive(e, operand.transform);
             if (p < 0) return -1;
             CsgTreeNode leaf;
@@ -134,16 +134,16 @@ private:
             scene_.csgNodes.push_back(leaf);
             return static_cast<int32_t>(scene_.csgNodes.size() - 1);
         }
-        if (c && c->op == CsgOp::Difference) {
+        if (c && c->op == scene::CsgOp::Difference) {
             // Walk the left spine: ((a − b) − c) − d = a − (b ∪ c ∪ d).
             std::vector<Operand> subtracted;
             Operand base = operand;
             while (true) {
-                const EntityDesc& be = desc_.entities[base.entity];
-                if (auto* t = std::get_if<TransformNode>(&be.shape)) {
+                const scene::EntityDesc& be = desc_.entities[base.entity];
+                if (auto* t = std::get_if<scene::TransformNode>(&be.shape)) {
                     base = {t->child, base.transform.compose(Transform::fromModifiers(t->modifiers))};
-                } else if (auto* d = std::get_if<CsgNode>(&be.shape); d && d->op == CsgOp::Difference) {
-                    collectChain({d->right, base.transform}, CsgOp::Union, subtracted);
+                } else if (auto* d = std::get_if<scene::CsgNode>(&be.shape); d && d->op == scene::CsgOp::Difference) {
+                    collectChain({d->right, base.transform}, scene::CsgOp::Union, subtracted);
                     base = {d->left, base.transform};
                 } else {
                     break;
@@ -154,9 +154,9 @@ private:
             return combine(CsgNodeKind::Difference, left, right);
         }
         std::vector<Operand> operands;
-        CsgOp op = c ? c->op : CsgOp::Union;
+        scene::CsgOp op = c ? c->op : scene::CsgOp::Union;
         collectChain(operand, op, operands);
-        return addBalanced(operands, op == CsgOp::Intersection ? CsgNodeKind::Intersection : CsgNodeKind::Union);
+        return addBalanced(operands, op == scene::CsgOp::Intersection ? CsgNodeKind::Intersection : CsgNodeKind::Union);
     }
 
     int32_t addBalanced(std::vector<Operand>& operands, CsgNodeKind kind) {
@@ -267,14 +267,14 @@ private:
         scene_.bvh.build(bounds);
     }
 
-    const SceneDesc& desc_;
+    const scene::SceneDesc& desc_;
     RenderScene& scene_;
     std::string& error_;
     int32_t defaultMaterial_ = 0;
     std::map<std::string, std::shared_ptr<const MeshData>> meshes_;
 };
 
-std::unique_ptr<RenderScene> buildRenderScene(const SceneDesc& desc, std::string& error) {
+std::unique_ptr<RenderScene> buildRenderScene(const scene::SceneDesc& desc, std::string& error) {
     auto scene = std::make_unique<RenderScene>();
     RenderSceneBuilder builder(desc, *scene, error);
     if (!builder.build()) return nullptr;

@@ -25,14 +25,14 @@ bool load(const std::string& path, bool decodeSrgb, SceneImages& images, std::st
 
 } // namespace
 
-bool loadSceneImages(const SceneDesc& desc, SceneImages& images, std::string& error) {
+bool loadSceneImages(const scene::SceneDesc& desc, SceneImages& images, std::string& error) {
     bool decodeSrgb = desc.settings.gamma != 1.0 || desc.settings.srgb;
-    if (desc.background.kind == BackgroundKind::Image &&
-        !load(fileToOpen(desc.background.resolvedImage, desc.background.image), decodeSrgb, images, error))
+    if (desc.background.kind == scene::BackgroundKind::Image &&
+        !load(scene::fileToOpen(desc.background.resolvedImage, desc.background.image), decodeSrgb, images, error))
         return false;
-    for (const TextureDesc& t : desc.textures) {
-        if ((t.kind == TextureKind::Image || t.kind == TextureKind::ImageBump) &&
-            !load(fileToOpen(t.resolvedFile, t.file), decodeSrgb && t.kind == TextureKind::Image, images, error))
+    for (const scene::TextureDesc& t : desc.textures) {
+        if ((t.kind == scene::TextureKind::Image || t.kind == scene::TextureKind::ImageBump) &&
+            !load(scene::fileToOpen(t.resolvedFile, t.file), decodeSrgb && t.kind == scene::TextureKind::Image, images, error))
             return false;
     }
     return true;

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tracer/image.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 #include <map>
 #include <string>
@@ -21,6 +21,6 @@ struct SceneImages {
 /// Reads every image the scene refers to; 8-bit images are decoded from sRGB unless the
 /// scene's gamma is 1.0, when raw/255 is used (as the original). False with `error` set
 /// ("<file>: <cause>") when one cannot be read.
-bool loadSceneImages(const SceneDesc& desc, SceneImages& images, std::string& error);
+bool loadSceneImages(const scene::SceneDesc& desc, SceneImages& images, std::string& error);
 
 } // namespace crt::tracer

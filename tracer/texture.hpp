@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tracer/image.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 #include "tracer/transform.hpp"
 
 namespace crt::tracer {
@@ -10,19 +10,19 @@ namespace crt::tracer {
 class Texture {
 public:
     /// `image` is the decoded file of an Image or ImageBump texture (null otherwise).
-    Texture(const TextureDesc& desc, const Image* image);
+    Texture(const scene::TextureDesc& desc, const Image* image);
 
     /// The colour at an object-space point with surface coordinates uv.
     Vec3 color(const Vec3& objectPoint, const Vec2& uv) const;
     /// A bump texture's height at a point (its gradient perturbs the normal).
     double height(const Vec3& objectPoint, const Vec2& uv) const;
-    bool isBump() const { return desc_.kind == TextureKind::NoiseBump || desc_.kind == TextureKind::ImageBump; }
+    bool isBump() const { return desc_.kind == scene::TextureKind::NoiseBump || desc_.kind == scene::TextureKind::ImageBump; }
     double strength() const { return desc_.strength; }
 
 private:
     Vec2 imageCoordinates(const Vec3& p, const Vec2& uv) const;
 
-    TextureDesc desc_;
+    scene::TextureDesc desc_;
     const Image* image_;
     Transform toTexture_; ///< object space to texture space (the inverse of its modifiers)
     Vec3 a_, b_;

@@ -28,18 +28,18 @@ Transform::Transform(const glm::dmat3& linear, const Vec3& offset)
     : linear_(linear), offset_(offset), normalMatrix_(glm::transpose(glm::inverse(linear))),
       identity_(linear == glm::dmat3(1.0) && offset == Vec3(0.0)) {}
 
-Transform Transform::fromModifiers(const std::vector<Modifier>& modifiers) {
+Transform Transform::fromModifiers(const std::vector<scene::Modifier>& modifiers) {
     Transform result;
-    for (const Modifier& m : modifiers) {
+    for (const scene::Modifier& m : modifiers) {
         Transform step;
         switch (m.kind) {
-        case ModifierKind::Translate: step = Transform(glm::dmat3(1.0), m.value); break;
-        case ModifierKind::Scale:
+        case scene::ModifierKind::Translate: step = Transform(glm::dmat3(1.0), m.value); break;
+        case scene::ModifierKind::Scale:
             step = Transform(glm::dmat3(glm::dvec3(m.value.x, 0, 0), glm::dvec3(0, m.value.y, 0),
                                         glm::dvec3(0, 0, m.value.z)),
                              Vec3(0.0));
             break;
-        case ModifierKind::Rotate: {
+        case scene::ModifierKind::Rotate: {
             glm::dmat3 r = rotationAbout(2, m.value.z) * rotationAbout(1, m.value.y) * rotationAbout(0, m.value.x);
             step = Transform(r, Vec3(0.0));
             break;

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tracer/geometry/ray.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 #include <vector>
 
@@ -15,7 +15,7 @@ public:
     Transform(const glm::dmat3& linear, const Vec3& offset);
 
     /// The transform of a modifier list, applied left to right about the world origin.
-    static Transform fromModifiers(const std::vector<Modifier>& modifiers);
+    static Transform fromModifiers(const std::vector<scene::Modifier>& modifiers);
 
     bool isIdentity() const { return identity_; }
     /// this after `inner`: first inner, then this.

@@ -4,7 +4,7 @@
 #   bench/bvh/run.sh [path/to/crtc]
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-crtc="${1:-$here/../../build/lang/crtc}"
+crtc="${1:-$here/../../build/bin/crtc}"
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 echo "| spheres | BVH nodes | depth | rays | nodes visited / ray | intersection tests / ray | render s |"

@@ -4,7 +4,7 @@
 #
 # usage: bench/frontend/run.sh [CRTC]
 #
-#   CRTC        path of the crtc binary (default: $CRTC, else build/lang/crtc
+#   CRTC        path of the crtc binary (default: $CRTC, else build/bin/crtc
 #               under the repository root)
 #
 # environment:
@@ -34,7 +34,7 @@ if [[ $# -gt 1 ]]; then
     exit 2
 fi
 
-crtc=${1:-${CRTC:-$root/build/lang/crtc}}
+crtc=${1:-${CRTC:-$root/build/bin/crtc}}
 runs=${RUNS:-3}
 povray=${POVRAY:-/usr/bin/povray}
 timebin=/usr/bin/time

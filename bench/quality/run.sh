@@ -15,7 +15,7 @@
 #   --svg FILE    also draw the curves, one panel per scene, into FILE
 #   --replot DIR  render nothing: print the tables (and draw --svg) again from the results a
 #                 run kept in DIR (its BENCH_OUT)
-#   CRTC          path of the crtc binary (default: $CRTC, else build/lang/crtc)
+#   CRTC          path of the crtc binary (default: $CRTC, else build/bin/crtc)
 #
 # environment:
 #   THREADS      render threads of both tools (default 2)
@@ -66,7 +66,7 @@ while [[ $# -gt 0 ]]; do
     esac
 done
 
-crtc=${crtc_arg:-${CRTC:-$root/build/lang/crtc}}
+crtc=${crtc_arg:-${CRTC:-$root/build/bin/crtc}}
 povray=${POVRAY:-/usr/bin/povray}
 threads=${THREADS:-2}
 reference=${REFERENCE:-16}

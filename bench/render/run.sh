@@ -9,7 +9,7 @@
 #   --runs N      timed runs per tool, scene and size; medians reported (default 3)
 #   --sizes LIST  comma-separated image sizes (default 800x600,1920x1080)
 #   --scenes LIST comma-separated subset of mirror_room,sphere_grid,csg
-#   CRTC          path of the crtc binary (default: $CRTC, else build/lang/crtc
+#   CRTC          path of the crtc binary (default: $CRTC, else build/bin/crtc
 #                 under the repository root)
 #
 # environment:
@@ -50,7 +50,7 @@ while [[ $# -gt 0 ]]; do
     esac
 done
 
-crtc=${crtc_arg:-${CRTC:-$root/build/lang/crtc}}
+crtc=${crtc_arg:-${CRTC:-$root/build/bin/crtc}}
 povray=${POVRAY:-/usr/bin/povray}
 threads=${THREADS:-2}
 

@@ -11,7 +11,7 @@
 
 namespace fs = std::filesystem;
 using namespace crt::lang;
-namespace t = crt::tracer;
+namespace t = crt::scene;
 
 namespace {
 

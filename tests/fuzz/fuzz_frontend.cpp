@@ -32,7 +32,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                      .size();
         total += crt::lang::formatLocation(compilation.sources, diagnostic.range).size();
     }
-    if (compilation.scene) total += crt::lang::sceneToJson(*compilation.scene).size();
+    if (compilation.scene) total += crt::scene::sceneToJson(*compilation.scene).size();
     // Keep the results observable so nothing above is optimised away.
     volatile size_t sink = total;
     (void)sink;

@@ -17,7 +17,7 @@
 #include "diagnostic_printer.hpp"
 #include "interpreter.hpp"
 #include "options.hpp"
-#include "scene_json.hpp"
+#include "scene/scene_json.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -28,6 +28,7 @@
 #include <sstream>
 
 namespace fs = std::filesystem;
+using namespace crt;
 using namespace crt::lang;
 
 namespace {
@@ -153,15 +154,15 @@ int main(int argc, char** argv) {
     argStrings.push_back(file.string());
     std::vector<char*> args;
     for (std::string& s : argStrings) args.push_back(s.data());
-    driver::ParsedOptions parsed = driver::parseOptions(static_cast<int>(args.size()), args.data());
+    crtc::ParsedOptions parsed = crtc::parseOptions(static_cast<int>(args.size()), args.data());
     if (!parsed.options) {
         std::cerr << parsed.message << "\n";
         return 2;
     }
-    driver::Options& options = *parsed.options;
+    crtc::Options& options = *parsed.options;
     std::ostringstream printed;
     options.eval.printOut = &printed;
-    options.eval.stdlibDir = CRT_SOURCE_STDLIB_DIR;
+    options.eval.includes.stdlibDir = CRT_SOURCE_STDLIB_DIR;
     options.eval.frameCount = std::max(options.frames, 1);
     options.eval.frame = options.eval.frameCount - 1; // the last frame, where t is largest
 
@@ -179,7 +180,7 @@ int main(int argc, char** argv) {
 
     fs::path snapshot = fs::path(file).replace_extension(".scene.json");
     if (fs::exists(snapshot) || update) {
-        std::string actual = c.scene ? replacePaths(sceneToJson(*c.scene), paths) : std::string("null\n");
+        std::string actual = c.scene ? replacePaths(scene::sceneToJson(*c.scene), paths) : std::string("null\n");
         if (update) {
             std::ofstream(snapshot) << actual;
         } else if (readText(snapshot) != actual) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 using namespace crt::tracer;
+namespace scene = crt::scene;
 using namespace crt::tracer::test;
 
 namespace {
@@ -20,26 +21,26 @@ constexpr int kWidth = 160, kHeight = 120;
 
 /// A sphere resting on a slightly reflective floor, a mirror sphere and a mirror wall, lit by a
 /// point light (no falloff, so the lighting is scale-free) and a parallel light; all lengths × s.
-SceneDesc scaledScene(double s) {
+scene::SceneDesc scaledScene(double s) {
     SceneMaker m;
     m.desc = blankScene(kWidth, kHeight, lookAt(DVec3(0.5, 2.2, -5) * s, DVec3(0.3, 0.8, 0) * s, 50));
     m.desc.settings.recursionDepth = 5;
-    m.desc.background.kind = BackgroundKind::Gradient;
-    m.desc.background.horizon = Color{0.8, 0.85, 0.9, 1};
-    m.desc.background.sky = Color{0.3, 0.5, 0.9, 1};
+    m.desc.background.kind = scene::BackgroundKind::Gradient;
+    m.desc.background.horizon = scene::Color{0.8, 0.85, 0.9, 1};
+    m.desc.background.sky = scene::Color{0.3, 0.5, 0.9, 1};
 
     ShadingMaterial floor;
-    floor.color = Color{0.6, 0.6, 0.55, 1};
+    floor.color = scene::Color{0.6, 0.6, 0.55, 1};
     floor.reflectivity = 0.2;
     floor.diffuse = 0.8;
     m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(floor)));
     ShadingMaterial red;
-    red.color = Color{0.8, 0.3, 0.2, 1};
+    red.color = scene::Color{0.8, 0.3, 0.2, 1};
     red.specular = 0.4;
     red.shininess = 20;
     m.draw(m.sphere(DVec3(0, 1, 0) * s, 1 * s, m.material(red))); // touches the floor
     ShadingMaterial mirror;
-    mirror.color = Color{0.9, 0.9, 0.9, 1};
+    mirror.color = scene::Color{0.9, 0.9, 0.9, 1};
     mirror.reflectivity = 0.9;
     mirror.diffuse = 0.1;
     m.draw(m.sphere(DVec3(1.9, 0.8, 0.6) * s, 0.8 * s, m.material(mirror)));
@@ -48,16 +49,16 @@ SceneDesc scaledScene(double s) {
     wall.diffuse = 0.3;
     m.draw(m.plane({0, 0, -1}, DVec3(0, 0, 4) * s, m.material(wall)));
 
-    LightDesc point;
-    point.kind = LightKind::Point;
+    scene::LightDesc point;
+    point.kind = scene::LightKind::Point;
     point.origin = DVec3(-3, 5, -3) * s;
-    point.color = Color{0.8, 0.8, 0.8, 1};
+    point.color = scene::Color{0.8, 0.8, 0.8, 1};
     m.desc.lights.push_back(point);
-    LightDesc sun;
-    sun.kind = LightKind::Parallel;
+    scene::LightDesc sun;
+    sun.kind = scene::LightKind::Parallel;
     sun.from = DVec3(1, 3, -2);
     sun.pointing = DVec3(0, 0, 0);
-    sun.color = Color{0.3, 0.3, 0.3, 1};
+    sun.color = scene::Color{0.3, 0.3, 0.3, 1};
     m.desc.lights.push_back(sun);
     return m.desc;
 }
@@ -98,7 +99,7 @@ TEST_CASE("A lit floor and sphere have no shadow acne at scales 1e-3, 1 and 1e5"
     for (double s : {1e-3, 1.0, 1e5}) {
         SceneMaker m;
         m.desc = blankScene(96, 72, lookAt(DVec3(0.5, 2.2, -5) * s, DVec3(0.3, 0.8, 0) * s, 50));
-        const Color C{0.7, 0.6, 0.5, 1};
+        const scene::Color C{0.7, 0.6, 0.5, 1};
         ShadingMaterial mat;
         mat.color = C;
         int32_t id = m.material(mat);
@@ -106,8 +107,8 @@ TEST_CASE("A lit floor and sphere have no shadow acne at scales 1e-3, 1 and 1e5"
         const double radius = s;
         m.draw(m.plane({0, 1, 0}, {0, 0, 0}, id));
         m.draw(m.sphere(center, radius, id));
-        LightDesc sun;
-        sun.kind = LightKind::Parallel;
+        scene::LightDesc sun;
+        sun.kind = scene::LightKind::Parallel;
         sun.from = {-1, 4, -2};
         sun.pointing = {0, 0, 0};
         m.desc.lights.push_back(sun);

@@ -7,7 +7,7 @@
 
 namespace crt::tracer {
 
-BoxGeometry::BoxGeometry(const BoxShape& desc)
+BoxGeometry::BoxGeometry(const scene::BoxShape& desc)
     : lo_(glm::min(desc.cornerA, desc.cornerB)), hi_(glm::max(desc.cornerA, desc.cornerB)),
       empty_(!(lo_.x < hi_.x && lo_.y < hi_.y && lo_.z < hi_.z)) {}
 

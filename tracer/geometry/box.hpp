@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tracer/geometry/shape.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace crt::tracer {
 
@@ -12,7 +12,7 @@ namespace crt::tracer {
 class BoxGeometry {
   public:
     /// A degenerate desc (zero radius or extent, zero normal) gives no crossings at all.
-    explicit BoxGeometry(const BoxShape& desc);
+    explicit BoxGeometry(const scene::BoxShape& desc);
 
     /// The corners themselves (exact); empty for a zero extent.
     Bounds3 bounds() const;

@@ -3,7 +3,7 @@
 
 namespace crt::tracer {
 
-ConeGeometry::ConeGeometry(const ConeShape& desc)
+ConeGeometry::ConeGeometry(const scene::ConeShape& desc)
     : solid_(desc.base, desc.top, desc.baseRadius, desc.topRadius, desc.open) {}
 
 SurfacePoint ConeGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {

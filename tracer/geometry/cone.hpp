@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tracer/geometry/axial_solid.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace crt::tracer {
 
@@ -12,7 +12,7 @@ namespace crt::tracer {
 class ConeGeometry {
   public:
     /// A degenerate desc (zero radius or extent, zero normal) gives no crossings at all.
-    explicit ConeGeometry(const ConeShape& desc);
+    explicit ConeGeometry(const scene::ConeShape& desc);
 
     /// Object-space bounds, padded against rounding; empty for a degenerate shape.
     Bounds3 bounds() const { return solid_.bounds(); }

@@ -3,7 +3,7 @@
 
 namespace crt::tracer {
 
-CylinderGeometry::CylinderGeometry(const CylinderShape& desc)
+CylinderGeometry::CylinderGeometry(const scene::CylinderShape& desc)
     : solid_(desc.base, desc.top, desc.radius, desc.radius, desc.open) {}
 
 SurfacePoint CylinderGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tracer/geometry/axial_solid.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace crt::tracer {
 
@@ -12,7 +12,7 @@ namespace crt::tracer {
 class CylinderGeometry {
   public:
     /// A degenerate desc (zero radius or extent, zero normal) gives no crossings at all.
-    explicit CylinderGeometry(const CylinderShape& desc);
+    explicit CylinderGeometry(const scene::CylinderShape& desc);
 
     /// Object-space bounds, padded against rounding; empty for a degenerate shape.
     Bounds3 bounds() const { return solid_.bounds(); }

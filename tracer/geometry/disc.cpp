@@ -3,7 +3,7 @@
 
 namespace crt::tracer {
 
-DiscGeometry::DiscGeometry(const DiscShape& desc) : center_(desc.center) {
+DiscGeometry::DiscGeometry(const scene::DiscShape& desc) : center_(desc.center) {
     double len = glm::length(desc.normal);
     radius_ = desc.radius > 0 ? desc.radius : 0;
     hole_ = desc.hole > 0 ? desc.hole : 0;

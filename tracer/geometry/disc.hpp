@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tracer/geometry/geometry_math.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace crt::tracer {
 
@@ -12,7 +12,7 @@ namespace crt::tracer {
 class DiscGeometry {
   public:
     /// A degenerate desc (zero radius or extent, zero normal) gives no crossings at all.
-    explicit DiscGeometry(const DiscShape& desc);
+    explicit DiscGeometry(const scene::DiscShape& desc);
 
     /// Object-space bounds, padded against rounding; empty for a degenerate shape.
     Bounds3 bounds() const;

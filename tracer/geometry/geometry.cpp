@@ -34,30 +34,30 @@ bool hasCheapCrossings(const Geometry& geometry) {
            std::holds_alternative<QuadGeometry>(geometry) || std::holds_alternative<TriangleGeometry>(geometry);
 }
 
-std::optional<Geometry> makeGeometry(const Shape& shape) {
+std::optional<Geometry> makeGeometry(const scene::Shape& shape) {
     return std::visit(
         [](const auto& s) -> std::optional<Geometry> {
             using S = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<S, SphereShape>)
+            if constexpr (std::is_same_v<S, scene::SphereShape>)
                 return Geometry(SphereGeometry(s));
-            else if constexpr (std::is_same_v<S, BoxShape>)
+            else if constexpr (std::is_same_v<S, scene::BoxShape>)
                 return Geometry(BoxGeometry(s));
-            else if constexpr (std::is_same_v<S, PlaneShape>)
+            else if constexpr (std::is_same_v<S, scene::PlaneShape>)
                 return Geometry(PlaneGeometry(s));
-            else if constexpr (std::is_same_v<S, CylinderShape>)
+            else if constexpr (std::is_same_v<S, scene::CylinderShape>)
                 return Geometry(CylinderGeometry(s));
-            else if constexpr (std::is_same_v<S, ConeShape>)
+            else if constexpr (std::is_same_v<S, scene::ConeShape>)
                 return Geometry(ConeGeometry(s));
-            else if constexpr (std::is_same_v<S, TorusShape>)
+            else if constexpr (std::is_same_v<S, scene::TorusShape>)
                 return Geometry(TorusGeometry(s));
-            else if constexpr (std::is_same_v<S, DiscShape>)
+            else if constexpr (std::is_same_v<S, scene::DiscShape>)
                 return Geometry(DiscGeometry(s));
-            else if constexpr (std::is_same_v<S, QuadShape>)
+            else if constexpr (std::is_same_v<S, scene::QuadShape>)
                 return Geometry(QuadGeometry(s));
-            else if constexpr (std::is_same_v<S, TriangleShape>)
+            else if constexpr (std::is_same_v<S, scene::TriangleShape>)
                 return Geometry(TriangleGeometry(s));
             else
-                return std::nullopt; // MeshShape, CsgNode, TransformNode, GroupNode
+                return std::nullopt; // scene::MeshShape, scene::CsgNode, scene::TransformNode, scene::GroupNode
         },
         shape);
 }

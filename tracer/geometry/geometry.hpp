@@ -40,7 +40,7 @@ bool hasCheapCrossings(const Geometry& geometry);
 
 /// The primitive of a plain shape; nullopt for CSG, transform and group nodes and for meshes
 /// (which become one MeshTriangleGeometry per triangle once the file is read).
-std::optional<Geometry> makeGeometry(const Shape& shape);
+std::optional<Geometry> makeGeometry(const scene::Shape& shape);
 
 /// The first crossing with tMin < t < tMax (crossings are sorted), for nearest-hit queries.
 bool firstCrossingAfter(const CrossingList& crossings, double tMin, double tMax, Crossing& out);

@@ -13,7 +13,7 @@ template <class T> bool allValid(const int32_t (&idx)[3], const std::vector<T>& 
     return true;
 }
 
-TriangleShape shapeOf(const MeshData* mesh, size_t index) {
+scene::TriangleShape shapeOf(const MeshData* mesh, size_t index) {
     if (!mesh || index >= mesh->triangles.size()) return {};
     const MeshData::Triangle& tri = mesh->triangles[index];
     if (!allValid(tri.v, mesh->positions)) return {};

@@ -5,7 +5,7 @@
 
 namespace crt::tracer {
 
-PlaneGeometry::PlaneGeometry(const PlaneShape& desc) : position_(desc.position) {
+PlaneGeometry::PlaneGeometry(const scene::PlaneShape& desc) : position_(desc.position) {
     double len = glm::length(desc.normal);
     empty_ = !(len > 0) || !std::isfinite(len);
     frame_ = Frame::fromAxis(empty_ ? Vec3(0, 1, 0) : desc.normal / len);

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tracer/geometry/geometry_math.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace crt::tracer {
 
@@ -12,7 +12,7 @@ namespace crt::tracer {
 class PlaneGeometry {
   public:
     /// A degenerate desc (zero radius or extent, zero normal) gives no crossings at all.
-    explicit PlaneGeometry(const PlaneShape& desc);
+    explicit PlaneGeometry(const scene::PlaneShape& desc);
 
     /// Everything: a plane is unbounded (it lives outside the BVH).
     Bounds3 bounds() const { return Bounds3::everything(); }

@@ -3,7 +3,7 @@
 
 namespace crt::tracer {
 
-QuadGeometry::QuadGeometry(const QuadShape& desc)
+QuadGeometry::QuadGeometry(const scene::QuadShape& desc)
     : corner_(desc.corner), edgeA_(desc.edgeA), edgeB_(desc.edgeB) {
     Vec3 nn = glm::cross(edgeA_, edgeB_);
     double len2 = glm::dot(nn, nn);

@@ -5,7 +5,7 @@
 
 namespace crt::tracer {
 
-SphereGeometry::SphereGeometry(const SphereShape& desc)
+SphereGeometry::SphereGeometry(const scene::SphereShape& desc)
     : center_(desc.center), radius_(desc.radius > 0 ? desc.radius : 0) {}
 
 Bounds3 SphereGeometry::bounds() const {

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tracer/geometry/shape.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace crt::tracer {
 
@@ -11,7 +11,7 @@ namespace crt::tracer {
 class SphereGeometry {
   public:
     /// A degenerate desc (zero radius or extent, zero normal) gives no crossings at all.
-    explicit SphereGeometry(const SphereShape& desc);
+    explicit SphereGeometry(const scene::SphereShape& desc);
 
     /// Object-space bounds (empty for a zero radius).
     Bounds3 bounds() const;

@@ -30,7 +30,7 @@ double bracketedRoot(const F& f, const DF& df, double lo, double hi, bool negati
 
 } // namespace
 
-TorusGeometry::TorusGeometry(const TorusShape& desc) : center_(desc.center) {
+TorusGeometry::TorusGeometry(const scene::TorusShape& desc) : center_(desc.center) {
     double len = glm::length(desc.axis);
     major_ = desc.major > 0 ? desc.major : 0;
     minor_ = desc.minor > 0 ? desc.minor : 0;

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tracer/geometry/geometry_math.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace crt::tracer {
 
@@ -13,7 +13,7 @@ namespace crt::tracer {
 class TorusGeometry {
   public:
     /// A degenerate desc (zero radius or extent, zero normal) gives no crossings at all.
-    explicit TorusGeometry(const TorusShape& desc);
+    explicit TorusGeometry(const scene::TorusShape& desc);
 
     /// Object-space bounds, padded against rounding; empty for a degenerate shape.
     Bounds3 bounds() const;

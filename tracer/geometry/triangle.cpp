@@ -3,7 +3,7 @@
 
 namespace crt::tracer {
 
-TriangleGeometry::TriangleGeometry(const TriangleShape& desc) : p_{desc.a, desc.b, desc.c} {
+TriangleGeometry::TriangleGeometry(const scene::TriangleShape& desc) : p_{desc.a, desc.b, desc.c} {
     Vec3 e1 = p_[1] - p_[0], e2 = p_[2] - p_[0];
     Vec3 nn = glm::cross(e1, e2);
     double len = glm::length(nn);

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tracer/geometry/geometry_math.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace crt::tracer {
 
@@ -11,7 +11,7 @@ namespace crt::tracer {
 class TriangleGeometry {
   public:
     /// A degenerate desc (zero radius or extent, zero normal) gives no crossings at all.
-    explicit TriangleGeometry(const TriangleShape& desc);
+    explicit TriangleGeometry(const scene::TriangleShape& desc);
 
     /// The vertices' bounds (exact); empty for a degenerate triangle.
     Bounds3 bounds() const;

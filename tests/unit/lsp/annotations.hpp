@@ -94,7 +94,7 @@ struct TempDir {
 
 inline AnalysisOptions testOptions() {
     AnalysisOptions options;
-    options.stdlibDir = CRT_SOURCE_STDLIB_DIR;
+    options.includes.stdlibDir = CRT_SOURCE_STDLIB_DIR;
     return options;
 }
 

@@ -4,12 +4,13 @@
 #include <algorithm>
 
 using namespace crt::tracer;
+namespace scene = crt::scene;
 using namespace crt::tracer::test;
 
 namespace {
 
 /// The exact face plane of a box crossing, as a signed distance.
-SurfaceFn boxFaceFn(const BoxShape& b, uint32_t part) {
+SurfaceFn boxFaceFn(const scene::BoxShape& b, uint32_t part) {
     int axis = int(part / 2);
     bool high = part % 2 == 1;
     LD face = high ? std::max(b.cornerA[axis], b.cornerB[axis])
@@ -17,7 +18,7 @@ SurfaceFn boxFaceFn(const BoxShape& b, uint32_t part) {
     return [=](const LVec& p) { return high ? p[axis] - face : face - p[axis]; };
 }
 
-bool insideBox(const BoxShape& b, const LVec& p) {
+bool insideBox(const scene::BoxShape& b, const LVec& p) {
     for (int i = 0; i < 3; ++i) {
         LD lo = std::min(b.cornerA[i], b.cornerB[i]), hi = std::max(b.cornerA[i], b.cornerB[i]);
         if (p[i] < lo || p[i] > hi) return false;
@@ -25,7 +26,7 @@ bool insideBox(const BoxShape& b, const LVec& p) {
     return true;
 }
 
-SurfaceFn planeFn(const PlaneShape& s) {
+SurfaceFn planeFn(const scene::PlaneShape& s) {
     LVec n(s.normal);
     LD len = length(n);
     return [=](const LVec& p) { return dot(n, p - LVec(s.position)) / len; };
@@ -111,7 +112,7 @@ TEST_CASE("box: random lines alternate, and hits are bounded and on their face")
     for (int i = 0; i < 3000; ++i) {
         Vec3 a = rng.inBox(5),
              b = a + Vec3(rng.uniform(0.01, 4), rng.uniform(0.01, 4), rng.uniform(0.01, 4));
-        BoxShape s{a, b};
+        scene::BoxShape s{a, b};
         BoxGeometry g(s);
         Vec3 target = a + (b - a) * Vec3(rng.uniform(0, 1), rng.uniform(0, 1), rng.uniform(0, 1));
         Ray ray = rng.lineThrough(target, rng.uniform(0.1, 30));
@@ -173,7 +174,7 @@ TEST_CASE("plane: a parallel line does not cross and is wholly on one side") {
 }
 
 TEST_CASE("plane: UV are coordinates in the plane, not wrapped") {
-    PlaneShape s{{1, 1, 0}, {1, 2, 3}};
+    scene::PlaneShape s{{1, 1, 0}, {1, 2, 3}};
     PlaneGeometry g(s);
     Random rng(5);
     for (int i = 0; i < 100; ++i) {
@@ -199,7 +200,7 @@ TEST_CASE("plane: a zero normal draws nothing") {
 TEST_CASE("plane: random lines give bounded hits and consistent sides") {
     Random rng(12);
     for (int i = 0; i < 3000; ++i) {
-        PlaneShape s{rng.unit() * rng.uniform(0.1, 10), rng.inBox(50)};
+        scene::PlaneShape s{rng.unit() * rng.uniform(0.1, 10), rng.inBox(50)};
         PlaneGeometry g(s);
         Ray ray = rng.lineThrough(s.position + rng.inBox(20), rng.uniform(0.1, 100));
         CrossingList list;

@@ -2,6 +2,7 @@
 #include "geometry_test_support.hpp"
 
 using namespace crt::tracer;
+namespace scene = crt::scene;
 using namespace crt::tracer::test;
 
 namespace {
@@ -44,9 +45,9 @@ template <class G> void checkRandomLines(const char* what, uint64_t seed, bool c
         ExactFrustum exact(base, top, rb, rt);
         G g = [&] {
             if constexpr (std::is_same_v<G, ConeGeometry>)
-                return G(ConeShape{base, rb, top, rt, false});
+                return G(scene::ConeShape{base, rb, top, rt, false});
             else
-                return G(CylinderShape{base, top, rb, false});
+                return G(scene::CylinderShape{base, top, rb, false});
         }();
         Vec3 target = base + (top - base) * rng.uniform(-0.2, 1.2) + rng.inBox(std::max(rb, rt));
         Ray ray = rng.lineThrough(target, rng.uniform(0.1, 30));
@@ -224,7 +225,7 @@ TEST_CASE("cone: random lines around arbitrary axes") {
 }
 
 TEST_CASE("cylinder: a far origin keeps the crossings accurate") {
-    CylinderShape s{{1, 2, 3}, {2, 3, 5}, 0.5, false};
+    scene::CylinderShape s{{1, 2, 3}, {2, 3, 5}, 0.5, false};
     CylinderGeometry g(s);
     ExactFrustum exact(s.base, s.top, s.radius, s.radius);
     Random rng(9);

@@ -2,42 +2,43 @@
 #include "geometry_test_support.hpp"
 
 using namespace crt::tracer;
+namespace scene = crt::scene;
 using namespace crt::tracer::test;
 
 TEST_CASE("geometry: makeGeometry covers the plain shapes only") {
-    CHECK(std::holds_alternative<SphereGeometry>(*makeGeometry(SphereShape{{0, 0, 0}, 1})));
-    CHECK(std::holds_alternative<BoxGeometry>(*makeGeometry(BoxShape{{0, 0, 0}, {1, 1, 1}})));
-    CHECK(std::holds_alternative<PlaneGeometry>(*makeGeometry(PlaneShape{})));
-    CHECK(std::holds_alternative<CylinderGeometry>(*makeGeometry(CylinderShape{})));
-    CHECK(std::holds_alternative<ConeGeometry>(*makeGeometry(ConeShape{})));
-    CHECK(std::holds_alternative<TorusGeometry>(*makeGeometry(TorusShape{})));
-    CHECK(std::holds_alternative<DiscGeometry>(*makeGeometry(DiscShape{})));
-    CHECK(std::holds_alternative<QuadGeometry>(*makeGeometry(QuadShape{})));
-    CHECK(std::holds_alternative<TriangleGeometry>(*makeGeometry(TriangleShape{})));
-    CHECK_FALSE(makeGeometry(MeshShape{"a.obj", ""}));
-    CHECK_FALSE(makeGeometry(CsgNode{}));
-    CHECK_FALSE(makeGeometry(TransformNode{}));
-    CHECK_FALSE(makeGeometry(GroupNode{}));
+    CHECK(std::holds_alternative<SphereGeometry>(*makeGeometry(scene::SphereShape{{0, 0, 0}, 1})));
+    CHECK(std::holds_alternative<BoxGeometry>(*makeGeometry(scene::BoxShape{{0, 0, 0}, {1, 1, 1}})));
+    CHECK(std::holds_alternative<PlaneGeometry>(*makeGeometry(scene::PlaneShape{})));
+    CHECK(std::holds_alternative<CylinderGeometry>(*makeGeometry(scene::CylinderShape{})));
+    CHECK(std::holds_alternative<ConeGeometry>(*makeGeometry(scene::ConeShape{})));
+    CHECK(std::holds_alternative<TorusGeometry>(*makeGeometry(scene::TorusShape{})));
+    CHECK(std::holds_alternative<DiscGeometry>(*makeGeometry(scene::DiscShape{})));
+    CHECK(std::holds_alternative<QuadGeometry>(*makeGeometry(scene::QuadShape{})));
+    CHECK(std::holds_alternative<TriangleGeometry>(*makeGeometry(scene::TriangleShape{})));
+    CHECK_FALSE(makeGeometry(scene::MeshShape{"a.obj", ""}));
+    CHECK_FALSE(makeGeometry(scene::CsgNode{}));
+    CHECK_FALSE(makeGeometry(scene::TransformNode{}));
+    CHECK_FALSE(makeGeometry(scene::GroupNode{}));
 }
 
 TEST_CASE("geometry: solidity follows the spec") {
-    CHECK(isSolid(*makeGeometry(SphereShape{{0, 0, 0}, 1})));
-    CHECK(isSolid(*makeGeometry(BoxShape{})));
-    CHECK(isSolid(*makeGeometry(PlaneShape{})));
-    CHECK(isSolid(*makeGeometry(CylinderShape{{0, 0, 0}, {0, 1, 0}, 1, false})));
-    CHECK_FALSE(isSolid(*makeGeometry(CylinderShape{{0, 0, 0}, {0, 1, 0}, 1, true})));
-    CHECK(isSolid(*makeGeometry(ConeShape{{0, 0, 0}, 1, {0, 1, 0}, 0, false})));
-    CHECK_FALSE(isSolid(*makeGeometry(ConeShape{{0, 0, 0}, 1, {0, 1, 0}, 0, true})));
-    CHECK(isSolid(*makeGeometry(TorusShape{})));
-    CHECK_FALSE(isSolid(*makeGeometry(DiscShape{})));
-    CHECK_FALSE(isSolid(*makeGeometry(QuadShape{})));
-    CHECK_FALSE(isSolid(*makeGeometry(TriangleShape{})));
+    CHECK(isSolid(*makeGeometry(scene::SphereShape{{0, 0, 0}, 1})));
+    CHECK(isSolid(*makeGeometry(scene::BoxShape{})));
+    CHECK(isSolid(*makeGeometry(scene::PlaneShape{})));
+    CHECK(isSolid(*makeGeometry(scene::CylinderShape{{0, 0, 0}, {0, 1, 0}, 1, false})));
+    CHECK_FALSE(isSolid(*makeGeometry(scene::CylinderShape{{0, 0, 0}, {0, 1, 0}, 1, true})));
+    CHECK(isSolid(*makeGeometry(scene::ConeShape{{0, 0, 0}, 1, {0, 1, 0}, 0, false})));
+    CHECK_FALSE(isSolid(*makeGeometry(scene::ConeShape{{0, 0, 0}, 1, {0, 1, 0}, 0, true})));
+    CHECK(isSolid(*makeGeometry(scene::TorusShape{})));
+    CHECK_FALSE(isSolid(*makeGeometry(scene::DiscShape{})));
+    CHECK_FALSE(isSolid(*makeGeometry(scene::QuadShape{})));
+    CHECK_FALSE(isSolid(*makeGeometry(scene::TriangleShape{})));
     auto mesh = std::make_shared<MeshData>();
     CHECK_FALSE(isSolid(Geometry(MeshTriangleGeometry(mesh, 0))));
 }
 
 TEST_CASE("geometry: the free functions dispatch to the primitive") {
-    Geometry g = *makeGeometry(SphereShape{{0, 0, 0}, 2});
+    Geometry g = *makeGeometry(scene::SphereShape{{0, 0, 0}, 2});
     Bounds3 b = geometryBounds(g);
     CHECK(b.lo.x == Approx(-2));
     CHECK(b.hi.z == Approx(2));
@@ -49,10 +50,10 @@ TEST_CASE("geometry: the free functions dispatch to the primitive") {
     REQUIRE(list.count == 2);
     SurfacePoint sp = surfaceAt(g, ray, list.items[0]);
     CHECK(sp.point == Vec3(0, 0, -2));
-    CHECK(geometryBounds(*makeGeometry(PlaneShape{})).lo.y == -kInfinity);
-    CHECK(geometryBounds(*makeGeometry(TorusShape{{0, 0, 0}, 2, 0.5, {0, 1, 0}})).hi.y ==
+    CHECK(geometryBounds(*makeGeometry(scene::PlaneShape{})).lo.y == -kInfinity);
+    CHECK(geometryBounds(*makeGeometry(scene::TorusShape{{0, 0, 0}, 2, 0.5, {0, 1, 0}})).hi.y ==
           Approx(0.5));
-    CHECK(geometryBounds(*makeGeometry(TorusShape{{0, 0, 0}, 2, 0.5, {0, 1, 0}})).hi.x ==
+    CHECK(geometryBounds(*makeGeometry(scene::TorusShape{{0, 0, 0}, 2, 0.5, {0, 1, 0}})).hi.x ==
           Approx(2.5));
 }
 
@@ -77,14 +78,14 @@ TEST_CASE("geometry: firstCrossingAfter takes the first crossing strictly inside
 TEST_CASE("geometry: every primitive's bounds contain its random hits") {
     Random rng(51);
     std::vector<Geometry> shapes;
-    shapes.push_back(*makeGeometry(SphereShape{{1, 2, 3}, 1.5}));
-    shapes.push_back(*makeGeometry(BoxShape{{-1, 0, 2}, {3, 1, -1}}));
-    shapes.push_back(*makeGeometry(CylinderShape{{0, 0, 0}, {1, 2, 3}, 0.7, false}));
-    shapes.push_back(*makeGeometry(ConeShape{{0, 0, 0}, 0.2, {-1, 2, 1}, 1.1, false}));
-    shapes.push_back(*makeGeometry(TorusShape{{1, 1, 1}, 2, 0.3, {1, 1, 0}}));
-    shapes.push_back(*makeGeometry(DiscShape{{0, 1, 0}, {1, 1, 1}, 2, 0.5}));
-    shapes.push_back(*makeGeometry(QuadShape{{0, 0, 0}, {1, 2, 0}, {0, 1, 3}}));
-    shapes.push_back(*makeGeometry(TriangleShape{{0, 0, 0}, {1, 2, 0}, {0, 1, 3}}));
+    shapes.push_back(*makeGeometry(scene::SphereShape{{1, 2, 3}, 1.5}));
+    shapes.push_back(*makeGeometry(scene::BoxShape{{-1, 0, 2}, {3, 1, -1}}));
+    shapes.push_back(*makeGeometry(scene::CylinderShape{{0, 0, 0}, {1, 2, 3}, 0.7, false}));
+    shapes.push_back(*makeGeometry(scene::ConeShape{{0, 0, 0}, 0.2, {-1, 2, 1}, 1.1, false}));
+    shapes.push_back(*makeGeometry(scene::TorusShape{{1, 1, 1}, 2, 0.3, {1, 1, 0}}));
+    shapes.push_back(*makeGeometry(scene::DiscShape{{0, 1, 0}, {1, 1, 1}, 2, 0.5}));
+    shapes.push_back(*makeGeometry(scene::QuadShape{{0, 0, 0}, {1, 2, 0}, {0, 1, 3}}));
+    shapes.push_back(*makeGeometry(scene::TriangleShape{{0, 0, 0}, {1, 2, 0}, {0, 1, 3}}));
     for (const Geometry& g : shapes) {
         Bounds3 b = geometryBounds(g);
         REQUIRE(b.finite());
@@ -109,29 +110,29 @@ TEST_CASE("geometry: every primitive's bounds contain its random hits") {
 
 TEST_CASE("geometry: no direction or degenerate shapes give no crossings and no NaN") {
     std::vector<Geometry> shapes;
-    shapes.push_back(*makeGeometry(SphereShape{{0, 0, 0}, 1}));
-    shapes.push_back(*makeGeometry(BoxShape{{-1, -1, -1}, {1, 1, 1}}));
-    shapes.push_back(*makeGeometry(CylinderShape{{0, -1, 0}, {0, 1, 0}, 1, false}));
-    shapes.push_back(*makeGeometry(ConeShape{{0, -1, 0}, 1, {0, 1, 0}, 0, true}));
-    shapes.push_back(*makeGeometry(TorusShape{{0, 0, 0}, 1, 0.5, {0, 1, 0}}));
-    shapes.push_back(*makeGeometry(DiscShape{{0, 0, 0}, {0, 1, 0}, 1, 0}));
-    shapes.push_back(*makeGeometry(QuadShape{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}));
-    shapes.push_back(*makeGeometry(TriangleShape{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}));
+    shapes.push_back(*makeGeometry(scene::SphereShape{{0, 0, 0}, 1}));
+    shapes.push_back(*makeGeometry(scene::BoxShape{{-1, -1, -1}, {1, 1, 1}}));
+    shapes.push_back(*makeGeometry(scene::CylinderShape{{0, -1, 0}, {0, 1, 0}, 1, false}));
+    shapes.push_back(*makeGeometry(scene::ConeShape{{0, -1, 0}, 1, {0, 1, 0}, 0, true}));
+    shapes.push_back(*makeGeometry(scene::TorusShape{{0, 0, 0}, 1, 0.5, {0, 1, 0}}));
+    shapes.push_back(*makeGeometry(scene::DiscShape{{0, 0, 0}, {0, 1, 0}, 1, 0}));
+    shapes.push_back(*makeGeometry(scene::QuadShape{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}));
+    shapes.push_back(*makeGeometry(scene::TriangleShape{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}));
     for (const Geometry& g : shapes) {
         CrossingList list;
         crossLine(g, {{0, 0, 0}, {0, 0, 0}}, list);
         CHECK(list.count == 0);
     }
     std::vector<Geometry> degenerate;
-    degenerate.push_back(*makeGeometry(SphereShape{{0, 0, 0}, -1}));
-    degenerate.push_back(*makeGeometry(BoxShape{{1, 1, 1}, {1, 1, 1}}));
-    degenerate.push_back(*makeGeometry(PlaneShape{{0, 0, 0}, {0, 0, 0}}));
-    degenerate.push_back(*makeGeometry(CylinderShape{{0, 0, 0}, {0, 0, 0}, 1, false}));
-    degenerate.push_back(*makeGeometry(ConeShape{{0, 0, 0}, 0, {0, 1, 0}, 0, false}));
-    degenerate.push_back(*makeGeometry(TorusShape{{0, 0, 0}, 1, 1, {0, 0, 0}}));
-    degenerate.push_back(*makeGeometry(DiscShape{{0, 0, 0}, {0, 0, 0}, 1, 0}));
-    degenerate.push_back(*makeGeometry(QuadShape{{0, 0, 0}, {0, 0, 0}, {0, 0, 1}}));
-    degenerate.push_back(*makeGeometry(TriangleShape{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}));
+    degenerate.push_back(*makeGeometry(scene::SphereShape{{0, 0, 0}, -1}));
+    degenerate.push_back(*makeGeometry(scene::BoxShape{{1, 1, 1}, {1, 1, 1}}));
+    degenerate.push_back(*makeGeometry(scene::PlaneShape{{0, 0, 0}, {0, 0, 0}}));
+    degenerate.push_back(*makeGeometry(scene::CylinderShape{{0, 0, 0}, {0, 0, 0}, 1, false}));
+    degenerate.push_back(*makeGeometry(scene::ConeShape{{0, 0, 0}, 0, {0, 1, 0}, 0, false}));
+    degenerate.push_back(*makeGeometry(scene::TorusShape{{0, 0, 0}, 1, 1, {0, 0, 0}}));
+    degenerate.push_back(*makeGeometry(scene::DiscShape{{0, 0, 0}, {0, 0, 0}, 1, 0}));
+    degenerate.push_back(*makeGeometry(scene::QuadShape{{0, 0, 0}, {0, 0, 0}, {0, 0, 1}}));
+    degenerate.push_back(*makeGeometry(scene::TriangleShape{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}));
     Random rng(52);
     for (const Geometry& g : degenerate) {
         for (int i = 0; i < 200; ++i) {

@@ -2,6 +2,7 @@
 #include "geometry_test_support.hpp"
 
 using namespace crt::tracer;
+namespace scene = crt::scene;
 using namespace crt::tracer::test;
 
 namespace {
@@ -72,7 +73,7 @@ TEST_CASE("disc: degenerate ones draw nothing") {
 TEST_CASE("disc: random lines") {
     Random rng(41);
     for (int i = 0; i < 2000; ++i) {
-        DiscShape s{rng.inBox(5), rng.unit() * rng.uniform(0.5, 3), rng.uniform(0.5, 3), 0};
+        scene::DiscShape s{rng.inBox(5), rng.unit() * rng.uniform(0.5, 3), rng.uniform(0.5, 3), 0};
         DiscGeometry g(s);
         Vec3 n = glm::normalize(s.normal);
         Vec3 inPlane = glm::normalize(glm::cross(n, rng.unit()));
@@ -108,7 +109,7 @@ TEST_CASE("quad: the parallelogram's inside, edges and UV") {
 TEST_CASE("quad: random lines") {
     Random rng(42);
     for (int i = 0; i < 2000; ++i) {
-        QuadShape s{rng.inBox(5), rng.inBox(3), rng.inBox(3)};
+        scene::QuadShape s{rng.inBox(5), rng.inBox(3), rng.inBox(3)};
         if (glm::length(glm::cross(s.edgeA, s.edgeB)) < 0.5) continue;
         QuadGeometry g(s);
         Vec3 target =
@@ -160,7 +161,7 @@ TEST_CASE("triangle: lines through a shared edge or vertex never slip through") 
     for (int i = 0; i < n; ++i)
         rim.push_back(centre + Vec3(std::cos(2 * kPi * i / n), std::sin(2 * kPi * i / n), 0));
     for (int i = 0; i < n; ++i)
-        fan.emplace_back(TriangleShape{centre, rim[size_t(i)], rim[size_t((i + 1) % n)]});
+        fan.emplace_back(scene::TriangleShape{centre, rim[size_t(i)], rim[size_t((i + 1) % n)]});
     Random rng(43);
     for (int k = 0; k < 5000; ++k) {
         int e = k % n;
@@ -180,7 +181,7 @@ TEST_CASE("triangle: lines through a shared edge or vertex never slip through") 
 TEST_CASE("triangle: random lines") {
     Random rng(44);
     for (int i = 0; i < 2000; ++i) {
-        TriangleShape s{rng.inBox(5), rng.inBox(5), rng.inBox(5)};
+        scene::TriangleShape s{rng.inBox(5), rng.inBox(5), rng.inBox(5)};
         Vec3 n = glm::cross(s.b - s.a, s.c - s.a);
         if (glm::length(n) < 0.5) continue;
         TriangleGeometry g(s);

@@ -2,11 +2,12 @@
 #include "geometry_test_support.hpp"
 
 using namespace crt::tracer;
+namespace scene = crt::scene;
 using namespace crt::tracer::test;
 
 namespace {
 
-SurfaceFn sphereFn(const SphereShape& s) {
+SurfaceFn sphereFn(const scene::SphereShape& s) {
     return [s](const LVec& p) { return length(p - LVec(s.center)) - LD(s.radius); };
 }
 
@@ -102,7 +103,7 @@ TEST_CASE("sphere: zero radius draws nothing") {
 TEST_CASE("sphere: random lines have bounded, outward, on-surface hits") {
     Random rng(1);
     for (int i = 0; i < 3000; ++i) {
-        SphereShape s{rng.inBox(5), rng.uniform(0.01, 3)};
+        scene::SphereShape s{rng.inBox(5), rng.uniform(0.01, 3)};
         SphereGeometry g(s);
         Ray ray = rng.lineThrough(s.center + 0.99 * s.radius * rng.unit(), rng.uniform(0.5, 20));
         CrossingList list;
@@ -125,7 +126,7 @@ TEST_CASE("sphere: random lines have bounded, outward, on-surface hits") {
 }
 
 TEST_CASE("sphere: a far origin keeps the crossings accurate") {
-    SphereShape s{{3, -2, 1}, 0.5};
+    scene::SphereShape s{{3, -2, 1}, 0.5};
     SphereGeometry g(s);
     Random rng(3);
     for (int i = 0; i < 200; ++i) {

@@ -4,6 +4,7 @@
 #include <vector>
 
 using namespace crt::tracer;
+namespace scene = crt::scene;
 using namespace crt::tracer::test;
 
 namespace {
@@ -12,7 +13,7 @@ struct ExactTorus {
     LVec center, axis; // axis unit
     LD major, minor;
 
-    explicit ExactTorus(const TorusShape& s) : center(s.center), major(s.major), minor(s.minor) {
+    explicit ExactTorus(const scene::TorusShape& s) : center(s.center), major(s.major), minor(s.minor) {
         LVec a(s.axis);
         axis = (1 / length(a)) * a;
     }
@@ -114,7 +115,7 @@ TEST_CASE("torus: random lines around arbitrary axes") {
     Random rng(32);
     int fours = 0;
     for (int i = 0; i < 3000; ++i) {
-        TorusShape s{rng.inBox(5), rng.uniform(0.2, 3), 0, rng.unit() * rng.uniform(0.5, 2)};
+        scene::TorusShape s{rng.inBox(5), rng.uniform(0.2, 3), 0, rng.unit() * rng.uniform(0.5, 2)};
         s.minor = s.major * rng.uniform(0.02, 0.9);
         ExactTorus exact(s);
         TorusGeometry g(s);
@@ -152,7 +153,7 @@ TEST_CASE("torus: random lines around arbitrary axes") {
 TEST_CASE("torus: lines from 1e5 away still find accurate roots") {
     Random rng(33);
     for (int i = 0; i < 300; ++i) {
-        TorusShape s{rng.inBox(2), 1, rng.uniform(0.1, 0.5), rng.unit()};
+        scene::TorusShape s{rng.inBox(2), 1, rng.uniform(0.1, 0.5), rng.unit()};
         ExactTorus exact(s);
         TorusGeometry g(s);
         Ray ray = rng.lineThrough(s.center + rng.inBox(1.2), 1e5);
@@ -176,7 +177,7 @@ TEST_CASE("torus: lines from 1e5 away still find accurate roots") {
 }
 
 TEST_CASE("torus: a spindle torus (minor > major) is still a closed solid") {
-    TorusShape s{{0, 0, 0}, 0.5, 1, {0, 0, 1}};
+    scene::TorusShape s{{0, 0, 0}, 0.5, 1, {0, 0, 1}};
     ExactTorus exact(s);
     TorusGeometry g(s);
     CrossingList list;

@@ -1,11 +1,11 @@
 // Independent re-statements of spec §6 (camera rays, ray–shape hits) for the analytic render tests.
 //
-// Nothing here calls the renderer's own camera or geometry: the tests compare renderScene's
+// Nothing here calls the renderer's own camera or geometry: the tests compare render's
 // pixels with values derived from the specification alone.
 #pragma once
 
 #include "tracer/renderer.hpp"
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
@@ -27,7 +27,7 @@ struct TestRay {
 
 /// Spec §6 primary ray through the centre of pixel (x, y) (supersampling 1, pinhole):
 /// normalize(f + (2u/W − 1)·tan(fov/2)·(W/H)·r + (1 − 2v/H)·tan(fov/2)·up').
-inline TestRay specCameraRay(const CameraDesc& cam, int width, int height, int x, int y) {
+inline TestRay specCameraRay(const scene::CameraDesc& cam, int width, int height, int x, int y) {
     DVec3 f = glm::normalize(cam.pointing - cam.position);
     // Left-handed: with y up and z forward, right is +x, which is up × forward.
     DVec3 r = glm::normalize(glm::cross(cam.up, f));
@@ -85,15 +85,20 @@ inline double fresnelReflectance(double cosI, double n1, double n2) {
 }
 
 /// Renders and requires success; `threads` 0 means all cores.
-inline PixelBuffer renderOk(const SceneDesc& desc, int threads = 0) {
-    RenderSettings settings;
-    settings.threads = threads;
-    RenderOutcome outcome = renderScene(desc, settings);
+inline PixelBuffer renderOk(const scene::SceneDesc& desc, int threads = 0) {
+    RenderJob job;
+    job.threads = threads;
+    PixelBuffer image(desc.settings.width, desc.settings.height);
+    size_t pixels = 0;
+    job.onTileDone = [&](const TileResult& tile) {
+        image.place(tile);
+        pixels += static_cast<size_t>(tile.tile.width()) * tile.tile.height();
+    };
+    RenderOutcome outcome = render(desc, job);
     INFO(outcome.error);
     REQUIRE(outcome.ok);
-    REQUIRE(outcome.frame.width == desc.settings.width);
-    REQUIRE(outcome.frame.height == desc.settings.height);
-    return std::move(outcome.frame);
+    REQUIRE(pixels == static_cast<size_t>(desc.settings.width) * desc.settings.height);
+    return image;
 }
 
 inline DVec3 pixelAt(const PixelBuffer& image, int x, int y) {
@@ -101,7 +106,7 @@ inline DVec3 pixelAt(const PixelBuffer& image, int x, int y) {
     return {p[0], p[1], p[2]};
 }
 
-inline DVec3 rgbOf(const Color& c) { return {c.r, c.g, c.b}; }
+inline DVec3 rgbOf(const scene::Color& c) { return {c.r, c.g, c.b}; }
 
 /// Largest per-channel absolute difference.
 inline double maxDifference(DVec3 a, DVec3 b) {
@@ -110,18 +115,18 @@ inline double maxDifference(DVec3 a, DVec3 b) {
 }
 
 /// A scene with a black background and no lights, the given camera and size.
-inline SceneDesc blankScene(int width, int height, const CameraDesc& camera) {
-    SceneDesc desc;
+inline scene::SceneDesc blankScene(int width, int height, const scene::CameraDesc& camera) {
+    scene::SceneDesc desc;
     desc.settings.width = width;
     desc.settings.height = height;
     desc.camera = camera;
     desc.camera.focalDistance = glm::length(camera.pointing - camera.position);
-    desc.background.color = Color{0, 0, 0, 1};
+    desc.background.color = scene::Color{0, 0, 0, 1};
     return desc;
 }
 
-inline CameraDesc lookAt(DVec3 position, DVec3 pointing, double fov) {
-    CameraDesc c;
+inline scene::CameraDesc lookAt(DVec3 position, DVec3 pointing, double fov) {
+    scene::CameraDesc c;
     c.position = position;
     c.pointing = pointing;
     c.fov = fov;

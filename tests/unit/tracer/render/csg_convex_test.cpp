@@ -9,39 +9,40 @@
 #include <tuple>
 
 using namespace crt::tracer;
+namespace scene = crt::scene;
 using namespace crt::tracer::test;
 
 namespace {
 
 /// Lenses, carved blocks, a capped cylinder cut by a box, nested and transformed, plus
 /// shapes whose faces coincide (which the convex path hands to the general merge).
-SceneDesc convexCsgScene() {
+scene::SceneDesc convexCsgScene() {
     SceneMaker m;
-    int32_t lens = m.csg(CsgOp::Intersection, m.sphere(Vec3(-0.6, 0, 0), 1), m.sphere(Vec3(0.6, 0, 0), 1));
-    lens = m.csg(CsgOp::Intersection, lens, m.sphere(Vec3(0, 0.7, 0), 1.1));
-    lens = m.csg(CsgOp::Intersection, lens, m.transformed(m.sphere(Vec3(0, 0, 0.4), 1), {scale(Vec3(1.2, 0.8, 1))}));
+    int32_t lens = m.csg(scene::CsgOp::Intersection, m.sphere(Vec3(-0.6, 0, 0), 1), m.sphere(Vec3(0.6, 0, 0), 1));
+    lens = m.csg(scene::CsgOp::Intersection, lens, m.sphere(Vec3(0, 0.7, 0), 1.1));
+    lens = m.csg(scene::CsgOp::Intersection, lens, m.transformed(m.sphere(Vec3(0, 0, 0.4), 1), {scale(Vec3(1.2, 0.8, 1))}));
     m.draw(m.transformed(lens, {translate(Vec3(-3, 0, 0))}));
 
-    int32_t carved = m.csg(CsgOp::Difference, m.box(Vec3(-1), Vec3(1)), m.sphere(Vec3(0.7, 0.7, -0.5), 0.9));
+    int32_t carved = m.csg(scene::CsgOp::Difference, m.box(Vec3(-1), Vec3(1)), m.sphere(Vec3(0.7, 0.7, -0.5), 0.9));
     m.draw(m.transformed(carved, {rotate(Vec3(20, 35, 0)), translate(Vec3(0, 0, 0))}));
 
-    CylinderShape rod{Vec3(0, -1.5, 0), Vec3(0, 1.5, 0), 0.6, false};
-    int32_t cutRod = m.csg(CsgOp::Intersection, m.entity(rod), m.box(Vec3(-1, -1, -1), Vec3(1, 0.8, 0.3)));
-    int32_t drilled = m.csg(CsgOp::Difference, m.csg(CsgOp::Intersection, m.box(Vec3(-1), Vec3(1)), m.sphere(Vec3(0), 1.3)),
+    scene::CylinderShape rod{Vec3(0, -1.5, 0), Vec3(0, 1.5, 0), 0.6, false};
+    int32_t cutRod = m.csg(scene::CsgOp::Intersection, m.entity(rod), m.box(Vec3(-1, -1, -1), Vec3(1, 0.8, 0.3)));
+    int32_t drilled = m.csg(scene::CsgOp::Difference, m.csg(scene::CsgOp::Intersection, m.box(Vec3(-1), Vec3(1)), m.sphere(Vec3(0), 1.3)),
                             m.transformed(m.entity(rod), {rotate(Vec3(90, 0, 0))}));
     m.draw(m.transformed(cutRod, {translate(Vec3(3, 0, 0))}));
     m.draw(m.transformed(drilled, {translate(Vec3(0, 3, 0))}));
 
     // Coincident faces: a block minus its own upper half, a cone capped flush with a box.
-    int32_t halved = m.csg(CsgOp::Difference, m.box(Vec3(-1), Vec3(1)), m.box(Vec3(-1, 0, -1), Vec3(1, 1, 1)));
+    int32_t halved = m.csg(scene::CsgOp::Difference, m.box(Vec3(-1), Vec3(1)), m.box(Vec3(-1, 0, -1), Vec3(1, 1, 1)));
     m.draw(m.transformed(halved, {translate(Vec3(0, -3, 0))}));
-    ConeShape cone{Vec3(0, -1, 0), 0.8, Vec3(0, 1, 0), 0.3, false};
-    int32_t flush = m.csg(CsgOp::Intersection, m.entity(cone), m.box(Vec3(-1), Vec3(1)));
+    scene::ConeShape cone{Vec3(0, -1, 0), 0.8, Vec3(0, 1, 0), 0.3, false};
+    int32_t flush = m.csg(scene::CsgOp::Intersection, m.entity(cone), m.box(Vec3(-1), Vec3(1)));
     m.draw(m.transformed(flush, {translate(Vec3(3, -3, 0))}));
     return m.desc;
 }
 
-std::unique_ptr<RenderScene> build(const SceneDesc& desc) {
+std::unique_ptr<RenderScene> build(const scene::SceneDesc& desc) {
     std::string error;
     auto scene = buildRenderScene(desc, error);
     REQUIRE(scene);
@@ -63,7 +64,7 @@ CrossingSet crossings(const RenderScene& scene, const Ray& ray, QueryScratch& sc
 } // namespace
 
 TEST_CASE("CSG of convex solids matches the general merge on every ray", "[csg]") {
-    const SceneDesc desc = convexCsgScene();
+    const scene::SceneDesc desc = convexCsgScene();
     std::unique_ptr<RenderScene> fast = build(desc);
     std::unique_ptr<RenderScene> general = build(desc);
     int convexNodes = 0;

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 using namespace crt::tracer;
+namespace scene = crt::scene;
 using namespace crt::tracer::test;
 
 namespace {
@@ -14,7 +15,7 @@ struct Probe {
     QueryScratch scratch;
     RayStats stats;
 
-    explicit Probe(const SceneDesc& desc) {
+    explicit Probe(const scene::SceneDesc& desc) {
         std::string error;
         scene = buildRenderScene(desc, error);
         REQUIRE(scene);
@@ -35,7 +36,7 @@ TEST_CASE("CSG difference removes the subtracted solid and shows its cut face", 
     int32_t blue = m.colored(0, 0, 1);
     int32_t box = m.box(Vec3(-1), Vec3(1), red);
     int32_t ball = m.sphere(Vec3(-1, 0, 0), 0.5, blue);
-    m.draw(m.csg(CsgOp::Difference, box, ball));
+    m.draw(m.csg(scene::CsgOp::Difference, box, ball));
     Probe probe(m.desc);
 
     Hit hit;
@@ -57,7 +58,7 @@ TEST_CASE("CSG intersection keeps only the common part", "[csg]") {
     SceneMaker m;
     int32_t a = m.sphere(Vec3(-0.5, 0, 0), 1);
     int32_t b = m.sphere(Vec3(0.5, 0, 0), 1);
-    m.draw(m.csg(CsgOp::Intersection, a, b));
+    m.draw(m.csg(scene::CsgOp::Intersection, a, b));
     Probe probe(m.desc);
     Hit hit;
     REQUIRE(probe.hit({Vec3(-5, 0, 0), Vec3(1, 0, 0)}, hit));
@@ -72,7 +73,7 @@ TEST_CASE("CSG union keeps its interior surfaces", "[csg]") {
     int32_t b = m.sphere(Vec3(0.5, 0, 0), 1);
     int32_t c = m.box(Vec3(-3, -3, -3), Vec3(3, 3, -2.5));
     // (a + b) − c forces the union through the CSG evaluator rather than flattening it.
-    m.draw(m.csg(CsgOp::Difference, m.csg(CsgOp::Union, a, b), c));
+    m.draw(m.csg(scene::CsgOp::Difference, m.csg(scene::CsgOp::Union, a, b), c));
     Probe probe(m.desc);
     CHECK(probe.crossings({Vec3(-5, 0, 0), Vec3(1, 0, 0)}) == 4);
 }
@@ -84,7 +85,7 @@ TEST_CASE("CSG: coincident faces leave no slivers, even through different transf
     // a scale and two translations so its face positions carry rounding differences.
     int32_t inner = m.transformed(m.box(Vec3(-1), Vec3(1)),
                                   {scale(Vec3(0.5, 0.5, 1)), translate(Vec3(0.1, 0.3, 0)), translate(Vec3(-0.1, -0.3, 0))});
-    m.draw(m.csg(CsgOp::Difference, outer, inner));
+    m.draw(m.csg(scene::CsgOp::Difference, outer, inner));
     Probe probe(m.desc);
     int throughHole = 0, onFace = 0;
     for (int i = 0; i <= 100; ++i) {
@@ -113,8 +114,8 @@ TEST_CASE("CSG: coincident faces leave no slivers, even through different transf
 TEST_CASE("CSG: a cap flush with a face is cut cleanly (box minus cylinder)", "[csg]") {
     SceneMaker m;
     int32_t box = m.box(Vec3(-1, 0, -1), Vec3(1, 1, 1));
-    int32_t drill = m.entity(CylinderShape{Vec3(0, 0, 0), Vec3(0, 1, 0), 0.5, false});
-    m.draw(m.csg(CsgOp::Difference, box, drill));
+    int32_t drill = m.entity(scene::CylinderShape{Vec3(0, 0, 0), Vec3(0, 1, 0), 0.5, false});
+    m.draw(m.csg(scene::CsgOp::Difference, box, drill));
     Probe probe(m.desc);
     Hit hit;
     // Looking down the drilled hole: nothing, not the box's top face nor the cylinder's cap.
@@ -138,10 +139,10 @@ TEST_CASE("CSG nests to any depth and on transformed operands", "[csg]") {
     int32_t shape = m.box(Vec3(-10, -10, -0.2), Vec3(10, 10, 0.2));
     for (int i = 0; i < 20; ++i)
         for (int j = 0; j < 20; ++j)
-            shape = m.csg(CsgOp::Difference, shape, m.sphere(Vec3(-9.5 + i, -9.5 + j, 0), 0.3));
+            shape = m.csg(scene::CsgOp::Difference, shape, m.sphere(Vec3(-9.5 + i, -9.5 + j, 0), 0.3));
     // … then rotated as a whole, and intersected with a big sphere.
     int32_t rotated = m.transformed(shape, {rotate(Vec3(0, 0, 90))});
-    m.draw(m.csg(CsgOp::Intersection, rotated, m.sphere(Vec3(0), 8)));
+    m.draw(m.csg(scene::CsgOp::Intersection, rotated, m.sphere(Vec3(0), 8)));
     Probe probe(m.desc);
     Hit hit;
     CHECK_FALSE(probe.hit({Vec3(-0.5, -0.5, -5), Vec3(0, 0, 1)}, hit)); // a hole

@@ -10,13 +10,14 @@
 #include <cmath>
 
 using namespace crt::tracer;
+namespace scene = crt::scene;
 using namespace crt::tracer::test;
 
 namespace {
 
-ShadingMaterial emissive(Color e) {
+ShadingMaterial emissive(scene::Color e) {
     ShadingMaterial m;
-    m.color = Color{0, 0, 0, 1};
+    m.color = scene::Color{0, 0, 0, 1};
     m.diffuse = 0;
     m.emission = e;
     return m;
@@ -24,7 +25,7 @@ ShadingMaterial emissive(Color e) {
 
 ShadingMaterial glass(double ior, double transparency = 1) {
     ShadingMaterial m;
-    m.color = Color{1, 1, 1, 1};
+    m.color = scene::Color{1, 1, 1, 1};
     m.transparency = transparency;
     m.diffuse = 0;
     m.ior = ior;
@@ -42,17 +43,17 @@ TEST_CASE("A mirror reflects a known colour exactly and recursion depth 0 gives 
     const int W = 64, H = 48;
     SceneMaker m;
     m.desc = blankScene(W, H, lookAt({0.3, 0.2, -5}, {0, 0, 0}, 40));
-    const Color background{0.9, 0.1, 0.2, 1};
-    const Color E{0.3, 0.5, 0.7, 1};
+    const scene::Color background{0.9, 0.1, 0.2, 1};
+    const scene::Color E{0.3, 0.5, 0.7, 1};
     m.desc.background.color = background;
     ShadingMaterial mirror;
-    mirror.color = Color{0.25, 0.25, 0.25, 1}; // not metallic: reflections are untinted (K = white)
+    mirror.color = scene::Color{0.25, 0.25, 0.25, 1}; // not metallic: reflections are untinted (K = white)
     mirror.reflectivity = 1;
     mirror.diffuse = 0;
     m.draw(m.plane({0, 0, -1}, {0, 0, 0}, m.material(mirror)));
     // An emissive sheet behind the camera covering y > 0.3 at z = −11; below it the background shows.
     const double wallZ = -11, wallY = 0.3;
-    m.draw(m.entity(QuadShape{{-100, wallY, wallZ}, {200, 0, 0}, {0, 100, 0}}, m.material(emissive(E)), false));
+    m.draw(m.entity(scene::QuadShape{{-100, wallY, wallZ}, {200, 0, 0}, {0, 100, 0}}, m.material(emissive(E)), false));
 
     auto expectedAt = [&](int x, int y, bool& skip) {
         TestRay ray = specCameraRay(m.desc.camera, W, H, x, y);
@@ -124,13 +125,13 @@ TEST_CASE("Refraction through a glass slab shifts a stripe pattern by what Snell
     SceneMaker m;
     m.desc = blankScene(W, H, lookAt({-1.5, 0.3, -5}, {0.5, 0, 2}, 30));
     // Ambient light 1 shows the wall's texture colour unshaded; the slab has no diffuse part.
-    m.desc.settings.ambient = Color{1, 1, 1, 1};
+    m.desc.settings.ambient = scene::Color{1, 1, 1, 1};
     const double thickness = 1, ior = 1.5, wallZ = 3, stripe = 0.25;
     m.draw(m.box({-20, -20, 0}, {20, 20, thickness}, m.material(glass(ior))));
-    TextureDesc stripes;
-    stripes.kind = TextureKind::Stripes;
-    stripes.a = Color{1, 1, 0, 1};
-    stripes.b = Color{0, 0.2, 1, 1};
+    scene::TextureDesc stripes;
+    stripes.kind = scene::TextureKind::Stripes;
+    stripes.a = scene::Color{1, 1, 0, 1};
+    stripes.b = scene::Color{0, 0.2, 1, 1};
     stripes.size = stripe;
     stripes.axis = {1, 0, 0};
     m.desc.textures.push_back(stripes);
@@ -168,12 +169,12 @@ TEST_CASE("Beer-Lambert absorption through a slab is exp(-a d) over the refracte
     const int W = 48, H = 36;
     SceneMaker m;
     m.desc = blankScene(W, H, lookAt({-1, 0.5, -4}, {0.3, 0, 1}, 40));
-    const Color background{0.9, 0.8, 0.7, 1};
+    const scene::Color background{0.9, 0.8, 0.7, 1};
     m.desc.background.color = background;
     const double thickness = 2, ior = 1.5;
     const DVec3 a(0.3, 0.8, 1.5);
     ShadingMaterial tinted = glass(ior);
-    tinted.absorption = Color{a.x, a.y, a.z, 1};
+    tinted.absorption = scene::Color{a.x, a.y, a.z, 1};
     m.draw(m.box({-50, -50, 0}, {50, 50, thickness}, m.material(tinted)));
     PixelBuffer image = renderOk(m.desc);
 
@@ -197,17 +198,17 @@ TEST_CASE("Total internal reflection in a 45-degree prism sends the view sideway
     const int W = 40, H = 40;
     SceneMaker m;
     m.desc = blankScene(W, H, lookAt({0, 0, -6}, {0, 0, 0}, 8));
-    m.desc.background.color = Color{0.5, 0.5, 0.5, 1};
+    m.desc.background.color = scene::Color{0.5, 0.5, 0.5, 1};
     const double ior = 1.6; // critical angle 38.7°; inside, the diagonal is met at 45° ± 4°
     int32_t glassMaterial = m.material(glass(ior));
     // The cube [-1, 1]³ cut by the plane z = x, keeping z ≤ x (the half-space behind (−1, 0, 1)).
     int32_t cube = m.box({-1, -1, -1}, {1, 1, 1}, glassMaterial);
     int32_t half = m.plane({-1, 0, 1}, {0, 0, 0}, glassMaterial);
-    m.draw(m.csg(CsgOp::Intersection, cube, half));
-    const Color side{0.2, 0.9, 0.3, 1}, behind{0.9, 0.2, 0.2, 1};
+    m.draw(m.csg(scene::CsgOp::Intersection, cube, half));
+    const scene::Color side{0.2, 0.9, 0.3, 1}, behind{0.9, 0.2, 0.2, 1};
     const double sideX = 4, behindZ = 6;
-    m.draw(m.entity(QuadShape{{sideX, -50, -50}, {0, 100, 0}, {0, 0, 100}}, m.material(emissive(side)), false));
-    m.draw(m.entity(QuadShape{{-50, -50, behindZ}, {100, 0, 0}, {0, 100, 0}}, m.material(emissive(behind)), false));
+    m.draw(m.entity(scene::QuadShape{{sideX, -50, -50}, {0, 100, 0}, {0, 0, 100}}, m.material(emissive(side)), false));
+    m.draw(m.entity(scene::QuadShape{{-50, -50, behindZ}, {100, 0, 0}, {0, 100, 0}}, m.material(emissive(behind)), false));
     PixelBuffer image = renderOk(m.desc);
 
     const DVec3 diagonalOutward = glm::normalize(DVec3(-1, 0, 1));
@@ -249,8 +250,8 @@ TEST_CASE("Fresnel moves kt*F into reflection: kr' = kr + kt F, kt' = kt (1 - F)
     const int W = 64, H = 48;
     SceneMaker m;
     m.desc = blankScene(W, H, lookAt({0, 1, 0}, {0, 0, 2}, 40));
-    const Color background{0.1, 0.3, 0.05, 1};
-    const Color sky{0.8, 0.9, 1.0, 1};
+    const scene::Color background{0.1, 0.3, 0.05, 1};
+    const scene::Color sky{0.8, 0.9, 1.0, 1};
     m.desc.background.color = background;
     const double kr = 0.2, kt = 0.8, ior = 1.5;
     // A glass half-space y ≤ 0: the refracted ray never leaves it and sees the background.
@@ -259,7 +260,7 @@ TEST_CASE("Fresnel moves kt*F into reflection: kr' = kr + kt F, kt' = kt (1 - F)
     water.fresnel = true;
     m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(water)));
     // The reflected ray sees an emissive ceiling.
-    m.draw(m.entity(QuadShape{{-200, 5, -200}, {400, 0, 0}, {0, 0, 400}}, m.material(emissive(sky)), false));
+    m.draw(m.entity(scene::QuadShape{{-200, 5, -200}, {400, 0, 0}, {0, 0, 400}}, m.material(emissive(sky)), false));
     PixelBuffer image = renderOk(m.desc);
 
     double lowestF = 1, highestF = 0;

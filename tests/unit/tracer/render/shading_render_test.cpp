@@ -1,6 +1,6 @@
 // Analytic render tests of direct lighting (spec §6): Lambert, falloff, spot cones, shadows.
 //
-// Each test renders a small image with renderScene and recomputes every checked pixel from the
+// Each test renders a small image with render() and recomputes every checked pixel from the
 // spec's formulas. Tolerance 1e-4 per channel: the renderer works in doubles and stores floats,
 // so honest differences are ~1e-7, while any formula error is orders of magnitude larger (and
 // 1e-4 is still 40 times finer than one 8-bit output step).
@@ -11,24 +11,25 @@
 #include <vector>
 
 using namespace crt::tracer;
+namespace scene = crt::scene;
 using namespace crt::tracer::test;
 
 namespace {
 
 constexpr double kTolerance = 1e-4;
 
-LightDesc parallelLight(DVec3 from, DVec3 pointing, Color color) {
-    LightDesc l;
-    l.kind = LightKind::Parallel;
+scene::LightDesc parallelLight(DVec3 from, DVec3 pointing, scene::Color color) {
+    scene::LightDesc l;
+    l.kind = scene::LightKind::Parallel;
     l.from = from;
     l.pointing = pointing;
     l.color = color;
     return l;
 }
 
-LightDesc pointLight(DVec3 origin, Color color, double falloff = 0) {
-    LightDesc l;
-    l.kind = LightKind::Point;
+scene::LightDesc pointLight(DVec3 origin, scene::Color color, double falloff = 0) {
+    scene::LightDesc l;
+    l.kind = scene::LightKind::Point;
     l.origin = origin;
     l.color = color;
     l.falloff = falloff;
@@ -51,8 +52,8 @@ TEST_CASE("A Lambert sphere under a parallel light is color x light x cos(theta)
     m.desc = blankScene(W, H, lookAt({0.7, 0.4, -5}, {0.1, -0.1, 0}, 40));
     const DVec3 center(0.1, -0.2, 0.3);
     const double radius = 1;
-    const Color C{0.8, 0.6, 0.4, 1};
-    const Color L{0.9, 0.7, 1.0, 1};
+    const scene::Color C{0.8, 0.6, 0.4, 1};
+    const scene::Color L{0.9, 0.7, 1.0, 1};
     ShadingMaterial mat;
     mat.color = C; // diffuse 1, specular 0, no ambient anywhere
     m.draw(m.sphere(center, radius, m.material(mat)));
@@ -90,16 +91,16 @@ TEST_CASE("A point light's falloff is falloff / (d + path)^2 on a plane, ambient
     const int W = 64, H = 48;
     SceneMaker m;
     m.desc = blankScene(W, H, lookAt({0, 2, -3}, {0, 0, 1}, 50));
-    const Color C{0.7, 0.5, 0.3, 1};
-    const Color L{1.0, 0.9, 0.8, 1};
+    const scene::Color C{0.7, 0.5, 0.3, 1};
+    const scene::Color L{1.0, 0.9, 0.8, 1};
     const DVec3 lightPos(0.5, 1.5, 1);
     const double falloff = 10, lightAmbient = 0.1;
     const DVec3 A(0.05, 0.04, 0.03);
-    m.desc.settings.ambient = Color{A.x, A.y, A.z, 1};
+    m.desc.settings.ambient = scene::Color{A.x, A.y, A.z, 1};
     ShadingMaterial mat;
     mat.color = C;
     m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(mat)));
-    LightDesc light = pointLight(lightPos, L, falloff);
+    scene::LightDesc light = pointLight(lightPos, L, falloff);
     light.ambient = lightAmbient;
     m.desc.lights.push_back(light);
 
@@ -135,14 +136,14 @@ TEST_CASE("A spot light is full inside its cone, zero outside and smooth in betw
     const int W = 80, H = 60;
     SceneMaker m;
     m.desc = blankScene(W, H, lookAt({0, 5, -4}, {0, 0, 0.5}, 40));
-    const Color C{0.8, 0.8, 0.8, 1};
+    const scene::Color C{0.8, 0.8, 0.8, 1};
     ShadingMaterial mat;
     mat.color = C;
     m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(mat)));
     const DVec3 lightPos(0, 3, 0), axis(0, -1, 0);
     const double fullAngle = 60, softness = 0.5;
-    LightDesc spot = pointLight(lightPos, Color{1, 1, 1, 1});
-    spot.kind = LightKind::Spot;
+    scene::LightDesc spot = pointLight(lightPos, scene::Color{1, 1, 1, 1});
+    spot.kind = scene::LightKind::Spot;
     spot.pointing = lightPos + axis;
     spot.angle = fullAngle;
     spot.softness = softness;
@@ -199,7 +200,7 @@ struct ShadowScene {
     DVec3 center{0, 1, 0};
     double radius = 0.5;
     DVec3 lightPos{0.3, 3, 0.2};
-    Color planeColor{0.6, 0.6, 0.6, 1};
+    scene::Color planeColor{0.6, 0.6, 0.6, 1};
 
     explicit ShadowScene(const ShadingMaterial& occluder) {
         m.desc = blankScene(W, H, lookAt({0, 4, -4}, {0, 0, 0.3}, 50));
@@ -207,7 +208,7 @@ struct ShadowScene {
         ground.color = planeColor;
         m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(ground)));
         m.draw(m.sphere(center, radius, m.material(occluder)));
-        m.desc.lights.push_back(pointLight(lightPos, Color{1, 1, 1, 1}));
+        m.desc.lights.push_back(pointLight(lightPos, scene::Color{1, 1, 1, 1}));
     }
 
     /// Calls visit(x, y, unshadowedColour, shadowed) for every plane pixel not seen through
@@ -234,7 +235,7 @@ struct ShadowScene {
 
 TEST_CASE("An opaque sphere casts a black shadow and leaves lit points untouched", "[render][analytic]") {
     ShadingMaterial opaque;
-    opaque.color = Color{0.9, 0.2, 0.2, 1};
+    opaque.color = scene::Color{0.9, 0.2, 0.2, 1};
     ShadowScene scene(opaque);
     PixelBuffer image = renderOk(scene.m.desc);
     int dark = 0, lit = 0;
@@ -255,7 +256,7 @@ TEST_CASE("An opaque sphere casts a black shadow and leaves lit points untouched
 
 TEST_CASE("A transparent occluder attenuates by transparency x colour per surface crossing", "[render][analytic]") {
     ShadingMaterial glass;
-    glass.color = Color{1.0, 0.5, 0.25, 1};
+    glass.color = scene::Color{1.0, 0.5, 0.25, 1};
     glass.transparency = 0.5;
     glass.diffuse = 0.5;
     glass.ior = 1; // only the shadow matters here

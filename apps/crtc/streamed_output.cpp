@@ -1,6 +1,6 @@
 #include "streamed_output.hpp"
 
-namespace crt::lang::driver {
+namespace crt::crtc {
 
 namespace image_io = tracer::image_io;
 
@@ -77,4 +77,4 @@ bool StreamedOutput::finish(std::string& error) {
     return ok;
 }
 
-} // namespace crt::lang::driver
+} // namespace crt::crtc

@@ -1,29 +1,15 @@
 // crt-lsp: the CRT language server, speaking LSP over standard input and output.
+#include "include_search.hpp"
 #include "server.hpp"
 
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <filesystem>
 #include <string>
 
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
-
-namespace fs = std::filesystem;
 
 namespace {
-
-/// The standard library next to an installed crt-lsp, else the one in the source tree.
-std::string findStdlib() {
-    std::error_code error;
-    fs::path exe = fs::canonical("/proc/self/exe", error);
-    fs::path installed = exe.parent_path().parent_path() / "share" / "crt" / "stdlib";
-    if (!error && fs::is_directory(installed, error)) return installed.string();
-    return CRT_SOURCE_STDLIB_DIR;
-}
 
 void usage(std::FILE* out) {
     std::fputs("usage: crt-lsp [-I DIR]... [--stdlib DIR] [--debounce-ms N] [--time-budget-ms N]\n"
@@ -34,16 +20,8 @@ void usage(std::FILE* out) {
 } // namespace
 
 int main(int argc, char** argv) {
-#ifdef __GLIBC__
-    // One malloc arena, set before any thread starts. Every parse and index runs on a fresh
-    // large-stack thread, and glibc gives threads arenas of their own: analyses made in
-    // them and freed on the main thread kept memory in many arenas, trimmed and faulted in
-    // again. Measured with lsp_bench: peak memory 29-36 MB -> 20 MB, completion median
-    // 0.8 -> 0.2-0.4 ms, diagnostics no slower. Two threads at most allocate at once.
-    mallopt(M_ARENA_MAX, 1);
-#endif
     crt::lsp::ServerOptions options;
-    options.analysis.stdlibDir = findStdlib();
+    options.analysis.includes.stdlibDir = crt::lang::defaultStdlibDir();
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
         auto value = [&]() -> std::string {
@@ -60,9 +38,9 @@ int main(int argc, char** argv) {
             std::printf("crt-lsp %s\n", CRT_VERSION);
             return 0;
         } else if (arg == "-I") {
-            options.analysis.includeDirs.push_back(value());
+            options.analysis.includes.dirs.push_back(value());
         } else if (arg == "--stdlib") {
-            options.analysis.stdlibDir = value();
+            options.analysis.includes.stdlibDir = value();
         } else if (arg == "--debounce-ms") {
             options.debounce = std::chrono::milliseconds(std::atoi(value().c_str()));
         } else if (arg == "--time-budget-ms") {

@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-namespace crt::lang::driver {
+namespace crt::crtc {
 
 class StreamedOutput {
 public:
@@ -56,4 +56,4 @@ private:
     std::thread writer_;
 };
 
-} // namespace crt::lang::driver
+} // namespace crt::crtc

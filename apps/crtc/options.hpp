@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace crt::lang::driver {
+namespace crt::crtc {
 
 enum class Mode { Render, Check, DumpAst, DumpScene, Format };
 enum class ColourWhen { Auto, Always, Never };
@@ -16,7 +16,7 @@ struct Options {
     Mode mode = Mode::Render;
     std::string script;
     std::string output;
-    EvalOptions eval;
+    lang::EvalOptions eval;
     int frames = 0; ///< --frames N; 0: a single evaluation
     bool werror = false;
     ColourWhen colour = ColourWhen::Auto;
@@ -40,4 +40,4 @@ struct ParsedOptions {
 ParsedOptions parseOptions(int argc, char** argv);
 std::string usage();
 
-} // namespace crt::lang::driver
+} // namespace crt::crtc

@@ -2,12 +2,12 @@
 // docs/scene-json.md and versioned by SceneDesc::kSchemaVersion.
 #pragma once
 
-#include "tracer/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 #include <string>
 
-namespace crt::lang {
+namespace crt::scene {
 
-std::string sceneToJson(const tracer::SceneDesc& scene, int indent = 2);
+std::string sceneToJson(const SceneDesc& scene, int indent = 2);
 
-} // namespace crt::lang
+} // namespace crt::scene

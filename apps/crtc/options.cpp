@@ -4,7 +4,7 @@
 #include <charconv>
 #include <fmt/format.h>
 
-namespace crt::lang::driver {
+namespace crt::crtc {
 
 std::string usage() {
     return R"(usage: crtc [options] script.crt
@@ -100,10 +100,10 @@ ParsedOptions parseOptions(int argc, char** argv) {
             o.output = v;
         } else if (arg.starts_with("-I")) {
             if (arg.size() > 2) {
-                o.eval.includeDirs.emplace_back(arg.substr(2));
+                o.eval.includes.dirs.emplace_back(arg.substr(2));
             } else {
                 if (!value(v)) return bad("-I needs a folder");
-                o.eval.includeDirs.emplace_back(v);
+                o.eval.includes.dirs.emplace_back(v);
             }
         } else if (arg == "--assets") {
             if (!value(v)) return bad("--assets needs a folder");
@@ -165,4 +165,4 @@ ParsedOptions parseOptions(int argc, char** argv) {
     return result;
 }
 
-} // namespace crt::lang::driver
+} // namespace crt::crtc

@@ -6,10 +6,10 @@
 #include <functional>
 #include <string>
 
-namespace crt::lang::driver {
+namespace crt::crtc {
 
 /// Evaluates one frame into a compilation, printing its diagnostics; returns false on errors.
-using CompileFrame = std::function<bool(int frame, Compilation& out)>;
+using CompileFrame = std::function<bool(int frame, lang::Compilation& out)>;
 
 /// Renders every frame and writes the output; returns crtc's exit status.
 int renderCommand(const Options& options, const CompileFrame& compileFrame);
@@ -21,4 +21,4 @@ bool hasFramePattern(const std::string& output);
 /// The output name with the frame number substituted for its pattern.
 std::string numberedOutput(const std::string& output, int frame);
 
-} // namespace crt::lang::driver
+} // namespace crt::crtc

@@ -1,26 +1,25 @@
 // SceneDesc -> JSON, keys in a fixed order so dumps are stable and diffable.
-#include "scene_json.hpp"
+#include "scene/scene_json.hpp"
 
 #include <nlohmann/json.hpp>
 
-namespace crt::lang {
+namespace crt::scene {
 
 using Json = nlohmann::ordered_json;
-namespace t = tracer;
 
 namespace {
 
 Json vec(const glm::dvec3& v) { return Json::array({v.x, v.y, v.z}); }
-Json colour(const t::Color& c) { return Json::array({c.r, c.g, c.b, c.a}); }
-Json source(const t::SourceSpan& s) {
+Json colour(const Color& c) { return Json::array({c.r, c.g, c.b, c.a}); }
+Json source(const SourceSpan& s) {
     return Json{{"file", s.file}, {"line", s.line}, {"column", s.column}, {"endLine", s.endLine}, {"endColumn", s.endColumn}};
 }
 
-Json modifiers(const std::vector<t::Modifier>& mods) {
+Json modifiers(const std::vector<Modifier>& mods) {
     Json out = Json::array();
-    for (const t::Modifier& m : mods) {
-        const char* kind = m.kind == t::ModifierKind::Translate ? "translate"
-                           : m.kind == t::ModifierKind::Rotate  ? "rotate"
+    for (const Modifier& m : mods) {
+        const char* kind = m.kind == ModifierKind::Translate ? "translate"
+                           : m.kind == ModifierKind::Rotate  ? "rotate"
                                                                 : "scale";
         out.push_back(Json{{kind, vec(m.value)}});
     }
@@ -29,29 +28,29 @@ Json modifiers(const std::vector<t::Modifier>& mods) {
 
 struct ShapeJson {
     Json& out;
-    void operator()(const t::SphereShape& s) {
+    void operator()(const SphereShape& s) {
         out["type"] = "Sphere";
         out["center"] = vec(s.center);
         out["radius"] = s.radius;
     }
-    void operator()(const t::BoxShape& s) {
+    void operator()(const BoxShape& s) {
         out["type"] = "Box";
         out["cornerA"] = vec(s.cornerA);
         out["cornerB"] = vec(s.cornerB);
     }
-    void operator()(const t::PlaneShape& s) {
+    void operator()(const PlaneShape& s) {
         out["type"] = "Plane";
         out["normal"] = vec(s.normal);
         out["position"] = vec(s.position);
     }
-    void operator()(const t::CylinderShape& s) {
+    void operator()(const CylinderShape& s) {
         out["type"] = "Cylinder";
         out["base"] = vec(s.base);
         out["top"] = vec(s.top);
         out["radius"] = s.radius;
         out["open"] = s.open;
     }
-    void operator()(const t::ConeShape& s) {
+    void operator()(const ConeShape& s) {
         out["type"] = "Cone";
         out["base"] = vec(s.base);
         out["baseRadius"] = s.baseRadius;
@@ -59,64 +58,64 @@ struct ShapeJson {
         out["topRadius"] = s.topRadius;
         out["open"] = s.open;
     }
-    void operator()(const t::TorusShape& s) {
+    void operator()(const TorusShape& s) {
         out["type"] = "Torus";
         out["center"] = vec(s.center);
         out["major"] = s.major;
         out["minor"] = s.minor;
         out["axis"] = vec(s.axis);
     }
-    void operator()(const t::DiscShape& s) {
+    void operator()(const DiscShape& s) {
         out["type"] = "Disc";
         out["center"] = vec(s.center);
         out["normal"] = vec(s.normal);
         out["radius"] = s.radius;
         out["hole"] = s.hole;
     }
-    void operator()(const t::QuadShape& s) {
+    void operator()(const QuadShape& s) {
         out["type"] = "Quad";
         out["corner"] = vec(s.corner);
         out["edgeA"] = vec(s.edgeA);
         out["edgeB"] = vec(s.edgeB);
     }
-    void operator()(const t::TriangleShape& s) {
+    void operator()(const TriangleShape& s) {
         out["type"] = "Triangle";
         out["a"] = vec(s.a);
         out["b"] = vec(s.b);
         out["c"] = vec(s.c);
     }
-    void operator()(const t::MeshShape& s) {
+    void operator()(const MeshShape& s) {
         out["type"] = "Mesh";
         out["file"] = s.file;
         out["resolvedFile"] = s.resolvedFile;
     }
-    void operator()(const t::CsgNode& s) {
-        out["type"] = s.op == t::CsgOp::Union ? "Union" : s.op == t::CsgOp::Difference ? "Difference" : "Intersection";
+    void operator()(const CsgNode& s) {
+        out["type"] = s.op == CsgOp::Union ? "Union" : s.op == CsgOp::Difference ? "Difference" : "Intersection";
         out["left"] = s.left;
         out["right"] = s.right;
     }
-    void operator()(const t::TransformNode& s) {
+    void operator()(const TransformNode& s) {
         out["type"] = "Transform";
         out["child"] = s.child;
         out["modifiers"] = modifiers(s.modifiers);
     }
-    void operator()(const t::GroupNode& s) {
+    void operator()(const GroupNode& s) {
         out["type"] = "Group";
         out["members"] = s.members;
     }
 };
 
-const char* lightKind(t::LightKind kind) {
+const char* lightKind(LightKind kind) {
     switch (kind) {
-    case t::LightKind::Point: return "PointLight";
-    case t::LightKind::Parallel: return "ParallelLight";
-    case t::LightKind::Spot: return "SpotLight";
-    case t::LightKind::Area: return "AreaLight";
+    case LightKind::Point: return "PointLight";
+    case LightKind::Parallel: return "ParallelLight";
+    case LightKind::Spot: return "SpotLight";
+    case LightKind::Area: return "AreaLight";
     }
     return "?";
 }
 
-const char* textureKind(t::TextureKind kind) {
+const char* textureKind(TextureKind kind) {
     static const char* names[] = {"Checker", "Stripes", "Noise", "Marble", "Wood", "Image", "NoiseBump", "ImageBump"};
     return names[static_cast<int>(kind)];
 }
@@ -152,15 +151,15 @@ std::string compactNumberArrays(const std::string& json) {
 
 } // namespace
 
-std::string sceneToJson(const t::SceneDesc& scene, int indent) {
+std::string sceneToJson(const SceneDesc& scene, int indent) {
     Json root;
-    root["schema"] = t::SceneDesc::kSchemaVersion;
+    root["schema"] = SceneDesc::kSchemaVersion;
     root["files"] = scene.files;
     root["time"] = scene.time;
     root["frame"] = scene.frame;
     root["frameCount"] = scene.frameCount;
 
-    const t::SettingsDesc& s = scene.settings;
+    const SettingsDesc& s = scene.settings;
     static const char* antialias[] = {"grid", "adaptive", "showadaptive"};
     root["settings"] = Json{{"title", s.title}, {"author", s.author}, {"date", s.date}, {"notes", s.notes},
                             {"width", s.width}, {"height", s.height},
@@ -171,60 +170,60 @@ std::string sceneToJson(const t::SceneDesc& scene, int indent) {
                             {"shadowsamples", s.shadowSamples}, {"glossysamples", s.glossySamples},
                             {"seed", s.seed}, {"ambient", colour(s.ambient)}};
 
-    const t::CameraDesc& c = scene.camera;
+    const CameraDesc& c = scene.camera;
     static const char* apertures[] = {"circle", "polygon", "gaussian", "line"};
     root["camera"] = Json{{"position", vec(c.position)}, {"pointing", vec(c.pointing)}, {"fov", c.fov},
                           {"aperture", c.aperture}, {"focaldistance", c.focalDistance},
                           {"apertureshape", apertures[static_cast<int>(c.apertureShape)]},
                           {"apertureblades", c.apertureBlades}, {"up", vec(c.up)}, {"roll", c.roll},
-                          {"projection", c.projection == t::Projection::Pinhole ? "pinhole" : "spherical"},
+                          {"projection", c.projection == Projection::Pinhole ? "pinhole" : "spherical"},
                           {"source", source(c.source)}};
 
     Json lights = Json::array();
-    for (const t::LightDesc& l : scene.lights) {
+    for (const LightDesc& l : scene.lights) {
         Json light{{"type", lightKind(l.kind)}};
         switch (l.kind) {
-        case t::LightKind::Point: light["origin"] = vec(l.origin); break;
-        case t::LightKind::Parallel:
+        case LightKind::Point: light["origin"] = vec(l.origin); break;
+        case LightKind::Parallel:
             light["from"] = vec(l.from);
             light["pointing"] = vec(l.pointing);
             break;
-        case t::LightKind::Spot:
+        case LightKind::Spot:
             light["origin"] = vec(l.origin);
             light["pointing"] = vec(l.pointing);
             light["angle"] = l.angle;
             light["softness"] = l.softness;
             break;
-        case t::LightKind::Area:
+        case LightKind::Area:
             light["corner"] = vec(l.origin);
             light["edgeA"] = vec(l.edgeA);
             light["edgeB"] = vec(l.edgeB);
             break;
         }
         light["color"] = colour(l.color);
-        if (l.kind != t::LightKind::Parallel) light["falloff"] = l.falloff;
+        if (l.kind != LightKind::Parallel) light["falloff"] = l.falloff;
         light["ambient"] = l.ambient;
         light["source"] = source(l.source);
         lights.push_back(std::move(light));
     }
     root["lights"] = std::move(lights);
 
-    const t::BackgroundDesc& b = scene.background;
+    const BackgroundDesc& b = scene.background;
     Json background;
     switch (b.kind) {
-    case t::BackgroundKind::Solid: background = Json{{"type", "solid"}, {"color", colour(b.color)}}; break;
-    case t::BackgroundKind::Gradient:
+    case BackgroundKind::Solid: background = Json{{"type", "solid"}, {"color", colour(b.color)}}; break;
+    case BackgroundKind::Gradient:
         background = Json{{"type", "gradient"}, {"horizon", colour(b.horizon)}, {"sky", colour(b.sky)}};
         break;
-    case t::BackgroundKind::Image:
+    case BackgroundKind::Image:
         background = Json{{"type", "image"}, {"image", b.image}, {"resolvedImage", b.resolvedImage}, {"angle", b.angle}};
         break;
     }
     root["background"] = std::move(background);
 
     Json materials = Json::array();
-    for (const t::MaterialDesc& material : scene.materials) {
-        const t::FinishDesc& m = scene.finishOf(material);
+    for (const MaterialDesc& material : scene.materials) {
+        const FinishDesc& m = scene.finishOf(material);
         materials.push_back(Json{{"color", colour(material.color)}, {"reflectivity", m.reflectivity},
                                  {"transparency", m.transparency}, {"ior", m.ior}, {"diffuse", m.diffuse},
                                  {"specular", m.specular}, {"shininess", m.shininess}, {"metallic", m.metallic},
@@ -236,17 +235,17 @@ std::string sceneToJson(const t::SceneDesc& scene, int indent) {
 
     Json textures = Json::array();
     static const char* mappings[] = {"uv", "planar", "spherical", "cylindrical", "cubic"};
-    for (const t::TextureDesc& x : scene.textures) {
+    for (const TextureDesc& x : scene.textures) {
         Json texture{{"type", textureKind(x.kind)}};
         switch (x.kind) {
-        case t::TextureKind::Image:
-        case t::TextureKind::ImageBump:
+        case TextureKind::Image:
+        case TextureKind::ImageBump:
             texture["file"] = x.file;
             texture["resolvedFile"] = x.resolvedFile;
             texture["mapping"] = mappings[static_cast<int>(x.mapping)];
-            if (x.kind == t::TextureKind::ImageBump) texture["strength"] = x.strength;
+            if (x.kind == TextureKind::ImageBump) texture["strength"] = x.strength;
             break;
-        case t::TextureKind::NoiseBump:
+        case TextureKind::NoiseBump:
             texture["size"] = x.size;
             texture["strength"] = x.strength;
             texture["octaves"] = x.octaves;
@@ -255,10 +254,10 @@ std::string sceneToJson(const t::SceneDesc& scene, int indent) {
             texture["a"] = colour(x.a);
             texture["b"] = colour(x.b);
             texture["size"] = x.size;
-            if (x.kind == t::TextureKind::Stripes) texture["axis"] = vec(x.axis);
-            if (x.kind == t::TextureKind::Noise || x.kind == t::TextureKind::Marble) texture["octaves"] = x.octaves;
-            if (x.kind == t::TextureKind::Marble || x.kind == t::TextureKind::Wood) texture["turbulence"] = x.turbulence;
-            if (x.kind == t::TextureKind::Wood) texture["rings"] = x.rings;
+            if (x.kind == TextureKind::Stripes) texture["axis"] = vec(x.axis);
+            if (x.kind == TextureKind::Noise || x.kind == TextureKind::Marble) texture["octaves"] = x.octaves;
+            if (x.kind == TextureKind::Marble || x.kind == TextureKind::Wood) texture["turbulence"] = x.turbulence;
+            if (x.kind == TextureKind::Wood) texture["rings"] = x.rings;
             break;
         }
         texture["modifiers"] = modifiers(x.modifiers);
@@ -269,7 +268,7 @@ std::string sceneToJson(const t::SceneDesc& scene, int indent) {
 
     Json entities = Json::array();
     for (size_t i = 0; i < scene.entities.size(); ++i) {
-        const t::EntityDesc& e = scene.entities[i];
+        const EntityDesc& e = scene.entities[i];
         Json entity{{"id", i}};
         std::visit(ShapeJson{entity}, e.shape);
         if (e.material >= 0) entity["material"] = e.material;
@@ -282,4 +281,4 @@ std::string sceneToJson(const t::SceneDesc& scene, int indent) {
     return compactNumberArrays(root.dump(indent)) + "\n";
 }
 
-} // namespace crt::lang
+} // namespace crt::scene

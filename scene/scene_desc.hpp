@@ -11,7 +11,7 @@
 #include <variant>
 #include <vector>
 
-namespace crt::tracer {
+namespace crt::scene {
 
 /// Where a script built an object: file index into SceneDesc::files, 1-based line/column.
 struct SourceSpan {
@@ -228,4 +228,4 @@ struct SceneDesc {
     }
 };
 
-} // namespace crt::tracer
+} // namespace crt::scene

@@ -1,0 +1,37 @@
+// Bands of finished rows from tiles.
+#include "row_assembler.hpp"
+
+#include <algorithm>
+
+namespace crt::crtc {
+
+RowAssembler::RowAssembler(int width, int height, Emit emit)
+    : width_(width), emit_(std::move(emit)), pixelsLeft_(static_cast<size_t>(height), width) {}
+
+void RowAssembler::add(const tracer::TileResult& result) {
+    const tracer::Tile& tile = result.tile;
+    const size_t tileRowValues = static_cast<size_t>(tile.width()) * 3;
+    for (int y = tile.y0; y < tile.y1; ++y) {
+        std::vector<float>& row = pending_[y];
+        if (row.empty()) row.resize(static_cast<size_t>(width_) * 3);
+        std::copy_n(result.rgb.data() + static_cast<size_t>(y - tile.y0) * tileRowValues,
+                    tileRowValues, row.data() + static_cast<size_t>(tile.x0) * 3);
+        pixelsLeft_[static_cast<size_t>(y)] -= tile.width();
+    }
+    emitFinished();
+}
+
+void RowAssembler::emitFinished() {
+    const int begin = nextRow_;
+    std::vector<float> band;
+    while (nextRow_ < static_cast<int>(pixelsLeft_.size()) &&
+           pixelsLeft_[static_cast<size_t>(nextRow_)] == 0) {
+        auto row = pending_.find(nextRow_);
+        band.insert(band.end(), row->second.begin(), row->second.end());
+        pending_.erase(row);
+        ++nextRow_;
+    }
+    if (nextRow_ > begin) emit_(begin, nextRow_, band);
+}
+
+} // namespace crt::crtc

@@ -1,0 +1,29 @@
+// Where `include "name"` looks, for the interpreter, crtc and the language server alike.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace crt::lang {
+
+/// The include search path: the including script's folder, then the -I folders in order,
+/// then the folders of the CRT_PATH environment variable (separated by ':'), then the
+/// standard library.
+struct IncludeSearch {
+    std::vector<std::string> dirs; ///< -I, in order
+    std::string stdlibDir;         ///< the standard library; empty: none
+
+    /// The folders searched for an include written in a script of `scriptFolder`, in order.
+    std::vector<std::filesystem::path> folders(const std::filesystem::path& scriptFolder) const;
+    /// The file that `include "name"` in a script of `scriptFolder` reads: an absolute name
+    /// as it is, else the first folder that has it. Empty when there is none.
+    std::filesystem::path find(const std::string& name,
+                               const std::filesystem::path& scriptFolder) const;
+};
+
+/// The standard library that came with the running program: `share/crt/stdlib` beside the
+/// `bin` folder of an installed program, else the source tree's `stdlib/`.
+std::string defaultStdlibDir();
+
+} // namespace crt::lang

@@ -1,0 +1,71 @@
+// crtc's row assembler: tiles in any order in, bands of finished rows out, in order, once each.
+#include "row_assembler.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+
+using crt::crtc::RowAssembler;
+using namespace crt::tracer;
+
+namespace {
+
+/// A test image whose every value tells where it is.
+float valueAt(int x, int y, int c) { return static_cast<float>((y * 1000 + x) * 3 + c); }
+
+TileResult tileOf(const Tile& tile, int index, std::vector<float>& storage) {
+    storage.clear();
+    for (int y = tile.y0; y < tile.y1; ++y)
+        for (int x = tile.x0; x < tile.x1; ++x)
+            for (int c = 0; c < 3; ++c) storage.push_back(valueAt(x, y, c));
+    return {tile, index, storage};
+}
+
+} // namespace
+
+TEST_CASE("Finished rows are emitted once each, in order, with their values", "[crtc]") {
+    const int width = 53, height = 37; // a last tile column of 5 pixels, a last tile row of 5
+    std::vector<Tile> tiles = imageTiles(width, height);
+    REQUIRE(tiles.size() == 12);
+    std::mt19937 shuffle(5);
+    for (int round = 0; round < 4; ++round) {
+        INFO("round " << round);
+        if (round > 0) std::shuffle(tiles.begin(), tiles.end(), shuffle);
+        std::vector<float> emitted;
+        int nextRow = 0, calls = 0;
+        bool ordered = true;
+        RowAssembler rows(width, height, [&](int yBegin, int yEnd, std::span<const float> rgb) {
+            ordered = ordered && yBegin == nextRow && yEnd > yBegin &&
+                      rgb.size() == static_cast<size_t>(yEnd - yBegin) * width * 3;
+            nextRow = yEnd;
+            ++calls;
+            emitted.insert(emitted.end(), rgb.begin(), rgb.end());
+        });
+        std::vector<float> storage;
+        for (size_t i = 0; i < tiles.size(); ++i) rows.add(tileOf(tiles[i], static_cast<int>(i), storage));
+        CHECK(ordered);
+        CHECK(nextRow == height);
+        CHECK(calls >= 1);
+        CHECK(calls <= 3); // at most once per tile row: 16, 16 and 5 rows
+        if (round == 0) CHECK(calls == 3); // in order, each tile row completes on its own
+        std::vector<float> expected;
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x)
+                for (int c = 0; c < 3; ++c) expected.push_back(valueAt(x, y, c));
+        CHECK(emitted == expected);
+    }
+}
+
+TEST_CASE("No row is emitted before every pixel of it is finished", "[crtc]") {
+    int calls = 0;
+    RowAssembler rows(32, 16, [&](int, int, std::span<const float>) { ++calls; });
+    std::vector<float> storage;
+    rows.add(tileOf({16, 0, 32, 16}, 0, storage));
+    CHECK(calls == 0); // the left half of the rows is missing
+    rows.add(tileOf({0, 8, 16, 16}, 1, storage));
+    CHECK(calls == 0); // rows 8 to 15 are whole, but rows 0 to 7 above them are not
+    rows.add(tileOf({0, 0, 16, 8}, 2, storage));
+    CHECK(calls == 1);
+}
