@@ -22,7 +22,7 @@ struct SourceSpan {
     uint32_t endColumn = 0;
 };
 
-/// A linear RGB colour with alpha (alpha is carried, not used for shading).
+/// A linear RGB color with alpha (alpha is carried, not used for shading).
 struct Color {
     double r = 0, g = 0, b = 0, a = 1;
 
@@ -59,9 +59,9 @@ struct TextureDesc {
     SourceSpan source;
 };
 
-/// Everything a material is besides its colour. Materials that agree on all of it share one
+/// Everything a material is besides its color. Materials that agree on all of it share one
 /// entry of SceneDesc::finishes: a generated scene of 100,000 spheres, each with its own
-/// colour, keeps 100,000 small materials and one finish.
+/// color, keeps 100,000 small materials and one finish.
 struct FinishDesc {
     double reflectivity = 0;
     double transparency = 0;
@@ -80,7 +80,7 @@ struct FinishDesc {
     bool operator==(const FinishDesc&) const = default;
 };
 
-/// A material: its own colour, its (possibly shared) finish, and where the script built it.
+/// A material: its own color, its (possibly shared) finish, and where the script built it.
 struct MaterialDesc {
     Color color{0.5, 0.5, 0.5, 1};
     int32_t finish = -1; ///< index into SceneDesc::finishes; -1: the default FinishDesc

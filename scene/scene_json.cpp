@@ -10,7 +10,7 @@ using Json = nlohmann::ordered_json;
 namespace {
 
 Json vec(const glm::dvec3& v) { return Json::array({v.x, v.y, v.z}); }
-Json colour(const Color& c) { return Json::array({c.r, c.g, c.b, c.a}); }
+Json color(const Color& c) { return Json::array({c.r, c.g, c.b, c.a}); }
 Json source(const SourceSpan& s) {
     return Json{{"file", s.file}, {"line", s.line}, {"column", s.column}, {"endLine", s.endLine}, {"endColumn", s.endColumn}};
 }
@@ -120,7 +120,7 @@ const char* textureKind(TextureKind kind) {
     return names[static_cast<int>(kind)];
 }
 
-/// Writes arrays of numbers on one line ("[0.0, 1.0, 0.0]"): vectors and colours are
+/// Writes arrays of numbers on one line ("[0.0, 1.0, 0.0]"): vectors and colors are
 /// read as units, and the dump stays a third as long.
 std::string compactNumberArrays(const std::string& json) {
     std::string out;
@@ -149,6 +149,115 @@ std::string compactNumberArrays(const std::string& json) {
     return out;
 }
 
+Json settingsJson(const SettingsDesc& s) {
+    static const char* antialias[] = {"grid", "adaptive", "showadaptive"};
+    return Json{{"title", s.title}, {"author", s.author}, {"date", s.date}, {"notes", s.notes},
+                {"width", s.width}, {"height", s.height},
+                {"gamma", s.srgb ? Json("srgb") : Json(s.gamma)},
+                {"supersampling", s.supersampling}, {"dofsamples", s.dofSamples},
+                {"recursiondepth", s.recursionDepth}, {"antialias", antialias[static_cast<int>(s.antialias)]},
+                {"aathreshold", s.aaThreshold}, {"aadepth", s.aaDepth},
+                {"shadowsamples", s.shadowSamples}, {"glossysamples", s.glossySamples},
+                {"seed", s.seed}, {"ambient", color(s.ambient)}};
+}
+
+Json cameraJson(const CameraDesc& c) {
+    static const char* apertures[] = {"circle", "polygon", "gaussian", "line"};
+    return Json{{"position", vec(c.position)}, {"pointing", vec(c.pointing)}, {"fov", c.fov},
+                {"aperture", c.aperture}, {"focaldistance", c.focalDistance},
+                {"apertureshape", apertures[static_cast<int>(c.apertureShape)]},
+                {"apertureblades", c.apertureBlades}, {"up", vec(c.up)}, {"roll", c.roll},
+                {"projection", c.projection == Projection::Pinhole ? "pinhole" : "spherical"},
+                {"source", source(c.source)}};
+}
+
+Json lightJson(const LightDesc& l) {
+    Json light{{"type", lightKind(l.kind)}};
+    switch (l.kind) {
+    case LightKind::Point: light["origin"] = vec(l.origin); break;
+    case LightKind::Parallel:
+        light["from"] = vec(l.from);
+        light["pointing"] = vec(l.pointing);
+        break;
+    case LightKind::Spot:
+        light["origin"] = vec(l.origin);
+        light["pointing"] = vec(l.pointing);
+        light["angle"] = l.angle;
+        light["softness"] = l.softness;
+        break;
+    case LightKind::Area:
+        light["corner"] = vec(l.origin);
+        light["edgeA"] = vec(l.edgeA);
+        light["edgeB"] = vec(l.edgeB);
+        break;
+    }
+    light["color"] = color(l.color);
+    if (l.kind != LightKind::Parallel) light["falloff"] = l.falloff;
+    light["ambient"] = l.ambient;
+    light["source"] = source(l.source);
+    return light;
+}
+
+Json backgroundJson(const BackgroundDesc& b) {
+    switch (b.kind) {
+    case BackgroundKind::Solid: return Json{{"type", "solid"}, {"color", color(b.color)}};
+    case BackgroundKind::Gradient:
+        return Json{{"type", "gradient"}, {"horizon", color(b.horizon)}, {"sky", color(b.sky)}};
+    case BackgroundKind::Image:
+        return Json{{"type", "image"}, {"image", b.image}, {"resolvedImage", b.resolvedImage}, {"angle", b.angle}};
+    }
+    return Json();
+}
+
+Json materialJson(const MaterialDesc& material, const FinishDesc& m) {
+    return Json{{"color", color(material.color)}, {"reflectivity", m.reflectivity},
+                {"transparency", m.transparency}, {"ior", m.ior}, {"diffuse", m.diffuse},
+                {"specular", m.specular}, {"shininess", m.shininess}, {"metallic", m.metallic},
+                {"glossiness", m.glossiness}, {"fresnel", m.fresnel},
+                {"absorption", color(m.absorption)}, {"emission", color(m.emission)},
+                {"texture", m.texture}, {"bump", m.bump}, {"source", source(material.source)}};
+}
+
+Json textureJson(const TextureDesc& x) {
+    static const char* mappings[] = {"uv", "planar", "spherical", "cylindrical", "cubic"};
+    Json texture{{"type", textureKind(x.kind)}};
+    switch (x.kind) {
+    case TextureKind::Image:
+    case TextureKind::ImageBump:
+        texture["file"] = x.file;
+        texture["resolvedFile"] = x.resolvedFile;
+        texture["mapping"] = mappings[static_cast<int>(x.mapping)];
+        if (x.kind == TextureKind::ImageBump) texture["strength"] = x.strength;
+        break;
+    case TextureKind::NoiseBump:
+        texture["size"] = x.size;
+        texture["strength"] = x.strength;
+        texture["octaves"] = x.octaves;
+        break;
+    default:
+        texture["a"] = color(x.a);
+        texture["b"] = color(x.b);
+        texture["size"] = x.size;
+        if (x.kind == TextureKind::Stripes) texture["axis"] = vec(x.axis);
+        if (x.kind == TextureKind::Noise || x.kind == TextureKind::Marble) texture["octaves"] = x.octaves;
+        if (x.kind == TextureKind::Marble || x.kind == TextureKind::Wood) texture["turbulence"] = x.turbulence;
+        if (x.kind == TextureKind::Wood) texture["rings"] = x.rings;
+        break;
+    }
+    texture["modifiers"] = modifiers(x.modifiers);
+    texture["source"] = source(x.source);
+    return texture;
+}
+
+Json entityJson(const EntityDesc& e, size_t id) {
+    Json entity{{"id", id}};
+    std::visit(ShapeJson{entity}, e.shape);
+    if (e.material >= 0) entity["material"] = e.material;
+    entity["solid"] = e.solid;
+    entity["source"] = source(e.source);
+    return entity;
+}
+
 } // namespace
 
 std::string sceneToJson(const SceneDesc& scene, int indent) {
@@ -158,125 +267,17 @@ std::string sceneToJson(const SceneDesc& scene, int indent) {
     root["time"] = scene.time;
     root["frame"] = scene.frame;
     root["frameCount"] = scene.frameCount;
-
-    const SettingsDesc& s = scene.settings;
-    static const char* antialias[] = {"grid", "adaptive", "showadaptive"};
-    root["settings"] = Json{{"title", s.title}, {"author", s.author}, {"date", s.date}, {"notes", s.notes},
-                            {"width", s.width}, {"height", s.height},
-                            {"gamma", s.srgb ? Json("srgb") : Json(s.gamma)},
-                            {"supersampling", s.supersampling}, {"dofsamples", s.dofSamples},
-                            {"recursiondepth", s.recursionDepth}, {"antialias", antialias[static_cast<int>(s.antialias)]},
-                            {"aathreshold", s.aaThreshold}, {"aadepth", s.aaDepth},
-                            {"shadowsamples", s.shadowSamples}, {"glossysamples", s.glossySamples},
-                            {"seed", s.seed}, {"ambient", colour(s.ambient)}};
-
-    const CameraDesc& c = scene.camera;
-    static const char* apertures[] = {"circle", "polygon", "gaussian", "line"};
-    root["camera"] = Json{{"position", vec(c.position)}, {"pointing", vec(c.pointing)}, {"fov", c.fov},
-                          {"aperture", c.aperture}, {"focaldistance", c.focalDistance},
-                          {"apertureshape", apertures[static_cast<int>(c.apertureShape)]},
-                          {"apertureblades", c.apertureBlades}, {"up", vec(c.up)}, {"roll", c.roll},
-                          {"projection", c.projection == Projection::Pinhole ? "pinhole" : "spherical"},
-                          {"source", source(c.source)}};
-
-    Json lights = Json::array();
-    for (const LightDesc& l : scene.lights) {
-        Json light{{"type", lightKind(l.kind)}};
-        switch (l.kind) {
-        case LightKind::Point: light["origin"] = vec(l.origin); break;
-        case LightKind::Parallel:
-            light["from"] = vec(l.from);
-            light["pointing"] = vec(l.pointing);
-            break;
-        case LightKind::Spot:
-            light["origin"] = vec(l.origin);
-            light["pointing"] = vec(l.pointing);
-            light["angle"] = l.angle;
-            light["softness"] = l.softness;
-            break;
-        case LightKind::Area:
-            light["corner"] = vec(l.origin);
-            light["edgeA"] = vec(l.edgeA);
-            light["edgeB"] = vec(l.edgeB);
-            break;
-        }
-        light["color"] = colour(l.color);
-        if (l.kind != LightKind::Parallel) light["falloff"] = l.falloff;
-        light["ambient"] = l.ambient;
-        light["source"] = source(l.source);
-        lights.push_back(std::move(light));
-    }
-    root["lights"] = std::move(lights);
-
-    const BackgroundDesc& b = scene.background;
-    Json background;
-    switch (b.kind) {
-    case BackgroundKind::Solid: background = Json{{"type", "solid"}, {"color", colour(b.color)}}; break;
-    case BackgroundKind::Gradient:
-        background = Json{{"type", "gradient"}, {"horizon", colour(b.horizon)}, {"sky", colour(b.sky)}};
-        break;
-    case BackgroundKind::Image:
-        background = Json{{"type", "image"}, {"image", b.image}, {"resolvedImage", b.resolvedImage}, {"angle", b.angle}};
-        break;
-    }
-    root["background"] = std::move(background);
-
-    Json materials = Json::array();
-    for (const MaterialDesc& material : scene.materials) {
-        const FinishDesc& m = scene.finishOf(material);
-        materials.push_back(Json{{"color", colour(material.color)}, {"reflectivity", m.reflectivity},
-                                 {"transparency", m.transparency}, {"ior", m.ior}, {"diffuse", m.diffuse},
-                                 {"specular", m.specular}, {"shininess", m.shininess}, {"metallic", m.metallic},
-                                 {"glossiness", m.glossiness}, {"fresnel", m.fresnel},
-                                 {"absorption", colour(m.absorption)}, {"emission", colour(m.emission)},
-                                 {"texture", m.texture}, {"bump", m.bump}, {"source", source(material.source)}});
-    }
-    root["materials"] = std::move(materials);
-
-    Json textures = Json::array();
-    static const char* mappings[] = {"uv", "planar", "spherical", "cylindrical", "cubic"};
-    for (const TextureDesc& x : scene.textures) {
-        Json texture{{"type", textureKind(x.kind)}};
-        switch (x.kind) {
-        case TextureKind::Image:
-        case TextureKind::ImageBump:
-            texture["file"] = x.file;
-            texture["resolvedFile"] = x.resolvedFile;
-            texture["mapping"] = mappings[static_cast<int>(x.mapping)];
-            if (x.kind == TextureKind::ImageBump) texture["strength"] = x.strength;
-            break;
-        case TextureKind::NoiseBump:
-            texture["size"] = x.size;
-            texture["strength"] = x.strength;
-            texture["octaves"] = x.octaves;
-            break;
-        default:
-            texture["a"] = colour(x.a);
-            texture["b"] = colour(x.b);
-            texture["size"] = x.size;
-            if (x.kind == TextureKind::Stripes) texture["axis"] = vec(x.axis);
-            if (x.kind == TextureKind::Noise || x.kind == TextureKind::Marble) texture["octaves"] = x.octaves;
-            if (x.kind == TextureKind::Marble || x.kind == TextureKind::Wood) texture["turbulence"] = x.turbulence;
-            if (x.kind == TextureKind::Wood) texture["rings"] = x.rings;
-            break;
-        }
-        texture["modifiers"] = modifiers(x.modifiers);
-        texture["source"] = source(x.source);
-        textures.push_back(std::move(texture));
-    }
-    root["textures"] = std::move(textures);
-
-    Json entities = Json::array();
-    for (size_t i = 0; i < scene.entities.size(); ++i) {
-        const EntityDesc& e = scene.entities[i];
-        Json entity{{"id", i}};
-        std::visit(ShapeJson{entity}, e.shape);
-        if (e.material >= 0) entity["material"] = e.material;
-        entity["solid"] = e.solid;
-        entity["source"] = source(e.source);
-        entities.push_back(std::move(entity));
-    }
-    root["entities"] = std::move(entities);
+    root["settings"] = settingsJson(scene.settings);
+    root["camera"] = cameraJson(scene.camera);
+    Json& lights = root["lights"] = Json::array();
+    for (const LightDesc& l : scene.lights) lights.push_back(lightJson(l));
+    root["background"] = backgroundJson(scene.background);
+    Json& materials = root["materials"] = Json::array();
+    for (const MaterialDesc& m : scene.materials) materials.push_back(materialJson(m, scene.finishOf(m)));
+    Json& textures = root["textures"] = Json::array();
+    for (const TextureDesc& t : scene.textures) textures.push_back(textureJson(t));
+    Json& entities = root["entities"] = Json::array();
+    for (size_t i = 0; i < scene.entities.size(); ++i) entities.push_back(entityJson(scene.entities[i], i));
     root["drawn"] = scene.drawn;
     return compactNumberArrays(root.dump(indent)) + "\n";
 }

@@ -23,9 +23,9 @@ using namespace crt::lang;
 
 namespace {
 
-bool useColour(crtc::ColourWhen when) {
-    if (when == crtc::ColourWhen::Always) return true;
-    if (when == crtc::ColourWhen::Never) return false;
+bool useColor(crtc::ColorWhen when) {
+    if (when == crtc::ColorWhen::Always) return true;
+    if (when == crtc::ColorWhen::Never) return false;
     const char* term = std::getenv("TERM");
     return isatty(STDERR_FILENO) && !std::getenv("NO_COLOR") && term && std::string_view(term) != "dumb";
 }
@@ -35,7 +35,7 @@ bool useColour(crtc::ColourWhen when) {
 bool report(Compilation& c, const crtc::Options& options, std::set<std::string>& printed) {
     if (options.werror) c.diagnostics.promoteWarnings();
     PrintOptions print;
-    print.colour = useColour(options.colour);
+    print.colour = useColor(options.color);
     for (const Diagnostic& diagnostic : c.diagnostics.items()) {
         std::string text = formatDiagnostic(c.sources, diagnostic, print);
         if (printed.insert(text).second) std::cerr << text;

@@ -39,7 +39,7 @@ options:
   --max-entities N     drawn entities and list length (default 10000000)
   --max-size N         image width and height (default 16384)
   -Werror              treat warnings as errors
-  --color WHEN         colour diagnostics: auto, always or never (default auto)
+  --color WHEN         color diagnostics: auto, always or never (default auto)
   -q, --quiet          print nothing but diagnostics (no progress, no summary)
   -h, --help           show this help
   --version            show the version
@@ -58,99 +58,149 @@ template <typename T> bool parseNumber(std::string_view text, T& out) {
     return error == std::errc() && end == text.data() + text.size();
 }
 
+/// The arguments after the program name, one at a time, and what went wrong with them.
+class Arguments {
+public:
+    Arguments(int argc, char** argv) : argc_(argc), argv_(argv) {}
+
+    bool done() const { return next_ >= argc_; }
+    std::string_view next() { return argv_[next_++]; }
+    /// The option's value, the next argument; false if there is none.
+    bool value(std::string_view& out) {
+        if (done()) return false;
+        out = next();
+        return true;
+    }
+    /// The value parsed as a number; false if there is none or it is not one.
+    template <typename T> bool number(T& out) {
+        std::string_view text;
+        return value(text) && parseNumber(text, out);
+    }
+    /// Records the first problem; returns true, so that an option handler can end with it.
+    bool fail(std::string message) {
+        if (error.empty()) error = std::move(message);
+        return true;
+    }
+
+    std::string error;
+
+private:
+    int argc_;
+    char** argv_;
+    int next_ = 1;
+};
+
+/// Modes and what is printed: true if `arg` is one of them.
+bool modeOption(std::string_view arg, Arguments& args, Options& o) {
+    std::string_view v;
+    if (arg == "--check") o.mode = Mode::Check;
+    else if (arg == "--dump-ast") o.mode = Mode::DumpAst;
+    else if (arg == "--dump-scene") o.mode = Mode::DumpScene;
+    else if (arg == "--format") o.mode = Mode::Format;
+    else if (arg == "-Werror") o.werror = true;
+    else if (arg == "-q" || arg == "--quiet") o.quiet = true;
+    else if (arg == "--stats") o.stats = true;
+    else if (arg == "--color" || arg.starts_with("--color=")) {
+        if (arg == "--color" && !args.value(v)) return args.fail("--color needs auto, always or never");
+        if (arg != "--color") v = arg.substr(8);
+        if (v == "auto") o.color = ColorWhen::Auto;
+        else if (v == "always") o.color = ColorWhen::Always;
+        else if (v == "never") o.color = ColorWhen::Never;
+        else return args.fail(fmt::format("--color takes auto, always or never, not '{}'", v));
+    } else return false;
+    return true;
+}
+
+/// The image and how it is rendered: true if `arg` is one of these options.
+bool renderOption(std::string_view arg, Arguments& args, Options& o) {
+    std::string_view v;
+    if (arg == "-o") {
+        if (!args.value(v)) return args.fail("-o needs a file name");
+        o.output = v;
+    } else if (arg == "--frames") {
+        if (!args.number(o.frames) || o.frames < 1) return args.fail("--frames needs a positive integer");
+    } else if (arg == "--width" || arg == "--height") {
+        int& size = arg == "--width" ? o.width : o.height;
+        if (!args.number(size) || size < 1) return args.fail(fmt::format("{} needs a positive integer", arg));
+    } else if (arg == "--threads") {
+        if (!args.number(o.threads) || o.threads < 1) return args.fail("--threads needs a positive integer");
+    } else if (arg == "--fps") {
+        if (!args.number(o.fps) || !(o.fps > 0) || o.fps > 100) return args.fail("--fps needs a number in (0, 100]");
+    } else if (arg == "--png-compression") {
+        if (!args.number(o.pngCompression) || o.pngCompression < 0 || o.pngCompression > 9)
+            return args.fail("--png-compression needs an integer from 0 to 9");
+    } else return false;
+    return true;
+}
+
+/// How the script is evaluated, and its limits: true if `arg` is one of these options.
+bool evalOption(std::string_view arg, Arguments& args, Options& o) {
+    std::string_view v;
+    lang::EvalOptions& eval = o.eval;
+    if (arg.starts_with("-I")) {
+        if (arg.size() > 2) eval.includes.dirs.emplace_back(arg.substr(2));
+        else if (!args.value(v)) return args.fail("-I needs a folder");
+        else eval.includes.dirs.emplace_back(v);
+    } else if (arg == "--assets") {
+        if (!args.value(v)) return args.fail("--assets needs a folder");
+        eval.assetRoots.emplace_back(v);
+    } else if (arg == "--time") {
+        double t = 0;
+        if (!args.number(t)) return args.fail("--time needs a number");
+        eval.time = t;
+    } else if (arg == "--seed") {
+        if (!args.number(eval.seed)) return args.fail("--seed needs a non-negative integer");
+    } else if (arg == "--max-steps") {
+        if (!args.number(eval.limits.maxSteps)) return args.fail("--max-steps needs a non-negative integer");
+    } else if (arg == "--max-depth") {
+        if (!args.number(eval.limits.maxDepth)) return args.fail("--max-depth needs a non-negative integer");
+        // The front end's stack holds this many nested calls.
+        if (eval.limits.maxDepth > kMaxSupportedDepth)
+            return args.fail(fmt::format("--max-depth above {} is not supported", kMaxSupportedDepth));
+    } else if (arg == "--max-entities") {
+        if (!args.number(eval.limits.maxEntities)) return args.fail("--max-entities needs a non-negative integer");
+    } else if (arg == "--max-size") {
+        if (!args.number(eval.limits.maxSize) || eval.limits.maxSize == 0)
+            return args.fail("--max-size needs a positive integer");
+    } else return false;
+    return true;
+}
+
+/// What no single option can check.
+std::string checkCombination(const Options& o) {
+    if (o.script.empty()) return "no script given";
+    if (o.frames > 0 && o.eval.time) return "--time and --frames cannot be combined";
+    const uint32_t maxSize = o.eval.limits.maxSize;
+    for (auto [name, size] : {std::pair{"--width", o.width}, {"--height", o.height}}) {
+        if (static_cast<uint32_t>(size) > maxSize)
+            return fmt::format("{} {} is above the image size limit {} (raise it with --max-size)", name,
+                               size, maxSize);
+    }
+    return "";
+}
+
 } // namespace
 
 ParsedOptions parseOptions(int argc, char** argv) {
     Options o;
     ParsedOptions result;
-    auto bad = [&](std::string message) {
-        result.options.reset();
+    auto bad = [&](const std::string& message) {
         result.message = fmt::format("crtc: {}\nTry 'crtc --help'.", message);
         result.status = 2;
         return result;
     };
-    for (int i = 1; i < argc; ++i) {
-        std::string_view arg = argv[i];
-        auto value = [&](std::string_view& out) {
-            if (i + 1 >= argc) return false;
-            out = argv[++i];
-            return true;
-        };
-        std::string_view v;
+    for (Arguments args(argc, argv); !args.done();) {
+        const std::string_view arg = args.next();
         if (arg == "-h" || arg == "--help") {
             result.message = usage();
             return result;
-        } else if (arg == "--version") {
+        }
+        if (arg == "--version") {
             result.message = fmt::format("crtc {}", CRT_VERSION);
             return result;
-        } else if (arg == "--check") {
-            o.mode = Mode::Check;
-        } else if (arg == "--dump-ast") {
-            o.mode = Mode::DumpAst;
-        } else if (arg == "--dump-scene") {
-            o.mode = Mode::DumpScene;
-        } else if (arg == "--format") {
-            o.mode = Mode::Format;
-        } else if (arg == "-Werror") {
-            o.werror = true;
-        } else if (arg == "-q" || arg == "--quiet") {
-            o.quiet = true;
-        } else if (arg == "-o") {
-            if (!value(v)) return bad("-o needs a file name");
-            o.output = v;
-        } else if (arg.starts_with("-I")) {
-            if (arg.size() > 2) {
-                o.eval.includes.dirs.emplace_back(arg.substr(2));
-            } else {
-                if (!value(v)) return bad("-I needs a folder");
-                o.eval.includes.dirs.emplace_back(v);
-            }
-        } else if (arg == "--assets") {
-            if (!value(v)) return bad("--assets needs a folder");
-            o.eval.assetRoots.emplace_back(v);
-        } else if (arg == "--time") {
-            double t = 0;
-            if (!value(v) || !parseNumber(v, t)) return bad("--time needs a number");
-            o.eval.time = t;
-        } else if (arg == "--frames") {
-            if (!value(v) || !parseNumber(v, o.frames) || o.frames < 1) return bad("--frames needs a positive integer");
-        } else if (arg == "--width" || arg == "--height") {
-            int& size = arg == "--width" ? o.width : o.height;
-            if (!value(v) || !parseNumber(v, size) || size < 1) return bad(fmt::format("{} needs a positive integer", arg));
-        } else if (arg == "--threads") {
-            if (!value(v) || !parseNumber(v, o.threads) || o.threads < 1) return bad("--threads needs a positive integer");
-        } else if (arg == "--fps") {
-            if (!value(v) || !parseNumber(v, o.fps) || !(o.fps > 0) || o.fps > 100) return bad("--fps needs a number in (0, 100]");
-        } else if (arg == "--png-compression") {
-            if (!value(v) || !parseNumber(v, o.pngCompression) || o.pngCompression < 0 || o.pngCompression > 9) return bad("--png-compression needs an integer from 0 to 9");
-        } else if (arg == "--stats") {
-            o.stats = true;
-        } else if (arg == "--seed") {
-            if (!value(v) || !parseNumber(v, o.eval.seed)) return bad("--seed needs a non-negative integer");
-        } else if (arg == "--max-steps") {
-            if (!value(v) || !parseNumber(v, o.eval.limits.maxSteps)) return bad("--max-steps needs a non-negative integer");
-        } else if (arg == "--max-depth") {
-            if (!value(v) || !parseNumber(v, o.eval.limits.maxDepth)) return bad("--max-depth needs a non-negative integer");
-            // Each nested call takes about 2 KB of the front end's 1 GB stack.
-            if (o.eval.limits.maxDepth > kMaxSupportedDepth) {
-                return bad(fmt::format("--max-depth above {} is not supported", kMaxSupportedDepth));
-            }
-        } else if (arg == "--max-entities") {
-            if (!value(v) || !parseNumber(v, o.eval.limits.maxEntities)) return bad("--max-entities needs a non-negative integer");
-        } else if (arg == "--max-size") {
-            if (!value(v) || !parseNumber(v, o.eval.limits.maxSize) || o.eval.limits.maxSize == 0) {
-                return bad("--max-size needs a positive integer");
-            }
-        } else if (arg == "--color" || arg.starts_with("--color=")) {
-            if (arg == "--color") {
-                if (!value(v)) return bad("--color needs auto, always or never");
-            } else {
-                v = arg.substr(8);
-            }
-            if (v == "auto") o.colour = ColourWhen::Auto;
-            else if (v == "always") o.colour = ColourWhen::Always;
-            else if (v == "never") o.colour = ColourWhen::Never;
-            else return bad(fmt::format("--color takes auto, always or never, not '{}'", v));
+        }
+        if (modeOption(arg, args, o) || renderOption(arg, args, o) || evalOption(arg, args, o)) {
+            if (!args.error.empty()) return bad(args.error);
         } else if (arg.size() > 1 && arg[0] == '-') {
             return bad(fmt::format("unknown option '{}'", arg));
         } else if (o.script.empty()) {
@@ -159,8 +209,7 @@ ParsedOptions parseOptions(int argc, char** argv) {
             return bad(fmt::format("only one script can be given ('{}' and '{}')", o.script, arg));
         }
     }
-    if (o.script.empty()) return bad("no script given");
-    if (o.frames > 0 && o.eval.time) return bad("--time and --frames cannot be combined");
+    if (std::string problem = checkCombination(o); !problem.empty()) return bad(problem);
     result.options = std::move(o);
     return result;
 }

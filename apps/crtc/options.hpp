@@ -10,7 +10,7 @@
 namespace crt::crtc {
 
 enum class Mode { Render, Check, DumpAst, DumpScene, Format };
-enum class ColourWhen { Auto, Always, Never };
+enum class ColorWhen { Auto, Always, Never };
 
 struct Options {
     Mode mode = Mode::Render;
@@ -19,7 +19,7 @@ struct Options {
     lang::EvalOptions eval;
     int frames = 0; ///< --frames N; 0: a single evaluation
     bool werror = false;
-    ColourWhen colour = ColourWhen::Auto;
+    ColorWhen color = ColorWhen::Auto;
     bool quiet = false;
     // Rendering
     int width = 0;     ///< --width; 0: the script's

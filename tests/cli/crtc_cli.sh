@@ -58,6 +58,10 @@ expect_text "$work/err" "unknown option '--frobnicate'" "unknown option message"
 expect_status 2 "missing file" "$crtc" --check "$work/missing.crt"
 expect_text "$work/err" "cannot read" "missing file message"
 expect_status 2 "bad number" "$crtc" --max-steps many "$work/good.crt"
+expect_status 2 "--width above --max-size" "$crtc" --width 900 --max-size 800 -o "$work/big.png" "$work/good.crt"
+expect_text "$work/err" "--width 900 is above the image size limit 800 \(raise it with --max-size\)" "size limit message"
+[ -e "$work/big.png" ] && { echo "FAIL: an image was written past the size limit"; failures=$((failures + 1)); }
+expect_status 0 "--width at --max-size" "$crtc" --width 800 --height 30 --max-size 800 -q -o "$work/fits.png" "$work/good.crt"
 
 expect_status 0 "--check on a good script" "$crtc" --check "$work/good.crt"
 [ -s "$work/err" ] && { echo "FAIL: --check printed something on a good script"; failures=$((failures + 1)); }
