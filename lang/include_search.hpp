@@ -1,4 +1,4 @@
-// Where `include "name"` looks, for the interpreter, crtc and the language server alike.
+// Where `include "name"` looks: one search path for every reader of scripts.
 #pragma once
 
 #include <filesystem>

@@ -1,4 +1,4 @@
-// The scene description as JSON (crtc --dump-scene); the format is documented in
+// The scene description as JSON; the format is documented in
 // docs/scene-json.md and versioned by SceneDesc::kSchemaVersion.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Counters of the work a render did, per thread and summed (crtc --stats).
+// Counters of the work a render did, per thread and summed.
 #pragma once
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// The streamed output's writer thread.
 #include "streamed_output.hpp"
 
 namespace crt::crtc {
@@ -37,9 +38,8 @@ void StreamedOutput::write() {
             bands_.pop_front();
         }
         if (!opened) {
-            // Opened with the first rows, not before: opening waits for the image module,
-            // and asking for it before the render's threads exist would load it now, on this
-            // thread, holding up their creation (see image_io::startLoading).
+            // Opened with the first rows: a render that fails before it has any leaves no
+            // file behind.
             opened = true;
             error.clear();
             stream = image_io::ImageStream::open(path_, width_, height_, 3, options_, error);

@@ -1,6 +1,6 @@
 // Writing a render's image while it is traced: finished rows go to the file on a thread of
-// their own, so that encoding (about 75 ms for a 1920×1080 PNG) overlaps tracing instead of
-// following it.
+// their own, so that encoding overlaps tracing instead of following it, and a large image is
+// never held whole.
 #pragma once
 
 #include "tracer/image_io/image_io.hpp"
