@@ -1,6 +1,7 @@
 # Shared by the benchmark scripts against POV-Ray (sourced, not run): the crtc check,
 # the output folder with a private POV-Ray HOME, and timing helpers.
 #   bench_check_crtc            sets have_crtc (0: measure POV-Ray only); exits 2 if unusable
+#   bench_check_base            sets have_base (1 if $base names a second crtc); exits 2 if unusable
 #   bench_output_folder NAME    sets out, logs, povhome and keep_hint
 
 bench_check_crtc() {
@@ -15,6 +16,18 @@ bench_check_crtc() {
         echo "$0: '$crtc' exists but is not executable" >&2
         exit 2
     fi
+}
+
+# The optional second crtc build ($base, from CRTC_BASE or an option), timed in the same
+# alternating loop as $crtc so that both are measured against the same POV-Ray runs.
+bench_check_base() {
+    have_base=0
+    [[ -n ${base:-} ]] || return 0
+    if [[ ! -f $base || ! -x $base ]]; then
+        echo "$0: the base crtc '$base' is not an executable file" >&2
+        exit 2
+    fi
+    have_base=1
 }
 
 # Output folder: images or generated files, logs, and a private HOME for POV-Ray (so it
@@ -38,9 +51,8 @@ bench_output_folder() {
 
 # stamp VAR: the time now, in nanoseconds, into VAR, without starting a process (bash's
 # EPOCHREALTIME, microsecond resolution; `date` where that is missing). A timed command is
-# then charged for itself only: on the machines measured, starting `date` (twice) and GNU
-# time around a command added 13-15 ms to it, a sixth of crtc's time on some front-end
-# workloads.
+# then charged for itself only: starting `date` twice and GNU time around it would add their
+# own start-up, a sizeable part of crtc's time on the short front-end workloads.
 stamp() {
     if [[ -n ${EPOCHREALTIME:-} ]]; then
         printf -v "$1" '%s000' "${EPOCHREALTIME/[.,]/}"

@@ -4,11 +4,14 @@
 # alternating, several times. Prints median wall times, their ratio and the
 # RMSE between the two images as a Markdown table. See bench/README.md.
 #
-# usage: bench/render/run.sh [--runs N] [--sizes WxH,WxH] [--scenes a,b] [CRTC]
+# usage: bench/render/run.sh [--runs N] [--sizes WxH,WxH] [--scenes a,b] [--base CRTC] [CRTC]
 #
 #   --runs N      timed runs per tool, scene and size; medians reported (default 3)
 #   --sizes LIST  comma-separated image sizes (default 800x600,1920x1080)
 #   --scenes LIST comma-separated subset of mirror_room,sphere_grid,csg
+#   --base CRTC   a second crtc binary (e.g. the build before a change; default
+#                 $CRTC_BASE), timed in the same runs against the same POV-Ray
+#                 renders; adds columns with its time and its ratio to POV-Ray
 #   CRTC          path of the crtc binary (default: $CRTC, else build/bin/crtc
 #                 under the repository root)
 #
@@ -28,12 +31,14 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$here/../common.sh"
 root=$(cd "$here/../.." && pwd)
 
-usage() { sed -n '2,23p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+# the header comment, up to the first line that is not a comment
+usage() { awk 'NR == 1 { next } !/^#/ { exit } { sub(/^# ?/, ""); print }' "${BASH_SOURCE[0]}"; }
 
 runs=3
 sizes=800x600,1920x1080
 scenes=mirror_room,sphere_grid,csg
 crtc_arg=
+base=${CRTC_BASE:-}
 while [[ $# -gt 0 ]]; do
     case $1 in
         -h | --help) usage; exit 0 ;;
@@ -43,6 +48,8 @@ while [[ $# -gt 0 ]]; do
         --sizes=*) sizes=${1#--sizes=}; shift ;;
         --scenes) scenes=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
         --scenes=*) scenes=${1#--scenes=}; shift ;;
+        --base) base=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
+        --base=*) base=${1#--base=}; shift ;;
         -*) echo "$0: unknown option '$1'" >&2; usage >&2; exit 2 ;;
         *)
             if [[ -n $crtc_arg ]]; then echo "$0: more than one CRTC given" >&2; exit 2; fi
@@ -86,6 +93,7 @@ if ! command -v oiiotool >/dev/null; then
 fi
 
 bench_check_crtc
+bench_check_base
 bench_output_folder render
 
 # ---------------------------------------------------------------------------
@@ -121,26 +129,27 @@ run_pov() {
     fi
 }
 
-# run_crtc SCENE W H RUN [--stats] -> sets crtc_wall, crtc_cpu; image $out/SCENE.WxH.crtc.png
+# run_crtc BINARY TAG SCENE W H RUN [--stats] -> sets crtc_wall, crtc_cpu; image
+# $out/SCENE.WxH.TAG.png (TAG: crtc or base)
 run_crtc() {
-    local w=$1 W=$2 H=$3 r=$4 extra=${5:-} log t0 t1 c0 c1 rc
-    log=$logs/$w.${W}x$H.crtc.$r
+    local bin=$1 tag=$2 w=$3 W=$4 H=$5 r=$6 extra=${7:-} log t0 t1 c0 c1 rc
+    log=$logs/$w.${W}x$H.$tag.$r
     children_cpu_ms c0
     stamp t0
     rc=0
-    "$crtc" "$here/$w.crt" -o "$out/$w.${W}x$H.crtc.png" --width "$W" --height "$H" \
+    "$bin" "$here/$w.crt" -o "$out/$w.${W}x$H.$tag.png" --width "$W" --height "$H" \
         --threads "$threads" -q $extra >"$log.out" 2>"$log.err" || rc=$?
     stamp t1
     children_cpu_ms c1
     crtc_wall=$(elapsed "$t0" "$t1")
     crtc_cpu=$(cpu_between "$c0" "$c1")
     if [[ $rc -ne 0 ]]; then
-        echo "crtc failed on $w.crt at ${W}x$H (exit $rc); log: $log.err$keep_hint" >&2
+        echo "$bin failed on $w.crt at ${W}x$H (exit $rc); log: $log.err$keep_hint" >&2
         head -n 20 "$log.err" >&2
         return 1
     fi
     if [[ -z $extra && -s $log.err && $r -eq 1 ]]; then
-        echo "note: crtc printed diagnostics for $w (the scenes should give none):" >&2
+        echo "note: $bin printed diagnostics for $w (the scenes should give none):" >&2
         head -n 10 "$log.err" >&2
     fi
 }
@@ -174,19 +183,20 @@ compare() {
 
 echo "POV-Ray: $povray ($(HOME=$povhome "$povray" --version 2>&1 | grep -m1 -o 'POV-Ray [0-9][0-9.a-z]*' || echo unknown version))" >&2
 [[ $have_crtc -eq 1 ]] && echo "crtc:    $crtc" >&2
+[[ $have_base -eq 1 ]] && echo "base:    $base" >&2
 echo "runs per tool, scene and size: $runs (median reported), $threads threads" >&2
 stamp start_all
 
-declare -A P_WALL P_CPU P_PARSE P_TRACE P_SINGLE C_WALL C_CPU C_SINGLE RMSE MAXERR OVER2 STATUS STATS
+declare -A P_WALL P_CPU P_PARSE P_TRACE P_SINGLE C_WALL C_CPU C_SINGLE B_WALL RMSE MAXERR OVER2 STATUS STATS
 
 for w in "${scene_list[@]}"; do
     for s in "${size_list[@]}"; do
         W=${s%x*} H=${s#*x}
         k="$w $s"
         echo "running $w at $s ..." >&2
-        pwalls=() pcpus=() pparses=() ptraces=() cwalls=() ccpus=()
+        pwalls=() pcpus=() pparses=() ptraces=() cwalls=() ccpus=() bwalls=()
         status=ok
-        crtc_ok=$have_crtc
+        crtc_ok=$have_crtc base_ok=$have_base
         for ((r = 1; r <= runs; r++)); do
             if run_pov "$w" "$W" "$H" "$r"; then
                 pwalls+=("$pov_wall") pcpus+=("$pov_cpu") pparses+=("${pov_parse:-0}") ptraces+=("${pov_trace:-0}")
@@ -194,15 +204,29 @@ for w in "${scene_list[@]}"; do
                 status=pov-error
                 break
             fi
-            if [[ $crtc_ok -eq 1 ]]; then
-                if run_crtc "$w" "$W" "$H" "$r"; then
-                    cwalls+=("$crtc_wall") ccpus+=("$crtc_cpu")
-                else
-                    status=crtc-error
-                    crtc_ok=0
+            # With a base build, the two crtc builds take turns at running right after
+            # POV-Ray, so that neither always meets the machine as the other left it.
+            order="crtc base"
+            [[ $((r % 2)) -eq 0 ]] && order="base crtc"
+            for tag in $order; do
+                if [[ $tag == crtc && $crtc_ok -eq 1 ]]; then
+                    if run_crtc "$crtc" crtc "$w" "$W" "$H" "$r"; then
+                        cwalls+=("$crtc_wall") ccpus+=("$crtc_cpu")
+                    else
+                        status=crtc-error
+                        crtc_ok=0
+                    fi
+                elif [[ $tag == base && $base_ok -eq 1 ]]; then
+                    if run_crtc "$base" base "$w" "$W" "$H" "$r"; then
+                        bwalls+=("$crtc_wall")
+                    else
+                        [[ $status == ok ]] && status="base-error"
+                        base_ok=0
+                    fi
                 fi
-            fi
+            done
         done
+        [[ $base_ok -eq 1 && ${#bwalls[@]} -eq $runs ]] && B_WALL[$k]=$(median "${bwalls[@]}")
         if [[ ${#pwalls[@]} -eq $runs ]]; then
             P_WALL[$k]=$(median "${pwalls[@]}")
             P_CPU[$k]=$(median "${pcpus[@]}")
@@ -215,7 +239,7 @@ for w in "${scene_list[@]}"; do
             C_CPU[$k]=$(median "${ccpus[@]}")
             C_SINGLE[$k]=${cwalls[*]}
             # one more, untimed run with --stats (the counters cost a little)
-            if run_crtc "$w" "$W" "$H" stats --stats; then
+            if run_crtc "$crtc" crtc "$w" "$W" "$H" stats --stats; then
                 STATS[$k]=$(grep 'stats:' "$logs/$w.${W}x$H.crtc.stats.err" | sed 's/^crtc: stats: //' | paste -sd ';' | sed 's/;/; /g')
             fi
             if compare "$w" "$W" "$H"; then
@@ -235,9 +259,11 @@ total=$(elapsed "$start_all" "$end_all")
 
 goal_missed=0
 
+base_head='' base_rule=''
+[[ $have_base -eq 1 ]] && base_head=" base (s) | ratio (POV/base) |" base_rule=" ---: | ---: |"
 echo
-echo "| scene | size | POV-Ray (s) | crtc (s) | ratio (POV/crtc) | RMSE (/255) | goal met? (ratio ≥ 3, RMSE ≤ 2) |"
-echo "| --- | --- | ---: | ---: | ---: | ---: | --- |"
+echo "| scene | size | POV-Ray (s) | crtc (s) | ratio (POV/crtc) | RMSE (/255) | goal met? (ratio ≥ 3, RMSE ≤ 2) |$base_head"
+echo "| --- | --- | ---: | ---: | ---: | ---: | --- |$base_rule"
 for w in "${scene_list[@]}"; do
     for s in "${size_list[@]}"; do
         k="$w $s"
@@ -261,7 +287,18 @@ for w in "${scene_list[@]}"; do
             fi
         fi
         [[ $met != yes ]] && goal_missed=1
-        echo "| $w | $s | ${pw:-error} | $cw_cell | $ratio | $e_cell | $met |"
+        base_cells=
+        if [[ $have_base -eq 1 ]]; then
+            bw=${B_WALL[$k]:-}
+            if [[ -n $bw && -n $pw ]]; then
+                base_cells=" $bw | $(awk -v a="$pw" -v b="$bw" 'BEGIN { if (b > 0) printf "%.2fx", a / b; else print "inf" }') |"
+            elif [[ ${STATUS[$k]} == pov-error ]]; then
+                base_cells=" not run | — |"
+            else
+                base_cells=" ${bw:-error} | — |"
+            fi
+        fi
+        echo "| $w | $s | ${pw:-error} | $cw_cell | $ratio | $e_cell | $met |$base_cells"
     done
 done
 
