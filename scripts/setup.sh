@@ -10,7 +10,7 @@ packages=(
     g++ cmake ninja-build re2c bison
     libfmt-dev libglm-dev nlohmann-json3-dev catch2
     libopenimageio-dev openimageio-tools # image input and output; oiiotool in the tests
-    zlib1g-dev # PNG output, written without OpenImageIO
+    libpng-dev # PNG output, written without OpenImageIO
     python3 # the language server's protocol session tests (tests/lsp)
     neovim  # the language server's end-to-end test (tests/lsp/nvim)
 )

@@ -50,12 +50,12 @@ float srgbToLinear(float v) {
 
 namespace {
 
-// A pow per value costs more than writing the PNG (25 ms for 800 × 600), so whole images go
-// through tables instead. lower[k] is the smallest float whose exact code is at least k;
+// A pow per value would cost more than compressing the image, so whole images go through
+// tables instead. lower[k] is the smallest float whose exact code is at least k;
 // since the exact code is monotone in the value, the largest k with lower[k] <= c is exactly
 // that code. To avoid searching all of lower[] per value, start[] holds the code at the start
 // of each bucket of float bit patterns (2^14 patterns, 0.2 % of the value, about a quarter of a
-// code), leaving a step or two. Building both takes well under a millisecond.
+// code), leaving a step or two. Building both is cheap next to a pow per value of an image.
 class CodeTable {
   public:
     template <class Encode> explicit CodeTable(Encode encode) : start_(kBuckets) {

@@ -31,10 +31,10 @@ struct OutputFormat {
 };
 
 constexpr OutputFormat kOutputFormats[] = {
-    {".png", "png", true, false, true},     {".jpg", "jpeg", true, false, false},
-    {".jpeg", "jpeg", true, false, false},  {".tif", "tiff", true, false, false},
-    {".tiff", "tiff", true, false, false},  {".exr", "openexr", false, false, false},
-    {".hdr", "hdr", false, true, false},    {".gif", "gif", true, true, false},
+    {".png", "png", true, false, true},    {".jpg", "jpeg", true, false, false},
+    {".jpeg", "jpeg", true, false, false}, {".tif", "tiff", true, false, false},
+    {".tiff", "tiff", true, false, false}, {".exr", "openexr", false, false, false},
+    {".hdr", "hdr", false, true, false},   {".gif", "gif", true, true, false},
 };
 
 std::string lowerExtension(const std::string& path) {
@@ -87,7 +87,8 @@ float* allocatePixels(void* context, int width, int height) {
 
 bool checkSize(int width, int height, int channels, std::string& problem) {
     if (width < 1 || height < 1) {
-        problem = "the image is empty (" + std::to_string(width) + " x " + std::to_string(height) + ")";
+        problem =
+            "the image is empty (" + std::to_string(width) + " x " + std::to_string(height) + ")";
         return false;
     }
     if (channels != 1 && channels != 3 && channels != 4) {
@@ -124,7 +125,8 @@ bool checkOptions(const WriteOptions& options, std::string& problem) {
 // GIF and HDR store only colour: a grey image becomes three equal channels.
 std::vector<float> expandGrey(std::span<const float> grey) {
     std::vector<float> rgb(grey.size() * 3);
-    for (std::size_t i = 0; i < grey.size(); ++i) rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = grey[i];
+    for (std::size_t i = 0; i < grey.size(); ++i)
+        rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = grey[i];
     return rgb;
 }
 
@@ -178,7 +180,8 @@ bool checkTarget(const std::string& path, std::string& error) {
 }
 
 // The module speaks of the file it was given; the caller knows only `path`.
-std::string failureOf(const std::string& path, const std::string& temporary, const std::string& problem) {
+std::string failureOf(const std::string& path, const std::string& temporary,
+                      const std::string& problem) {
     return "cannot write " + quotedName(path) + ": " + replaceAll(problem, temporary, path);
 }
 
@@ -217,25 +220,12 @@ const CrtImageIoModule* moduleFor(const std::string& action, std::string& error)
 
 } // namespace
 
-void startLoading() {
-    detail::startModuleLoad();
-}
-
-bool finishLoading() {
-    return detail::waitForStartedLoad();
-}
-
 bool ensureLoaded(std::string& error) {
     return detail::loadedModule(error) != nullptr;
 }
 
 bool isSupportedOutput(const std::string& path) {
     return outputFormatOf(path) != nullptr;
-}
-
-bool writingNeedsModule(const std::string& path) {
-    const OutputFormat* format = outputFormatOf(path);
-    return format && !format->builtin;
 }
 
 std::optional<ImageBuffer> readImage(const std::string& path, std::string& error, bool* eightBit) {
@@ -289,10 +279,10 @@ std::unique_ptr<ImageStream> ImageStream::open(const std::string& path, int widt
     stream->eightBit_ = format->eightBit;
     stream->options_ = options;
     CallContext context;
-    stream->handle_ = module->openImage(stream->temporary_.c_str(), format->oiioName, width, height,
-                                        stream->expandGrey_ ? 3 : channels, format->eightBit ? 0 : 1,
-                                        format->eightBit && options.srgb ? 1 : 0,
-                                        options.pngCompression, storeError, &context);
+    stream->handle_ = module->openImage(
+        stream->temporary_.c_str(), format->oiioName, width, height,
+        stream->expandGrey_ ? 3 : channels, format->eightBit ? 0 : 1,
+        format->eightBit && options.srgb ? 1 : 0, options.pngCompression, storeError, &context);
     if (!stream->handle_) {
         error = failureOf(path, stream->temporary_, context.error);
         return nullptr; // the destructor removes whatever the module created
@@ -300,12 +290,15 @@ std::unique_ptr<ImageStream> ImageStream::open(const std::string& path, int widt
     return stream;
 }
 
-bool ImageStream::writeRows(int yBegin, int yEnd, std::span<const float> values, std::string& error) {
-    const std::size_t expected = std::size_t(yEnd - yBegin) * std::size_t(width_) * std::size_t(channels_);
-    if (!handle_ || yBegin != nextRow_ || yEnd <= yBegin || yEnd > height_ || values.size() != expected) {
+bool ImageStream::writeRows(int yBegin, int yEnd, std::span<const float> values,
+                            std::string& error) {
+    const std::size_t expected =
+        std::size_t(yEnd - yBegin) * std::size_t(width_) * std::size_t(channels_);
+    if (!handle_ || yBegin != nextRow_ || yEnd <= yBegin || yEnd > height_ ||
+        values.size() != expected) {
         error = "cannot write " + quotedName(path_) + ": rows " + std::to_string(yBegin) + " to " +
-                std::to_string(yEnd) + " do not follow row " + std::to_string(nextRow_) +
-                " with " + std::to_string(expected) + " values";
+                std::to_string(yEnd) + " do not follow row " + std::to_string(nextRow_) + " with " +
+                std::to_string(expected) + " values";
         return false;
     }
     const int fileChannels = expandGrey_ ? 3 : channels_;
@@ -313,7 +306,8 @@ bool ImageStream::writeRows(int yBegin, int yEnd, std::span<const float> values,
     const std::span<const float> stored = expandGrey_ ? expanded : values;
     std::vector<std::uint8_t> codes;
     if (eightBit_) codes = quantiseColour(stored, fileChannels, options_);
-    const void* pixels = eightBit_ ? static_cast<const void*>(codes.data()) : static_cast<const void*>(stored.data());
+    const void* pixels = eightBit_ ? static_cast<const void*>(codes.data())
+                                   : static_cast<const void*>(stored.data());
     CallContext context;
     if (!module_->writeRows(handle_, yBegin, yEnd, pixels, storeError, &context)) {
         error = failureOf(path_, temporary_, context.error);
@@ -325,8 +319,8 @@ bool ImageStream::writeRows(int yBegin, int yEnd, std::span<const float> values,
 
 bool ImageStream::finish(std::string& error) {
     if (!handle_ || nextRow_ != height_) {
-        error = "cannot write " + quotedName(path_) + ": only " + std::to_string(nextRow_) + " of " +
-                std::to_string(height_) + " rows were written";
+        error = "cannot write " + quotedName(path_) + ": only " + std::to_string(nextRow_) +
+                " of " + std::to_string(height_) + " rows were written";
         return false;
     }
     CallContext context;
@@ -382,7 +376,8 @@ bool GifFrames::add(const ImageBuffer& frame, const WriteOptions& options, std::
     }
     // GIF stores colour: a grey frame becomes three equal channels.
     const int channels = frame.channels == 1 ? 3 : frame.channels;
-    if (!frames_.empty() && (frame.width != width_ || frame.height != height_ || channels != channels_)) {
+    if (!frames_.empty() &&
+        (frame.width != width_ || frame.height != height_ || channels != channels_)) {
         problem = which + " differs in size from frame 0";
         return false;
     }
@@ -395,7 +390,9 @@ bool GifFrames::add(const ImageBuffer& frame, const WriteOptions& options, std::
     return true;
 }
 
-void GifFrames::repeatLast() { frames_.push_back(frames_.back()); }
+void GifFrames::repeatLast() {
+    frames_.push_back(frames_.back());
+}
 
 std::vector<const std::uint8_t*> GifFrames::framePointers() const {
     std::vector<const std::uint8_t*> pointers;
@@ -408,7 +405,8 @@ namespace {
 
 /// Why an animation cannot be written to `path` at `fps` (before looking at its frames).
 std::string animationProblem(const std::string& path, std::size_t frameCount, double fps) {
-    if (lowerExtension(path) != ".gif") return "an animation is written as a GIF, so the name must end in .gif";
+    if (lowerExtension(path) != ".gif")
+        return "an animation is written as a GIF, so the name must end in .gif";
     if (frameCount == 0) return "an animation needs at least one frame";
     if (!(fps > 0.0) || !std::isfinite(fps)) return "the frame rate must be a positive number";
     return {};
@@ -416,7 +414,8 @@ std::string animationProblem(const std::string& path, std::size_t frameCount, do
 
 } // namespace
 
-bool writeAnimatedGif(const std::string& path, const GifFrames& frames, double fps, std::string& error) {
+bool writeAnimatedGif(const std::string& path, const GifFrames& frames, double fps,
+                      std::string& error) {
     if (std::string problem = animationProblem(path, frames.size(), fps); !problem.empty()) {
         error = "cannot write " + quotedName(path) + ": " + problem;
         return false;
@@ -430,9 +429,10 @@ bool writeAnimatedGif(const std::string& path, const GifFrames& frames, double f
     const long delay = std::clamp(std::lround(100.0 / fps), 1L, 65535L);
     return writeThroughTemporary(path, error, [&](const std::string& temporary, std::string& why) {
         CallContext context;
-        const int ok = module->writeAnimatedGif(temporary.c_str(), frames.width(), frames.height(), frames.channels(),
-                                                int(frames.size()), framePointers.data(), 400,
-                                                int(4 * delay + 1), storeError, &context);
+        const int ok =
+            module->writeAnimatedGif(temporary.c_str(), frames.width(), frames.height(),
+                                     frames.channels(), int(frames.size()), framePointers.data(),
+                                     400, int(4 * delay + 1), storeError, &context);
         why = context.error;
         return ok != 0;
     });

@@ -1,11 +1,11 @@
 // Image input and output for the renderer, through OpenImageIO loaded as a module on first use.
 //
-// Linking this library costs nothing at start: OpenImageIO (about 260 shared libraries,
-// 0.4 s and 130 MB to load on Debian) lives in crt_image_io_oiio.so, which is dlopen'ed by
-// the first call, or earlier on a background thread by startLoading(). The module is looked
-// for next to the running executable, then in <exe dir>/../lib/crt/; the environment
-// variable CRT_IMAGE_IO_MODULE names it explicitly. PNG, the default output, is written
-// without it (png_writer.hpp). All functions are thread-safe.
+// Linking this library costs nothing at start: OpenImageIO (about 260 shared libraries on
+// Debian, slow to load and large in memory) lives in crt_image_io_oiio.so, which the first
+// call that needs it dlopens, once per process. The module is looked for next to the running
+// executable, then in <exe dir>/../lib/crt/; the environment variable CRT_IMAGE_IO_MODULE
+// names it explicitly. PNG, the default output, is written with libpng and never loads the
+// module (png_writer.hpp). All functions are thread-safe.
 #pragma once
 
 #include <cstddef>
@@ -32,26 +32,13 @@ struct ImageBuffer {
 struct WriteOptions {
     double gamma = 1.0; ///< must be > 0
     bool srgb = false;  ///< the IEC 61966-2-1 sRGB encoding instead of the gamma power
-    /// zlib level of a PNG, 0 (none) to 9 (smallest). Rows are always filtered with PNG's
-    /// "Sub" filter rather than libpng's per-row trial of all five: on rendered images that
-    /// is as small and three times faster. Level 2 writes a 1920×1080 render in about a
-    /// quarter of the time of zlib's default 6, for files about 10 % larger.
+    /// zlib level of a PNG, 0 (none) to 9 (smallest). The default is below zlib's own 6:
+    /// on rendered images the higher levels cost much more time than they save in size.
     int pngCompression = kDefaultPngCompression;
     static constexpr int kDefaultPngCompression = 2;
 };
 
-/// Begins loading the module on a background thread, so that the load overlaps rendering.
-/// Returns at once; later calls do nothing. Every other function waits for the load.
-/// While the dynamic linker loads a library no thread can be created (creating one waits for
-/// the whole load, about 0.2 s), so start it once the threads a job needs are running.
-void startLoading();
-
-/// Waits for a load begun by startLoading (or by a read or write); returns at once if none
-/// was. A process must not exit in the middle of loading the module. Returns whether the
-/// module was loaded (or its load attempted).
-bool finishLoading();
-
-/// Waits for the module (loading it now if startLoading was not called); false with a message
+/// Loads the module now unless it is loaded (or its load failed) already; false with a message
 /// if it cannot be loaded. Lets a driver fail before a long render rather than after it.
 bool ensureLoaded(std::string& error);
 
@@ -78,9 +65,9 @@ bool writeImage(const std::string& path, const ImageBuffer& image, const WriteOp
 /// formats, quantisation and temporary-file rule as writeImage. Destroying a stream that was
 /// not finished removes its temporary file, so an interrupted render leaves nothing.
 class ImageStream {
-public:
-    /// Checks the name, size and options and opens the temporary file (waiting for the
-    /// module); null with a message in `error` on failure.
+  public:
+    /// Checks the name, size and options and opens the temporary file (loading the module
+    /// unless the format is PNG); null with a message in `error` on failure.
     static std::unique_ptr<ImageStream> open(const std::string& path, int width, int height,
                                              int channels, const WriteOptions& options,
                                              std::string& error);
@@ -94,7 +81,7 @@ public:
     ImageStream& operator=(const ImageStream&) = delete;
     ~ImageStream();
 
-private:
+  private:
     ImageStream() = default;
 
     const CrtImageIoModule* module_ = nullptr;
@@ -110,7 +97,7 @@ private:
 /// 3 bytes an RGB pixel instead of the 12 of a float frame, and nothing more for a frame that
 /// repeats the one before. A long animation then fits in memory.
 class GifFrames {
-public:
+  public:
     /// Quantises `frame` with `options` (as writeImage would) and keeps it; false, with the
     /// problem in `problem`, for a malformed frame or one of another size than the first.
     bool add(const ImageBuffer& frame, const WriteOptions& options, std::string& problem);
@@ -123,7 +110,7 @@ public:
     /// Each frame's codes, row-major from the top.
     std::vector<const std::uint8_t*> framePointers() const;
 
-private:
+  private:
     int width_ = 0;
     int height_ = 0;
     int channels_ = 3;
@@ -133,7 +120,8 @@ private:
 /// Writes an animated GIF (`path` must end in .gif): one subimage per frame, `fps` frames per
 /// second, looping forever, through a temporary file as writeImage. GIF stores a delay in
 /// hundredths of a second, so the rate is rounded to 100/n.
-bool writeAnimatedGif(const std::string& path, const GifFrames& frames, double fps, std::string& error);
+bool writeAnimatedGif(const std::string& path, const GifFrames& frames, double fps,
+                      std::string& error);
 
 /// The same from float frames, all of one size, each quantised with `options`.
 bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& frames, double fps,
@@ -145,9 +133,6 @@ bool copyImage(const std::string& from, const std::string& to, std::string& erro
 
 /// Whether the extension names a format writeImage supports.
 bool isSupportedOutput(const std::string& path);
-
-/// Whether writing `path` loads the module: true for a supported format other than PNG.
-bool writingNeedsModule(const std::string& path);
 
 /// What a file's header says, as OpenImageIO reads it.
 struct ImageInfo {

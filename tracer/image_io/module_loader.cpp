@@ -1,14 +1,12 @@
-// Finds and loads the OpenImageIO module once per process, optionally on a background thread.
+// Finds and loads the OpenImageIO module once per process, on first use.
 #include "tracer/image_io/module_loader.hpp"
 
 #include <dlfcn.h>
 
-#include <condition_variable>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
-#include <mutex>
 #include <system_error>
-#include <thread>
 #include <vector>
 
 namespace crt::tracer::image_io::detail {
@@ -81,7 +79,7 @@ LoadResult loadModule() {
     return {nullptr, message + "; " + kModuleVariable + " can name it"};
 }
 
-// Runs on the loading thread, where an escaping exception would terminate the process.
+// A failure to load is an error message, never an exception: the outcome is kept for good.
 LoadResult loadModuleSafely() noexcept {
     try {
         return loadModule();
@@ -90,80 +88,13 @@ LoadResult loadModuleSafely() noexcept {
     }
 }
 
-class Loader {
-  public:
-    ~Loader() {
-        // A process that exits while the load is under way waits for it: leaving the thread
-        // inside dlopen while static destructors run would be undefined behaviour.
-        if (thread_.joinable()) thread_.join();
-    }
-
-    void startInBackground() {
-        std::lock_guard lock(mutex_);
-        if (started_) return;
-        started_ = true;
-        try {
-            thread_ = std::thread([this] { finish(loadModuleSafely()); });
-        } catch (const std::system_error&) {
-            // No thread to be had: the first call will load on its own thread instead.
-            started_ = false;
-        }
-    }
-
-    const CrtImageIoModule* get(std::string& error) {
-        std::unique_lock lock(mutex_);
-        if (!started_) {
-            started_ = true;
-            lock.unlock();
-            finish(loadModuleSafely());
-            lock.lock();
-        }
-        done_.wait(lock, [this] { return finished_; });
-        if (!result_.module) error = result_.error;
-        return result_.module;
-    }
-
-    bool waitIfStarted() {
-        std::unique_lock lock(mutex_);
-        if (started_) done_.wait(lock, [this] { return finished_; });
-        return started_;
-    }
-
-  private:
-    void finish(LoadResult result) {
-        {
-            std::lock_guard lock(mutex_);
-            result_ = std::move(result);
-            finished_ = true;
-        }
-        done_.notify_all();
-    }
-
-    std::mutex mutex_;
-    std::condition_variable done_;
-    bool started_ = false;
-    bool finished_ = false;
-    LoadResult result_;
-    std::thread thread_;
-};
-
-Loader& loader() {
-    static Loader instance;
-    return instance;
-}
-
 } // namespace
 
-void startModuleLoad() {
-    loader().startInBackground();
-}
-
-bool waitForStartedLoad() {
-    return loader().waitIfStarted();
-}
-
 const CrtImageIoModule* loadedModule(std::string& error) {
-    return loader().get(error);
+    // A function-local static is initialised once, and callers arriving meanwhile wait for it.
+    static const LoadResult result = loadModuleSafely();
+    if (!result.module) error = result.error;
+    return result.module;
 }
 
 } // namespace crt::tracer::image_io::detail

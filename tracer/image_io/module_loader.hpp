@@ -7,14 +7,8 @@
 
 namespace crt::tracer::image_io::detail {
 
-/// Starts loading on a background thread unless a load was already started; returns at once.
-void startModuleLoad();
-
-/// Waits for a load that was started, if any, and says whether there was one.
-bool waitForStartedLoad();
-
-/// Waits for the load (starting it on this thread if nobody has) and returns the module's
-/// table, or null with the reason in `error`. The outcome, success or failure, is final.
+/// Loads the module on the first call (other threads calling meanwhile wait for it) and returns
+/// its table, or null with the reason in `error`. The outcome, success or failure, is final.
 const CrtImageIoModule* loadedModule(std::string& error);
 
 } // namespace crt::tracer::image_io::detail

@@ -23,9 +23,6 @@ using OIIO::ImageOutput;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
 
-// libpng's PNG_FILTER_SUB, which OpenImageIO's "png:filter" takes (png.h is not included here).
-constexpr int kPngFilterSub = 0x10;
-
 struct ErrorSink {
     CrtImageErrorFn fn;
     void* context;
@@ -116,7 +113,8 @@ struct OpenOutput {
 };
 
 void* openImage(const char* path, const char* format, int width, int height, int channels,
-                int isFloat, int srgb, int pngCompression, CrtImageErrorFn error, void* context) {
+                int isFloat, int srgb, int /*pngCompression: PNG is written by png_writer*/,
+                CrtImageErrorFn error, void* context) {
     const ErrorSink sink{error, context};
     try {
         // Created by format name, because the host writes to a temporary file whose name
@@ -132,10 +130,6 @@ void* openImage(const char* path, const char* format, int width, int height, int
         // A fourth channel is straight alpha, stored as given: without this, PNG and TIFF
         // would take the colour as premultiplied and divide it by alpha.
         spec.attribute("oiio:UnassociatedAlpha", 1);
-        if (std::string_view(format) == "png") {
-            spec.attribute("png:compressionLevel", pngCompression);
-            spec.attribute("png:filter", kPngFilterSub);
-        }
         if (!out->open(path, spec)) {
             sink.fail(oiioError(out->geterror()));
             return nullptr;
@@ -242,8 +236,9 @@ int describeImage(const char* path, CrtImageInfo* info, CrtImageErrorFn error, v
     }
 }
 
-constexpr CrtImageIoModule kModule{kCrtImageIoAbiVersion, readImage,  openImage, writeRows,
-                                   closeImage,            writeAnimatedGif, describeImage};
+constexpr CrtImageIoModule kModule{
+    kCrtImageIoAbiVersion, readImage,    openImage, writeRows, closeImage,
+    writeAnimatedGif,      describeImage};
 
 } // namespace
 

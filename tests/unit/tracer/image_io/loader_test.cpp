@@ -1,7 +1,8 @@
 // Image I/O without the module: linking costs nothing, and a missing or broken module is an error.
 //
 // This binary must never load OpenImageIO itself (catch_discover_tests runs it once per test
-// case, and each load costs 0.4 s), so the load failures are provoked in forked children.
+// case, and each would pay OpenImageIO's slow load), so the load failures are provoked in
+// forked children.
 #include "tracer/image_io/image_io.hpp"
 
 #include <catch2/catch.hpp>
