@@ -126,86 +126,113 @@ public:
         uint32_t wordStart = offset_;
         int at = a_.tokenAt(offset_);
         if (at >= 0) {
-            const Token& t = a_.tokens[static_cast<size_t>(at)];
+            const Token& t = token(at);
             if (t.begin < offset_ && (t.kind == TokenKind::Identifier || t.kind == TokenKind::Name || isKeyword(t.kind))) {
                 wordStart = t.begin;
             } else if (insideString(t)) {
-                int before = at - 1;
-                if (before >= 0 && a_.tokens[static_cast<size_t>(before)].kind == TokenKind::KwInclude) {
-                    list_.replace = {0, t.begin + 1, offset_};
-                    includeFiles(false);
-                }
+                stringContents(at);
                 return list_;
             }
         }
         list_.replace = {0, wordStart, offset_};
-        int prev = a_.tokenBefore(wordStart);
-        TokenKind prevKind = prev >= 0 ? a_.tokens[static_cast<size_t>(prev)].kind : TokenKind::EndOfFile;
+        word(a_.tokenBefore(wordStart));
+        return list_;
+    }
+
+private:
+    /// The innermost '{' still open at a token, and whether a '(' or '[' opened after it is too.
+    struct Enclosing {
+        int brace = -1;
+        bool inBrackets = false;
+    };
+
+    const Token& token(int index) const { return a_.tokens[static_cast<size_t>(index)]; }
+    TokenKind kindOf(int index) const { return index >= 0 ? token(index).kind : TokenKind::EndOfFile; }
+
+    /// Inside string token `at`: only an included file's name has completions.
+    void stringContents(int at) {
+        if (kindOf(at - 1) != TokenKind::KwInclude) return;
+        list_.replace = {0, token(at).begin + 1, offset_}; // the name, not its opening quote
+        includeFiles(false);
+    }
+
+    /// A word (maybe empty) after token `prev` (-1: at the start of the text); what fits is
+    /// decided by that token and the blocks around it.
+    void word(int prev) {
+        TokenKind prevKind = kindOf(prev);
         if (prevKind == TokenKind::KwInclude) {
             includeFiles(true);
-            return list_;
+            return;
         }
         if (prevKind == TokenKind::ModifierOpen || prevKind == TokenKind::Less ||
             (prevKind == TokenKind::Comma && inModifierList(prev))) {
-            for (std::string_view m : {"translate", "rotate", "scale"}) {
-                add({std::string(m), CompletionKind::Keyword, "modifier", "", std::string(m) + " ", false, "0"});
-            }
-            return list_;
+            modifiers();
+            return;
         }
+        Enclosing enclosing = enclosingBefore(prev);
+        ObjectType object = objectOfBlock(enclosing.brace);
+        if (object != ObjectType::Count && !enclosing.inBrackets) {
+            objectBody(objectInfo(object), prev, enclosing.brace);
+            return;
+        }
+        bool statementStart = prev < 0 || prevKind == TokenKind::LBrace || prevKind == TokenKind::RBrace ||
+                              (isValueEnd(prevKind) && !enclosing.inBrackets);
+        expressions(statementStart);
+    }
 
-        // The innermost '{' and '(' or '[' still open before the cursor.
-        int brace = -1;
-        bool inBrackets = false;
+    void modifiers() {
+        for (std::string_view m : {"translate", "rotate", "scale"}) {
+            add({std::string(m), CompletionKind::Keyword, "modifier", "", std::string(m) + " ", false, "0"});
+        }
+    }
+
+    /// Scans back from token `prev` (included) to the '{' that encloses it.
+    Enclosing enclosingBefore(int prev) const {
+        Enclosing enclosing;
         int depth = 0;
         int bracketDepth = 0;
         for (int i = prev; i >= 0; --i) {
-            TokenKind k = a_.tokens[static_cast<size_t>(i)].kind;
+            TokenKind k = token(i).kind;
             if (k == TokenKind::RBrace) ++depth;
             if (k == TokenKind::LBrace && depth-- == 0) {
-                brace = i;
+                enclosing.brace = i;
                 break;
             }
             if (depth == 0) {
                 if (k == TokenKind::RParen || k == TokenKind::RBracket) ++bracketDepth;
                 if (k == TokenKind::LParen || k == TokenKind::LParenLine || k == TokenKind::LBracket ||
                     k == TokenKind::LBracketLine) {
-                    if (bracketDepth-- == 0) inBrackets = true;
+                    if (bracketDepth-- == 0) enclosing.inBrackets = true;
                     bracketDepth = std::max(bracketDepth, 0);
                 }
             }
         }
-        ObjectType object = ObjectType::Count;
-        if (brace > 0) {
-            const Token& before = a_.tokens[static_cast<size_t>(brace - 1)];
-            if (before.kind == TokenKind::Name) object = findObjectType(a_.text(before));
-            if (before.kind == TokenKind::KwSettings) object = ObjectType::Settings;
-        }
-        if (object != ObjectType::Count && !inBrackets) {
-            const ObjectInfo& info = objectInfo(object);
-            if (prevKind == TokenKind::Arrow && prev > 0) {
-                std::string_view attr = a_.text(a_.tokens[static_cast<size_t>(prev - 1)]);
-                int slot = findAttribute(info, attr);
-                if (slot >= 0) {
-                    values(info.attributes[static_cast<size_t>(slot)]);
-                    return list_;
-                }
-                expressions(false);
-                return list_;
-            }
-            if (prev == brace || isValueEnd(prevKind)) {
-                attributes(info, brace);
-                return list_;
-            }
-            expressions(false);
-            return list_;
-        }
-        bool statementStart = prev < 0 || prevKind == TokenKind::LBrace || prevKind == TokenKind::RBrace ||
-                              (isValueEnd(prevKind) && !inBrackets);
-        expressions(statementStart);
-        return list_;
+        return enclosing;
     }
 
-private:
+    /// The object (or Settings) whose block opens at token `brace`; Count for any other block.
+    ObjectType objectOfBlock(int brace) const {
+        if (brace <= 0) return ObjectType::Count;
+        const Token& before = token(brace - 1);
+        if (before.kind == TokenKind::Name) return findObjectType(a_.text(before));
+        if (before.kind == TokenKind::KwSettings) return ObjectType::Settings;
+        return ObjectType::Count;
+    }
+
+    /// In the block of object `info` opened at token `brace`: after `attribute ->`, the values
+    /// that fit it; where an attribute may start, those not given yet; elsewhere, expressions.
+    void objectBody(const ObjectInfo& info, int prev, int brace) {
+        TokenKind prevKind = kindOf(prev);
+        if (prevKind == TokenKind::Arrow && prev > 0) {
+            int slot = findAttribute(info, a_.text(token(prev - 1)));
+            if (slot >= 0) values(info.attributes[static_cast<size_t>(slot)]);
+            else expressions(false);
+            return;
+        }
+        if (prev == brace || isValueEnd(prevKind)) attributes(info, brace);
+        else expressions(false);
+    }
+
     void add(CompletionItem item) { list_.items.push_back(std::move(item)); }
 
     /// Whether the cursor is inside string token `t` (an unterminated one included).

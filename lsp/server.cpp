@@ -1,4 +1,4 @@
-// Dispatch of LSP messages to the features; the lifecycle rules; text synchronisation.
+// The method table binding LSP messages to the features; the lifecycle rules; text synchronisation.
 #include "server.hpp"
 
 #include "code_actions.hpp"
@@ -20,7 +20,9 @@ namespace crt::lsp {
 
 using namespace lang;
 
-Server::Server(Transport& transport, ServerOptions options) : transport_(transport), options_(std::move(options)) {}
+Server::Server(Transport& transport, ServerOptions options) : transport_(transport), options_(std::move(options)) {
+    bindHandlers();
+}
 
 Server::~Server() = default;
 
@@ -38,6 +40,18 @@ void Server::replyError(const json& id, ErrorCode code, const std::string& messa
     send({{"jsonrpc", "2.0"}, {"id", id}, {"error", {{"code", static_cast<int>(code)}, {"message", message}}}});
 }
 
+namespace {
+
+/// Whether `message` is a request or notification of method `name`; false for anything
+/// else, a method that is not a string included.
+bool isMethod(const json& message, std::string_view name) {
+    if (!message.is_object()) return false;
+    auto method = message.find("method");
+    return method != message.end() && method->is_string() && method->get_ref<const std::string&>() == name;
+}
+
+} // namespace
+
 void Server::readerLoop() {
     while (true) {
         Transport::Incoming in = transport_.read();
@@ -51,7 +65,7 @@ void Server::readerLoop() {
             replyError(nullptr, ErrorCode::ParseError, "the message is not valid JSON");
             continue;
         }
-        if (message.is_object() && message.value("method", "") == "$/cancelRequest") {
+        if (isMethod(message, "$/cancelRequest")) {
             // Handled here, so a request still waiting in the queue can be skipped.
             std::lock_guard lock(queueMutex_);
             if (message.contains("params") && message["params"].is_object() && message["params"].contains("id")) {
@@ -80,7 +94,7 @@ int Server::run() {
             queue_.pop_front();
         }
         if (!message) break;
-        if (message->is_object() && message->value("method", "") == "exit") {
+        if (isMethod(*message, "exit")) {
             worker_.reset();
             return shutdown_ ? 0 : 1;
         }
@@ -100,25 +114,29 @@ void Server::handle(const json& message) {
     }
     std::string method = message["method"];
     json params = message.contains("params") ? message["params"] : json::object();
-    if (!message.contains("id")) {
-        try {
-            notification(method, params);
-        } catch (const std::exception&) {
-            // Notifications get no answer; a bad one is ignored, as LSP asks.
-        }
-        return;
+    if (message.contains("id")) handleRequest(message["id"], method, params);
+    else handleNotification(method, params);
+}
+
+void Server::handleNotification(const std::string& method, const json& params) {
+    if (!initialized_ || shutdown_) return;
+    auto handler = notifications_.find(method);
+    if (handler == notifications_.end()) return; // $/setTrace and the like: nothing to do
+    try {
+        handler->second(params);
+    } catch (const std::exception&) {
+        // Notifications get no answer; a bad one is ignored, as LSP asks.
     }
-    const json& id = message["id"];
+}
+
+void Server::handleRequest(const json& id, const std::string& method, const json& params) {
     if (!id.is_string() && !id.is_number_integer()) {
         replyError(nullptr, ErrorCode::InvalidRequest, "a request id must be a string or an integer");
         return;
     }
-    {
-        std::lock_guard lock(queueMutex_);
-        if (cancelled_.erase(id.dump())) {
-            replyError(id, ErrorCode::RequestCancelled, "cancelled");
-            return;
-        }
+    if (takeCancelled(id)) {
+        replyError(id, ErrorCode::RequestCancelled, "cancelled");
+        return;
     }
     if (!initialized_ && method != "initialize") {
         replyError(id, ErrorCode::ServerNotInitialized, "the server is not initialized yet");
@@ -129,13 +147,7 @@ void Server::handle(const json& message) {
         return;
     }
     try {
-        rawResult_.reset();
-        json result = dispatch(method, params);
-        if (rawResult_) {
-            transport_.write(fmt::format("{{\"jsonrpc\":\"2.0\",\"id\":{},\"result\":{}}}", id.dump(), *rawResult_));
-        } else {
-            reply(id, std::move(result));
-        }
+        replyResult(id, requestHandler(method)(params));
     } catch (const LspError& e) {
         replyError(id, e.code, e.what());
     } catch (const json::exception& e) {
@@ -146,48 +158,142 @@ void Server::handle(const json& message) {
     retired_.clear();
 }
 
+bool Server::takeCancelled(const json& id) {
+    std::lock_guard lock(queueMutex_);
+    return cancelled_.erase(id.dump()) > 0;
+}
+
+void Server::replyResult(const json& id, Result result) {
+    if (const auto* serialised = std::get_if<SerialisedJson>(&result)) {
+        transport_.write(fmt::format("{{\"jsonrpc\":\"2.0\",\"id\":{},\"result\":{}}}", id.dump(), serialised->text));
+    } else {
+        reply(id, std::move(std::get<json>(result)));
+    }
+}
+
+// ---------------------------------------------------------------- the method table
+
+void Server::bindHandlers() {
+    bindRequest("initialize", &Server::onInitialize);
+    bindRequest("shutdown", &Server::onShutdown);
+    bindNotification("initialized", &Server::onInitialized);
+
+    bindNotification("textDocument/didOpen", &Server::onDidOpen);
+    bindNotification("textDocument/didChange", &Server::onDidChange);
+    bindNotification("textDocument/didSave", &Server::onDidSave);
+    bindNotification("textDocument/didClose", &Server::onDidClose);
+
+    bindRequest("textDocument/formatting", &Server::onFormatting);
+    bindRequest("textDocument/rangeFormatting", &Server::onRangeFormatting);
+    bindRequest("textDocument/completion", &Server::onCompletion);
+    bindRequest("textDocument/semanticTokens/full", &Server::onSemanticTokensFull);
+    bindRequest("textDocument/semanticTokens/range", &Server::onSemanticTokensRange);
+    bindRequest("textDocument/hover", &Server::onHover);
+    bindRequest("textDocument/signatureHelp", &Server::onSignatureHelp);
+    // A name is declared where it is bound: its declaration is its definition.
+    bindRequest("textDocument/definition", &Server::onDefinition);
+    bindRequest("textDocument/declaration", &Server::onDefinition);
+    bindRequest("textDocument/references", &Server::onReferences);
+    bindRequest("textDocument/documentHighlight", &Server::onDocumentHighlight);
+    bindRequest("textDocument/prepareRename", &Server::onPrepareRename);
+    bindRequest("textDocument/rename", &Server::onRename);
+    bindRequest("textDocument/documentSymbol", &Server::onDocumentSymbol);
+    bindRequest("textDocument/foldingRange", &Server::onFoldingRange);
+    bindRequest("textDocument/codeAction", &Server::onCodeAction);
+}
+
+void Server::bindRequest(std::string method, json (Server::*handler)(const json&)) {
+    requests_.emplace(std::move(method), [this, handler](const json& params) -> Result {
+        return (this->*handler)(params);
+    });
+}
+
+void Server::bindRequest(std::string method, json (Server::*handler)(Document&, const json&)) {
+    requests_.emplace(std::move(method), [this, handler](const json& params) -> Result {
+        return (this->*handler)(document(params), params);
+    });
+}
+
+void Server::bindRequest(std::string method, json (Server::*handler)(const DocumentRequest&)) {
+    requests_.emplace(std::move(method), [this, handler](const json& params) -> Result {
+        return (this->*handler)(analysedRequest(params));
+    });
+}
+
+void Server::bindRequest(std::string method, SerialisedJson (Server::*handler)(const DocumentRequest&)) {
+    requests_.emplace(std::move(method), [this, handler](const json& params) -> Result {
+        return (this->*handler)(analysedRequest(params));
+    });
+}
+
+void Server::bindNotification(std::string method, void (Server::*handler)(const json&)) {
+    notifications_.emplace(std::move(method), [this, handler](const json& params) { (this->*handler)(params); });
+}
+
+const Server::RequestHandler& Server::requestHandler(const std::string& method) const {
+    auto handler = requests_.find(method);
+    if (handler == requests_.end()) {
+        throw LspError(ErrorCode::MethodNotFound, fmt::format("unknown method '{}'", method));
+    }
+    return handler->second;
+}
+
 // ---------------------------------------------------------------- lifecycle
 
-json Server::initialize(const json& params) {
+json Server::onInitialize(const json& params) {
     if (initialized_) throw LspError(ErrorCode::InvalidRequest, "initialize was already received");
-    encoding_ = OffsetEncoding::Utf16;
-    if (params.is_object() && params.contains("capabilities")) {
-        const json& caps = params["capabilities"];
-        json encodings = caps.value("general", json::object()).value("positionEncodings", json::array());
-        if (caps.contains("offsetEncoding") && caps["offsetEncoding"].is_array()) {
-            for (const json& e : caps["offsetEncoding"]) encodings.push_back(e); // clangd's extension
-        }
-        for (const json& e : encodings) {
-            if (e == "utf-8") encoding_ = OffsetEncoding::Utf8;
-        }
-        snippets_ = caps.value("textDocument", json::object())
-                        .value("completion", json::object())
-                        .value("completionItem", json::object())
-                        .value("snippetSupport", false);
-    }
-    if (params.is_object() && params.contains("initializationOptions") && params["initializationOptions"].is_object()) {
-        const json& init = params["initializationOptions"];
-        if (init.contains("includeDirs") && init["includeDirs"].is_array()) {
-            for (const json& dir : init["includeDirs"]) {
-                if (dir.is_string()) options_.analysis.includes.dirs.push_back(dir);
-            }
-        }
-        if (init.contains("stdlib") && init["stdlib"].is_string()) options_.analysis.includes.stdlibDir = init["stdlib"];
-        if (init.contains("debounceMs") && init["debounceMs"].is_number_integer()) {
-            options_.debounce = std::chrono::milliseconds(std::max<int64_t>(0, init["debounceMs"].get<int64_t>()));
-        }
-    }
+    readClientCapabilities(params);
+    readInitializationOptions(params);
     initialized_ = true;
     worker_ = std::make_unique<DiagnosticsWorker>(
         options_.analysis, options_.debounce,
         [this](const std::string& uri, int64_t version, std::shared_ptr<const Analysis> analysis) {
             publish(uri, version, std::move(analysis));
         });
+    json result{{"capabilities", serverCapabilities()},
+                {"serverInfo", {{"name", "crt-lsp"}, {"version", CRT_VERSION}}}};
+    if (encoding_ == OffsetEncoding::Utf8) result["offsetEncoding"] = "utf-8";
+    return result;
+}
 
+void Server::readClientCapabilities(const json& params) {
+    encoding_ = OffsetEncoding::Utf16;
+    if (!params.is_object() || !params.contains("capabilities")) return;
+    const json& caps = params["capabilities"];
+    json encodings = caps.value("general", json::object()).value("positionEncodings", json::array());
+    if (caps.contains("offsetEncoding") && caps["offsetEncoding"].is_array()) {
+        for (const json& e : caps["offsetEncoding"]) encodings.push_back(e); // clangd's extension
+    }
+    for (const json& e : encodings) {
+        if (e == "utf-8") encoding_ = OffsetEncoding::Utf8;
+    }
+    snippets_ = caps.value("textDocument", json::object())
+                    .value("completion", json::object())
+                    .value("completionItem", json::object())
+                    .value("snippetSupport", false);
+}
+
+void Server::readInitializationOptions(const json& params) {
+    if (!params.is_object() || !params.contains("initializationOptions")) return;
+    const json& init = params["initializationOptions"];
+    if (!init.is_object()) return;
+    if (init.contains("includeDirs") && init["includeDirs"].is_array()) {
+        for (const json& dir : init["includeDirs"]) {
+            if (dir.is_string()) options_.analysis.includes.dirs.push_back(dir);
+        }
+    }
+    if (init.contains("stdlib") && init["stdlib"].is_string()) options_.analysis.includes.stdlibDir = init["stdlib"];
+    if (init.contains("debounceMs") && init["debounceMs"].is_number_integer()) {
+        options_.debounce = std::chrono::milliseconds(std::max<int64_t>(0, init["debounceMs"].get<int64_t>()));
+    }
+}
+
+json Server::serverCapabilities() const {
+    // Each provider here needs its methods in bindHandlers() (server_test.cpp checks).
     json tokenTypes = json::array(), tokenModifiers = json::array();
     for (std::string_view name : tokenTypeNames()) tokenTypes.push_back(name);
     for (std::string_view name : tokenModifierNames()) tokenModifiers.push_back(name);
-    json capabilities{
+    return {
         {"positionEncoding", encoding_ == OffsetEncoding::Utf8 ? "utf-8" : "utf-16"},
         {"textDocumentSync", {{"openClose", true}, {"change", 2}, {"save", {{"includeText", false}}}}},
         {"hoverProvider", true},
@@ -206,22 +312,20 @@ json Server::initialize(const json& params) {
         {"semanticTokensProvider",
          {{"legend", {{"tokenTypes", tokenTypes}, {"tokenModifiers", tokenModifiers}}}, {"full", true}, {"range", true}}},
     };
-    json result{{"capabilities", capabilities}, {"serverInfo", {{"name", "crt-lsp"}, {"version", CRT_VERSION}}}};
-    if (encoding_ == OffsetEncoding::Utf8) result["offsetEncoding"] = "utf-8";
-    return result;
 }
 
-void Server::notification(const std::string& method, const json& params) {
-    if (method == "initialized" || !initialized_ || shutdown_) return;
-    if (method == "textDocument/didOpen") didOpen(params);
-    else if (method == "textDocument/didChange") didChange(params);
-    else if (method == "textDocument/didClose") didClose(params);
-    // didSave: the text is already in sync; everything else ($/setTrace, …) is ignored.
+void Server::onInitialized(const json&) {
+    // Nothing to do: the server asks the client for nothing once initialized.
+}
+
+json Server::onShutdown(const json&) {
+    shutdown_ = true;
+    return nullptr;
 }
 
 // ---------------------------------------------------------------- documents
 
-void Server::didOpen(const json& params) {
+void Server::onDidOpen(const json& params) {
     const json& item = member(params, "textDocument");
     std::string uri = member(item, "uri");
     Document& doc = documents_[uri];
@@ -238,7 +342,7 @@ void Server::didOpen(const json& params) {
     worker_->schedule(uri, doc.version, doc.path, doc.text);
 }
 
-void Server::didChange(const json& params) {
+void Server::onDidChange(const json& params) {
     const json& id = member(params, "textDocument");
     auto it = documents_.find(member(id, "uri").get<std::string>());
     if (it == documents_.end()) return;
@@ -261,7 +365,11 @@ void Server::didChange(const json& params) {
     worker_->schedule(doc.uri, doc.version, doc.path, doc.text);
 }
 
-void Server::didClose(const json& params) {
+void Server::onDidSave(const json&) {
+    // Nothing to do: the text is already in sync, and saving it changes no diagnostic.
+}
+
+void Server::onDidClose(const json& params) {
     std::string uri = member(member(params, "textDocument"), "uri");
     documents_.erase(uri);
     worker_->forget(uri);
@@ -313,6 +421,16 @@ Server::Document& Server::document(const json& params) {
     return it->second;
 }
 
+Server::DocumentRequest Server::analysedRequest(const json& params) {
+    Document& doc = document(params);
+    const Analysis& a = analysisOf(doc);
+    return {params, doc, a, Positions(a.file(), encoding_)};
+}
+
+uint32_t Server::DocumentRequest::position() const {
+    return positions.offset(member(params, "position"));
+}
+
 const Analysis& Server::analysisOf(Document& doc) {
     if (doc.analysis && doc.analysisVersion == doc.version) return *doc.analysis;
     // The worker publishes an analysis together with the diagnostics of its text; before
@@ -334,7 +452,52 @@ std::shared_ptr<const Analysis> Server::olderAnalysis(Document& doc) {
     return doc.analysis;
 }
 
-json Server::completion(Document& doc, const json& params) {
+json Server::location(const Location& loc, const Document& doc, const Analysis& analysis) {
+    if (loc.file == &analysis.file()) {
+        return {{"uri", doc.uri}, {"range", Positions(analysis.file(), encoding_).range(loc.range)}};
+    }
+    std::error_code error;
+    std::string path = std::filesystem::absolute(loc.file->path(), error).lexically_normal().string();
+    return {{"uri", pathToUri(path)}, {"range", Positions(*loc.file, encoding_).range(loc.range)}};
+}
+
+// ---------------------------------------------------------------- requests
+
+json Server::onFormatting(Document& doc, const json& params) {
+    return formattingEdits(doc, params, false);
+}
+
+json Server::onRangeFormatting(Document& doc, const json& params) {
+    return formattingEdits(doc, params, true);
+}
+
+json Server::formattingEdits(const Document& doc, const json& params, bool onlyRange) {
+    // Formatting needs the text only: no analysis, so a request never waits for one.
+    FormatOptions format;
+    if (params.contains("options") && params["options"].is_object()) {
+        format.indentWidth = static_cast<uint32_t>(std::clamp<int64_t>(params["options"].value("tabSize", 4), 1, 16));
+        format.useTabs = !params["options"].value("insertSpaces", true);
+    }
+    SourceFile file(doc.path, doc.text);
+    Positions positions(file, encoding_);
+    std::optional<std::pair<uint32_t, uint32_t>> range;
+    if (onlyRange) {
+        // The end first: a range missing both ends has always been reported by its end.
+        const json& r = member(params, "range");
+        uint32_t end = positions.offset(member(r, "end"));
+        uint32_t begin = positions.offset(member(r, "start"));
+        range = std::make_pair(begin, end);
+    }
+    FormatResult result = formatSource(doc.text, format, range);
+    if (!result.ok) throw LspError(ErrorCode::RequestFailed, result.error);
+    json edits = json::array();
+    for (const FormatEdit& e : result.edits) {
+        edits.push_back({{"range", positions.range({0, e.begin, e.end})}, {"newText", e.replacement}});
+    }
+    return edits;
+}
+
+json Server::onCompletion(Document& doc, const json& params) {
     std::optional<Published> last = published(doc.uri);
     bool exact = (doc.analysis && doc.analysisVersion == doc.version) || (last && last->version == doc.version);
     if (!exact) {
@@ -358,131 +521,94 @@ json Server::completion(Document& doc, const json& params) {
     return toJson(complete(a, positions.offset(member(params, "position")), options_.analysis), positions, snippets_);
 }
 
-json Server::location(const Location& loc, const Document& doc, const Analysis& analysis) {
-    if (loc.file == &analysis.file()) {
-        return {{"uri", doc.uri}, {"range", Positions(analysis.file(), encoding_).range(loc.range)}};
-    }
-    std::error_code error;
-    std::string path = std::filesystem::absolute(loc.file->path(), error).lexically_normal().string();
-    return {{"uri", pathToUri(path)}, {"range", Positions(*loc.file, encoding_).range(loc.range)}};
+Server::SerialisedJson Server::onSemanticTokensFull(const DocumentRequest& request) {
+    return {encodeSemanticTokens(semanticTokens(request.analysis), request.positions)};
 }
 
-// ---------------------------------------------------------------- requests
+Server::SerialisedJson Server::onSemanticTokensRange(const DocumentRequest& request) {
+    const json& r = member(request.params, "range");
+    SourceRange within{0, request.positions.offset(member(r, "start")), request.positions.offset(member(r, "end"))};
+    return {encodeSemanticTokens(semanticTokens(request.analysis, within), request.positions)};
+}
 
-json Server::dispatch(const std::string& method, const json& params) {
-    if (method == "initialize") return initialize(params);
-    if (method == "shutdown") {
-        shutdown_ = true;
-        return nullptr;
-    }
-    if (!method.starts_with("textDocument/")) {
-        throw LspError(ErrorCode::MethodNotFound, fmt::format("unknown method '{}'", method));
-    }
-    std::string_view feature = std::string_view(method).substr(13);
-    static const std::set<std::string_view> known{
-        "semanticTokens/full", "semanticTokens/range", "hover", "completion", "signatureHelp", "definition",
-        "declaration", "references", "documentHighlight", "prepareRename", "rename", "documentSymbol",
-        "foldingRange", "formatting", "rangeFormatting", "codeAction"};
-    if (!known.count(feature)) throw LspError(ErrorCode::MethodNotFound, fmt::format("unknown method '{}'", method));
+json Server::onHover(const DocumentRequest& request) {
+    // Values come from the last evaluation, which may be of an older text: the worker
+    // evaluates, requests never wait for it.
+    std::optional<Published> last = published(request.document.uri);
+    const GlobalValues* values = last ? &last->analysis->compilation.globalValues : nullptr;
+    auto result = hover(request.analysis, request.position(), values);
+    return result ? toJson(*result, request.positions) : json(nullptr);
+}
 
-    Document& doc = document(params);
-    if (feature == "formatting" || feature == "rangeFormatting") {
-        FormatOptions format;
-        if (params.contains("options") && params["options"].is_object()) {
-            format.indentWidth = static_cast<uint32_t>(std::clamp<int64_t>(params["options"].value("tabSize", 4), 1, 16));
-            format.useTabs = !params["options"].value("insertSpaces", true);
-        }
-        SourceFile file(doc.path, doc.text);
-        Positions positions(file, encoding_);
-        std::optional<std::pair<uint32_t, uint32_t>> range;
-        if (feature == "rangeFormatting") {
-            const json& r = member(params, "range");
-            range = std::make_pair(positions.offset(member(r, "start")), positions.offset(member(r, "end")));
-        }
-        FormatResult result = formatSource(doc.text, format, range);
-        if (!result.ok) throw LspError(ErrorCode::RequestFailed, result.error);
-        json edits = json::array();
-        for (const FormatEdit& e : result.edits) {
-            edits.push_back({{"range", positions.range({0, e.begin, e.end})}, {"newText", e.replacement}});
-        }
-        return edits;
-    }
+json Server::onSignatureHelp(const DocumentRequest& request) {
+    auto help = signatureHelp(request.analysis, request.position());
+    return help ? toJson(*help) : json(nullptr);
+}
 
-    if (feature == "completion") return completion(doc, params);
+json Server::onDefinition(const DocumentRequest& request) {
+    json out = json::array();
+    for (const Location& loc : definition(request.analysis, request.position())) {
+        out.push_back(location(loc, request.document, request.analysis));
+    }
+    return out;
+}
 
-    const Analysis& a = analysisOf(doc);
-    Positions positions(a.file(), encoding_);
-    auto offset = [&] { return positions.offset(member(params, "position")); };
+json Server::onReferences(const DocumentRequest& request) {
+    bool declaration = request.params.value("context", json::object()).value("includeDeclaration", true);
+    json out = json::array();
+    for (const Location& loc : references(request.analysis, request.position(), declaration)) {
+        out.push_back(location(loc, request.document, request.analysis));
+    }
+    return out;
+}
 
-    if (feature == "semanticTokens/full") {
-        rawResult_ = encodeSemanticTokens(semanticTokens(a), positions);
-        return nullptr;
+json Server::onDocumentHighlight(const DocumentRequest& request) {
+    json out = json::array();
+    for (const Highlight& h : documentHighlights(request.analysis, request.position())) {
+        out.push_back({{"range", request.positions.range(h.range)}, {"kind", h.write ? 3 : 2}});
     }
-    if (feature == "semanticTokens/range") {
-        const json& r = member(params, "range");
-        SourceRange within{0, positions.offset(member(r, "start")), positions.offset(member(r, "end"))};
-        rawResult_ = encodeSemanticTokens(semanticTokens(a, within), positions);
-        return nullptr;
+    return out;
+}
+
+json Server::onPrepareRename(const DocumentRequest& request) {
+    RenameCheck check = prepareRename(request.analysis, request.position(), options_.analysis);
+    if (!check.range) throw LspError(ErrorCode::RequestFailed, check.error);
+    return {{"range", request.positions.range(*check.range)}, {"placeholder", check.placeholder}};
+}
+
+json Server::onRename(const DocumentRequest& request) {
+    const json& newName = member(request.params, "newName");
+    if (!newName.is_string()) throw LspError(ErrorCode::InvalidParams, "newName must be a string");
+    RenameResult result = rename(request.analysis, request.position(), newName.get<std::string>(), options_.analysis);
+    if (!result.error.empty()) throw LspError(ErrorCode::RequestFailed, result.error);
+    json changes = json::object();
+    for (const Location& loc : result.edits) {
+        json l = location(loc, request.document, request.analysis);
+        changes[l["uri"].get<std::string>()].push_back({{"range", l["range"]}, {"newText", newName}});
     }
-    if (feature == "hover") {
-        std::optional<Published> last = published(doc.uri);
-        const GlobalValues* values = last ? &last->analysis->compilation.globalValues : nullptr;
-        auto result = hover(a, offset(), values);
-        return result ? toJson(*result, positions) : json(nullptr);
-    }
-    if (feature == "signatureHelp") {
-        auto help = signatureHelp(a, offset());
-        return help ? toJson(*help) : json(nullptr);
-    }
-    if (feature == "definition" || feature == "declaration") {
-        json out = json::array();
-        for (const Location& loc : definition(a, offset())) out.push_back(location(loc, doc, a));
-        return out;
-    }
-    if (feature == "references") {
-        bool declaration = params.value("context", json::object()).value("includeDeclaration", true);
-        json out = json::array();
-        for (const Location& loc : references(a, offset(), declaration)) out.push_back(location(loc, doc, a));
-        return out;
-    }
-    if (feature == "documentHighlight") {
-        json out = json::array();
-        for (const Highlight& h : documentHighlights(a, offset())) {
-            out.push_back({{"range", positions.range(h.range)}, {"kind", h.write ? 3 : 2}});
-        }
-        return out;
-    }
-    if (feature == "prepareRename") {
-        RenameCheck check = prepareRename(a, offset(), options_.analysis);
-        if (!check.range) throw LspError(ErrorCode::RequestFailed, check.error);
-        return {{"range", positions.range(*check.range)}, {"placeholder", check.placeholder}};
-    }
-    if (feature == "rename") {
-        const json& newName = member(params, "newName");
-        if (!newName.is_string()) throw LspError(ErrorCode::InvalidParams, "newName must be a string");
-        RenameResult result = rename(a, offset(), newName.get<std::string>(), options_.analysis);
-        if (!result.error.empty()) throw LspError(ErrorCode::RequestFailed, result.error);
-        json changes = json::object();
-        for (const Location& loc : result.edits) {
-            json l = location(loc, doc, a);
-            changes[l["uri"].get<std::string>()].push_back({{"range", l["range"]}, {"newText", newName}});
-        }
-        return {{"changes", changes}};
-    }
-    if (feature == "documentSymbol") {
-        json out = json::array();
-        for (const DocumentSymbol& s : documentSymbols(a)) out.push_back(toJson(s, positions));
-        return out;
-    }
-    if (feature == "foldingRange") {
-        json out = json::array();
-        for (const FoldingRange& r : foldingRanges(a)) out.push_back(toJson(r));
-        return out;
-    }
-    // codeAction: fixes from the last evaluation of this very text, else from parse and resolve.
-    const json& r = member(params, "range");
+    return {{"changes", changes}};
+}
+
+json Server::onDocumentSymbol(const DocumentRequest& request) {
+    json out = json::array();
+    for (const DocumentSymbol& s : documentSymbols(request.analysis)) out.push_back(toJson(s, request.positions));
+    return out;
+}
+
+json Server::onFoldingRange(const DocumentRequest& request) {
+    json out = json::array();
+    for (const FoldingRange& r : foldingRanges(request.analysis)) out.push_back(toJson(r));
+    return out;
+}
+
+json Server::onCodeAction(const DocumentRequest& request) {
+    const Document& doc = request.document;
+    const Analysis& a = request.analysis;
+    const Positions& positions = request.positions;
+    const json& r = member(request.params, "range");
     uint32_t begin = positions.offset(member(r, "start"));
     uint32_t end = positions.offset(member(r, "end"));
+    // Fixes from the last evaluation of this very text, else from parse and resolve.
     std::optional<Published> last = published(doc.uri);
     auto diagnostics = last && last->version == doc.version
                            ? last->diagnostics
