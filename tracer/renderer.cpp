@@ -5,6 +5,8 @@
 #include "tracer/integrator.hpp"
 #include "tracer/scene_images.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <memory>
@@ -145,6 +147,18 @@ void traceTile(const PixelSampler& sampler, const Tile& tile, std::vector<float>
     }
 }
 
+/// Whether every tile is a non-empty rectangle inside the image; else says which is not.
+bool tilesFit(const std::vector<Tile>& tiles, int width, int height, std::string& error) {
+    for (const Tile& t : tiles) {
+        if (t.x0 < 0 || t.y0 < 0 || t.x1 > width || t.y1 > height || t.width() <= 0 || t.height() <= 0) {
+            error = fmt::format("tile [{}, {}) x [{}, {}) is not inside the {}x{} image", t.x0, t.x1,
+                                t.y0, t.y1, width, height);
+            return false;
+        }
+    }
+    return true;
+}
+
 } // namespace
 
 std::vector<Tile> imageTiles(int width, int height, int size) {
@@ -169,6 +183,7 @@ void PixelBuffer::place(const TileResult& result) {
 
 RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     RenderOutcome outcome;
+    if (!tilesFit(job.tiles, desc.settings.width, desc.settings.height, outcome.error)) return outcome;
     auto buildStart = std::chrono::steady_clock::now();
     PreparedScene prepared;
     if (!prepare(desc, prepared, outcome.error)) return outcome;

@@ -45,7 +45,8 @@ struct SampleBudget {
 
 /// What to render of a scene, and how.
 struct RenderJob {
-    std::vector<Tile> tiles; ///< the region to render; empty: the whole image (imageTiles)
+    /// The region to render, tiles inside the image; empty: the whole image (imageTiles).
+    std::vector<Tile> tiles;
     SampleBudget samples;
     int threads = 0;                           ///< 0: all cores
     const std::atomic<bool>* cancel = nullptr; ///< once set, no further tile is started

@@ -158,3 +158,18 @@ TEST_CASE("A cancelled render starts no further tile", "[render]") {
     CHECK(reported == 2);
     CHECK(outcome.tileCount == 9); // 48 x 36 in tiles of 16: 3 x 3
 }
+
+TEST_CASE("A tile outside the image is an error, not a crash", "[render]") {
+    scene::SceneDesc desc = stochasticScene(); // 48 x 36
+    for (Tile bad : {Tile{40, 30, 49, 36}, Tile{-1, 0, 8, 8}, Tile{8, 8, 8, 16}, Tile{0, 30, 16, 37}}) {
+        RenderJob job;
+        job.tiles = {Tile{0, 0, 16, 16}, bad};
+        int reported = 0;
+        job.onTileDone = [&](const TileResult&) { ++reported; };
+        RenderOutcome outcome = render(desc, job);
+        CHECK_FALSE(outcome.ok);
+        CHECK_FALSE(outcome.cancelled);
+        CHECK(outcome.error.find("is not inside the 48x36 image") != std::string::npos);
+        CHECK(reported == 0);
+    }
+}
