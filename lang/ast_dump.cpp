@@ -14,6 +14,18 @@ public:
 
     void node(const Node* n, int depth) {
         if (!n) return;
+        if (isExpression(n)) expression(n, depth);
+        else statement(n, depth);
+    }
+
+    void statements(std::span<Node* const> items, int depth) {
+        for (const Node* item : items) node(item, depth);
+    }
+
+    std::string out_;
+
+private:
+    void expression(const Node* n, int depth) {
         switch (n->kind) {
         case NodeKind::IntLit: line(n, depth, fmt::format("Int {}", static_cast<const IntLit*>(n)->value)); break;
         case NodeKind::FloatLit: line(n, depth, fmt::format("Float {}", formatFloat(static_cast<const FloatLit*>(n)->value))); break;
@@ -91,6 +103,12 @@ public:
             statements(m->body->statements, depth + 1);
             break;
         }
+        default: break;
+        }
+    }
+
+    void statement(const Node* n, int depth) {
+        switch (n->kind) {
         case NodeKind::While: {
             auto* w = static_cast<const WhileStmt*>(n);
             line(n, depth, "While");
@@ -133,16 +151,10 @@ public:
             line(n, depth, fmt::format("Include {}", quoted(static_cast<const IncludeStmt*>(n)->path->value)));
             break;
         case NodeKind::Error: line(n, depth, "Error"); break;
+        default: break;
         }
     }
 
-    void statements(std::span<Node* const> items, int depth) {
-        for (const Node* item : items) node(item, depth);
-    }
-
-    std::string out_;
-
-private:
     void attributes(std::span<const Attribute> attrs, int depth) {
         for (const Attribute& a : attrs) {
             text(a.range, depth, fmt::format("Attribute {}", a.name));

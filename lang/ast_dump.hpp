@@ -1,4 +1,4 @@
-// A readable, indented dump of the AST (crtc --dump-ast).
+// A readable, indented dump of the AST.
 #pragma once
 
 #include "ast.hpp"

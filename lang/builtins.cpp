@@ -26,7 +26,7 @@ std::string Interpreter::str(const Value& value) const {
     case ValueKind::Vec3:
         return fmt::format("vec3({}, {}, {})", formatFloat(value.v[0]), formatFloat(value.v[1]),
                            formatFloat(value.v[2]));
-    case ValueKind::Colour:
+    case ValueKind::Color:
         if (value.v[3] == 1.0) {
             return fmt::format("rgb({}, {}, {})", formatFloat(value.v[0]), formatFloat(value.v[1]),
                                formatFloat(value.v[2]));
@@ -154,11 +154,11 @@ Value b_vec3(BuiltinCall& call) {
 }
 Value b_rgb(BuiltinCall& call) {
     double r = number(call, 0), g = number(call, 1), b = number(call, 2);
-    return Value::colour(r, g, b);
+    return Value::color(r, g, b);
 }
 Value b_rgba(BuiltinCall& call) {
     double r = number(call, 0), g = number(call, 1), b = number(call, 2), a = number(call, 3);
-    return Value::colour(r, g, b, a);
+    return Value::color(r, g, b, a);
 }
 
 Value b_asin(BuiltinCall& call) {
@@ -239,7 +239,7 @@ Value b_mix(BuiltinCall& call) {
     const Value& a = call.args[0];
     const Value& b = call.args[1];
     if (a.isNumber() && b.isNumber()) return Value::number(a.asDouble() + (b.asDouble() - a.asDouble()) * t);
-    if ((a.kind == ValueKind::Vec3 || a.kind == ValueKind::Colour) && a.kind == b.kind) {
+    if ((a.kind == ValueKind::Vec3 || a.kind == ValueKind::Color) && a.kind == b.kind) {
         Value r = a;
         for (int k = 0; k < 4; ++k) r.v[k] = a.v[k] + (b.v[k] - a.v[k]) * t;
         return r;

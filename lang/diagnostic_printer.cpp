@@ -25,7 +25,7 @@ const char* severityName(Severity severity) {
     return "error";
 }
 
-const char* severityColour(Severity severity) {
+const char* severityColor(Severity severity) {
     switch (severity) {
     case Severity::Error: return kRed;
     case Severity::Warning: return kMagenta;
@@ -73,32 +73,32 @@ void appendSnippet(std::string& out, const SourceFile& file, SourceRange range,
         out += c == '\t' ? '\t' : ' ';
         ++column;
     }
-    if (options.colour) out += kGreen;
+    if (options.color) out += kGreen;
     out += '^';
     for (uint32_t i = 1; i < width; ++i) out += '~';
-    if (options.colour) out += kReset;
+    if (options.color) out += kReset;
     out += '\n';
     if (replacement) {
         out += "    ";
         out.append(column - 1, ' ');
-        if (options.colour) out += kGreen;
+        if (options.color) out += kGreen;
         out += *replacement;
-        if (options.colour) out += kReset;
+        if (options.color) out += kReset;
         out += '\n';
     }
 }
 
 void appendHeader(std::string& out, const SourceManager& sources, SourceRange range,
                   Severity severity, const std::string& message, const PrintOptions& options) {
-    if (options.colour) out += kBold;
+    if (options.color) out += kBold;
     out += formatLocation(sources, range);
     out += ": ";
-    if (options.colour) out += severityColour(severity);
+    if (options.color) out += severityColor(severity);
     out += severityName(severity);
     out += ": ";
-    if (options.colour) out += kReset, out += kBold;
+    if (options.color) out += kReset, out += kBold;
     out += message;
-    if (options.colour) out += kReset;
+    if (options.color) out += kReset;
     out += '\n';
 }
 

@@ -9,7 +9,7 @@
 namespace crt::lang {
 
 struct PrintOptions {
-    bool colour = false;
+    bool color = false;
     bool sourceLines = true;
 };
 

@@ -64,6 +64,131 @@ std::string_view spacing(const Item& prev, const Item& cur) {
     return " ";
 }
 
+/// Tokens and comments by line, in order, each marked if the AST says it is a unary
+/// operator or the '>' closing a modifier list.
+std::vector<std::vector<Item>> itemsByLine(const SourceFile& file, const Script& script,
+                                          const std::vector<Token>& tokens,
+                                          const std::vector<Token>& comments) {
+    std::set<uint32_t> unary, modifierClose;
+    runOnLargeStack([&] { // expressions may nest tens of thousands deep
+        for (Node* item : script.items) collectShapes(item, unary, modifierClose, file);
+    });
+    std::vector<std::vector<Item>> lines(file.lineCount());
+    auto addItem = [&](const Token& t) {
+        uint32_t line = file.lineColumn(t.begin).line - 1;
+        lines[line].push_back({t, unary.count(t.begin) > 0,
+                               t.kind == TokenKind::Greater && modifierClose.count(t.begin) > 0});
+    };
+    size_t c = 0;
+    for (const Token& t : tokens) {
+        for (; c < comments.size() && comments[c].begin < t.begin; ++c) addItem(comments[c]);
+        addItem(t);
+    }
+    for (; c < comments.size(); ++c) addItem(comments[c]);
+    return lines;
+}
+
+bool isCloser(const Item& item) {
+    TokenKind k = item.token.kind;
+    return k == TokenKind::RBrace || k == TokenKind::RParen || k == TokenKind::RBracket || item.modifierClose;
+}
+
+/// Formats line after line, keeping the brackets open so far.
+class LineFormatter {
+public:
+    LineFormatter(const SourceFile& file, const FormatOptions& options)
+        : file_(file),
+          indentUnit_(options.useTabs ? std::string("\t") : std::string(options.indentWidth, ' ')) {}
+
+    std::string format(const std::vector<Item>& items) {
+        std::string formatted;
+        if (items.empty()) return formatted;
+        uint32_t level = indentLevel(items);
+        for (uint32_t i = 0; i < level; ++i) formatted += indentUnit_;
+        for (size_t i = 0; i < items.size(); ++i) {
+            const Item& item = items[i];
+            if (i > 0) {
+                if (item.token.kind == TokenKind::Comment) {
+                    // Trailing comments keep their distance: people align them.
+                    uint32_t gap = item.token.begin - items[i - 1].token.end;
+                    formatted += std::string(std::max<uint32_t>(gap, 1), ' ');
+                } else {
+                    formatted += spacing(items[i - 1], item);
+                }
+            }
+            formatted += text(item);
+            track(item, level);
+        }
+        return formatted;
+    }
+
+private:
+    /// The nesting level of a line: one per open bracket, one less for a line that closes
+    /// one, one more for a line continuing an expression (it starts with a binary operator,
+    /// or the line before ended with one).
+    uint32_t indentLevel(const std::vector<Item>& items) const {
+        bool closer = isCloser(items.front());
+        uint32_t level = open_.empty() ? 0 : closer ? open_.back().level : open_.back().level + 1;
+        auto binary = [](const Item* item) {
+            return item && !item->unary && !item->modifierClose && isBinaryLike(item->token.kind);
+        };
+        const Item* firstCode = nullptr;
+        for (const Item& item : items) {
+            if (item.token.kind != TokenKind::Comment) {
+                firstCode = &item;
+                break;
+            }
+        }
+        if (firstCode && !closer && (binary(firstCode) || binary(lastCode_))) ++level;
+        return level;
+    }
+
+    std::string_view text(const Item& item) const {
+        std::string_view text = file_.text().substr(item.token.begin, item.token.end - item.token.begin);
+        if (item.token.kind == TokenKind::Comment) {
+            while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) {
+                text.remove_suffix(1);
+            }
+        }
+        return text;
+    }
+
+    void track(const Item& item, uint32_t level) {
+        TokenKind kind = item.token.kind;
+        if (kind != TokenKind::Comment) lastCode_ = &item;
+        if (isOpener(kind)) {
+            open_.push_back({kind, level});
+        } else if (isCloser(item) && !open_.empty()) {
+            open_.pop_back();
+        }
+    }
+
+    struct Open {
+        TokenKind kind;
+        uint32_t level;
+    };
+    const SourceFile& file_;
+    std::string indentUnit_;
+    std::vector<Open> open_;
+    const Item* lastCode_ = nullptr; ///< the last token (not comment) of the lines so far
+};
+
+/// Whether `out` lexes to exactly the tokens and comments of the original.
+bool sameTokens(const std::string& out, const SourceFile& file, const std::vector<Token>& tokens,
+                const std::vector<Token>& comments) {
+    SourceFile check("<format>", out);
+    DiagnosticBag checkDiagnostics;
+    std::vector<Token> checkComments;
+    std::vector<Token> after = lexAll(check, 0, checkDiagnostics, &checkComments);
+    bool same = after.size() == tokens.size() && checkComments.size() == comments.size();
+    for (size_t i = 0; same && i < after.size(); ++i) {
+        same = after[i].kind == tokens[i].kind &&
+               check.text().substr(after[i].begin, after[i].end - after[i].begin) ==
+                   file.text().substr(tokens[i].begin, tokens[i].end - tokens[i].begin);
+    }
+    return same;
+}
+
 } // namespace
 
 FormatResult formatSource(std::string_view source, const FormatOptions& options,
@@ -78,86 +203,18 @@ FormatResult formatSource(std::string_view source, const FormatOptions& options,
         result.error = "the script has syntax errors; formatting needs a script that parses";
         return result;
     }
-    std::set<uint32_t> unary, modifierClose;
-    runOnLargeStack([&] { // expressions may nest tens of thousands deep
-        for (Node* item : script.items) collectShapes(item, unary, modifierClose, file);
-    });
     DiagnosticBag ignored;
     std::vector<Token> tokens = lexAll(file, 0, ignored);
+    std::vector<std::vector<Item>> lines = itemsByLine(file, script, tokens, comments);
 
-    // Tokens and comments by line, in order.
-    std::vector<std::vector<Item>> lines(file.lineCount());
-    size_t c = 0;
-    auto addItem = [&](const Token& t) {
-        uint32_t line = file.lineColumn(t.begin).line - 1;
-        lines[line].push_back({t, unary.count(t.begin) > 0, t.kind == TokenKind::Greater && modifierClose.count(t.begin) > 0});
-    };
-    for (const Token& t : tokens) {
-        for (; c < comments.size() && comments[c].begin < t.begin; ++c) addItem(comments[c]);
-        addItem(t);
-    }
-    for (; c < comments.size(); ++c) addItem(comments[c]);
-
-    std::string indentUnit = options.useTabs ? std::string("\t") : std::string(options.indentWidth, ' ');
-    struct Open {
-        TokenKind kind;
-        uint32_t level;
-    };
-    std::vector<Open> open;
-    const Item* lastCode = nullptr; ///< the last token (not comment) of the lines so far
+    LineFormatter formatter(file, options);
     std::string out;
     out.reserve(source.size() + source.size() / 8);
     out += file.text().substr(0, file.lineStart(1)); // a byte-order mark stays
     for (uint32_t line = 0; line < file.lineCount(); ++line) {
         uint32_t start = file.lineStart(line + 1);
         std::string_view original = file.lineText(line + 1);
-        std::string formatted;
-        const std::vector<Item>& items = lines[line];
-        if (!items.empty()) {
-            const Item& first = items.front();
-            TokenKind k = first.token.kind;
-            bool closer = k == TokenKind::RBrace || k == TokenKind::RParen || k == TokenKind::RBracket || first.modifierClose;
-            uint32_t level = open.empty() ? 0 : closer ? open.back().level : open.back().level + 1;
-            // A line that continues an expression (it starts with a binary operator, or the
-            // line before ended with one) hangs one level deeper.
-            auto binary = [](const Item* item) {
-                return item && !item->unary && !item->modifierClose && isBinaryLike(item->token.kind);
-            };
-            const Item* firstCode = nullptr;
-            for (const Item& item : items) {
-                if (item.token.kind != TokenKind::Comment) {
-                    firstCode = &item;
-                    break;
-                }
-            }
-            if (firstCode && !closer && (binary(firstCode) || binary(lastCode))) ++level;
-            for (uint32_t i = 0; i < level; ++i) formatted += indentUnit;
-            for (size_t i = 0; i < items.size(); ++i) {
-                const Item& item = items[i];
-                if (i > 0) {
-                    if (item.token.kind == TokenKind::Comment) {
-                        // Trailing comments keep their distance: people align them.
-                        uint32_t gap = item.token.begin - items[i - 1].token.end;
-                        formatted += std::string(std::max<uint32_t>(gap, 1), ' ');
-                    } else {
-                        formatted += spacing(items[i - 1], item);
-                    }
-                }
-                std::string_view text = file.text().substr(item.token.begin, item.token.end - item.token.begin);
-                if (item.token.kind == TokenKind::Comment) {
-                    while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.remove_suffix(1);
-                }
-                formatted += text;
-                TokenKind kind = item.token.kind;
-                if (kind != TokenKind::Comment) lastCode = &item;
-                if (isOpener(kind)) {
-                    open.push_back({kind, level});
-                } else if ((kind == TokenKind::RBrace || kind == TokenKind::RParen || kind == TokenKind::RBracket ||
-                            item.modifierClose) && !open.empty()) {
-                    open.pop_back();
-                }
-            }
-        }
+        std::string formatted = formatter.format(lines[line]);
         // The line break as it was (LF or CR LF), none after a last line that had none.
         uint32_t next = line + 1 < file.lineCount() ? file.lineStart(line + 2) : file.size();
         std::string_view lineBreak = file.text().substr(start + original.size(), next - start - original.size());
@@ -168,19 +225,8 @@ FormatResult formatSource(std::string_view source, const FormatOptions& options,
             result.edits.push_back({start, start + static_cast<uint32_t>(original.size()), formatted});
         }
     }
-
     // The tokens must be exactly the same, in the same order: otherwise refuse.
-    SourceFile check("<format>", out);
-    DiagnosticBag checkDiagnostics;
-    std::vector<Token> checkComments;
-    std::vector<Token> after = lexAll(check, 0, checkDiagnostics, &checkComments);
-    bool same = after.size() == tokens.size() && checkComments.size() == comments.size();
-    for (size_t i = 0; same && i < after.size(); ++i) {
-        same = after[i].kind == tokens[i].kind &&
-               check.text().substr(after[i].begin, after[i].end - after[i].begin) ==
-                   file.text().substr(tokens[i].begin, tokens[i].end - tokens[i].begin);
-    }
-    if (!same) {
+    if (!sameTokens(out, file, tokens, comments)) {
         result.edits.clear();
         result.error = "internal error: formatting would change the script's tokens";
         return result;

@@ -1,4 +1,4 @@
-// The code formatter behind `crtc --format` and the language server's formatting.
+// The code formatter: a script laid out in the one house style, its tokens unchanged.
 #pragma once
 
 #include <cstdint>

@@ -69,8 +69,8 @@ void Interpreter::checkSteps(SourceRange where) {
 }
 
 uint64_t Interpreter::nextCheckAfter(uint64_t steps) const {
-    // Past the limit, or (with a callback, which only the language server sets) at the next
-    // 64th step: polling that often keeps its cost small while a slow loop still stops in time.
+    // Past the limit, or (with an interrupt callback) at the next 64th step: polling that
+    // often keeps its cost small while a slow loop still stops in time.
     uint64_t limit = options_.limits.maxSteps == UINT64_MAX ? UINT64_MAX : options_.limits.maxSteps + 1;
     return options_.interrupt ? std::min(limit, steps + 64) : limit;
 }
@@ -459,7 +459,10 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
     enclosing_ = savedEnclosing;
     emitMode_ = savedMode;
     emitted_ = savedEmitted;
+    return macroResult(emitted, last, site);
+}
 
+Value Interpreter::macroResult(const std::vector<Value>& emitted, const Value& last, const CallExpr* site) {
     if (emitted.empty()) return last;
     if (emitted.size() == 1) return emitted.front();
     scene::GroupNode group;

@@ -21,7 +21,7 @@
 
 namespace crt::lang {
 
-/// Limits of one evaluation (spec §4), each with a crtc option.
+/// Limits of one evaluation (spec §4): bad or hostile scripts end in an error, not a hang.
 struct Limits {
     uint64_t maxSteps = 50'000'000; ///< loop iterations plus macro calls
     uint32_t maxDepth = 1'000;      ///< nested macro calls
@@ -39,11 +39,11 @@ struct EvalOptions {
     std::optional<double> time;           ///< --time T: t is this float
     std::ostream* printOut = nullptr;     ///< where print() writes; null: standard output
     bool checkFiles = true;               ///< look up images and meshes on disk
-    /// Polled every few thousand steps; returning true stops evaluation with an error. The
-    /// language server uses it for its time budget and to drop analyses of stale text.
+    /// Polled every few thousand steps; returning true stops evaluation with an error: for a
+    /// time budget, or to drop work on text that has changed since.
     std::function<bool()> interrupt;
-    /// Keep a short text form of every global's final value (Compilation::globalValues),
-    /// for the language server's hover.
+    /// Keep a short text form of every global's final value (Compilation::globalValues), to
+    /// show what a name holds.
     bool keepGlobalValues = false;
 };
 
@@ -72,8 +72,8 @@ struct Compilation {
 Compilation compile(std::string path, std::string text, const EvalOptions& options,
                     bool evaluate = true);
 /// Evaluates a compilation that compile(..., evaluate = false) parsed and resolved, as
-/// compile() would have (nothing happens if it has errors). The language server indexes the
-/// resolved script while its debounce runs, and evaluates it only once the text is quiet.
+/// compile() would have (nothing happens if it has errors): resolving and evaluating can then
+/// happen at different times, evaluation only once it is wanted.
 void evaluate(Compilation& compilation, const EvalOptions& options);
 /// Reads `path` and compiles it; an unreadable file is an error diagnostic.
 Compilation compileFile(const std::string& path, const EvalOptions& options, bool evaluate = true);

@@ -35,6 +35,14 @@ struct LightInfo {
     bool listed = false;
 };
 
+/// An error found now and reported later, as fail() would report it.
+struct DeferredError {
+    SourceRange where;
+    std::string message;
+};
+
+struct ObjectBuilder;
+
 /// What a statement's value is used for.
 enum class EmitMode : uint8_t { None, Scene, Macro };
 
@@ -101,6 +109,9 @@ private:
     Value evalBinary(const BinaryExpr* node);
     Value evalLogical(const BinaryExpr* node);
     [[gnu::noinline]] Value binaryOnValues(const BinaryExpr* node, const Value& a, const Value& b);
+    Value binaryOnInts(const BinaryExpr* node, const Value& a, const Value& b);
+    Value binaryOnNumbers(const BinaryExpr* node, const Value& a, const Value& b);
+    Value binaryOnNonNumbers(const BinaryExpr* node, const Value& a, const Value& b);
     Value evalUnary(const UnaryExpr* node);
     Value evalCall(const CallExpr* node);
     /// The call itself, once the callee is known to be callable: `args` has a slot per argument.
@@ -125,6 +136,9 @@ private:
     Value evalList(const ListExpr* node);
     Value evalMacro(const MacroExpr* node);
     Value callMacro(const Closure* closure, const CallExpr* site, std::span<const Value> args);
+    /// What a macro call returns: what it emitted (one entity, or a group of several), else
+    /// the value of its last expression statement.
+    Value macroResult(const std::vector<Value>& emitted, const Value& last, const CallExpr* site);
     Value csg(BinaryOp op, const Value& left, const Value& right, const BinaryExpr* node);
     bool condition(const Expr* node, std::string_view what);
     /// Counts a loop iteration or macro call against the step limit; inline, since loops
@@ -136,8 +150,23 @@ private:
     uint64_t nextCheckAfter(uint64_t steps) const;
     void keepGlobalValues();
 
-    // objects (object_builder.cpp)
+    // objects (object_literals.cpp): each category's description from checked attributes
     Value evalObject(const ObjectExpr* node);
+    Value buildEntity(ObjectBuilder& b);
+    scene::Shape solidShape(ObjectBuilder& b);
+    scene::Shape surfaceShape(ObjectBuilder& b);
+    Value buildMaterial(const ObjectBuilder& b);
+    Value buildCamera(ObjectBuilder& b);
+    Value buildLight(const ObjectBuilder& b);
+    Value buildBackground(const ObjectBuilder& b);
+    Value buildTexture(ObjectBuilder& b);
+    /// Fills scene_.settings; keeps what it names for assembleScene to link, and the first
+    /// value out of its range in settingsProblem_.
+    void buildSettings(const ObjectBuilder& b);
+    /// Remembers the camera, lights and background Settings names, for linkSettings.
+    void recordSettingsLinks(const ObjectBuilder& b);
+    /// The image or mesh file an attribute names, found on disk (unless checkFiles is off).
+    std::string findFile(const ObjectBuilder& b, std::string_view attribute, std::string_view what);
     int32_t defaultMaterial();
     int32_t addEntity(scene::EntityDesc entity, EntityInfo info);
     /// A warning reported once per construct, however often evaluation passes it.
@@ -146,6 +175,10 @@ private:
 
     // the end (scene_assembly.cpp)
     void assembleScene();
+    /// Puts the camera, lights and background Settings names into the scene.
+    void linkSettings();
+    /// Keeps only the entities, materials and textures the drawn entities reach.
+    void keepReachable();
     /// Removes the entities, materials and textures not marked, renumbering references.
     void dropUnreachable(const std::vector<bool>& keepEntity, const std::vector<bool>& keepMaterial,
                          const std::vector<bool>& keepTexture);
@@ -196,8 +229,14 @@ private:
     std::vector<scene::BackgroundDesc> backgrounds_;
     int32_t defaultMaterial_ = -1;
     const SettingsStmt* settings_ = nullptr;
-    std::array<Value, kMaxAttributes> settingsValues_{};
-    std::array<const Attribute*, kMaxAttributes> settingsAttributes_{};
+    /// What Settings names, linked into the scene by assembleScene.
+    struct SettingsLinks {
+        std::optional<uint32_t> camera;             ///< into cameras_
+        const std::vector<Value>* lights = nullptr; ///< Light values, into lights_
+        std::optional<Value> background;            ///< a Background or a color
+        SourceRange backgroundRange{};
+    } settingsLinks_;
+    std::optional<DeferredError> settingsProblem_;
 
     // include bookkeeping
     std::vector<std::string> includedFiles_; ///< canonical paths, in order

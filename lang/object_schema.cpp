@@ -39,7 +39,7 @@ constexpr AttributeInfo kSettings[] = {
     {"shadowsamples", A::Int, false, "16", "Samples per area light."},
     {"glossysamples", A::Int, false, "16", "Rays per glossy reflection."},
     {"seed", A::Int, false, "0", "Seed of the renderer's sampling."},
-    {"ambient", A::Colour, false, "rgb(0,0,0)", "Global ambient light."},
+    {"ambient", A::Color, false, "rgb(0,0,0)", "Global ambient light."},
 };
 
 constexpr AttributeInfo kCamera[] = {
@@ -59,7 +59,7 @@ constexpr AttributeInfo kCamera[] = {
 
 constexpr AttributeInfo kPointLight[] = {
     {"origin", A::Vec3, true, "", "Where the light is."},
-    {"color", A::Colour, true, "", "The light's colour and intensity."},
+    {"color", A::Color, true, "", "The light's colour and intensity."},
     {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2, d the whole ray path."},
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
 };
@@ -67,14 +67,14 @@ constexpr AttributeInfo kPointLight[] = {
 constexpr AttributeInfo kParallelLight[] = {
     {"from", A::Vec3, true, "", "A point the light comes from."},
     {"pointing", A::Vec3, true, "", "A point the light travels towards."},
-    {"color", A::Colour, true, "", "The light's colour and intensity."},
+    {"color", A::Color, true, "", "The light's colour and intensity."},
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
 };
 
 constexpr AttributeInfo kSpotLight[] = {
     {"origin", A::Vec3, true, "", "Where the light is."},
     {"pointing", A::Vec3, true, "", "The point the spot aims at."},
-    {"color", A::Colour, true, "", "The light's colour and intensity."},
+    {"color", A::Color, true, "", "The light's colour and intensity."},
     {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2."},
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
     {"angle", A::Float, false, "30", "Full cone angle, degrees."},
@@ -85,13 +85,13 @@ constexpr AttributeInfo kAreaLight[] = {
     {"corner", A::Vec3, true, "", "One corner of the emitting parallelogram."},
     {"edgeA", A::Vec3, true, "", "First edge from the corner."},
     {"edgeB", A::Vec3, true, "", "Second edge from the corner."},
-    {"color", A::Colour, true, "", "Total colour and intensity."},
+    {"color", A::Color, true, "", "Total colour and intensity."},
     {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2."},
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
 };
 
 constexpr AttributeInfo kMaterial[] = {
-    {"color", A::Colour, false, "rgb(0.5,0.5,0.5)", "Surface colour."},
+    {"color", A::Color, false, "rgb(0.5,0.5,0.5)", "Surface colour."},
     {"reflectivity", A::Float, false, "0", "Mirror reflection, 0 to 1."},
     {"transparency", A::Float, false, "0", "Refracted light, 0 to 1."},
     {"ior", A::Float, false, "1.0", "Index of refraction."},
@@ -101,17 +101,17 @@ constexpr AttributeInfo kMaterial[] = {
     {"metallic", A::Bool, false, "false", "Tint highlights and reflections by the colour."},
     {"glossiness", A::Float, false, "0", "0: sharp mirror; up to 1: blurrier."},
     {"fresnel", A::Bool, false, "false", "Angle-dependent reflection (Fresnel)."},
-    {"absorption", A::Colour, false, "rgb(0,0,0)", "Beer-Lambert absorption per unit inside."},
+    {"absorption", A::Color, false, "rgb(0,0,0)", "Beer-Lambert absorption per unit inside."},
     {"texture", A::Texture, false, "none", "A texture that replaces the colour."},
     {"bump", A::Bump, false, "none", "A bump texture that perturbs the normal."},
-    {"emission", A::Colour, false, "rgb(0,0,0)", "Light the surface gives off."},
+    {"emission", A::Color, false, "rgb(0,0,0)", "Light the surface gives off."},
     // `refractiveindex` is a synonym of `ior`, handled by findAttribute.
 };
 
 constexpr AttributeInfo kBackground[] = {
-    {"color", A::Colour, false, "", "A solid colour."},
-    {"horizon", A::Colour, false, "", "Gradient colour at the horizon (with sky)."},
-    {"sky", A::Colour, false, "", "Gradient colour straight up and down (with horizon)."},
+    {"color", A::Color, false, "", "A solid colour."},
+    {"horizon", A::Color, false, "", "Gradient colour at the horizon (with sky)."},
+    {"sky", A::Color, false, "", "Gradient colour straight up and down (with horizon)."},
     {"image", A::String, false, "", "An equirectangular panorama."},
     {"angle", A::Float, false, "0", "Yaw of the panorama, radians."},
 };
@@ -180,8 +180,8 @@ constexpr AttributeInfo kMesh[] = {
 };
 
 #define CRT_PATTERN_AB                                                                          \
-    {"a", A::Colour, false, "rgb(1,1,1)", "First colour."},                                     \
-        {"b", A::Colour, false, "rgb(0,0,0)", "Second colour."},                                \
+    {"a", A::Color, false, "rgb(1,1,1)", "First colour."},                                     \
+        {"b", A::Color, false, "rgb(0,0,0)", "Second colour."},                                \
         {"size", A::Float, false, "1", "Size of the pattern."}
 
 constexpr AttributeInfo kChecker[] = {CRT_PATTERN_AB};
@@ -287,7 +287,7 @@ std::string_view attrTypeName(AttrType type) {
     case A::Bool: return "bool";
     case A::String: return "string";
     case A::Vec3: return "vec3";
-    case A::Colour: return "colour";
+    case A::Color: return "colour";
     case A::Choice: return "string";
     case A::Material: return "material";
     case A::Camera: return "camera";

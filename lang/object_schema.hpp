@@ -1,7 +1,6 @@
 // The object types of spec §5 and their attributes: names, types, defaults and documentation.
 //
-// One table serves the interpreter (checking), the language server (hover, completion) and
-// the documentation.
+// One table serves checking, documentation and completion alike.
 #pragma once
 
 #include <cstdint>
@@ -49,11 +48,11 @@ enum class AttrType : uint8_t {
     Bool,
     String,
     Vec3,
-    Colour,
+    Color,
     Choice,      ///< a string from `choices` (case-insensitive)
     Material,
     Camera,
-    Background,  ///< a Background or a colour
+    Background,  ///< a Background or a color
     LightList,   ///< a list of lights
     Texture,     ///< a pattern or Image texture
     Bump,        ///< a NoiseBump or ImageBump

@@ -17,7 +17,7 @@ std::string_view kindName(ValueKind kind) {
     case ValueKind::Bool: return "bool";
     case ValueKind::String: return "string";
     case ValueKind::Vec3: return "vec3";
-    case ValueKind::Colour: return "colour";
+    case ValueKind::Color: return "colour";
     case ValueKind::List: return "list";
     case ValueKind::Entity: return "entity";
     case ValueKind::Material: return "material";
@@ -44,15 +44,15 @@ std::string operandError(std::string_view op, const Value& left, const Value& ri
 
 namespace {
 
-bool isVector(const Value& v) { return v.kind == ValueKind::Vec3 || v.kind == ValueKind::Colour; }
+bool isVector(const Value& v) { return v.kind == ValueKind::Vec3 || v.kind == ValueKind::Color; }
 
-/// Component-wise a (op) b on vec3 or colour. For two colours, '*' and '/' combine the
+/// Component-wise a (op) b on vec3 or color. For two colors, '*' and '/' combine the
 /// alphas too and '+' and '-' keep the smaller one, so every operation treats its operands
-/// alike; a colour and a number keep the colour's alpha (scaling does not fade it).
+/// alike; a color and a number keep the color's alpha (scaling does not fade it).
 Value componentWise(const Value& a, const Value& b, char op) {
-    Value r = a.kind == ValueKind::Vec3 || a.kind == ValueKind::Colour ? a : b;
+    Value r = a.kind == ValueKind::Vec3 || a.kind == ValueKind::Color ? a : b;
     int components = 3;
-    if (a.kind == ValueKind::Colour && b.kind == ValueKind::Colour) {
+    if (a.kind == ValueKind::Color && b.kind == ValueKind::Color) {
         if (op == '+' || op == '-') r.v[3] = std::min(a.v[3], b.v[3]);
         else components = 4;
     }
@@ -111,7 +111,7 @@ bool valuesEqual(const Value& a, const Value& b) {
     case ValueKind::Bool: return a.b == b.b;
     case ValueKind::String: return *a.s == *b.s;
     case ValueKind::Vec3: return a.v[0] == b.v[0] && a.v[1] == b.v[1] && a.v[2] == b.v[2];
-    case ValueKind::Colour:
+    case ValueKind::Color:
         return a.v[0] == b.v[0] && a.v[1] == b.v[1] && a.v[2] == b.v[2] && a.v[3] == b.v[3];
     case ValueKind::List: {
         if (a.list->size() != b.list->size()) return false;
@@ -236,64 +236,74 @@ Value Interpreter::evalBinary(const BinaryExpr* node) {
 }
 
 Value Interpreter::binaryOnValues(const BinaryExpr* node, const Value& a, const Value& b) {
-    BinaryOp op = node->op;
-
     // Numbers: everything evalBinary did not settle inline, with exact checks and errors.
-    if (a.isNumber() && b.isNumber()) {
-        if (a.kind == ValueKind::Int && b.kind == ValueKind::Int) {
-            int64_t result = 0;
-            switch (op) {
-            case BinaryOp::Add:
-            case BinaryOp::Sub:
-            case BinaryOp::Mul:
-                if (!checkedInt(op, a.i, b.i, result)) {
-                    fail(node->opRange, fmt::format("integer overflow in '{}'", opSpelling(op)));
-                }
-                return Value::integer(result);
-            case BinaryOp::Div:
-            case BinaryOp::Mod:
-                if (b.i == 0) {
-                    fail(node->opRange, op == BinaryOp::Div ? "integer division by zero"
-                                                            : "integer modulo by zero");
-                }
-                if (b.i == -1) {
-                    // x / -1 overflows for the smallest int; x % -1 is always 0.
-                    if (op == BinaryOp::Mod) return Value::integer(0);
-                    if (a.i == std::numeric_limits<int64_t>::min()) {
-                        fail(node->opRange, "integer overflow in '/'");
-                    }
-                }
-                return Value::integer(op == BinaryOp::Div ? a.i / b.i : a.i % b.i);
-            case BinaryOp::Less: return Value::boolean(a.i < b.i);
-            case BinaryOp::Greater: return Value::boolean(a.i > b.i);
-            case BinaryOp::LessEqual: return Value::boolean(a.i <= b.i);
-            case BinaryOp::GreaterEqual: return Value::boolean(a.i >= b.i);
-            case BinaryOp::Equal: return Value::boolean(a.i == b.i);
-            case BinaryOp::NotEqual: return Value::boolean(a.i != b.i);
-            default: break;
-            }
-        } else {
-            double x = a.asDouble(), y = b.asDouble();
-            // Comparisons are exact: 2^53 + 1 is not equal to the float 2^53.
-            std::partial_ordering order = compareNumbers(a, b);
-            switch (op) {
-            case BinaryOp::Add: return Value::number(x + y);
-            case BinaryOp::Sub: return Value::number(x - y);
-            case BinaryOp::Mul: return Value::number(x * y);
-            case BinaryOp::Div: return Value::number(x / y);
-            case BinaryOp::Mod: return Value::number(std::fmod(x, y));
-            case BinaryOp::Less: return Value::boolean(order < 0);
-            case BinaryOp::Greater: return Value::boolean(order > 0);
-            case BinaryOp::LessEqual: return Value::boolean(order <= 0);
-            case BinaryOp::GreaterEqual: return Value::boolean(order >= 0);
-            case BinaryOp::Equal: return Value::boolean(order == 0);
-            case BinaryOp::NotEqual: return Value::boolean(order != 0);
-            default: break;
+    if (a.kind == ValueKind::Int && b.kind == ValueKind::Int) return binaryOnInts(node, a, b);
+    if (a.isNumber() && b.isNumber()) return binaryOnNumbers(node, a, b);
+    return binaryOnNonNumbers(node, a, b);
+}
+
+Value Interpreter::binaryOnInts(const BinaryExpr* node, const Value& a, const Value& b) {
+    BinaryOp op = node->op;
+    int64_t result = 0;
+    switch (op) {
+    case BinaryOp::Add:
+    case BinaryOp::Sub:
+    case BinaryOp::Mul:
+        if (!checkedInt(op, a.i, b.i, result)) {
+            fail(node->opRange, fmt::format("integer overflow in '{}'", opSpelling(op)));
+        }
+        return Value::integer(result);
+    case BinaryOp::Div:
+    case BinaryOp::Mod:
+        if (b.i == 0) {
+            fail(node->opRange, op == BinaryOp::Div ? "integer division by zero"
+                                                    : "integer modulo by zero");
+        }
+        if (b.i == -1) {
+            // x / -1 overflows for the smallest int; x % -1 is always 0.
+            if (op == BinaryOp::Mod) return Value::integer(0);
+            if (a.i == std::numeric_limits<int64_t>::min()) {
+                fail(node->opRange, "integer overflow in '/'");
             }
         }
-        fail(node->opRange, operandError(opSpelling(op), a, b));
+        return Value::integer(op == BinaryOp::Div ? a.i / b.i : a.i % b.i);
+    case BinaryOp::Less: return Value::boolean(a.i < b.i);
+    case BinaryOp::Greater: return Value::boolean(a.i > b.i);
+    case BinaryOp::LessEqual: return Value::boolean(a.i <= b.i);
+    case BinaryOp::GreaterEqual: return Value::boolean(a.i >= b.i);
+    case BinaryOp::Equal: return Value::boolean(a.i == b.i);
+    case BinaryOp::NotEqual: return Value::boolean(a.i != b.i);
+    default: break;
     }
+    fail(node->opRange, operandError(opSpelling(op), a, b));
+}
 
+/// Two numbers, at least one a float.
+Value Interpreter::binaryOnNumbers(const BinaryExpr* node, const Value& a, const Value& b) {
+    BinaryOp op = node->op;
+    double x = a.asDouble(), y = b.asDouble();
+    // Comparisons are exact: 2^53 + 1 is not equal to the float 2^53.
+    std::partial_ordering order = compareNumbers(a, b);
+    switch (op) {
+    case BinaryOp::Add: return Value::number(x + y);
+    case BinaryOp::Sub: return Value::number(x - y);
+    case BinaryOp::Mul: return Value::number(x * y);
+    case BinaryOp::Div: return Value::number(x / y);
+    case BinaryOp::Mod: return Value::number(std::fmod(x, y));
+    case BinaryOp::Less: return Value::boolean(order < 0);
+    case BinaryOp::Greater: return Value::boolean(order > 0);
+    case BinaryOp::LessEqual: return Value::boolean(order <= 0);
+    case BinaryOp::GreaterEqual: return Value::boolean(order >= 0);
+    case BinaryOp::Equal: return Value::boolean(order == 0);
+    case BinaryOp::NotEqual: return Value::boolean(order != 0);
+    default: break;
+    }
+    fail(node->opRange, operandError(opSpelling(op), a, b));
+}
+
+/// Equality of any two values of one type, string concatenation, CSG and vector arithmetic.
+Value Interpreter::binaryOnNonNumbers(const BinaryExpr* node, const Value& a, const Value& b) {
+    BinaryOp op = node->op;
     if (a.kind == ValueKind::None || b.kind == ValueKind::None) {
         fail(node->opRange, operandError(opSpelling(op), a, b));
     }

@@ -130,6 +130,40 @@ bool parseFloat(std::string_view text, double& value) {
 
 namespace grammar {
 
+namespace {
+
+/// The next token for the parser: a token put back by error recovery, else the lexer's.
+Token takeToken(ParseContext& ctx) {
+    if (ctx.queued.empty()) return ctx.nextToken();
+    Token token = ctx.queued.front();
+    ctx.queued.erase(ctx.queued.begin());
+    return token;
+}
+
+int64_t integerValue(const Token& token, const Parser::location_type& location, ParseContext& ctx) {
+    std::string_view digits = ctx.text(token);
+    int64_t value = 0;
+    auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (error != std::errc()) {
+        ctx.diagnostics.error(ctx.at(location), "integer literal does not fit in 64 bits; write it "
+                                                "as a float");
+        return 0;
+    }
+    return value;
+}
+
+double floatValue(const Token& token, const Parser::location_type& location, ParseContext& ctx) {
+    double value = 0;
+    if (!parseFloat(ctx.text(token), value)) {
+        ctx.diagnostics.error(ctx.at(location), "float literal is out of range");
+    }
+    return value;
+}
+
+} // namespace
+
+// One switch from lexer tokens to parser tokens: it is the parser's inner loop, one dispatch
+// per token.
 int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseContext& ctx) {
     using T = Parser::token;
     if (ctx.recovering) {
@@ -139,13 +173,7 @@ int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseCo
         *location = {at, at};
         return T::TOK_RECOVERED;
     }
-    Token token;
-    if (!ctx.queued.empty()) {
-        token = ctx.queued.front();
-        ctx.queued.erase(ctx.queued.begin());
-    } else {
-        token = ctx.nextToken();
-    }
+    Token token = takeToken(ctx);
     ctx.lastToken = token;
     *location = {token.begin, token.end};
     auto text = [&](std::string_view s) {
@@ -155,22 +183,8 @@ int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseCo
     case TokenKind::EndOfFile: return T::TOK_END;
     case TokenKind::Identifier: text(ctx.text(token)); return T::TOK_IDENT;
     case TokenKind::Name: text(ctx.text(token)); return T::TOK_NAME;
-    case TokenKind::Integer: {
-        std::string_view digits = ctx.text(token);
-        value->integer = 0;
-        auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value->integer);
-        if (error != std::errc()) {
-            ctx.diagnostics.error(ctx.at(*location), "integer literal does not fit in 64 bits; write it "
-                                             "as a float");
-        }
-        return T::TOK_INT;
-    }
-    case TokenKind::Float:
-        value->number = 0;
-        if (!parseFloat(ctx.text(token), value->number)) {
-            ctx.diagnostics.error(ctx.at(*location), "float literal is out of range");
-        }
-        return T::TOK_FLOAT;
+    case TokenKind::Integer: value->integer = integerValue(token, *location, ctx); return T::TOK_INT;
+    case TokenKind::Float: value->number = floatValue(token, *location, ctx); return T::TOK_FLOAT;
     case TokenKind::Invalid: value->number = 0; return T::TOK_FLOAT; // reported by the lexer
     case TokenKind::String: text(ctx.decodeString(token)); return T::TOK_STRING;
     case TokenKind::KwSettings: return T::TOK_SETTINGS;

@@ -1,6 +1,6 @@
-// The end of an evaluation: Settings applied, unused objects dropped, warnings for what was
-// defined but never used.
-#include "interpreter_impl.hpp"
+// The end of an evaluation: what Settings names linked, unreachable objects dropped, warnings
+// for what was defined but never used.
+#include "object_builder.hpp"
 
 #include "builtins.hpp"
 
@@ -57,84 +57,41 @@ void Interpreter::dropUnreachable(const std::vector<bool>& keepEntity, const std
 }
 
 void Interpreter::assembleScene() {
-    scene::SettingsDesc& s = scene_.settings;
-    const ObjectInfo& info = objectInfo(ObjectType::Settings);
-    auto value = [&](std::string_view name) -> const Value* {
-        int slot = findAttribute(info, name);
-        return settingsAttributes_[static_cast<size_t>(slot)] ? &settingsValues_[static_cast<size_t>(slot)] : nullptr;
-    };
-    // Where a setting was given, or the Settings keyword (or the file start) for a default.
-    auto where = [&](std::string_view name) {
-        const Attribute* given = settingsAttributes_[static_cast<size_t>(findAttribute(info, name))];
-        if (given) return given->value->range;
-        return settings_ ? SourceRange{settings_->range.file, settings_->range.begin, settings_->range.begin + 8}
-                         : SourceRange{0, 0, 0};
-    };
-    auto text = [&](std::string_view name) { return value(name) ? *value(name)->s : std::string(); };
-    auto integer = [&](std::string_view name, int64_t fallback) { return value(name) ? value(name)->i : fallback; };
-    auto number = [&](std::string_view name, double fallback) {
-        return value(name) ? value(name)->asDouble() : fallback;
-    };
-    auto atLeast = [&](std::string_view name, int64_t fallback, int64_t minimum, int64_t maximum) {
-        int64_t v = integer(name, fallback);
-        if (v < minimum || v > maximum) {
-            fail(where(name), fmt::format("{} must be between {} and {}, not {}", name, minimum, maximum, v));
-        }
-        return static_cast<int>(v);
-    };
-
-    s.title = text("title");
-    s.author = text("author");
-    s.date = text("date");
-    s.notes = text("notes");
-    uint32_t maxSize = options_.limits.maxSize;
-    for (std::string_view name : {"width", "height"}) {
-        int64_t v = integer(name, name == "width" ? 800 : 600);
-        if (v < 1 || v > maxSize) {
-            fail(where(name), fmt::format("{} must be between 1 and {} pixels, not {}{}", name, maxSize, v,
-                                          v > maxSize ? "; raise the limit with --max-size" : ""));
-        }
+    if (!settings_) {
+        // Without a Settings statement its defaults still have to fit the limits (--max-size).
+        buildSettings(ObjectBuilder{*this, objectInfo(ObjectType::Settings), {0, 0, 0}, {0, 0, 0}});
     }
-    s.width = static_cast<int>(integer("width", 800));
-    s.height = static_cast<int>(integer("height", 600));
-    if (const Value* gamma = value("gamma")) {
-        if (gamma->kind == ValueKind::String) s.srgb = true;
-        else s.gamma = gamma->asDouble();
+    if (settingsProblem_) fail(settingsProblem_->where, settingsProblem_->message);
+    linkSettings();
+    keepReachable();
+    for (uint32_t i = 0; i < compilation_.sources.fileCount(); ++i) {
+        scene_.files.push_back(compilation_.sources.file(i).path());
     }
-    s.supersampling = atLeast("supersampling", 1, 1, 64);
-    s.dofSamples = atLeast("dofsamples", 1, 1, 100000);
-    s.recursionDepth = atLeast("recursiondepth", 3, 0, 1000);
-    std::string antialias = value("antialias") ? text("antialias") : "grid";
-    for (char& c : antialias) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    s.antialias = antialias == "adaptive"       ? scene::Antialias::Adaptive
-                  : antialias == "showadaptive" ? scene::Antialias::ShowAdaptive
-                                                : scene::Antialias::Grid;
-    s.aaThreshold = number("aathreshold", 0.1);
-    if (s.aaThreshold < 0) fail(where("aathreshold"), "aathreshold must not be negative");
-    s.aaDepth = atLeast("aadepth", 2, 0, 8);
-    s.shadowSamples = atLeast("shadowsamples", 16, 1, 4096);
-    s.glossySamples = atLeast("glossysamples", 16, 1, 4096);
-    if (integer("seed", 0) < 0) fail(where("seed"), "seed must not be negative");
-    s.seed = static_cast<uint64_t>(integer("seed", 0));
-    if (const Value* ambient = value("ambient")) s.ambient = {ambient->v[0], ambient->v[1], ambient->v[2], ambient->v[3]};
+    scene_.time = prelude_[preludeSlotOfT()].asDouble();
+    scene_.frame = options_.frame;
+    scene_.frameCount = options_.frameCount;
+}
 
-    if (const Value* camera = value("camera")) scene_.camera = cameras_[camera->index];
-    if (const Value* lights = value("lights")) {
-        for (const Value& light : *lights->list) {
+void Interpreter::linkSettings() {
+    if (settingsLinks_.camera) scene_.camera = cameras_[*settingsLinks_.camera];
+    if (settingsLinks_.lights) {
+        for (const Value& light : *settingsLinks_.lights) {
             lightInfo_[light.index].listed = true;
             scene_.lights.push_back(lights_[light.index]);
         }
     }
-    if (const Value* background = value("background")) {
-        if (background->kind == ValueKind::Colour) {
+    if (const std::optional<Value>& background = settingsLinks_.background) {
+        if (background->kind == ValueKind::Color) {
             scene_.background.kind = scene::BackgroundKind::Solid;
             scene_.background.color = {background->v[0], background->v[1], background->v[2], background->v[3]};
-            scene_.background.source = span(where("background"));
+            scene_.background.source = span(settingsLinks_.backgroundRange);
         } else {
             scene_.background = backgrounds_[background->index];
         }
     }
+}
 
+void Interpreter::keepReachable() {
     // Keep only what the drawn entities reach, so consumers see no dead objects.
     std::vector<bool> keepEntity(scene_.entities.size(), false);
     std::vector<int32_t> pending(scene_.drawn.begin(), scene_.drawn.end());
@@ -163,13 +120,6 @@ void Interpreter::assembleScene() {
     if (!allTrue(keepEntity) || !allTrue(keepMaterial) || !allTrue(keepTexture)) {
         dropUnreachable(keepEntity, keepMaterial, keepTexture);
     }
-
-    for (uint32_t i = 0; i < compilation_.sources.fileCount(); ++i) {
-        scene_.files.push_back(compilation_.sources.file(i).path());
-    }
-    scene_.time = prelude_[preludeSlotOfT()].asDouble();
-    scene_.frame = options_.frame;
-    scene_.frameCount = options_.frameCount;
 }
 
 void Interpreter::reportUnused() {

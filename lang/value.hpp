@@ -21,7 +21,7 @@ enum class ValueKind : uint8_t {
     Bool,
     String,
     Vec3,
-    Colour,
+    Color,
     List,
     Entity,
     Material,
@@ -54,7 +54,7 @@ struct Value {
         int64_t i;
         double f;
         bool b;
-        double v[4]; ///< vec3 x y z, colour r g b a
+        double v[4]; ///< vec3 x y z, color r g b a
         const std::string* s;
         const std::vector<Value>* list;
         const Closure* closure;
@@ -72,9 +72,9 @@ struct Value {
         r.v[0] = x, r.v[1] = y, r.v[2] = z, r.v[3] = 0;
         return r;
     }
-    static Value colour(double r_, double g, double b_, double a = 1.0) {
+    static Value color(double r_, double g, double b_, double a = 1.0) {
         Value r;
-        r.kind = ValueKind::Colour;
+        r.kind = ValueKind::Color;
         r.v[0] = r_, r.v[1] = g, r.v[2] = b_, r.v[3] = a;
         return r;
     }

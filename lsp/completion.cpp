@@ -43,7 +43,7 @@ namespace {
 std::string_view placeholder(AttrType type) {
     switch (type) {
     case AttrType::Vec3: return "vec3(0, 0, 0)";
-    case AttrType::Colour: return "rgb(1, 1, 1)";
+    case AttrType::Color: return "rgb(1, 1, 1)";
     case AttrType::Int: return "1";
     case AttrType::Float: return "1.0";
     case AttrType::Bool: return "true";
@@ -99,7 +99,7 @@ int typeFit(AttrType want, const std::string& type) {
     case AttrType::Bool: return type == "bool" ? 0 : -1;
     case AttrType::String: case AttrType::Choice: return type == "string" ? 0 : -1;
     case AttrType::Vec3: return type == "vec3" ? 0 : -1;
-    case AttrType::Colour: return type == "colour" ? 0 : -1;
+    case AttrType::Color: return type == "colour" ? 0 : -1;
     case AttrType::LightList: return type == "list" ? 0 : -1;
     case AttrType::Background:
         if (type == "colour") return 0;
@@ -283,7 +283,7 @@ private:
         case AttrType::Vec3:
             add({"vec3", CompletionKind::Function, "vec3(x, y, z)", "", "vec3(${1:0}, ${2:0}, ${3:0})", true, "0"});
             break;
-        case AttrType::Colour:
+        case AttrType::Color:
         case AttrType::Background:
             add({"rgb", CompletionKind::Function, "rgb(r, g, b)", "", "rgb(${1:1}, ${2:1}, ${3:1})", true, "0"});
             add({"rgba", CompletionKind::Function, "rgba(r, g, b, a)", "", "rgba(${1:1}, ${2:1}, ${3:1}, ${4:1})", true, "0"});

@@ -1,4 +1,4 @@
-// What a ray that leaves the scene sees: a colour, a sky gradient or a panorama (spec §5).
+// What a ray that leaves the scene sees: a color, a sky gradient or a panorama (spec §5).
 #pragma once
 
 #include "tracer/image.hpp"
@@ -10,7 +10,7 @@ class Background {
 public:
     /// `panorama` is the decoded image of an image background (null otherwise).
     Background(const scene::BackgroundDesc& desc, const Image* panorama);
-    /// The colour seen along the unit direction d.
+    /// The color seen along the unit direction d.
     Vec3 radiance(const Vec3& d) const;
 
 private:

@@ -9,7 +9,7 @@ namespace crt::tracer {
 struct Integrator::ShadingPoint {
     SurfaceInteraction si;
     const ShadingMaterial* material;
-    Vec3 color;        ///< C: the material colour or its texture
+    Vec3 color;        ///< C: the material color or its texture
     Vec3 tint;         ///< K: C for metallic materials, else white
     Vec3 n;            ///< shading normal, facing the incoming ray
     Vec3 facingNormal; ///< geometric normal, facing the incoming ray

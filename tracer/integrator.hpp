@@ -34,7 +34,7 @@ public:
     Integrator(const RenderScene& scene, const scene::SettingsDesc& settings, std::vector<Light> lights,
                const Background& background, std::vector<Texture> textures);
 
-    /// The colour seen along `ray` (unit direction) with `depth` reflections/refractions left;
+    /// The color seen along `ray` (unit direction) with `depth` reflections/refractions left;
     /// `pathLength` is the distance travelled from the camera to the ray's origin (falloff),
     /// `medium` the material of the solid the ray travels in (-1: air).
     Vec3 trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context) const;

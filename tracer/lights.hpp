@@ -15,7 +15,7 @@ struct LightSample {
     Vec3 toLight{0.0};  ///< unit direction from the point to the light
     Vec3 target{0.0};   ///< the light's position (unused for parallel lights)
     double distance = kInfinity;
-    Vec3 color{0.0};    ///< the light's colour for this sample, cone factor included
+    Vec3 color{0.0};    ///< the light's color for this sample, cone factor included
     bool atInfinity = false;
 };
 

@@ -106,7 +106,7 @@ struct QueryScratch {
     std::vector<int32_t> stack;
 };
 
-/// A material as shading reads it: its colour beside its finish, in one place.
+/// A material as shading reads it: its color beside its finish, in one place.
 struct ShadingMaterial : scene::FinishDesc {
     scene::Color color = scene::MaterialDesc{}.color;
 };

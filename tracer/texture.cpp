@@ -46,7 +46,7 @@ Vec3 Texture::color(const Vec3& objectPoint, const Vec2& uv) const {
     double s = desc_.size > 0 ? desc_.size : 1;
     switch (desc_.kind) {
     case scene::TextureKind::Checker: {
-        // A tiny nudge keeps faces lying exactly on a cell boundary (z = 0 planes) on one colour.
+        // A tiny nudge keeps faces lying exactly on a cell boundary (z = 0 planes) on one color.
         Vec3 q = p / s + Vec3(1e-9);
         long sum = static_cast<long>(std::floor(q.x)) + static_cast<long>(std::floor(q.y)) +
                    static_cast<long>(std::floor(q.z));

@@ -12,7 +12,7 @@ public:
     /// `image` is the decoded file of an Image or ImageBump texture (null otherwise).
     Texture(const scene::TextureDesc& desc, const Image* image);
 
-    /// The colour at an object-space point with surface coordinates uv.
+    /// The color at an object-space point with surface coordinates uv.
     Vec3 color(const Vec3& objectPoint, const Vec2& uv) const;
     /// A bump texture's height at a point (its gradient perturbs the normal).
     double height(const Vec3& objectPoint, const Vec2& uv) const;

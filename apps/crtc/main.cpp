@@ -35,7 +35,7 @@ bool useColor(crtc::ColorWhen when) {
 bool report(Compilation& c, const crtc::Options& options, std::set<std::string>& printed) {
     if (options.werror) c.diagnostics.promoteWarnings();
     PrintOptions print;
-    print.colour = useColor(options.color);
+    print.color = useColor(options.color);
     for (const Diagnostic& diagnostic : c.diagnostics.items()) {
         std::string text = formatDiagnostic(c.sources, diagnostic, print);
         if (printed.insert(text).second) std::cerr << text;

@@ -1,4 +1,4 @@
-// Transfer functions between linear colour values and 8-bit codes.
+// Transfer functions between linear color values and 8-bit codes.
 #include "tracer/image_io/encoding.hpp"
 
 #include <array>

@@ -1,4 +1,4 @@
-// Transfer functions between linear colour values and 8-bit codes (spec §6 "Output"), free of
+// Transfer functions between linear color values and 8-bit codes (spec §6 "Output"), free of
 // OpenImageIO.
 #pragma once
 

@@ -122,7 +122,7 @@ bool checkOptions(const WriteOptions& options, std::string& problem) {
     return true;
 }
 
-// GIF and HDR store only colour: a grey image becomes three equal channels.
+// GIF and HDR store only color: a grey image becomes three equal channels.
 std::vector<float> expandGrey(std::span<const float> grey) {
     std::vector<float> rgb(grey.size() * 3);
     for (std::size_t i = 0; i < grey.size(); ++i)
@@ -130,8 +130,8 @@ std::vector<float> expandGrey(std::span<const float> grey) {
     return rgb;
 }
 
-// The transfer function applies to colour; a fourth channel is alpha, a coverage stored as is.
-std::vector<std::uint8_t> quantiseColour(std::span<const float> values, int channels,
+// The transfer function applies to color; a fourth channel is alpha, a coverage stored as is.
+std::vector<std::uint8_t> quantiseColor(std::span<const float> values, int channels,
                                          const WriteOptions& options) {
     std::vector<std::uint8_t> codes = quantise8(values, options.gamma, options.srgb);
     if (channels == 4)
@@ -305,7 +305,7 @@ bool ImageStream::writeRows(int yBegin, int yEnd, std::span<const float> values,
     std::vector<float> expanded = expandGrey_ ? expandGrey(values) : std::vector<float>{};
     const std::span<const float> stored = expandGrey_ ? expanded : values;
     std::vector<std::uint8_t> codes;
-    if (eightBit_) codes = quantiseColour(stored, fileChannels, options_);
+    if (eightBit_) codes = quantiseColor(stored, fileChannels, options_);
     const void* pixels = eightBit_ ? static_cast<const void*>(codes.data())
                                    : static_cast<const void*>(stored.data());
     CallContext context;
@@ -374,7 +374,7 @@ bool GifFrames::add(const ImageBuffer& frame, const WriteOptions& options, std::
         problem = which + ": " + problem;
         return false;
     }
-    // GIF stores colour: a grey frame becomes three equal channels.
+    // GIF stores color: a grey frame becomes three equal channels.
     const int channels = frame.channels == 1 ? 3 : frame.channels;
     if (!frames_.empty() &&
         (frame.width != width_ || frame.height != height_ || channels != channels_)) {
@@ -385,8 +385,8 @@ bool GifFrames::add(const ImageBuffer& frame, const WriteOptions& options, std::
     height_ = frame.height;
     channels_ = channels;
     frames_.push_back(std::make_shared<const std::vector<std::uint8_t>>(
-        frame.channels == 1 ? quantiseColour(expandGrey(frame.pixels), 3, options)
-                            : quantiseColour(frame.pixels, frame.channels, options)));
+        frame.channels == 1 ? quantiseColor(expandGrey(frame.pixels), 3, options)
+                            : quantiseColor(frame.pixels, frame.channels, options)));
     return true;
 }
 

@@ -40,7 +40,7 @@ std::string oiioError(const std::string& objectError) {
 }
 
 std::unique_ptr<ImageInput> openInput(const char* path, const ErrorSink& sink) {
-    // Colour channels of a PNG with alpha must come back as stored, not premultiplied:
+    // Color channels of a PNG with alpha must come back as stored, not premultiplied:
     // the alpha is dropped, so premultiplying would darken every transparent pixel.
     ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
@@ -128,7 +128,7 @@ void* openImage(const char* path, const char* format, int width, int height, int
         ImageSpec spec(width, height, channels, type);
         if (srgb) spec.attribute("oiio:ColorSpace", "sRGB");
         // A fourth channel is straight alpha, stored as given: without this, PNG and TIFF
-        // would take the colour as premultiplied and divide it by alpha.
+        // would take the color as premultiplied and divide it by alpha.
         spec.attribute("oiio:UnassociatedAlpha", 1);
         if (!out->open(path, spec)) {
             sink.fail(oiioError(out->geterror()));

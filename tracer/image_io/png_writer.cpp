@@ -75,10 +75,10 @@ bool writeHeader(PngFile& file, int width, int channels, bool srgb, int compress
     // libpng's default limit of a million pixels a side is meant for reading untrusted files;
     // for writing, the format's own limit applies.
     png_set_user_limits(file.png, PNG_UINT_31_MAX, PNG_UINT_31_MAX);
-    const int colourType = channels == 1   ? PNG_COLOR_TYPE_GRAY
+    const int colorType = channels == 1   ? PNG_COLOR_TYPE_GRAY
                            : channels == 3 ? PNG_COLOR_TYPE_RGB
                                            : PNG_COLOR_TYPE_RGB_ALPHA;
-    png_set_IHDR(file.png, file.info, png_uint_32(width), png_uint_32(file.height), 8, colourType,
+    png_set_IHDR(file.png, file.info, png_uint_32(width), png_uint_32(file.height), 8, colorType,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     // "Sub" alone: on rendered images it compresses better than libpng's default, a per-row
     // guess among all five filters, and saves the guessing.

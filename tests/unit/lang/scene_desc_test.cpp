@@ -1,4 +1,4 @@
-// The scene description the interpreter builds: materials (each its own colour, finishes
+// The scene description the interpreter builds: materials (each its own color, finishes
 // shared where equal) and what loops add to it.
 #include <catch2/catch.hpp>
 
@@ -23,7 +23,7 @@ Compilation compileScript(const std::string& text) {
 
 } // namespace
 
-TEST_CASE("materials built in a loop keep their colours and share one finish", "[scene]") {
+TEST_CASE("materials built in a loop keep their colors and share one finish", "[scene]") {
     Compilation c = compileScript(R"(
 Scene {
     for i in range(1000) {

@@ -160,7 +160,7 @@ TEST_CASE("values: a number divided by a vec3, or a vec3 plus a number, is an er
     CHECK(errorOf("x = 1.5 - vec3(1, 2, 3)\n") == "cannot apply '-' to float and vec3");
 }
 
-TEST_CASE("values: colour arithmetic is component-wise too") {
+TEST_CASE("values: color arithmetic is component-wise too") {
     CHECK(show("rgb(0.25, 0.5, 1)") == "rgb(0.25, 0.5, 1.0)");
     CHECK(show("rgb(0.25, 0.5, 1) * 2") == "rgb(0.5, 1.0, 2.0)");
     CHECK(show("2 * rgb(0.25, 0.5, 1)") == "rgb(0.5, 1.0, 2.0)");
@@ -170,7 +170,7 @@ TEST_CASE("values: colour arithmetic is component-wise too") {
     CHECK(show("rgb(1, 2, 3) / 2") == "rgb(0.5, 1.0, 1.5)");
 }
 
-TEST_CASE("values: vec3 and colour never mix") {
+TEST_CASE("values: vec3 and color never mix") {
     CHECK(errorOf("x = vec3(1, 2, 3) + rgb(1, 2, 3)\n") == "cannot apply '+' to vec3 and colour");
     CHECK(errorOf("x = rgb(1, 2, 3) - vec3(1, 2, 3)\n") == "cannot apply '-' to colour and vec3");
     CHECK(errorOf("x = rgb(1, 2, 3) * vec3(1, 2, 3)\n") == "cannot apply '*' to colour and vec3");

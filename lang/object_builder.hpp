@@ -1,0 +1,142 @@
+// Reading one object literal (spec §5): its attributes checked against the schema, then read
+// by name, an absent attribute reading as the default its description struct carries.
+#pragma once
+
+#include "interpreter_impl.hpp"
+#include "value_format.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <glm/geometric.hpp>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace crt::lang {
+
+/// A short list of attribute slots, kept on the stack.
+struct SmallSlots {
+    std::array<uint8_t, kMaxAttributes> items;
+    uint8_t count = 0;
+    void push_back(uint8_t slot) { items[count++] = slot; }
+    const uint8_t* begin() const { return items.data(); }
+    const uint8_t* end() const { return items.data() + count; }
+};
+
+/// Checks the attributes of one object literal and reads them. Every reader takes the value
+/// to return when the attribute is absent: callers pass the field of a default-constructed
+/// description, so that the scene description's defaults are the only ones (a unit test
+/// checks the schema's documented defaults against them).
+struct ObjectBuilder {
+    ObjectBuilder(Interpreter& interpreter, const ObjectInfo& objectInfo, SourceRange whole,
+                  SourceRange type)
+        : in(interpreter), info(objectInfo), range(whole), typeRange(type) {}
+
+    Interpreter& in;
+    const ObjectInfo& info;
+    SourceRange range;     ///< the whole literal
+    SourceRange typeRange; ///< its type name (for Settings, the keyword)
+    /// Storage for the given attributes' values; a slot is valid where `given` is set.
+    /// Left uninitialised: building an object must not pay for clearing every slot.
+    union RawValue {
+        Value value;
+        RawValue() {}
+    };
+    std::array<RawValue, kMaxAttributes> values;
+    std::array<const Attribute*, kMaxAttributes> given{};
+    SmallSlots givenSlots; ///< the slots in `given` that are set
+
+    /// Evaluates and checks every attribute, then reports the first required one missing.
+    void evaluate(std::span<const Attribute> attributes);
+
+    // --- reading ---
+    /// The slot of attribute `name` if the literal gives it, else -1. Only the given
+    /// attributes (usually a few) are compared, shortest test first: building objects
+    /// asks for every attribute by name, and most are not given.
+    int slot(std::string_view name) const {
+        for (uint8_t given : givenSlots) {
+            std::string_view candidate = info.attributes[given].name;
+            if (candidate.size() == name.size() && candidate[0] == name[0] && candidate == name) {
+                return given;
+            }
+        }
+        return -1;
+    }
+    const Value* get(std::string_view name) const {
+        int s = slot(name);
+        return s >= 0 ? &values[static_cast<size_t>(s)].value : nullptr;
+    }
+    /// Where attribute `name`'s value is written, or the type name when it is absent.
+    SourceRange where(std::string_view name) const {
+        int s = slot(name);
+        return s >= 0 ? given[static_cast<size_t>(s)]->value->range : typeRange;
+    }
+    double number(std::string_view name, double absent) const {
+        const Value* v = get(name);
+        return v ? v->asDouble() : absent;
+    }
+    int64_t integer(std::string_view name, int64_t absent) const {
+        const Value* v = get(name);
+        return v ? v->i : absent;
+    }
+    bool flag(std::string_view name, bool absent) const {
+        const Value* v = get(name);
+        return v ? v->b : absent;
+    }
+    glm::dvec3 vec(std::string_view name, glm::dvec3 absent) const {
+        const Value* v = get(name);
+        return v ? glm::dvec3{v->v[0], v->v[1], v->v[2]} : absent;
+    }
+    scene::Color color(std::string_view name, scene::Color absent) const {
+        const Value* v = get(name);
+        return v ? scene::Color{v->v[0], v->v[1], v->v[2], v->v[3]} : absent;
+    }
+    std::string text(std::string_view name, const std::string& absent) const {
+        const Value* v = get(name);
+        return v && v->kind == ValueKind::String ? *v->s : absent;
+    }
+    /// A given string attribute in lower case (choices ignore case); "" when absent.
+    std::string lowerText(std::string_view name) const {
+        std::string t = text(name, std::string());
+        std::transform(t.begin(), t.end(), t.begin(),
+                       [](unsigned char c) { return std::tolower(c); });
+        return t;
+    }
+    /// The index of a given object attribute (a material, a texture) in its pool, else `absent`.
+    int32_t index(std::string_view name, int32_t absent) const {
+        const Value* v = get(name);
+        return v ? static_cast<int32_t>(v->index) : absent;
+    }
+
+    // --- checks of values the schema's types allow ---
+    /// A radius-like attribute, if given, must not be negative.
+    void nonNegative(std::string_view name) {
+        double given = number(name, 0);
+        if (given < 0) {
+            in.fail(where(name), fmt::format("attribute '{}' of {} is negative ({})", name,
+                                             info.name, formatFloat(given)));
+        }
+    }
+    /// A direction attribute, if given, must not be zero.
+    void nonZeroVector(std::string_view name, std::string_view what) {
+        if (get(name) && glm::length(vec(name, glm::dvec3(0.0))) == 0) {
+            in.fail(where(name), fmt::format("attribute '{}' of {} is a zero vector; {}", name,
+                                             info.name, what));
+        }
+    }
+
+  private:
+    void check(const Attribute& a, const Value& v);
+    void checkNumber(const Attribute& a, const Value& v, AttrType type);
+    void checkReference(const Attribute& a, const Value& v, AttrType type);
+    void checkGamma(const Attribute& a, const Value& v);
+    void checkAperture(const Attribute& a, const Value& v, const AttributeInfo& attr);
+    void checkChoice(const Attribute& a, const Value& v, const AttributeInfo& attr);
+    [[noreturn]] void missing(const AttributeInfo& attr);
+    [[noreturn]] void wrongType(const Attribute& a, const Value& v, std::string_view wanted);
+    [[noreturn]] void floatForInt(const Attribute& a, const Value& v, std::string_view wanted);
+    void finite(const Attribute& a, const Value& v, int components);
+};
+
+} // namespace crt::lang

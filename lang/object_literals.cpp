@@ -1,0 +1,558 @@
+// Object literals and the Settings statement (spec §5): the scene description entries they
+// build from their checked attributes.
+#include "object_builder.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <glm/geometric.hpp>
+
+namespace crt::lang {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Looks a file up as an image or mesh: "/x" under each asset root, else next to the script.
+std::string findAsset(const std::string& name, const std::string& scriptPath,
+                      const std::vector<std::string>& assetRoots,
+                      std::vector<std::string>& searched) {
+    std::error_code error;
+    fs::path scriptDir = folderOf(scriptPath);
+    if (!name.empty() && name[0] == '/') {
+        std::vector<fs::path> roots;
+        if (!assetRoots.empty()) {
+            for (const std::string& root : assetRoots) roots.push_back(fs::absolute(root, error));
+        } else {
+            if (!scriptDir.has_filename()) scriptDir = scriptDir.parent_path(); // "/dir/" -> "/dir"
+            for (fs::path dir = scriptDir;; dir = dir.parent_path()) {
+                roots.push_back(dir);
+                if (dir == dir.parent_path()) break;
+            }
+        }
+        for (const fs::path& root : roots) {
+            fs::path candidate = root / name.substr(1);
+            searched.push_back(root.string());
+            if (fs::is_regular_file(candidate, error)) return candidate.lexically_normal().string();
+        }
+        if (fs::is_regular_file(name, error)) return name;
+        return {};
+    }
+    fs::path candidate = fs::path(name).is_absolute() ? fs::path(name) : scriptDir / name;
+    searched.push_back(candidate.parent_path().string());
+    return fs::is_regular_file(candidate, error) ? candidate.lexically_normal().string()
+                                                 : std::string();
+}
+
+/// Whether a shape has no extent, and so draws nothing.
+struct ZeroSize {
+    bool operator()(const scene::SphereShape& s) const { return s.radius == 0; }
+    bool operator()(const scene::BoxShape& s) const {
+        return s.cornerA.x == s.cornerB.x || s.cornerA.y == s.cornerB.y ||
+               s.cornerA.z == s.cornerB.z;
+    }
+    bool operator()(const scene::CylinderShape& s) const { return s.radius == 0; }
+    bool operator()(const scene::ConeShape& s) const {
+        return s.baseRadius == 0 && s.topRadius == 0;
+    }
+    bool operator()(const scene::TorusShape& s) const { return s.minor == 0; }
+    bool operator()(const scene::DiscShape& s) const { return s.radius == 0 || s.hole == s.radius; }
+    bool operator()(const scene::QuadShape& s) const {
+        return glm::length(glm::cross(s.edgeA, s.edgeB)) == 0;
+    }
+    bool operator()(const scene::TriangleShape& s) const {
+        return glm::length(glm::cross(s.b - s.a, s.c - s.a)) == 0;
+    }
+    bool operator()(const auto&) const { return false; } // planes and meshes
+};
+
+/// A material's finish; `diffuse` defaults to what reflection and refraction leave.
+scene::FinishDesc readFinish(const ObjectBuilder& b) {
+    scene::FinishDesc f;
+    f.reflectivity = b.number("reflectivity", f.reflectivity);
+    f.transparency = b.number("transparency", f.transparency);
+    f.ior = b.number("ior", f.ior);
+    f.diffuse = b.number("diffuse", std::max(0.0, 1.0 - f.reflectivity - f.transparency));
+    f.specular = b.number("specular", f.specular);
+    f.shininess = b.number("shininess", f.shininess);
+    f.metallic = b.flag("metallic", f.metallic);
+    f.glossiness = b.number("glossiness", f.glossiness);
+    f.fresnel = b.flag("fresnel", f.fresnel);
+    f.absorption = b.color("absorption", f.absorption);
+    f.emission = b.color("emission", f.emission);
+    f.texture = b.index("texture", f.texture);
+    f.bump = b.index("bump", f.bump);
+    if (f.ior <= 0) b.in.fail(b.where("ior"), "the index of refraction must be positive");
+    if (f.glossiness < 0 || f.glossiness > 1) {
+        b.in.fail(b.where("glossiness"), "glossiness must be between 0 and 1");
+    }
+    return f;
+}
+
+/// A camera's lens shape: a name, or a number of polygon sides (checked by the builder).
+void readApertureShape(const ObjectBuilder& b, scene::CameraDesc& c) {
+    const Value* shape = b.get("apertureshape");
+    if (!shape) return;
+    if (shape->kind == ValueKind::Int) {
+        c.apertureShape = scene::ApertureShape::Polygon;
+        c.apertureBlades = static_cast<int>(std::min<int64_t>(shape->i, 1000));
+        return;
+    }
+    std::string name = b.lowerText("apertureshape");
+    static const std::pair<std::string_view, int> polygons[] = {
+        {"triangle", 3}, {"square", 4}, {"pentagon", 5}, {"hexagon", 6}, {"octagon", 8}};
+    for (auto [polygon, sides] : polygons) {
+        if (name == polygon) {
+            c.apertureShape = scene::ApertureShape::Polygon;
+            c.apertureBlades = sides;
+        }
+    }
+    if (name == "gaussian") c.apertureShape = scene::ApertureShape::Gaussian;
+    if (name == "line") c.apertureShape = scene::ApertureShape::Line;
+}
+
+/// A Background takes exactly one mode: a color, a gradient, or an image.
+void checkBackgroundMode(const ObjectBuilder& b) {
+    int modes = (b.get("color") ? 1 : 0) + (b.get("horizon") || b.get("sky") ? 1 : 0) +
+                (b.get("image") ? 1 : 0);
+    if (modes > 1) {
+        b.in.fail(b.typeRange,
+                  "a Background takes exactly one of 'color', 'horizon' + 'sky', or 'image'");
+    }
+    if (modes == 0) {
+        b.in.fail(b.typeRange, "a Background needs 'color', 'horizon' + 'sky', or 'image'");
+    }
+    if ((b.get("horizon") != nullptr) != (b.get("sky") != nullptr)) {
+        b.in.fail(b.typeRange, "a gradient Background needs both 'horizon' and 'sky'");
+    }
+    if (b.get("angle") && !b.get("image")) {
+        b.in.fail(b.where("angle"), "'angle' only applies to an 'image' Background");
+    }
+}
+
+/// An image texture's mapping, when given (checked by the builder against the choices).
+void readMapping(const ObjectBuilder& b, scene::TextureDesc& t) {
+    if (!b.get("mapping")) return;
+    std::string mapping = b.lowerText("mapping");
+    static const std::pair<std::string_view, scene::TextureMapping> mappings[] = {
+        {"uv", scene::TextureMapping::Uv},
+        {"planar", scene::TextureMapping::Planar},
+        {"spherical", scene::TextureMapping::Spherical},
+        {"cylindrical", scene::TextureMapping::Cylindrical},
+        {"cubic", scene::TextureMapping::Cubic}};
+    for (auto [name, kind] : mappings) {
+        if (mapping == name) t.mapping = kind;
+    }
+}
+
+/// Wood's rings wander less than Marble's veins: the one default TextureDesc cannot carry,
+/// since it differs by kind (a unit test checks it against the schema's documented one).
+constexpr double kWoodTurbulence = 0.1;
+
+} // namespace
+
+scene::SourceSpan Interpreter::span(SourceRange range) const {
+    // Literals in a loop are converted over and over: remember recent ones.
+    SpanCacheEntry& entry = spanCache_[(range.begin * 2654435761u) >> 28];
+    if (entry.range == range) return entry.span;
+    const SourceFile& file = compilation_.sources.file(range.file);
+    LineColumn begin = file.lineColumn(range.begin);
+    LineColumn end = file.lineColumn(range.end);
+    entry = {range, {range.file, begin.line, begin.column, end.line, end.column}};
+    return entry.span;
+}
+
+int32_t Interpreter::addEntity(scene::EntityDesc entity, EntityInfo info) {
+    scene_.entities.push_back(std::move(entity));
+    entityInfo_.push_back(info);
+    return static_cast<int32_t>(scene_.entities.size() - 1);
+}
+
+void Interpreter::warnOnce(WarningKind kind, SourceRange where, std::string message) {
+    if (warnedOnce_.emplace(kind, where.file, where.begin).second) {
+        diagnostics_.warning(kind, where, std::move(message));
+    }
+}
+
+int32_t Interpreter::defaultMaterial() {
+    if (defaultMaterial_ < 0) {
+        scene_.materials.emplace_back();
+        defaultMaterial_ = static_cast<int32_t>(scene_.materials.size() - 1);
+    }
+    return defaultMaterial_;
+}
+
+std::string Interpreter::findFile(const ObjectBuilder& b, std::string_view attribute,
+                                  std::string_view what) {
+    std::string name = b.text(attribute, std::string());
+    if (!options_.checkFiles) return std::string();
+    std::vector<std::string> searched;
+    std::string found = findAsset(name, compilation_.sources.file(b.range.file).path(),
+                                  options_.assetRoots, searched);
+    if (found.empty()) {
+        std::string folders;
+        for (const std::string& dir : searched) folders += "\n  " + dir;
+        fail(b.where(attribute),
+             fmt::format("cannot find {} \"{}\"; looked in:{}", what, name, folders));
+    }
+    return found;
+}
+
+Value Interpreter::evalObject(const ObjectExpr* node) {
+    if (node->type == ObjectType::Count) {
+        fail(node->typeRange, "unknown object type"); // resolver reported
+    }
+    const ObjectInfo& info = objectInfo(node->type);
+    ObjectBuilder b{*this, info, node->range, node->typeRange};
+    b.evaluate(node->attributes);
+    switch (info.category) {
+    case ObjectCategory::Entity: return buildEntity(b);
+    case ObjectCategory::Material: return buildMaterial(b);
+    case ObjectCategory::Camera: return buildCamera(b);
+    case ObjectCategory::Light: return buildLight(b);
+    case ObjectCategory::Background: return buildBackground(b);
+    case ObjectCategory::Texture: return buildTexture(b);
+    case ObjectCategory::Settings: break; // a statement (execSettings), never a value
+    }
+    fail(node->typeRange, "unknown object type");
+}
+
+Value Interpreter::buildEntity(ObjectBuilder& b) {
+    scene::Shape shape = b.info.solid ? solidShape(b) : surfaceShape(b);
+    bool zeroSize = std::visit(ZeroSize{}, shape);
+    int32_t material = b.index("material", -1);
+    if (material < 0) material = defaultMaterial();
+    int32_t index =
+        addEntity(scene::EntityDesc{std::move(shape), material, b.info.solid, span(b.range)},
+                  EntityInfo{b.range, b.info.type, true});
+    // An animated script (one reading t or clock) often starts from zero size.
+    if (zeroSize && !animated_) {
+        warnOnce(WarningKind::ZeroSizeEntity, b.typeRange,
+                 fmt::format("this {} has zero size and draws nothing", b.info.name));
+    }
+    return Value::object(ValueKind::Entity, b.info.type, static_cast<uint32_t>(index));
+}
+
+scene::Shape Interpreter::solidShape(ObjectBuilder& b) {
+    switch (b.info.type) {
+    case ObjectType::Sphere: {
+        scene::SphereShape s;
+        b.nonNegative("radius");
+        s.center = b.vec("center", s.center);
+        s.radius = b.number("radius", s.radius);
+        return s;
+    }
+    case ObjectType::Box: {
+        scene::BoxShape s;
+        s.cornerA = b.vec("cornerA", s.cornerA);
+        s.cornerB = b.vec("cornerB", s.cornerB);
+        // Identical corners are a mistake, except in an animation growing a box from a point.
+        if (s.cornerA == s.cornerB && !animated_) {
+            fail(b.where("cornerB"), "the corners of this Box are the same point");
+        }
+        return s;
+    }
+    case ObjectType::Plane: {
+        scene::PlaneShape s;
+        b.nonZeroVector("normal", "a plane needs a direction");
+        s.normal = b.vec("normal", s.normal);
+        s.position = b.vec("position", s.position);
+        return s;
+    }
+    case ObjectType::Cylinder: {
+        scene::CylinderShape s;
+        b.nonNegative("radius");
+        s.base = b.vec("base", s.base);
+        s.top = b.vec("top", s.top);
+        if (s.base == s.top) {
+            fail(b.where("top"), "the base and top of this Cylinder are the same point");
+        }
+        s.radius = b.number("radius", s.radius);
+        s.open = b.flag("open", s.open);
+        return s;
+    }
+    case ObjectType::Cone: {
+        scene::ConeShape s;
+        b.nonNegative("baseradius");
+        b.nonNegative("topradius");
+        s.base = b.vec("base", s.base);
+        s.top = b.vec("top", s.top);
+        if (s.base == s.top) {
+            fail(b.where("top"), "the base and top of this Cone are the same point");
+        }
+        s.baseRadius = b.number("baseradius", s.baseRadius);
+        s.topRadius = b.number("topradius", s.topRadius);
+        s.open = b.flag("open", s.open);
+        return s;
+    }
+    case ObjectType::Torus:
+    default: {
+        scene::TorusShape s;
+        b.nonNegative("major");
+        b.nonNegative("minor");
+        b.nonZeroVector("axis", "a torus needs an axis");
+        s.center = b.vec("center", s.center);
+        s.major = b.number("major", s.major);
+        s.minor = b.number("minor", s.minor);
+        s.axis = b.vec("axis", s.axis);
+        return s;
+    }
+    }
+}
+
+scene::Shape Interpreter::surfaceShape(ObjectBuilder& b) {
+    switch (b.info.type) {
+    case ObjectType::Disc: {
+        scene::DiscShape s;
+        b.nonNegative("radius");
+        b.nonNegative("hole");
+        b.nonZeroVector("normal", "a disc needs a direction");
+        s.center = b.vec("center", s.center);
+        s.normal = b.vec("normal", s.normal);
+        s.radius = b.number("radius", s.radius);
+        s.hole = b.number("hole", s.hole);
+        if (s.hole > s.radius) {
+            fail(b.where("hole"), "the hole of this Disc is larger than its radius");
+        }
+        return s;
+    }
+    case ObjectType::Quad: {
+        scene::QuadShape s;
+        s.corner = b.vec("corner", s.corner);
+        s.edgeA = b.vec("edgeA", s.edgeA);
+        s.edgeB = b.vec("edgeB", s.edgeB);
+        return s;
+    }
+    case ObjectType::Triangle: {
+        scene::TriangleShape s;
+        s.a = b.vec("a", s.a);
+        s.b = b.vec("b", s.b);
+        s.c = b.vec("c", s.c);
+        return s;
+    }
+    case ObjectType::Mesh:
+    default: {
+        scene::MeshShape s;
+        s.resolvedFile = findFile(b, "file", "mesh");
+        s.file = b.text("file", s.file);
+        return s;
+    }
+    }
+}
+
+Value Interpreter::buildMaterial(const ObjectBuilder& b) {
+    scene::FinishDesc finish = readFinish(b);
+    scene::MaterialDesc& m = scene_.materials.emplace_back();
+    m.color = b.color("color", m.color);
+    m.finish = scene_.internFinish(finish);
+    m.source = span(b.range);
+    return Value::object(ValueKind::Material, b.info.type,
+                         static_cast<uint32_t>(scene_.materials.size() - 1));
+}
+
+Value Interpreter::buildCamera(ObjectBuilder& b) {
+    scene::CameraDesc c;
+    c.position = b.vec("position", c.position);
+    c.pointing = b.vec("pointing", c.pointing);
+    if (c.position == c.pointing) {
+        fail(b.where("pointing"), "the camera points at its own position");
+    }
+    c.fov = b.number("fov", c.fov);
+    if (c.fov <= 0 || c.fov >= 180) {
+        fail(b.where("fov"),
+             fmt::format("fov must be in (0, 180) degrees, not {}", formatFloat(c.fov)));
+    }
+    c.aperture = b.number("aperture", c.aperture);
+    if (c.aperture < 0) fail(b.where("aperture"), "aperture must not be negative");
+    c.focalDistance = b.number("focaldistance", glm::length(c.pointing - c.position));
+    if (c.focalDistance <= 0) fail(b.where("focaldistance"), "focaldistance must be positive");
+    readApertureShape(b, c);
+    c.up = b.vec("up", c.up);
+    b.nonZeroVector("up", "the camera needs an up direction");
+    c.roll = b.number("roll", c.roll);
+    if (b.get("projection")) {
+        c.projection = b.lowerText("projection") == "spherical" ? scene::Projection::Spherical
+                                                                : scene::Projection::Pinhole;
+    }
+    c.source = span(b.range);
+    cameras_.push_back(c);
+    return Value::object(ValueKind::Camera, b.info.type,
+                         static_cast<uint32_t>(cameras_.size() - 1));
+}
+
+Value Interpreter::buildLight(const ObjectBuilder& b) {
+    ObjectType type = b.info.type;
+    scene::LightDesc l;
+    l.kind = type == ObjectType::PointLight      ? scene::LightKind::Point
+             : type == ObjectType::ParallelLight ? scene::LightKind::Parallel
+             : type == ObjectType::SpotLight     ? scene::LightKind::Spot
+                                                 : scene::LightKind::Area;
+    l.origin = b.vec(type == ObjectType::AreaLight ? "corner" : "origin", l.origin);
+    l.from = b.vec("from", l.from);
+    l.pointing = b.vec("pointing", l.pointing);
+    l.edgeA = b.vec("edgeA", l.edgeA);
+    l.edgeB = b.vec("edgeB", l.edgeB);
+    l.color = b.color("color", l.color);
+    l.falloff = b.number("falloff", l.falloff);
+    l.ambient = b.number("ambient", l.ambient);
+    l.angle = b.number("angle", l.angle);
+    l.softness = b.number("softness", l.softness);
+    if (type == ObjectType::ParallelLight && l.from == l.pointing) {
+        fail(b.where("pointing"), "a ParallelLight needs 'from' and 'pointing' to differ");
+    }
+    if (type == ObjectType::SpotLight) {
+        if (l.origin == l.pointing) {
+            fail(b.where("pointing"), "a SpotLight needs 'origin' and 'pointing' to differ");
+        }
+        if (l.angle <= 0 || l.angle >= 180) {
+            fail(b.where("angle"), "a SpotLight's angle must be in (0, 180) degrees");
+        }
+        if (l.softness < 0 || l.softness > 1) {
+            fail(b.where("softness"), "softness must be between 0 and 1");
+        }
+    }
+    if (type == ObjectType::AreaLight && glm::length(glm::cross(l.edgeA, l.edgeB)) == 0) {
+        fail(b.where("edgeB"), "the edges of this AreaLight are parallel or zero; it has no area");
+    }
+    l.source = span(b.range);
+    lights_.push_back(l);
+    lightInfo_.push_back({type, b.range, false});
+    return Value::object(ValueKind::Light, type, static_cast<uint32_t>(lights_.size() - 1));
+}
+
+Value Interpreter::buildBackground(const ObjectBuilder& b) {
+    checkBackgroundMode(b);
+    scene::BackgroundDesc bg;
+    if (b.get("color")) {
+        bg.kind = scene::BackgroundKind::Solid;
+        bg.color = b.color("color", bg.color);
+    } else if (b.get("horizon")) {
+        bg.kind = scene::BackgroundKind::Gradient;
+        bg.horizon = b.color("horizon", bg.horizon);
+        bg.sky = b.color("sky", bg.sky);
+    } else {
+        bg.kind = scene::BackgroundKind::Image;
+        bg.image = b.text("image", bg.image);
+        bg.resolvedImage = findFile(b, "image", "image");
+        bg.angle = b.number("angle", bg.angle);
+    }
+    bg.source = span(b.range);
+    backgrounds_.push_back(std::move(bg));
+    return Value::object(ValueKind::Background, b.info.type,
+                         static_cast<uint32_t>(backgrounds_.size() - 1));
+}
+
+Value Interpreter::buildTexture(ObjectBuilder& b) {
+    ObjectType type = b.info.type;
+    scene::TextureDesc t;
+    t.kind = static_cast<scene::TextureKind>(static_cast<int>(type) -
+                                             static_cast<int>(ObjectType::Checker));
+    t.a = b.color("a", t.a);
+    t.b = b.color("b", t.b);
+    t.size = b.number("size", t.size);
+    if (b.get("size") && t.size <= 0) fail(b.where("size"), "a texture's size must be positive");
+    t.axis = b.vec("axis", t.axis);
+    if (b.get("axis")) b.nonZeroVector("axis", "stripes need a direction");
+    int64_t octaves = b.integer("octaves", t.octaves);
+    if (octaves < 1 || octaves > 16) fail(b.where("octaves"), "octaves must be between 1 and 16");
+    t.octaves = static_cast<int>(octaves);
+    t.turbulence =
+        b.number("turbulence", type == ObjectType::Wood ? kWoodTurbulence : t.turbulence);
+    t.rings = b.number("rings", t.rings);
+    t.strength = b.number("strength", t.strength);
+    if (type == ObjectType::Image || type == ObjectType::ImageBump) {
+        t.file = b.text("file", t.file);
+        t.resolvedFile = findFile(b, "file", "image");
+        readMapping(b, t);
+    }
+    t.source = span(b.range);
+    scene_.textures.push_back(std::move(t));
+    return Value::object(ValueKind::Texture, type,
+                         static_cast<uint32_t>(scene_.textures.size() - 1));
+}
+
+void Interpreter::execSettings(const SettingsStmt* node) {
+    SourceRange keyword{node->range.file, node->range.begin, node->range.begin + 8};
+    if (settings_) {
+        Diagnostic& d =
+            diagnostics_.error(node->range.begin + 8 <= node->range.end ? keyword : node->range,
+                               "a second Settings block; a script has at most one");
+        d.notes.push_back(
+            {{settings_->range.file, settings_->range.begin, settings_->range.begin + 8},
+             "the first Settings block is here"});
+        throw EvalError{};
+    }
+    settings_ = node;
+    ObjectBuilder b{*this, objectInfo(ObjectType::Settings), node->range, keyword};
+    b.evaluate(node->attributes);
+    buildSettings(b);
+}
+
+void Interpreter::buildSettings(const ObjectBuilder& b) {
+    // A value out of its range is reported once the whole script has run (docs/language.md,
+    // "Settings"), so what the statements after Settings print and warn does not depend on it.
+    auto problem = [&](std::string_view name, std::string message) {
+        if (!settingsProblem_) settingsProblem_ = DeferredError{b.where(name), std::move(message)};
+    };
+    auto ranged = [&](std::string_view name, int absent, int64_t minimum, int64_t maximum) {
+        int64_t v = b.integer(name, absent);
+        if (v < minimum || v > maximum) {
+            problem(name,
+                    fmt::format("{} must be between {} and {}, not {}", name, minimum, maximum, v));
+        }
+        return static_cast<int>(v);
+    };
+    auto imageSize = [&](std::string_view name, int absent) {
+        int64_t v = b.integer(name, absent);
+        uint32_t maxSize = options_.limits.maxSize;
+        if (v < 1 || v > maxSize) {
+            problem(name, fmt::format("{} must be between 1 and {} pixels, not {}{}", name, maxSize,
+                                      v, v > maxSize ? "; raise the limit with --max-size" : ""));
+        }
+        return static_cast<int>(v);
+    };
+
+    scene::SettingsDesc& s = scene_.settings;
+    s.title = b.text("title", s.title);
+    s.author = b.text("author", s.author);
+    s.date = b.text("date", s.date);
+    s.notes = b.text("notes", s.notes);
+    s.width = imageSize("width", s.width);
+    s.height = imageSize("height", s.height);
+    if (const Value* gamma = b.get("gamma")) {
+        if (gamma->kind == ValueKind::String) {
+            s.srgb = true; // the builder allows only "srgb"
+        } else {
+            s.gamma = gamma->asDouble();
+        }
+    }
+    s.supersampling = ranged("supersampling", s.supersampling, 1, 64);
+    s.dofSamples = ranged("dofsamples", s.dofSamples, 1, 100000);
+    s.recursionDepth = ranged("recursiondepth", s.recursionDepth, 0, 1000);
+    if (b.get("antialias")) {
+        std::string antialias = b.lowerText("antialias");
+        s.antialias = antialias == "adaptive"       ? scene::Antialias::Adaptive
+                      : antialias == "showadaptive" ? scene::Antialias::ShowAdaptive
+                                                    : scene::Antialias::Grid;
+    }
+    s.aaThreshold = b.number("aathreshold", s.aaThreshold);
+    if (s.aaThreshold < 0) problem("aathreshold", "aathreshold must not be negative");
+    s.aaDepth = ranged("aadepth", s.aaDepth, 0, 8);
+    s.shadowSamples = ranged("shadowsamples", s.shadowSamples, 1, 4096);
+    s.glossySamples = ranged("glossysamples", s.glossySamples, 1, 4096);
+    int64_t seed = b.integer("seed", static_cast<int64_t>(s.seed));
+    if (seed < 0) problem("seed", "seed must not be negative");
+    s.seed = static_cast<uint64_t>(seed);
+    s.ambient = b.color("ambient", s.ambient);
+    recordSettingsLinks(b);
+}
+
+void Interpreter::recordSettingsLinks(const ObjectBuilder& b) {
+    if (const Value* camera = b.get("camera")) settingsLinks_.camera = camera->index;
+    if (const Value* lights = b.get("lights")) settingsLinks_.lights = lights->list;
+    if (const Value* background = b.get("background")) {
+        settingsLinks_.background = *background;
+        settingsLinks_.backgroundRange = b.where("background");
+    }
+}
+
+} // namespace crt::lang

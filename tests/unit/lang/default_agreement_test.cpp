@@ -1,0 +1,249 @@
+// Attribute defaults have one source, the scene description's structs; the schema documents
+// them for hover, completion and the docs. These tests keep the two from drifting apart:
+// through the interpreter, an object built without an attribute must describe the same scene
+// as one given the attribute's documented default, written out in the script.
+#include <catch2/catch.hpp>
+
+#include "interpreter.hpp"
+#include "object_schema.hpp"
+#include "scene/scene_json.hpp"
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <charconv>
+#include <string>
+#include <string_view>
+#include <utility>
+
+using namespace crt::lang;
+using Json = nlohmann::json;
+
+namespace {
+
+/// A script using one object of each type, with its required attributes; '@' is where the
+/// attribute under test goes. The object is linked into the scene (drawn, listed in
+/// Settings, a material or texture of something drawn), since unused ones are dropped.
+struct Usage {
+    ObjectType type;
+    std::string_view script;
+};
+
+#define CRT_SPHERE_WITH(material)                                                                  \
+    "Scene { Sphere { center -> vec3(0, 0, 0) radius -> 1 material -> " material " } }"
+
+constexpr Usage kUsages[] = {
+    {ObjectType::Settings, "Settings { @ }"},
+    {ObjectType::Camera,
+     "Settings { camera -> Camera { position -> vec3(1, 2, -5) pointing -> vec3(0, 1, 0) @ } }"},
+    {ObjectType::PointLight,
+     "Settings { lights -> [PointLight { origin -> vec3(0, 5, 0) color -> rgb(1, 1, 1) @ }] }"},
+    {ObjectType::ParallelLight, "Settings { lights -> [ParallelLight { from -> vec3(0, 5, 0) "
+                                "pointing -> vec3(0, 0, 0) color -> rgb(1, 1, 1) @ }] }"},
+    {ObjectType::SpotLight, "Settings { lights -> [SpotLight { origin -> vec3(0, 5, 0) pointing -> "
+                            "vec3(0, 0, 0) color -> rgb(1, 1, 1) @ }] }"},
+    {ObjectType::AreaLight,
+     "Settings { lights -> [AreaLight { corner -> vec3(0, 5, 0) edgeA -> vec3(1, 0, 0) "
+     "edgeB -> vec3(0, 0, 1) color -> rgb(1, 1, 1) @ }] }"},
+    {ObjectType::Material, CRT_SPHERE_WITH("Material { @ }")},
+    {ObjectType::Background, "Settings { background -> Background { image -> \"sky.png\" @ } }"},
+    {ObjectType::Sphere, "Scene { Sphere { center -> vec3(0, 0, 0) radius -> 1 @ } }"},
+    {ObjectType::Box, "Scene { Box { cornerA -> vec3(0, 0, 0) cornerB -> vec3(1, 1, 1) @ } }"},
+    {ObjectType::Plane, "Scene { Plane { normal -> vec3(0, 1, 0) position -> vec3(0, 0, 0) @ } }"},
+    {ObjectType::Cylinder,
+     "Scene { Cylinder { base -> vec3(0, 0, 0) top -> vec3(0, 1, 0) radius -> 1 @ } }"},
+    {ObjectType::Cone,
+     "Scene { Cone { base -> vec3(0, 0, 0) baseradius -> 1 top -> vec3(0, 1, 0) @ } }"},
+    {ObjectType::Torus, "Scene { Torus { center -> vec3(0, 0, 0) major -> 2 minor -> 0.5 @ } }"},
+    {ObjectType::Disc,
+     "Scene { Disc { center -> vec3(0, 0, 0) normal -> vec3(0, 1, 0) radius -> 1 @ } }"},
+    {ObjectType::Quad,
+     "Scene { Quad { corner -> vec3(0, 0, 0) edgeA -> vec3(1, 0, 0) edgeB -> vec3(0, 0, 1) @ } }"},
+    {ObjectType::Triangle,
+     "Scene { Triangle { a -> vec3(0, 0, 0) b -> vec3(1, 0, 0) c -> vec3(0, 1, 0) @ } }"},
+    {ObjectType::Mesh, "Scene { Mesh { file -> \"m.obj\" @ } }"},
+    {ObjectType::Checker, CRT_SPHERE_WITH("Material { texture -> Checker { @ } }")},
+    {ObjectType::Stripes, CRT_SPHERE_WITH("Material { texture -> Stripes { @ } }")},
+    {ObjectType::Noise, CRT_SPHERE_WITH("Material { texture -> Noise { @ } }")},
+    {ObjectType::Marble, CRT_SPHERE_WITH("Material { texture -> Marble { @ } }")},
+    {ObjectType::Wood, CRT_SPHERE_WITH("Material { texture -> Wood { @ } }")},
+    {ObjectType::Image, CRT_SPHERE_WITH("Material { texture -> Image { file -> \"t.png\" @ } }")},
+    {ObjectType::NoiseBump, CRT_SPHERE_WITH("Material { bump -> NoiseBump { @ } }")},
+    {ObjectType::ImageBump,
+     CRT_SPHERE_WITH("Material { bump -> ImageBump { file -> \"b.png\" @ } }")},
+};
+
+/// Defaults documented as a rule rather than a value; each has its own test below.
+constexpr std::pair<ObjectType, std::string_view> kRuleDefaults[] = {
+    {ObjectType::Camera, "focaldistance"}, // the distance from position to pointing
+    {ObjectType::Material, "diffuse"},     // what reflection and refraction leave
+    {ObjectType::Material, "texture"},     // none
+    {ObjectType::Material, "bump"},        // none
+};
+
+bool isRuleDefault(ObjectType type, std::string_view attribute) {
+    for (auto [t, name] : kRuleDefaults) {
+        if (t == type && name == attribute) return true;
+    }
+    return false;
+}
+
+std::string_view usageOf(ObjectType type) {
+    for (const Usage& usage : kUsages) {
+        if (usage.type == type) return usage.script;
+    }
+    return {};
+}
+
+std::string withAttribute(std::string_view script, const std::string& attribute) {
+    std::string text(script);
+    text.replace(text.find('@'), 1, attribute);
+    return text;
+}
+
+crt::scene::SceneDesc evaluate(const std::string& text) {
+    EvalOptions options;
+    options.checkFiles = false;
+    Compilation c = compile("defaults.crt", text, options);
+    std::string errors;
+    for (const Diagnostic& d : c.diagnostics.items()) {
+        if (d.severity == Severity::Error) errors += d.message + "\n";
+    }
+    INFO(text);
+    INFO(errors);
+    REQUIRE(c.scene.has_value());
+    return *c.scene;
+}
+
+void dropSources(Json& json) {
+    if (json.is_object()) {
+        json.erase("source");
+        for (auto& [key, value] : json.items()) dropSources(value);
+    } else if (json.is_array()) {
+        for (Json& item : json) dropSources(item);
+    }
+}
+
+/// The scene a script describes, without where its objects were written.
+Json described(const std::string& text) {
+    Json json = Json::parse(crt::scene::sceneToJson(evaluate(text)));
+    dropSources(json);
+    return json;
+}
+
+double parsed(std::string_view text) {
+    double value = 0;
+    std::from_chars(text.data(), text.data() + text.size(), value);
+    return value;
+}
+
+/// A valid value other than the default, to show the comparison sees the attribute at all.
+std::string otherValue(const AttributeInfo& attr) {
+    switch (attr.type) {
+    case AttrType::Int: return std::to_string(static_cast<int64_t>(parsed(attr.defaultText)) + 1);
+    case AttrType::Float:
+    case AttrType::Gamma: return std::to_string(parsed(attr.defaultText) * 0.5 + 0.3);
+    case AttrType::Bool: return attr.defaultText == "false" ? "true" : "false";
+    case AttrType::String: return "\"other\"";
+    case AttrType::Vec3: return "vec3(0.25, 0.5, 0.75)";
+    case AttrType::Color:
+    case AttrType::Background: return "rgb(0.25, 0.5, 0.75)";
+    case AttrType::Choice:
+    case AttrType::Aperture:
+        for (std::string_view choice : attr.choices) {
+            std::string written = fmt::format("\"{}\"", choice);
+            if (written != attr.defaultText) return written;
+        }
+        return "";
+    case AttrType::Material: return "Material { color -> rgb(0.25, 0.5, 0.75) }";
+    case AttrType::Camera: return "Camera { position -> vec3(0, 0, -2) pointing -> vec3(0, 1, 0) }";
+    case AttrType::LightList:
+        return "[PointLight { origin -> vec3(0, 5, 0) color -> rgb(1, 1, 1) }]";
+    case AttrType::Texture:
+    case AttrType::Bump: return "";
+    }
+    return "";
+}
+
+} // namespace
+
+TEST_CASE("every object type has a usage for the default checks", "[defaults]") {
+    for (const ObjectInfo& info : allObjectTypes()) {
+        INFO(info.name);
+        CHECK(!usageOf(info.type).empty());
+    }
+}
+
+TEST_CASE("an absent attribute reads as its documented default", "[defaults]") {
+    int checked = 0;
+    for (const ObjectInfo& info : allObjectTypes()) {
+        std::string_view usage = usageOf(info.type);
+        REQUIRE(!usage.empty());
+        for (const AttributeInfo& attr : info.attributes) {
+            if (attr.required || attr.defaultText.empty() || isRuleDefault(info.type, attr.name)) {
+                continue;
+            }
+            INFO(info.name << "." << attr.name << " documented as " << attr.defaultText);
+            Json absent = described(withAttribute(usage, ""));
+            Json given = described(withAttribute(usage, std::string(attr.name) + " -> " +
+                                                            std::string(attr.defaultText)));
+            std::string differences = Json::diff(absent, given).dump();
+            CHECK(differences == "[]");
+            std::string other = otherValue(attr);
+            REQUIRE(!other.empty());
+            CHECK(described(withAttribute(usage, std::string(attr.name) + " -> " + other)) !=
+                  absent);
+            ++checked;
+        }
+    }
+    CHECK(checked > 60); // every literal default of every type, not a few
+}
+
+TEST_CASE("defaults documented as rules follow their rule", "[defaults]") {
+    for (auto [type, name] : kRuleDefaults) {
+        const ObjectInfo& info = objectInfo(type);
+        int slot = findAttribute(info, name);
+        REQUIRE(slot >= 0);
+        INFO(info.name << "." << name);
+        CHECK_FALSE(info.attributes[static_cast<size_t>(slot)].required);
+    }
+
+    SECTION("a camera focuses at the point it looks at") {
+        CHECK(objectInfo(ObjectType::Camera)
+                  .attributes[findAttribute(objectInfo(ObjectType::Camera), "focaldistance")]
+                  .defaultText == "|pointing - position|");
+        crt::scene::SceneDesc s = evaluate(withAttribute(usageOf(ObjectType::Camera), ""));
+        CHECK(s.camera.focalDistance == glm::length(glm::dvec3(0, 1, 0) - glm::dvec3(1, 2, -5)));
+        // Without a camera, the documented default camera's own rule holds too.
+        crt::scene::SceneDesc none = evaluate("Settings { }");
+        CHECK(none.camera.focalDistance ==
+              glm::length(none.camera.pointing - none.camera.position));
+    }
+
+    SECTION("diffuse is what reflection and refraction leave, never negative") {
+        const ObjectInfo& material = objectInfo(ObjectType::Material);
+        CHECK(material.attributes[findAttribute(material, "diffuse")].defaultText ==
+              "max(0, 1 - reflectivity - transparency)");
+        for (auto [reflectivity, transparency] : {std::pair{0.0, 0.0}, {0.25, 0.5}, {0.75, 0.5}}) {
+            crt::scene::SceneDesc s =
+                evaluate(withAttribute(usageOf(ObjectType::Material),
+                                       "reflectivity -> " + std::to_string(reflectivity) +
+                                           " transparency -> " + std::to_string(transparency)));
+            REQUIRE(s.materials.size() == 1);
+            CHECK(s.finishOf(s.materials[0]).diffuse ==
+                  std::max(0.0, 1.0 - reflectivity - transparency));
+        }
+    }
+
+    SECTION("a material has no texture and no bump unless given") {
+        const ObjectInfo& material = objectInfo(ObjectType::Material);
+        CHECK(material.attributes[findAttribute(material, "texture")].defaultText == "none");
+        CHECK(material.attributes[findAttribute(material, "bump")].defaultText == "none");
+        crt::scene::SceneDesc s = evaluate(withAttribute(usageOf(ObjectType::Material), ""));
+        REQUIRE(s.materials.size() == 1);
+        CHECK(s.finishOf(s.materials[0]).texture == -1);
+        CHECK(s.finishOf(s.materials[0]).bump == -1);
+        CHECK(s.textures.empty());
+    }
+}
