@@ -6,6 +6,8 @@
 #include "tracer/image_io/encoding.hpp"
 #include "tracer/image_io/image_io.hpp"
 
+#include "scratch_folder.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
@@ -27,41 +29,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh directory for this process, removed when the tests end.
-const fs::path& scratch() {
-    struct Dir {
-        fs::path path =
-            fs::temp_directory_path() / ("crt_image_io_test." + std::to_string(getpid()));
-        Dir() {
-            fs::remove_all(path);
-            fs::create_directories(path);
-        }
-        ~Dir() {
-            std::error_code ec;
-            fs::remove_all(path, ec);
-        }
-    };
-    static Dir dir;
-    return dir.path;
-}
-
-std::string scratchFile(const std::string& name) {
-    return (scratch() / name).string();
-}
-
-std::vector<std::string> scratchListing() {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(scratch()))
-        names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
-bool openImageIoMapped() {
-    std::ifstream maps("/proc/self/maps");
-    const std::string text{std::istreambuf_iterator<char>(maps), std::istreambuf_iterator<char>()};
-    return text.find("libOpenImageIO") != std::string::npos;
-}
+using namespace crt::tracer::image_io::test;
 
 // An RGB image whose every value is a multiple of 1/255, so 8-bit formats store it exactly.
 ImageBuffer codeGradient(int width, int height) {
