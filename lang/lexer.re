@@ -1,5 +1,6 @@
 // The re2c lexer for CRT scripts (spec §1). Compiled by re2c into the build tree.
 #include "lexer.hpp"
+#include "string_escape.hpp"
 
 #include <fmt/format.h>
 
@@ -47,22 +48,15 @@ Token Lexer::scanString(const char* start) {
         }
         if (c == '\\') {
             char escaped = p + 1 < end_ ? p[1] : '\0';
-            if (escaped == '"' || escaped == '\\' || escaped == 'n' || escaped == 't') {
-                p += 2;
-                continue;
-            }
             if (escaped == '\n' || escaped == '\r' || p + 1 >= end_) {
                 ++p;
                 continue; // reported as unterminated on the next turn
             }
-            const char* escapeEnd = p + 2;
-            while (escapeEnd < end_ && (static_cast<unsigned char>(*escapeEnd) & 0xC0) == 0x80) {
-                ++escapeEnd;
+            Escape escape = readEscape(std::string_view(p, static_cast<size_t>(end_ - p)), 0);
+            if (!escape.error.empty()) {
+                diagnostics_.error(range(p, p + escape.length), escape.error);
             }
-            diagnostics_.error(range(p, escapeEnd),
-                               fmt::format("unknown escape sequence '{}'; use \\\" \\\\ \\n or \\t",
-                                           std::string_view(p, escapeEnd - p)));
-            p = escapeEnd;
+            p += escape.length;
             continue;
         }
         ++p;

@@ -106,8 +106,20 @@ void readApertureShape(const ObjectBuilder& b, scene::CameraDesc& c) {
             c.apertureBlades = sides;
         }
     }
+    // "circle" and "uniform" (its 2015 name) keep the default disc.
     if (name == "gaussian") c.apertureShape = scene::ApertureShape::Gaussian;
     if (name == "line") c.apertureShape = scene::ApertureShape::Line;
+}
+
+/// Attenuation terms divide the intensity: none negative, and not all zero.
+void checkAttenuation(const ObjectBuilder& b, const glm::dvec3& terms) {
+    if (terms.x < 0 || terms.y < 0 || terms.z < 0) {
+        b.in.fail(b.where("attenuation"), "attenuation terms must not be negative");
+    }
+    if (terms == glm::dvec3(0.0)) {
+        b.in.fail(b.where("attenuation"),
+                  "attenuation needs a positive term; vec3(1, 0, 0) is no attenuation");
+    }
 }
 
 /// A Background takes exactly one mode: a color, a gradient, or an image.
@@ -385,14 +397,18 @@ Value Interpreter::buildLight(const ObjectBuilder& b) {
     l.kind = type == ObjectType::PointLight      ? scene::LightKind::Point
              : type == ObjectType::ParallelLight ? scene::LightKind::Parallel
              : type == ObjectType::SpotLight     ? scene::LightKind::Spot
+             : type == ObjectType::CylinderLight ? scene::LightKind::Cylinder
                                                  : scene::LightKind::Area;
     l.origin = b.vec(type == ObjectType::AreaLight ? "corner" : "origin", l.origin);
     l.from = b.vec("from", l.from);
+    l.to = b.vec("to", l.to);
     l.pointing = b.vec("pointing", l.pointing);
     l.edgeA = b.vec("edgeA", l.edgeA);
     l.edgeB = b.vec("edgeB", l.edgeB);
     l.color = b.color("color", l.color);
     l.falloff = b.number("falloff", l.falloff);
+    l.attenuation = b.vec("attenuation", l.attenuation);
+    checkAttenuation(b, l.attenuation);
     l.ambient = b.number("ambient", l.ambient);
     l.angle = b.number("angle", l.angle);
     l.softness = b.number("softness", l.softness);
@@ -409,6 +425,9 @@ Value Interpreter::buildLight(const ObjectBuilder& b) {
         if (l.softness < 0 || l.softness > 1) {
             fail(b.where("softness"), "softness must be between 0 and 1");
         }
+    }
+    if (type == ObjectType::CylinderLight && l.from == l.to) {
+        fail(b.where("to"), "a CylinderLight needs 'from' and 'to' to differ; it has no length");
     }
     if (type == ObjectType::AreaLight && glm::length(glm::cross(l.edgeA, l.edgeB)) == 0) {
         fail(b.where("edgeB"), "the edges of this AreaLight are parallel or zero; it has no area");
@@ -528,10 +547,13 @@ void Interpreter::buildSettings(const ObjectBuilder& b) {
     s.supersampling = ranged("supersampling", s.supersampling, 1, 64);
     s.dofSamples = ranged("dofsamples", s.dofSamples, 1, 100000);
     s.recursionDepth = ranged("recursiondepth", s.recursionDepth, 0, 1000);
+    if (b.get("reflectiondepth")) s.reflectionDepth = ranged("reflectiondepth", 0, 0, 1000);
+    if (b.get("refractiondepth")) s.refractionDepth = ranged("refractiondepth", 0, 0, 1000);
     if (b.get("antialias")) {
         std::string antialias = b.lowerText("antialias");
         s.antialias = antialias == "adaptive"       ? scene::Antialias::Adaptive
                       : antialias == "showadaptive" ? scene::Antialias::ShowAdaptive
+                      : antialias == "stratified"   ? scene::Antialias::Stratified
                                                     : scene::Antialias::Grid;
     }
     s.aaThreshold = b.number("aathreshold", s.aaThreshold);

@@ -8,10 +8,13 @@ namespace {
 
 using A = AttrType;
 
-constexpr std::string_view kAntialiasChoices[] = {"grid", "adaptive", "showadaptive"};
+constexpr std::string_view kAntialiasChoices[] = {"grid", "adaptive", "showadaptive",
+                                                  "stratified"};
 constexpr std::string_view kProjectionChoices[] = {"pinhole", "spherical"};
-constexpr std::string_view kApertureChoices[] = {"circle",  "triangle", "square",   "pentagon",
-                                                 "hexagon", "octagon",  "gaussian", "line"};
+// "uniform" is the 2015 name of the circle (a disc sampled uniformly), kept for old scripts.
+constexpr std::string_view kApertureChoices[] = {"circle",  "triangle", "square", "pentagon",
+                                                 "hexagon", "octagon",  "gaussian", "line",
+                                                 "uniform"};
 constexpr std::string_view kMappingChoices[] = {"uv", "planar", "spherical", "cylindrical",
                                                 "cubic"};
 
@@ -32,11 +35,16 @@ constexpr AttributeInfo kSettings[] = {
     {"supersampling", A::Int, false, "1", "n: an n x n grid of samples per pixel."},
     {"dofsamples", A::Int, false, "1", "Lens samples per pixel sample (depth of field needs > 1)."},
     {"recursiondepth", A::Int, false, "3", "How many reflections and refractions deep rays go."},
-    {"antialias", A::Choice, false, "\"grid\"", "Anti-aliasing: grid, adaptive or showadaptive.",
+    {"reflectiondepth", A::Int, false, "recursiondepth",
+     "How many reflections deep rays go; overrides recursiondepth for reflections."},
+    {"refractiondepth", A::Int, false, "recursiondepth",
+     "How many refractions deep rays go; overrides recursiondepth for refractions."},
+    {"antialias", A::Choice, false, "\"grid\"",
+     "Anti-aliasing: grid, adaptive, showadaptive or stratified (jittered grid).",
      kAntialiasChoices},
     {"aathreshold", A::Float, false, "0.1", "Adaptive anti-aliasing: colour difference that subdivides."},
     {"aadepth", A::Int, false, "2", "Adaptive anti-aliasing: maximum subdivision levels."},
-    {"shadowsamples", A::Int, false, "16", "Samples per area light."},
+    {"shadowsamples", A::Int, false, "16", "Samples per area or cylinder light."},
     {"glossysamples", A::Int, false, "16", "Rays per glossy reflection."},
     {"seed", A::Int, false, "0", "Seed of the renderer's sampling."},
     {"ambient", A::Color, false, "rgb(0,0,0)", "Global ambient light."},
@@ -50,7 +58,7 @@ constexpr AttributeInfo kCamera[] = {
     {"focaldistance", A::Float, false, "|pointing - position|", "Distance of the sharp plane."},
     {"apertureshape", A::Aperture, false, "\"circle\"",
      "Lens (bokeh) shape: circle, triangle, square, pentagon, hexagon, octagon, gaussian, line, "
-     "or a number of polygon sides.",
+     "uniform (the 2015 name of the circle aperture), or a number of polygon sides.",
      kApertureChoices},
     {"up", A::Vec3, false, "vec3(0,1,0)", "Which way is up."},
     {"roll", A::Float, false, "0", "Rotation about the view axis, degrees."},
@@ -61,6 +69,8 @@ constexpr AttributeInfo kPointLight[] = {
     {"origin", A::Vec3, true, "", "Where the light is."},
     {"color", A::Color, true, "", "The light's colour and intensity."},
     {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2, d the whole ray path."},
+    {"attenuation", A::Vec3, false, "vec3(1,0,0)",
+     "vec3(c0, c1, c2): intensity / (c0 + c1 d + c2 d^2), d the distance to the light."},
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
 };
 
@@ -76,6 +86,8 @@ constexpr AttributeInfo kSpotLight[] = {
     {"pointing", A::Vec3, true, "", "The point the spot aims at."},
     {"color", A::Color, true, "", "The light's colour and intensity."},
     {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2."},
+    {"attenuation", A::Vec3, false, "vec3(1,0,0)",
+     "vec3(c0, c1, c2): intensity / (c0 + c1 d + c2 d^2), d the distance to the light."},
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
     {"angle", A::Float, false, "30", "Full cone angle, degrees."},
     {"softness", A::Float, false, "0.2", "Outer fraction of the cone that fades to dark."},
@@ -87,6 +99,18 @@ constexpr AttributeInfo kAreaLight[] = {
     {"edgeB", A::Vec3, true, "", "Second edge from the corner."},
     {"color", A::Color, true, "", "Total colour and intensity."},
     {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2."},
+    {"attenuation", A::Vec3, false, "vec3(1,0,0)",
+     "vec3(c0, c1, c2): intensity / (c0 + c1 d + c2 d^2), d the distance to the light."},
+    {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
+};
+
+constexpr AttributeInfo kCylinderLight[] = {
+    {"from", A::Vec3, true, "", "One end of the emitting segment (the tube's axis)."},
+    {"to", A::Vec3, true, "", "The other end; must differ from 'from'."},
+    {"color", A::Color, true, "", "Total colour and intensity."},
+    {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2."},
+    {"attenuation", A::Vec3, false, "vec3(1,0,0)",
+     "vec3(c0, c1, c2): intensity / (c0 + c1 d + c2 d^2), d the distance to the light."},
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
 };
 
@@ -230,6 +254,8 @@ constexpr ObjectInfo kObjects[] = {
     {T::ParallelLight, "ParallelLight", C::Light, false, "Parallel light, like the sun.", kParallelLight},
     {T::SpotLight, "SpotLight", C::Light, false, "A point light limited to a cone.", kSpotLight},
     {T::AreaLight, "AreaLight", C::Light, false, "A parallelogram that emits light (soft shadows).", kAreaLight},
+    {T::CylinderLight, "CylinderLight", C::Light, false,
+     "A segment that emits light, as a fluorescent tube.", kCylinderLight},
     {T::Material, "Material", C::Material, false, "How a surface looks.", kMaterial},
     {T::Background, "Background", C::Background, false, "What rays that hit nothing see.", kBackground},
     {T::Sphere, "Sphere", C::Entity, true, "A sphere (solid).", kSphere},

@@ -16,6 +16,7 @@ enum class ObjectType : uint8_t {
     ParallelLight,
     SpotLight,
     AreaLight,
+    CylinderLight,
     Material,
     Background,
     Sphere,

@@ -3,6 +3,7 @@
 
 #include "grammar.hpp"
 #include "parser_support.hpp"
+#include "string_escape.hpp"
 
 namespace crt::lang {
 namespace {
@@ -72,13 +73,10 @@ std::string_view ParseContext::decodeString(const Token& token) {
             decoded += raw[i];
             continue;
         }
-        switch (raw[++i]) {
-        case 'n': decoded += '\n'; break;
-        case 't': decoded += '\t'; break;
-        case '"': decoded += '"'; break;
-        case '\\': decoded += '\\'; break;
-        default: break; // already reported by the lexer
-        }
+        Escape escape = readEscape(raw, i);
+        // A bad escape was reported by the lexer; it decodes to nothing.
+        if (escape.error.empty()) appendUtf8(decoded, escape.codePoint);
+        i += escape.length - 1;
     }
     return arena.copy(decoded);
 }

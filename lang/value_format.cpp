@@ -24,6 +24,9 @@ std::string quoted(std::string_view text) {
         case '\\': out += "\\\\"; break;
         case '\n': out += "\\n"; break;
         case '\t': out += "\\t"; break;
+        case '\r': out += "\\r"; break;
+        case '\b': out += "\\b"; break;
+        case '\f': out += "\\f"; break;
         default: out += c;
         }
     }

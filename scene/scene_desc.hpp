@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <variant>
@@ -123,17 +124,20 @@ struct EntityDesc {
     SourceSpan source;
 };
 
-enum class LightKind : uint8_t { Point, Parallel, Spot, Area };
+enum class LightKind : uint8_t { Point, Parallel, Spot, Area, Cylinder };
 
 struct LightDesc {
     LightKind kind = LightKind::Point;
     glm::dvec3 origin{0.0};   ///< Point, Spot; Area: corner
-    glm::dvec3 from{0.0};     ///< Parallel
+    glm::dvec3 from{0.0};     ///< Parallel; Cylinder: one end of the segment
+    glm::dvec3 to{0.0};       ///< Cylinder: the other end
     glm::dvec3 pointing{0.0}; ///< Parallel, Spot
     glm::dvec3 edgeA{0.0};    ///< Area
     glm::dvec3 edgeB{0.0};    ///< Area
     Color color{1, 1, 1, 1};
     double falloff = 0;
+    /// Point, Spot, Area: 1 / (c0 + c1·d + c2·d²) with d the distance to the light
+    glm::dvec3 attenuation{1, 0, 0};
     double ambient = 0;
     double angle = 30;     ///< Spot: full cone, degrees
     double softness = 0.2; ///< Spot
@@ -170,7 +174,8 @@ struct BackgroundDesc {
     SourceSpan source;
 };
 
-enum class Antialias : uint8_t { Grid, Adaptive, ShowAdaptive };
+/// Stratified: one jittered sample in each cell of the supersampling grid.
+enum class Antialias : uint8_t { Grid, Adaptive, ShowAdaptive, Stratified };
 
 struct SettingsDesc {
     std::string title, author, date, notes;
@@ -181,6 +186,8 @@ struct SettingsDesc {
     int supersampling = 1;
     int dofSamples = 1;
     int recursionDepth = 3;
+    int reflectionDepth = -1; ///< reflections a path may take; -1: recursionDepth
+    int refractionDepth = -1; ///< refractions a path may take; -1: recursionDepth
     Antialias antialias = Antialias::Grid;
     double aaThreshold = 0.1;
     int aaDepth = 2;
@@ -188,6 +195,12 @@ struct SettingsDesc {
     int glossySamples = 16;
     uint64_t seed = 0;
     Color ambient{0, 0, 0, 1};
+
+    int reflectionLimit() const { return reflectionDepth < 0 ? recursionDepth : reflectionDepth; }
+    int refractionLimit() const { return refractionDepth < 0 ? recursionDepth : refractionDepth; }
+    /// Bounces of either kind a path may take: the larger limit, so that recursiondepth alone
+    /// bounds the whole path as it always has, and an explicit larger limit is reachable.
+    int bounceLimit() const { return std::max(reflectionLimit(), refractionLimit()); }
 };
 
 /// The file to open for an image or mesh: where the front end found it, else the name as

@@ -111,6 +111,7 @@ const char* lightKind(LightKind kind) {
     case LightKind::Parallel: return "ParallelLight";
     case LightKind::Spot: return "SpotLight";
     case LightKind::Area: return "AreaLight";
+    case LightKind::Cylinder: return "CylinderLight";
     }
     return "?";
 }
@@ -150,8 +151,8 @@ std::string compactNumberArrays(const std::string& json) {
 }
 
 Json settingsJson(const SettingsDesc& s) {
-    static const char* antialias[] = {"grid", "adaptive", "showadaptive"};
-    return Json{{"title", s.title}, {"author", s.author}, {"date", s.date}, {"notes", s.notes},
+    static const char* antialias[] = {"grid", "adaptive", "showadaptive", "stratified"};
+    Json json{{"title", s.title}, {"author", s.author}, {"date", s.date}, {"notes", s.notes},
                 {"width", s.width}, {"height", s.height},
                 {"gamma", s.srgb ? Json("srgb") : Json(s.gamma)},
                 {"supersampling", s.supersampling}, {"dofsamples", s.dofSamples},
@@ -159,6 +160,10 @@ Json settingsJson(const SettingsDesc& s) {
                 {"aathreshold", s.aaThreshold}, {"aadepth", s.aaDepth},
                 {"shadowsamples", s.shadowSamples}, {"glossysamples", s.glossySamples},
                 {"seed", s.seed}, {"ambient", color(s.ambient)}};
+    // Only when set apart from recursiondepth, so dumps of scenes without them are unchanged.
+    if (s.reflectionDepth >= 0) json["reflectiondepth"] = s.reflectionDepth;
+    if (s.refractionDepth >= 0) json["refractiondepth"] = s.refractionDepth;
+    return json;
 }
 
 Json cameraJson(const CameraDesc& c) {
@@ -190,9 +195,15 @@ Json lightJson(const LightDesc& l) {
         light["edgeA"] = vec(l.edgeA);
         light["edgeB"] = vec(l.edgeB);
         break;
+    case LightKind::Cylinder:
+        light["from"] = vec(l.from);
+        light["to"] = vec(l.to);
+        break;
     }
     light["color"] = color(l.color);
     if (l.kind != LightKind::Parallel) light["falloff"] = l.falloff;
+    // Only when given, so dumps of scenes without it are unchanged.
+    if (l.attenuation != glm::dvec3(1, 0, 0)) light["attenuation"] = vec(l.attenuation);
     light["ambient"] = l.ambient;
     light["source"] = source(l.source);
     return light;

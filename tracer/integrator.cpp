@@ -1,10 +1,46 @@
 // Shading: c = E + A·C·kd + Σ lights [aₗ·Lₗ·C·kd + Sₗ·Fₗ·(C·kd·Lₗ·(n·l) + K·ks·Lₗ·(r·v)^sh)] + kr·K·R + kt·T.
 #include "tracer/integrator.hpp"
 
+#include "tracer/bump.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace crt::tracer {
+
+namespace {
+
+/// Glossy reflection and transmission: the mean of traceFrom over `samples` directions in a
+/// cone around `axis` (half-angle up to 45° at glossiness 1; Hammersley points uniform in solid
+/// angle, shifted per pixel sample), each folded back to the side `side` points to when it
+/// strays across the surface. Below a glossy bounce only one ray is spawned per bounce, so the
+/// cost does not grow exponentially.
+template <typename TraceFrom>
+Vec3 glossyMean(const Vec3& axis, const Vec3& side, double glossiness, int samples,
+                TraceContext& context, TraceFrom&& traceFrom) {
+    int count = context.inGlossy ? 1 : std::max(samples, 1);
+    double cosMax = std::cos(std::clamp(glossiness, 0.0, 1.0) * kPi / 4);
+    Vec3 helper = std::abs(axis.x) > 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
+    Vec3 t1 = glm::normalize(glm::cross(helper, axis)), t2 = glm::cross(axis, t1);
+    Vec2 shift = context.rng.uniform2();
+    bool wasGlossy = context.inGlossy;
+    context.inGlossy = true;
+    Vec3 sum(0.0);
+    for (int i = 0; i < count; ++i) {
+        Vec2 u = hammersley(static_cast<uint32_t>(i), static_cast<uint32_t>(count), shift);
+        double cosTheta = 1 - u.x * (1 - cosMax);
+        double sinTheta = std::sqrt(std::max(0.0, 1 - cosTheta * cosTheta));
+        double phi = 2 * kPi * u.y;
+        Vec3 dir = cosTheta * axis + sinTheta * (std::cos(phi) * t1 + std::sin(phi) * t2);
+        double below = glm::dot(dir, side);
+        if (below < 0) dir -= 2 * below * side;
+        sum += traceFrom(glm::normalize(dir));
+    }
+    context.inGlossy = wasGlossy;
+    return sum / static_cast<double>(count);
+}
+
+} // namespace
 
 struct Integrator::ShadingPoint {
     SurfaceInteraction si;
@@ -21,7 +57,8 @@ struct Integrator::ShadingPoint {
 Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& settings, std::vector<Light> lights,
                        const Background& background, std::vector<Texture> textures)
     : scene_(scene), settings_(settings), lights_(std::move(lights)), background_(background),
-      textures_(std::move(textures)), ambient_(rgb(settings.ambient)) {
+      textures_(std::move(textures)), ambient_(rgb(settings.ambient)),
+      reflectionLimit_(settings.reflectionLimit()), refractionLimit_(settings.refractionLimit()) {
     for (const ShadingMaterial& m : scene.materials) {
         features_.reflection |= m.reflectivity > 0 || (m.fresnel && m.transparency > 0);
         features_.refraction |= m.transparency > 0;
@@ -64,18 +101,7 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
     sp.n = glm::dot(sp.si.shadingNormal, sp.v) < 0 ? -sp.si.shadingNormal : sp.si.shadingNormal;
     sp.color = m.texture >= 0 ? textures_[m.texture].color(sp.si.objectPoint, sp.si.uv) : rgb(m.color);
     sp.tint = m.metallic ? sp.color : Vec3(1.0);
-    if (m.bump >= 0) {
-        // Perturb the normal by the height field's gradient (finite differences in object space).
-        const Texture& bump = textures_[m.bump];
-        const double h = 1e-4;
-        double h0 = bump.height(sp.si.objectPoint, sp.si.uv);
-        Vec3 gradient(bump.height(sp.si.objectPoint + Vec3(h, 0, 0), sp.si.uv) - h0,
-                      bump.height(sp.si.objectPoint + Vec3(0, h, 0), sp.si.uv) - h0,
-                      bump.height(sp.si.objectPoint + Vec3(0, 0, h), sp.si.uv) - h0);
-        gradient /= h;
-        Vec3 tangential = gradient - glm::dot(gradient, sp.n) * sp.n;
-        sp.n = glm::normalize(sp.n - bump.strength() * 0.1 * tangential);
-    }
+    if (m.bump >= 0) sp.n = bumpedNormal(textures_[m.bump], sp.si, sp.n);
 
     Vec3 c = rgb(m.emission) + ambient_ * sp.color * m.diffuse;
     c += directLight(sp, context);
@@ -105,12 +131,17 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
             }
         }
     }
-    if (kr > 0) c += kr * sp.tint * reflect(sp, depth, medium, context);
-    if (kt > 0 && refracts) {
-        Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, refracted), refracted};
+    // Each kind of bounce also has its own limit (reflectiondepth, refractiondepth).
+    if (kr > 0 && context.reflections < reflectionLimit_) {
+        ++context.reflections;
+        c += kr * sp.tint * reflect(sp, depth, medium, context);
+        --context.reflections;
+    }
+    if (kt > 0 && refracts && context.refractions < refractionLimit_) {
+        ++context.refractions;
         int32_t nextMedium = sp.si.solid ? (entering ? sp.si.material : -1) : medium;
-        ++context.stats.refractionRays;
-        c += kt * trace(next, depth - 1, sp.pathLength, nextMedium, context);
+        c += kt * refract(sp, refracted, depth, nextMedium, context);
+        --context.refractions;
     }
     return c;
 }
@@ -137,6 +168,8 @@ Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) cons
                 double d = ls.distance + sp.pathLength;
                 falloff = light.falloff() / (d * d);
             }
+            // CS 488's attenuation, by the distance to the light alone (not the path).
+            if (light.attenuates()) falloff *= light.attenuation(ls.distance);
             Vec3 term = diffuseColor * nDotL;
             if (m.specular > 0) {
                 Vec3 r = 2 * nDotL * sp.n - ls.toLight;
@@ -174,29 +207,22 @@ Vec3 Integrator::reflect(const ShadingPoint& sp, int depth, int32_t medium, Trac
         return trace(next, depth - 1, sp.pathLength, medium, context);
     };
     if (m.glossiness <= 0) return traceFrom(mirror);
+    return glossyMean(mirror, sp.facingNormal, m.glossiness, settings_.glossySamples, context,
+                      traceFrom);
+}
 
-    // Glossy: the mean over rays in a cone around the mirror direction (half-angle up to
-    // 45° at glossiness 1), folded back above the surface when they dip below it.
-    int count = context.inGlossy ? 1 : std::max(settings_.glossySamples, 1);
-    double cosMax = std::cos(std::clamp(m.glossiness, 0.0, 1.0) * kPi / 4);
-    Vec3 helper = std::abs(mirror.x) > 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
-    Vec3 t1 = glm::normalize(glm::cross(helper, mirror)), t2 = glm::cross(mirror, t1);
-    Vec2 shift = context.rng.uniform2();
-    bool wasGlossy = context.inGlossy;
-    context.inGlossy = true;
-    Vec3 sum(0.0);
-    for (int i = 0; i < count; ++i) {
-        Vec2 u = hammersley(static_cast<uint32_t>(i), static_cast<uint32_t>(count), shift);
-        double cosTheta = 1 - u.x * (1 - cosMax);
-        double sinTheta = std::sqrt(std::max(0.0, 1 - cosTheta * cosTheta));
-        double phi = 2 * kPi * u.y;
-        Vec3 dir = cosTheta * mirror + sinTheta * (std::cos(phi) * t1 + std::sin(phi) * t2);
-        double below = glm::dot(dir, sp.facingNormal);
-        if (below < 0) dir -= 2 * below * sp.facingNormal;
-        sum += traceFrom(glm::normalize(dir));
-    }
-    context.inGlossy = wasGlossy;
-    return sum / static_cast<double>(count);
+Vec3 Integrator::refract(const ShadingPoint& sp, const Vec3& refracted, int depth,
+                         int32_t nextMedium, TraceContext& context) const {
+    auto traceFrom = [&](const Vec3& dir) {
+        ++context.stats.refractionRays;
+        Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, dir), dir};
+        return trace(next, depth - 1, sp.pathLength, nextMedium, context);
+    };
+    const ShadingMaterial& m = *sp.material;
+    if (m.glossiness <= 0) return traceFrom(refracted);
+    // Frosted glass: the same cone around the refracted direction, kept below the surface.
+    return glossyMean(refracted, -sp.facingNormal, m.glossiness, settings_.glossySamples,
+                      context, traceFrom);
 }
 
 } // namespace crt::tracer

@@ -17,7 +17,9 @@ struct TraceContext {
     SampleRng rng{0, 0, 0};
     QueryScratch scratch;
     RayStats stats;
-    bool inGlossy = false; ///< below a glossy reflection only one ray per bounce is spawned
+    bool inGlossy = false; ///< below a glossy bounce only one ray per bounce is spawned
+    int reflections = 0;   ///< reflections on the path to the point being shaded
+    int refractions = 0;   ///< refractions on the path to the point being shaded
 };
 
 /// What the scene uses, found once so per-ray code can skip what is absent.
@@ -34,7 +36,8 @@ public:
     Integrator(const RenderScene& scene, const scene::SettingsDesc& settings, std::vector<Light> lights,
                const Background& background, std::vector<Texture> textures);
 
-    /// The color seen along `ray` (unit direction) with `depth` reflections/refractions left;
+    /// The color seen along `ray` (unit direction) with `depth` reflections/refractions left
+    /// (besides each kind's own limit, counted in `context`);
     /// `pathLength` is the distance travelled from the camera to the ray's origin (falloff),
     /// `medium` the material of the solid the ray travels in (-1: air).
     Vec3 trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context) const;
@@ -48,6 +51,9 @@ private:
     /// The fraction of light that reaches the point through the shadow ray (0: blocked).
     Vec3 transmittance(const Ray& ray, double tMax, TraceContext& context) const;
     Vec3 reflect(const ShadingPoint& sp, int depth, int32_t medium, TraceContext& context) const;
+    /// The light along `refracted` into `nextMedium` (blurred around it on a glossy material).
+    Vec3 refract(const ShadingPoint& sp, const Vec3& refracted, int depth, int32_t nextMedium,
+                 TraceContext& context) const;
 
     const RenderScene& scene_;
     const scene::SettingsDesc& settings_;
@@ -56,6 +62,7 @@ private:
     std::vector<Texture> textures_;
     SceneFeatures features_;
     Vec3 ambient_;
+    int reflectionLimit_, refractionLimit_;
 };
 
 } // namespace crt::tracer

@@ -1,4 +1,4 @@
-// Point, parallel, spot and area lights.
+// Point, parallel, spot, area and cylinder lights.
 #include "tracer/lights.hpp"
 
 #include <algorithm>
@@ -7,7 +7,9 @@
 namespace crt::tracer {
 
 Light::Light(const scene::LightDesc& desc, int shadowSamples)
-    : kind_(desc.kind), color_(rgb(desc.color)), ambient_(desc.ambient), falloff_(desc.falloff) {
+    : kind_(desc.kind), color_(rgb(desc.color)), ambient_(desc.ambient), falloff_(desc.falloff),
+      attenuation_(desc.attenuation),
+      attenuates_(desc.kind != scene::LightKind::Parallel && desc.attenuation != Vec3(1, 0, 0)) {
     switch (desc.kind) {
     case scene::LightKind::Point: position_ = desc.origin; break;
     case scene::LightKind::Parallel: direction_ = glm::normalize(desc.pointing - desc.from); break;
@@ -30,6 +32,13 @@ Light::Light(const scene::LightDesc& desc, int shadowSamples)
         strataY_ = (sampleCount_ + strataX_ - 1) / strataX_;
         break;
     }
+    case scene::LightKind::Cylinder:
+        // A segment: as many strata along it as there are samples.
+        position_ = desc.from;
+        edgeA_ = desc.to - desc.from;
+        sampleCount_ = std::max(shadowSamples, 1);
+        strataX_ = sampleCount_;
+        break;
     }
 }
 
@@ -55,6 +64,9 @@ LightSample Light::sample(const Vec3& point, int index, const Vec2& jitter) cons
         int sx = index % strataX_, sy = index / strataX_;
         double a = (sx + jitter.x) / strataX_, b = (sy + jitter.y) / strataY_;
         target = position_ + std::min(a, 1.0) * edgeA_ + std::min(b, 1.0) * edgeB_;
+        color = color_ / static_cast<double>(sampleCount_);
+    } else if (kind_ == scene::LightKind::Cylinder) {
+        target = position_ + std::min((index + jitter.x) / sampleCount_, 1.0) * edgeA_;
         color = color_ / static_cast<double>(sampleCount_);
     }
     Vec3 offset = target - point;

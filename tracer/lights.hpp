@@ -23,7 +23,7 @@ class Light {
 public:
     explicit Light(const scene::LightDesc& desc, int shadowSamples);
 
-    /// How many samples shading takes: shadowsamples for an area light, else one.
+    /// How many samples shading takes: shadowsamples for an area or cylinder light, else one.
     int sampleCount() const { return sampleCount_; }
     /// Sample `index` of sampleCount(), at `point`; `jitter` in [0,1)² places it in its stratum.
     LightSample sample(const Vec3& point, int index, const Vec2& jitter) const;
@@ -31,6 +31,12 @@ public:
     Vec3 color() const { return color_; }
     double ambient() const { return ambient_; }
     double falloff() const { return falloff_; }
+    /// Whether attenuation differs from none, vec3(1, 0, 0).
+    bool attenuates() const { return attenuates_; }
+    /// The factor 1 / (c0 + c1·d + c2·d²) at `distance` from the light.
+    double attenuation(double distance) const {
+        return 1 / (attenuation_.x + distance * (attenuation_.y + distance * attenuation_.z));
+    }
     scene::LightKind kind() const { return kind_; }
 
 private:
@@ -40,6 +46,8 @@ private:
     Vec3 position_{0.0}, direction_{0.0}, edgeA_{0.0}, edgeB_{0.0};
     Vec3 color_{0.0};
     double ambient_ = 0, falloff_ = 0;
+    Vec3 attenuation_{1, 0, 0};
+    bool attenuates_ = false;
     double cosOuter_ = -1, cosInner_ = -1;
     int sampleCount_ = 1, strataX_ = 1, strataY_ = 1;
 };

@@ -172,12 +172,16 @@ SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) cons
         si.pointError = sp.pointError;
         si.normal = sp.normal;
         si.shadingNormal = sp.shadingNormal;
+        si.dpdu = sp.dpdu;
+        si.dpdv = sp.dpdv;
     } else {
         const Transform& toWorld = transforms[p.transform].toWorld;
         si.point = toWorld.point(sp.point);
         si.pointError = toWorld.pointError(sp.point, sp.pointError);
         si.normal = toWorld.normal(sp.normal);
         si.shadingNormal = toWorld.normal(sp.shadingNormal);
+        si.dpdu = toWorld.vector(sp.dpdu);
+        si.dpdv = toWorld.vector(sp.dpdv);
     }
     if (hit.flipNormal) {
         si.normal = -si.normal;

@@ -1,4 +1,5 @@
-// The render loop: per-pixel sampling (grid, adaptive, depth of field) over tiles and threads.
+// The render loop: per-pixel sampling (grid, stratified, adaptive, depth of field) over tiles
+// and threads.
 #include "tracer/renderer.hpp"
 
 #include "tracer/camera.hpp"
@@ -26,11 +27,14 @@ class PixelSampler {
 public:
     PixelSampler(const Integrator& integrator, const Camera& camera, const scene::SettingsDesc& settings)
         : integrator_(integrator), camera_(camera), settings_(settings),
-          dofSamples_(camera.usesLens() ? std::max(settings.dofSamples, 1) : 1) {}
+          dofSamples_(camera.usesLens() ? std::max(settings.dofSamples, 1) : 1),
+          bounces_(settings.bounceLimit()) {}
 
     Vec3 pixel(int x, int y, TraceContext& context) const {
         uint64_t pixelIndex = static_cast<uint64_t>(y) * settings_.width + x;
-        if (settings_.antialias != scene::Antialias::Grid) {
+        bool adaptive = settings_.antialias == scene::Antialias::Adaptive ||
+                        settings_.antialias == scene::Antialias::ShowAdaptive;
+        if (adaptive) {
             bool subdivides = false;
             uint32_t sampleIndex = 0;
             Vec3 c = region(x + 0.5, y + 0.5, 1.0, 0, pixelIndex, sampleIndex, subdivides, context);
@@ -38,14 +42,26 @@ public:
             return c;
         }
         int n = std::max(settings_.supersampling, 1);
+        bool jittered = settings_.antialias == scene::Antialias::Stratified;
         Vec3 sum(0.0);
         for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-                sum += sample(x + (i + 0.5) / n, y + (j + 0.5) / n, pixelIndex, static_cast<uint32_t>(j * n + i), context);
+            for (int i = 0; i < n; ++i) {
+                uint32_t k = static_cast<uint32_t>(j * n + i);
+                Vec2 offset = jittered ? cellJitter(pixelIndex, k) : Vec2(0.5);
+                sum += sample(x + (i + offset.x) / n, y + (j + offset.y) / n, pixelIndex, k, context);
+            }
         return sum / static_cast<double>(n * n);
     }
 
 private:
+    /// Where stratified sample `k` lies in its grid cell, in [0, 1)². Its own stream of the
+    /// pixel's random numbers, apart from the stream the sample then traces with, so the
+    /// position is not correlated with the sample's light and lens choices.
+    Vec2 cellJitter(uint64_t pixelIndex, uint32_t k) const {
+        constexpr uint64_t kJitterStream = uint64_t{1} << 40;
+        return SampleRng(settings_.seed, pixelIndex, kJitterStream + k).uniform2();
+    }
+
     /// Spec §6 "adaptive": the four quadrant centres, a quadrant subdivided while its
     /// samples disagree by more than the threshold, up to aadepth levels; area-weighted mean.
     Vec3 region(double cx, double cy, double size, int level, uint64_t pixelIndex, uint32_t& sampleIndex,
@@ -76,7 +92,7 @@ private:
         context.rng = SampleRng(settings_.seed, pixelIndex, sampleIndex);
         if (dofSamples_ <= 1) {
             ++context.stats.cameraRays;
-            return integrator_.trace(camera_.ray(u, v), settings_.recursionDepth, 0, -1, context);
+            return integrator_.trace(camera_.ray(u, v), bounces_, 0, -1, context);
         }
         // Depth of field: a low-discrepancy set of lens points, shifted per pixel sample.
         Vec2 shift = context.rng.uniform2();
@@ -84,7 +100,7 @@ private:
         for (int k = 0; k < dofSamples_; ++k) {
             Vec2 lens = hammersley(static_cast<uint32_t>(k), static_cast<uint32_t>(dofSamples_), shift);
             ++context.stats.cameraRays;
-            sum += integrator_.trace(camera_.lensRay(u, v, lens), settings_.recursionDepth, 0, -1, context);
+            sum += integrator_.trace(camera_.lensRay(u, v, lens), bounces_, 0, -1, context);
         }
         return sum / static_cast<double>(dofSamples_);
     }
@@ -93,6 +109,7 @@ private:
     const Camera& camera_;
     const scene::SettingsDesc& settings_;
     int dofSamples_;
+    int bounces_; ///< reflections and refractions a camera ray's path may take in all
 };
 
 /// The scene's settings with the job's sample budget applied.
@@ -193,7 +210,8 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     outcome.primitives = prepared.geometry->primitives.size();
     outcome.bvhNodes = prepared.geometry->bvh.nodeCount();
     outcome.bvhDepth = prepared.geometry->bvh.depth();
-    outcome.samples = settings.antialias == scene::Antialias::Grid
+    outcome.samples = settings.antialias == scene::Antialias::Grid ||
+                              settings.antialias == scene::Antialias::Stratified
                           ? static_cast<uint64_t>(settings.supersampling) * settings.supersampling
                           : 4;
 

@@ -18,6 +18,11 @@ public:
     double height(const Vec3& objectPoint, const Vec2& uv) const;
     bool isBump() const { return desc_.kind == scene::TextureKind::NoiseBump || desc_.kind == scene::TextureKind::ImageBump; }
     double strength() const { return desc_.strength; }
+    /// Whether height() reads the surface's uv (an ImageBump mapped "uv"), not the point.
+    bool heightFromUv() const {
+        return desc_.kind == scene::TextureKind::ImageBump &&
+               desc_.mapping == scene::TextureMapping::Uv;
+    }
 
 private:
     Vec2 imageCoordinates(const Vec3& p, const Vec2& uv) const;

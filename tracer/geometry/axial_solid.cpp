@@ -141,20 +141,29 @@ SurfacePoint AxialSolid::surfaceAt(const Ray& ray, const Crossing& crossing, boo
     Vec3 n;
     double distance;
     SurfacePoint sp;
+    double cx = rho > 0 ? q.x / rho : 1, cy = rho > 0 ? q.y / rho : 0;
+    // Every part turns with u: the point moves by 2π·ρ per unit of u, around the axis.
+    if (wantUv) sp.dpdu = frame_.fromLocal(2 * kPi * Vec3(-q.y, q.x, 0));
     if (crossing.part == 1 || crossing.part == 2) {
         bool top = crossing.part == 2;
         n = top ? frame_.w : -frame_.w;
         distance = top ? q.z - height_ : -q.z;
         double capRadius = top ? r1_ : r0_;
-        if (wantUv) sp.uv = {angle, capRadius > 0 ? clamp01(rho / capRadius) : 0.0};
+        if (wantUv) {
+            sp.uv = {angle, capRadius > 0 ? clamp01(rho / capRadius) : 0.0};
+            sp.dpdv = frame_.fromLocal(capRadius * Vec3(cx, cy, 0));
+        }
     } else {
         // Outward normal of x² + y² = (r0 + slope·z)²: (x/ρ, y/ρ, −slope) normalised; the
         // distance to the side along it is (ρ − r(z)) / √(1 + slope²).
         double norm = std::sqrt(1 + slope_ * slope_);
-        double cx = rho > 0 ? q.x / rho : 1, cy = rho > 0 ? q.y / rho : 0;
         n = frame_.fromLocal(Vec3(cx, cy, -slope_) / norm);
         distance = (rho - (r0_ + slope_ * q.z)) / norm;
-        if (wantUv) sp.uv = {angle, clamp01(q.z / height_)};
+        if (wantUv) {
+            sp.uv = {angle, clamp01(q.z / height_)};
+            // Up the side at a fixed angle, the radius grows by the slope.
+            sp.dpdv = frame_.fromLocal(height_ * Vec3(slope_ * cx, slope_ * cy, 1));
+        }
     }
     RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n, cap_);
     sp.point = r.point;

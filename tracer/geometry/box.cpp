@@ -73,6 +73,8 @@ SurfacePoint BoxGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bo
     sp.shadingNormal = n;
     sp.uv = {clamp01((r.point[ua] - lo_[ua]) / (hi_[ua] - lo_[ua])),
              clamp01((r.point[va] - lo_[va]) / (hi_[va] - lo_[va]))};
+    sp.dpdu[ua] = hi_[ua] - lo_[ua];
+    sp.dpdv[va] = hi_[va] - lo_[va];
     return sp;
 }
 

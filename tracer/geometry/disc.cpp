@@ -52,7 +52,11 @@ SurfacePoint DiscGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, b
     if (wantUv) {
         Vec3 onPlane = r.point - center_;
         double x = glm::dot(onPlane, frame_.u), y = glm::dot(onPlane, frame_.v);
-        sp.uv = {angleCoordinate(y, x), clamp01(std::sqrt(x * x + y * y) / radius_)};
+        double rho = std::sqrt(x * x + y * y);
+        sp.uv = {angleCoordinate(y, x), clamp01(rho / radius_)};
+        // p = centre + v·radius·(cos 2πu, sin 2πu) in the frame's (u, v) plane.
+        sp.dpdu = 2 * kPi * (x * frame_.v - y * frame_.u);
+        sp.dpdv = rho > 0 ? radius_ / rho * (x * frame_.u + y * frame_.v) : radius_ * frame_.u;
     }
     return sp;
 }

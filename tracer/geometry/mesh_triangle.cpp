@@ -47,10 +47,30 @@ SurfacePoint MeshTriangleGeometry::surfaceAt(const Ray& ray, const Crossing& cro
         }
     }
     if (hasUvs_ && wantUv) {
-        sp.uv = b.x * mesh_->uvs[size_t(tri.uv[0])] + b.y * mesh_->uvs[size_t(tri.uv[1])] +
-                b.z * mesh_->uvs[size_t(tri.uv[2])];
+        const Vec2 uv[3] = {mesh_->uvs[size_t(tri.uv[0])], mesh_->uvs[size_t(tri.uv[1])],
+                            mesh_->uvs[size_t(tri.uv[2])]};
+        sp.uv = b.x * uv[0] + b.y * uv[1] + b.z * uv[2];
+        tangentsFromUvs(tri, uv, sp);
     }
     return sp;
+}
+
+void MeshTriangleGeometry::tangentsFromUvs(const MeshData::Triangle& tri, const Vec2 (&uv)[3],
+                                           SurfacePoint& sp) const {
+    // The corners' positions and uvs relate by p − p2 = (u − u2)·dpdu + (v − v2)·dpdv (pbrt's
+    // solution of that 2×2 system). Corners whose uvs are collinear parameterise nothing.
+    const Vec3& p0 = mesh_->positions[size_t(tri.v[0])];
+    const Vec3& p1 = mesh_->positions[size_t(tri.v[1])];
+    const Vec3& p2 = mesh_->positions[size_t(tri.v[2])];
+    Vec2 duv02 = uv[0] - uv[2], duv12 = uv[1] - uv[2];
+    Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
+    double det = differenceOfProducts(duv02.x, duv12.y, duv02.y, duv12.x);
+    if (!(std::abs(det) > 1e-12 * (sumAbs(Vec3(duv02, 0)) * sumAbs(Vec3(duv12, 0))))) {
+        sp.dpdu = sp.dpdv = Vec3(0.0);
+        return;
+    }
+    sp.dpdu = (duv12.y * dp02 - duv02.y * dp12) / det;
+    sp.dpdv = (duv02.x * dp12 - duv12.x * dp02) / det;
 }
 
 } // namespace crt::tracer

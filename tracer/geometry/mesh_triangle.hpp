@@ -29,6 +29,10 @@ class MeshTriangleGeometry {
     bool solid() const { return false; }
 
   private:
+    /// dpdu and dpdv of the face's own uvs (zero when they are degenerate).
+    void tangentsFromUvs(const MeshData::Triangle& tri, const Vec2 (&uv)[3],
+                         SurfacePoint& sp) const;
+
     TriangleGeometry triangle_;
     std::shared_ptr<const MeshData> mesh_;
     size_t index_;

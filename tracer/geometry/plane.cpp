@@ -48,6 +48,8 @@ SurfacePoint PlaneGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, 
     sp.shadingNormal = n;
     Vec3 onPlane = r.point - position_;
     sp.uv = {glm::dot(onPlane, frame_.u), glm::dot(onPlane, frame_.v)};
+    sp.dpdu = frame_.u;
+    sp.dpdv = frame_.v;
     return sp;
 }
 

@@ -59,6 +59,8 @@ SurfacePoint QuadGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, b
     sp.normal = n;
     sp.shadingNormal = n;
     sp.uv = {clamp01(glm::dot(toAlpha_, onPlane)), clamp01(glm::dot(toBeta_, onPlane))};
+    sp.dpdu = edgeA_;
+    sp.dpdv = edgeB_;
     return sp;
 }
 

@@ -43,6 +43,10 @@ struct SurfacePoint {
     Vec3 normal{0, 1, 0}; ///< geometric normal, unit length; outward for solids
     Vec3 shadingNormal{0, 1, 0}; ///< interpolated (mesh vertex normals), else equal to normal
     Vec2 uv{0.0};
+    /// ∂point/∂u and ∂point/∂v: how the point moves with its uv (a bump read through uv tilts
+    /// the normal along them). Set with uv; (0, 0, 0) where uv is not a parameterisation.
+    Vec3 dpdu{0.0};
+    Vec3 dpdv{0.0};
 };
 
 } // namespace crt::tracer

@@ -57,7 +57,15 @@ SurfacePoint SphereGeometry::surfaceAt(const Ray& ray, const Crossing& crossing,
     sp.pointError = r.error;
     sp.normal = n;
     sp.shadingNormal = n;
-    if (wantUv) sp.uv = {angleCoordinate(n.z, n.x), clamp01(0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) / kPi)};
+    if (wantUv) {
+        sp.uv = {angleCoordinate(n.z, n.x),
+                 clamp01(0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) / kPi)};
+        // p = c + r·(cos λ cos φ, sin λ, cos λ sin φ), longitude φ = 2πu, latitude λ = π(v − ½).
+        double rho = std::sqrt(n.x * n.x + n.z * n.z);
+        double cosPhi = rho > 0 ? n.x / rho : 1, sinPhi = rho > 0 ? n.z / rho : 0;
+        sp.dpdu = 2 * kPi * radius_ * Vec3(-n.z, 0, n.x);
+        sp.dpdv = kPi * radius_ * Vec3(-n.y * cosPhi, rho, -n.y * sinPhi);
+    }
     return sp;
 }
 

@@ -148,7 +148,12 @@ SurfacePoint TorusGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, 
     sp.pointError = r.error;
     sp.normal = n;
     sp.shadingNormal = n;
-    if (wantUv) sp.uv = {angleCoordinate(q.y, q.x), angleCoordinate(q.z, rho - major_)};
+    if (wantUv) {
+        sp.uv = {angleCoordinate(q.y, q.x), angleCoordinate(q.z, rho - major_)};
+        // u turns around the axis (radius ρ), v around the tube (radius r, from the core).
+        sp.dpdu = frame_.fromLocal(2 * kPi * Vec3(-q.y, q.x, 0));
+        sp.dpdv = frame_.fromLocal(2 * kPi * Vec3(-q.z * cx, -q.z * cy, rho - major_));
+    }
     return sp;
 }
 

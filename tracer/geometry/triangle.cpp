@@ -94,6 +94,9 @@ SurfacePoint TriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossin
     sp.normal = n;
     sp.shadingNormal = n;
     sp.uv = {clamp01(b.y), clamp01(b.z)};
+    // p = a + u·(b − a) + v·(c − a).
+    sp.dpdu = p_[1] - p_[0];
+    sp.dpdv = p_[2] - p_[0];
     return sp;
 }
 

@@ -46,6 +46,8 @@ constexpr Usage kUsages[] = {
     {ObjectType::AreaLight,
      "Settings { lights -> [AreaLight { corner -> vec3(0, 5, 0) edgeA -> vec3(1, 0, 0) "
      "edgeB -> vec3(0, 0, 1) color -> rgb(1, 1, 1) @ }] }"},
+    {ObjectType::CylinderLight, "Settings { lights -> [CylinderLight { from -> vec3(-1, 5, 0) "
+                                "to -> vec3(1, 5, 0) color -> rgb(1, 1, 1) @ }] }"},
     {ObjectType::Material, CRT_SPHERE_WITH("Material { @ }")},
     {ObjectType::Background, "Settings { background -> Background { image -> \"sky.png\" @ } }"},
     {ObjectType::Sphere, "Scene { Sphere { center -> vec3(0, 0, 0) radius -> 1 @ } }"},
@@ -80,6 +82,8 @@ constexpr std::pair<ObjectType, std::string_view> kRuleDefaults[] = {
     {ObjectType::Material, "diffuse"},     // what reflection and refraction leave
     {ObjectType::Material, "texture"},     // none
     {ObjectType::Material, "bump"},        // none
+    {ObjectType::Settings, "reflectiondepth"}, // recursiondepth
+    {ObjectType::Settings, "refractiondepth"}, // recursiondepth
 };
 
 bool isRuleDefault(ObjectType type, std::string_view attribute) {
@@ -234,6 +238,26 @@ TEST_CASE("defaults documented as rules follow their rule", "[defaults]") {
             CHECK(s.finishOf(s.materials[0]).diffuse ==
                   std::max(0.0, 1.0 - reflectivity - transparency));
         }
+    }
+
+    SECTION("reflection and refraction depths follow recursiondepth unless given") {
+        const ObjectInfo& settings = objectInfo(ObjectType::Settings);
+        for (std::string_view name : {"reflectiondepth", "refractiondepth"}) {
+            CHECK(settings.attributes[findAttribute(settings, name)].defaultText ==
+                  "recursiondepth");
+        }
+        crt::scene::SceneDesc absent = evaluate("Settings { recursiondepth -> 7 }");
+        CHECK(absent.settings.reflectionLimit() == 7);
+        CHECK(absent.settings.refractionLimit() == 7);
+        CHECK(absent.settings.bounceLimit() == 7);
+        crt::scene::SceneDesc none = evaluate("Settings { }");
+        CHECK(none.settings.reflectionLimit() == 3);
+        CHECK(none.settings.refractionLimit() == 3);
+        crt::scene::SceneDesc given =
+            evaluate("Settings { recursiondepth -> 7 reflectiondepth -> 2 refractiondepth -> 9 }");
+        CHECK(given.settings.reflectionLimit() == 2);
+        CHECK(given.settings.refractionLimit() == 9);
+        CHECK(given.settings.bounceLimit() == 9);
     }
 
     SECTION("a material has no texture and no bump unless given") {

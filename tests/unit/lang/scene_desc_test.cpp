@@ -106,3 +106,21 @@ Scene {
     REQUIRE(c.diagnostics.hasErrors());
     CHECK(c.diagnostics.items().front().message == "integer division by zero");
 }
+
+TEST_CASE("the 2015 aperture shape \"uniform\" builds the same camera as \"circle\"", "[scene]") {
+    auto camera = [](const std::string& shape) {
+        Compilation c = compileScript(
+            "Settings { camera -> Camera { position -> vec3(0, 0, -5) pointing -> vec3(0, 0, 0) "
+            "aperture -> 2 apertureshape -> \"" + shape + "\" } dofsamples -> 4 }\n"
+            "Scene { Sphere { center -> vec3(0, 0, 0) radius -> 1 } }\n");
+        return c.scene->camera;
+    };
+    t::CameraDesc circle = camera("circle");
+    for (const std::string shape : {"uniform", "UNIFORM", "Uniform"}) {
+        t::CameraDesc uniform = camera(shape);
+        CHECK(uniform.apertureShape == t::ApertureShape::Circle);
+        CHECK(uniform.apertureShape == circle.apertureShape);
+        CHECK(uniform.apertureBlades == circle.apertureBlades);
+        CHECK(uniform.aperture == circle.aperture);
+    }
+}

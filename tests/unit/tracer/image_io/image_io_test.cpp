@@ -6,7 +6,7 @@
 #include "tracer/image_io/encoding.hpp"
 #include "tracer/image_io/image_io.hpp"
 
-#include "scratch_folder.hpp"
+#include "../scratch_folder.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -29,7 +29,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using namespace crt::tracer::image_io::test;
+using namespace crt::tracer::test;
 
 // An RGB image whose every value is a multiple of 1/255, so 8-bit formats store it exactly.
 ImageBuffer codeGradient(int width, int height) {

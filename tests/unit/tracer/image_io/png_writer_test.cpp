@@ -3,7 +3,7 @@
 #include "tracer/image_io/encoding.hpp"
 #include "tracer/image_io/image_io.hpp"
 
-#include "scratch_folder.hpp"
+#include "../scratch_folder.hpp"
 
 #include <catch2/catch.hpp>
 #include <png.h>
@@ -33,7 +33,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using namespace crt::tracer::image_io::test;
+using namespace crt::tracer::test;
 
 // --- reading back with libpng
 

@@ -1,4 +1,4 @@
-// A scratch folder for the image I/O tests: fresh for each process, removed when it ends.
+// A scratch folder for tests that write files: fresh for each process, removed when it ends.
 #pragma once
 
 #include <algorithm>
@@ -9,12 +9,12 @@
 #include <unistd.h>
 #include <vector>
 
-namespace crt::tracer::image_io::test {
+namespace crt::tracer::test {
 
 inline const std::filesystem::path& scratch() {
     struct Folder {
         std::filesystem::path path = std::filesystem::temp_directory_path() /
-                                     ("crt_image_io_test." + std::to_string(getpid()));
+                                     ("crt_test." + std::to_string(getpid()));
         Folder() {
             std::filesystem::remove_all(path);
             std::filesystem::create_directories(path);
@@ -46,4 +46,4 @@ inline bool openImageIoMapped() {
     return text.find("libOpenImageIO") != std::string::npos;
 }
 
-} // namespace crt::tracer::image_io::test
+} // namespace crt::tracer::test
