@@ -175,12 +175,20 @@ std::optional<RangeSequence> Interpreter::rangeSequence(const Expr* iterable) {
 }
 
 void Interpreter::execFor(const ForStmt* node) {
+    uint64_t iterations = 0; // when known before the loop starts
+    const size_t entitiesBefore = scene_.entities.size(), materialsBefore = scene_.materials.size();
+    bool first = true;
     auto runBody = [&](const Value& item) {
         step(node->iterable->range);
         store(node->resolution, item);
         execStatements(node->body->statements);
+        if (first && iterations > 1) {
+            reserveLike(entitiesBefore, materialsBefore, iterations - 1);
+        }
+        first = false;
     };
     if (std::optional<RangeSequence> numbers = rangeSequence(node->iterable)) {
+        iterations = numbers->sizeHint();
         for (Value item; numbers->next(item);) runBody(item);
         return;
     }
@@ -189,8 +197,31 @@ void Interpreter::execFor(const ForStmt* node) {
         fail(node->iterable->range,
              fmt::format("'for' needs a list or a range, not {}", typeName(iterable)));
     }
+    iterations = iterable.list->size();
     // The list is immutable, so iterating it while the body runs is safe.
     for (const Value& item : *iterable.list) runBody(item);
+}
+
+void Interpreter::reserveLike(size_t entitiesBefore, size_t materialsBefore, uint64_t remaining) {
+    // Room for `remaining` more iterations like the first: the vectors are then not regrown
+    // while the loop runs, each regrowth copying everything built so far into fresh memory.
+    // Never past the entity limit nor 1 GB a vector: a loop that stops early or adds only
+    // once wastes address space, not memory.
+    auto reserveFor = [&](auto& items, size_t before) {
+        using Item = typename std::remove_reference_t<decltype(items)>::value_type;
+        const uint64_t cap = std::min<uint64_t>(options_.limits.maxEntities, (uint64_t{1} << 30) / sizeof(Item));
+        const uint64_t added = items.size() - before;
+        if (added == 0 || items.size() >= cap) return items.capacity();
+        const uint64_t wanted = remaining > (cap - items.size()) / added ? cap : items.size() + added * remaining;
+        items.reserve(static_cast<size_t>(wanted));
+        return items.capacity();
+    };
+    try {
+        entityInfo_.reserve(reserveFor(scene_.entities, entitiesBefore));
+        reserveFor(scene_.materials, materialsBefore);
+    } catch (const std::bad_alloc&) {
+        // The vectors grow as they go instead.
+    }
 }
 
 void Interpreter::execScene(const SceneStmt* node) {

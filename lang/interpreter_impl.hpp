@@ -75,6 +75,9 @@ private:
     void execSettings(const SettingsStmt* node);
     void execScene(const SceneStmt* node);
     void execFor(const ForStmt* node);
+    /// After a loop's first iteration: room for `remaining` more iterations that each add the
+    /// entities and materials the first one added.
+    void reserveLike(size_t entitiesBefore, size_t materialsBefore, uint64_t remaining);
     void emit(const Value& value, const Node* where);
     void draw(const Value& value, const Node* where);
     /// Appends the entities of a (nested) list in order; false if it holds anything else.
