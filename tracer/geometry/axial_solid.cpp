@@ -29,7 +29,6 @@ AxialSolid::AxialSolid(const Vec3& base, const Vec3& top, double baseRadius, dou
     empty_ = !(height_ > 0) || !std::isfinite(height_) || !(r0_ > 0 || r1_ > 0);
     frame_ = Frame::fromAxis(empty_ ? Vec3(0, 0, 1) : axis / height_);
     slope_ = empty_ ? 0 : (r1_ - r0_) / height_;
-    cap_ = empty_ ? 0 : sumAbs(bounds().extent());
 }
 
 Bounds3 AxialSolid::bounds() const {
@@ -165,7 +164,7 @@ SurfacePoint AxialSolid::surfaceAt(const Ray& ray, const Crossing& crossing, boo
             sp.dpdv = frame_.fromLocal(height_ * Vec3(slope_ * cx, slope_ * cy, 1));
         }
     }
-    RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n, cap_);
+    RefinedPoint r = refineOntoSurface(p, distance, distanceError, n);
     sp.point = r.point;
     sp.pointError = r.error;
     sp.normal = n;

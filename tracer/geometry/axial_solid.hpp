@@ -30,7 +30,6 @@ class AxialSolid {
     double r0_ = 0;    ///< radius at the base
     double r1_ = 0;    ///< radius at the top
     double slope_ = 0; ///< (r1 − r0) / height
-    double cap_ = 0;   ///< a bound on the distance between two points of the solid
     bool open_ = false;
     bool empty_ = true;
 };

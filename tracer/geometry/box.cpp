@@ -56,10 +56,9 @@ SurfacePoint BoxGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bo
     n[axis] = high ? 1 : -1;
     Vec3 p = ray.at(crossing.t);
     double distance = high ? p[axis] - face : face - p[axis];
-    RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance,
-                                       errorGamma(1) * std::abs(distance), n, sumAbs(hi_ - lo_));
-    // The face plane is representable: snap onto it exactly. The exact crossing lies on the
-    // face, so clamping the other coordinates into it only brings the point closer.
+    RefinedPoint r = refineOntoSurface(p, distance, errorGamma(1) * std::abs(distance), n);
+    // The face plane is representable: snap onto it exactly. Clamping the other coordinates
+    // into the face then leaves the point on the exact surface, within its bound.
     r.point[axis] = face;
     r.error[axis] = 0;
     int ua = (axis + 1) % 3, va = (axis + 2) % 3;

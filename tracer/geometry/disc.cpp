@@ -43,7 +43,7 @@ SurfacePoint DiscGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, b
     double distanceError = errorGamma(6) * glm::dot(absolute(n), absolute(p) + absolute(center_)) +
                            errorGamma(2) * glm::dot(absolute(n), absolute(rel)) +
                            errorGamma(3) * std::abs(distance);
-    RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n, 2 * radius_);
+    RefinedPoint r = refineOntoSurface(p, distance, distanceError, n);
     SurfacePoint sp;
     sp.point = r.point;
     sp.pointError = r.error;

@@ -79,38 +79,35 @@ inline double clamp01(double x) {
     return std::clamp(x, 0.0, 1.0);
 }
 
-/// A surface point and a per-component bound of its distance to the exact hit.
+/// A surface point and a per-component bound of its distance to the exact surface.
 struct RefinedPoint {
     Vec3 point;
     Vec3 error;
 };
 
-/// Moves the computed line point p ≈ o + t·d onto the surface along the unit normal n.
+/// Moves the computed line point p onto the surface along the unit normal n.
 ///
-/// `distance` is the signed distance of p from the surface (positive on n's side) as computed,
-/// `distanceError` a bound of its rounding error, `cap` a bound on how far apart two points of
-/// the shape can be. The returned bound covers the exact crossing of the exact line with the
-/// exact surface, to first order. The computed p is off the exact line point o + t·d by δ, the
-/// rounding of o + t·d; that exact point is within `away` = |distance| + distanceError + |n·δ|
-/// of the surface, so the exact crossing lies Δt = away / |n·d| along the line. Moving p along
-/// n leaves the point off the crossing by the tangential parts of δ and of Δt·d, and a
-/// tangential vector v has per-axis components at most |v_i| + |n·v|·|n_i|; |n·Δt·d| ≤ away.
-/// A factor 2 covers the second-order (curvature) terms and the rounding of n itself.
-inline RefinedPoint refineOntoSurface(const Ray& ray, double t, const Vec3& p, double distance,
-                                      double distanceError, const Vec3& n, double cap) {
+/// `distance` is the signed distance of p from the surface (positive on n's side) as computed
+/// from p itself, `distanceError` a bound of its rounding error. As in pbrt-v4, the returned
+/// bound is a box around the point that holds a point of the exact surface (the nearest one),
+/// so moving a spawned ray's origin by the box projected onto n clears the surface. It does not
+/// hold the exact line's crossing: that lies off along the line by the error in t, which for a
+/// line at a grazing angle is 1/|n·d| times the distance it stands for, almost along the
+/// surface; projected onto n it would push a spawned ray through a surface close by.
+///
+/// After the move the point is off the surface by at most distanceError, plus the rounding of
+/// the move and, where n is the gradient at p and not at the nearest point, a curvature term
+/// below |distance|: `away` bounds both. That remainder points along n up to a tiny angle
+/// (n's own rounding, and the curvature times the distance), which kTilt bounds generously;
+/// the factor 2 covers the rounding of this bound and second-order terms.
+inline RefinedPoint refineOntoSurface(const Vec3& p, double distance, double distanceError,
+                                      const Vec3& n) {
+    constexpr double kTilt = 1e-6;
     Vec3 an = absolute(n);
-    Vec3 ad = absolute(ray.dir);
-    Vec3 evalError = errorGamma(2) * (absolute(ray.origin) + absolute(t * ray.dir));
-    double away = std::abs(distance) + distanceError + glm::dot(an, evalError);
-    double nd = std::abs(glm::dot(n, ray.dir));
-    double slide = nd > 0 ? away / nd : kInfinity;
+    double away = std::abs(distance) + distanceError;
     Vec3 point = p - distance * n;
     Vec3 moveError = errorGamma(2) * (absolute(p) + std::abs(distance) * an);
-    Vec3 error;
-    for (int i = 0; i < 3; ++i) {
-        double along = ad[i] > 0 ? std::min(slide * ad[i], cap) : 0.0;
-        error[i] = 2 * (evalError[i] + moveError[i] + along + std::min(2 * away, cap) * an[i]);
-    }
+    Vec3 error = 2.0 * (moveError + away * (an + Vec3(kTilt)));
     return {point, error};
 }
 

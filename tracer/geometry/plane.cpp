@@ -1,8 +1,6 @@
 // The infinite plane primitive; as a solid, the half-space behind its normal.
 #include "tracer/geometry/plane.hpp"
 
-#include <limits>
-
 namespace crt::tracer {
 
 PlaneGeometry::PlaneGeometry(const scene::PlaneShape& desc) : position_(desc.position) {
@@ -39,8 +37,7 @@ SurfacePoint PlaneGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, 
     double distanceError =
         errorGamma(6) * glm::dot(absolute(n), absolute(p) + absolute(position_)) +
         errorGamma(2) * glm::dot(absolute(n), absolute(rel)) + errorGamma(3) * std::abs(distance);
-    RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n,
-                                       std::numeric_limits<double>::max());
+    RefinedPoint r = refineOntoSurface(p, distance, distanceError, n);
     SurfacePoint sp;
     sp.point = r.point;
     sp.pointError = r.error;

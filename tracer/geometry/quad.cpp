@@ -50,8 +50,7 @@ SurfacePoint QuadGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, b
     double distance = glm::dot(n, rel);
     double distanceError = errorGamma(6) * glm::dot(absolute(n), absolute(p) + absolute(corner_)) +
                            glm::dot(tilt_, absolute(rel)) + errorGamma(3) * std::abs(distance);
-    RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n,
-                                       sumAbs(edgeA_) + sumAbs(edgeB_));
+    RefinedPoint r = refineOntoSurface(p, distance, distanceError, n);
     Vec3 onPlane = r.point - corner_;
     SurfacePoint sp;
     sp.point = r.point;

@@ -50,7 +50,7 @@ SurfacePoint SphereGeometry::surfaceAt(const Ray& ray, const Crossing& crossing,
     // p − c rounds once per component, the length adds three more relative roundings, the
     // subtraction of the radius one more.
     double distanceError = errorGamma(6) * len + errorGamma(1) * std::abs(distance);
-    RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n, 2 * radius_);
+    RefinedPoint r = refineOntoSurface(p, distance, distanceError, n);
 
     SurfacePoint sp;
     sp.point = r.point;

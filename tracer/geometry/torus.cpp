@@ -141,8 +141,7 @@ SurfacePoint TorusGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, 
     // by a few roundings (moving points by that times their distance from the centre), and
     // ρ, ρ − R and the length add a few relative roundings of R + r.
     double distanceError = errorGamma(24) * (sumAbs(p) + sumAbs(center_) + major_ + minor_);
-    RefinedPoint r =
-        refineOntoSurface(ray, crossing.t, p, distance, distanceError, n, 4 * (major_ + minor_));
+    RefinedPoint r = refineOntoSurface(p, distance, distanceError, n);
     SurfacePoint sp;
     sp.point = r.point;
     sp.pointError = r.error;

@@ -85,8 +85,7 @@ SurfacePoint TriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossin
     double distance = glm::dot(n, rel);
     double distanceError = errorGamma(6) * glm::dot(absolute(n), absolute(p) + absolute(p_[0])) +
                            glm::dot(tilt_, absolute(rel)) + errorGamma(3) * std::abs(distance);
-    RefinedPoint r = refineOntoSurface(ray, crossing.t, p, distance, distanceError, n,
-                                       sumAbs(p_[1] - p_[0]) + sumAbs(p_[2] - p_[0]));
+    RefinedPoint r = refineOntoSurface(p, distance, distanceError, n);
     Vec3 b = barycentrics(ray, crossing);
     SurfacePoint sp;
     sp.point = r.point;

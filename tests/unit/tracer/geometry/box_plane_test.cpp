@@ -229,3 +229,23 @@ TEST_CASE("plane: a distant hit keeps an error bound relative to its size") {
     CHECK(sp.pointError.y < 1e-8);
     checkBoundContainsExact(sp, ray, planeFn({{0, 1, 0}, {0, -1, 0}}), list.items[0].t);
 }
+
+// As for the sphere: a line nearly in the plane has an error in t of about 1/|n·d| times the
+// distance it stands for, and the bound (hence a spawned ray's offset) covers only the latter.
+TEST_CASE("plane: a grazing hit's bound is its distance from the surface") {
+    scene::PlaneShape s{glm::normalize(Vec3(-0.2, 1, 0.1)), {0.4, -0.3, 0.2}};
+    PlaneGeometry g(s);
+    const Vec3 along = glm::normalize(glm::cross(s.normal, Vec3(1, 0.3, 0.2)));
+    for (double cosine : {1e-3, 1e-5, 1e-7}) {
+        Vec3 dir = glm::normalize(along - cosine * s.normal);
+        Ray ray{s.position + Vec3(0.1, 0.2, -0.3) - 3.0 * dir, dir};
+        CrossingList list;
+        g.crossLine(ray, list);
+        REQUIRE(list.count == 1);
+        SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+        INFO("n·d " << glm::dot(sp.normal, dir));
+        double offset = glm::dot(absolute(sp.normal), sp.pointError);
+        CHECK(offset < errorGamma(64) * (sumAbs(sp.point) + sumAbs(s.position)));
+        checkBoundContainsExact(sp, ray, planeFn(s), list.items[0].t);
+    }
+}

@@ -141,3 +141,27 @@ TEST_CASE("sphere: a far origin keeps the crossings accurate") {
         }
     }
 }
+
+// A nearly tangent line's t is off by about 1/|n·d| times the distance that error stands for,
+// almost along the surface. The bound covers the distance from the surface only, so a spawned
+// ray's offset stays a few roundings of the point, not the error in t.
+TEST_CASE("sphere: a grazing hit's bound is its distance from the surface") {
+    scene::SphereShape s{{0.3, -0.2, 0.7}, 1};
+    SphereGeometry g(s);
+    const Vec3 m = glm::normalize(Vec3(-0.2, 1, 0.1));
+    const Vec3 along = glm::normalize(glm::cross(m, Vec3(1, 0.3, 0.2)));
+    for (double cosine : {1e-3, 1e-5, 1e-7}) {
+        // A line through the tangent point c + r·m, turned by `cosine` into the sphere.
+        Vec3 touch = s.center + s.radius * m;
+        Vec3 dir = glm::normalize(along - cosine * m);
+        Ray ray{touch - 4.0 * dir, dir};
+        CrossingList list;
+        g.crossLine(ray, list);
+        REQUIRE(list.count == 2);
+        SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+        INFO("n·d " << glm::dot(sp.normal, dir));
+        double offset = glm::dot(absolute(sp.normal), sp.pointError);
+        CHECK(offset < errorGamma(64) * (sumAbs(sp.point) + s.radius));
+        checkBoundContainsExact(sp, ray, sphereFn(s), list.items[0].t);
+    }
+}
