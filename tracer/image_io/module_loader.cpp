@@ -22,8 +22,8 @@ struct LoadResult {
     std::string error;
 };
 
-// Where an installed or build-tree crtc keeps its module: beside the executable (the build
-// tree puts it there), or in ../lib/crt/ (an installed layout).
+// Where a program keeps the module: beside its executable (the build tree puts it there), or
+// in ../lib/crt/ (an installed layout).
 std::vector<fs::path> candidatePaths() {
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);

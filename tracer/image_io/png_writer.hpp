@@ -1,6 +1,6 @@
 // PNG output written with libpng, instead of through the OpenImageIO module.
 //
-// PNG is crtc's default output, and loading OpenImageIO's 260 libraries can cost more than
+// PNG is the usual output, and loading OpenImageIO's 260 libraries can cost more than
 // tracing a small image, while a PNG needs nothing of it. Other formats still go through the
 // module, and so does reading.
 #pragma once
