@@ -5,3 +5,4 @@ find_package(fmt REQUIRED)
 find_package(glm REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(Catch2 2 REQUIRED)
+find_package(CLI11 2.1 REQUIRED) # crtc's command line

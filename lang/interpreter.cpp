@@ -23,8 +23,12 @@ Interpreter::Interpreter(Compilation& compilation, const EvalOptions& options)
         prelude_[slot] = Value::object(ValueKind::Builtin, ObjectType::Count, slot);
     }
     prelude_[preludeSlotOfT()] = options.time ? Value::number(*options.time) : Value::integer(options.frame);
-    // clock runs from 0 to 1 over the frames of an animation; a single frame is at 0.
-    double clock = options.frameCount > 1 ? static_cast<double>(options.frame) / (options.frameCount - 1) : 0.0;
+    // clock runs from clockStart to clockEnd over the frames of an animation; a single frame
+    // is at clockStart.
+    const double progress = options.frameCount > 1 ? static_cast<double>(options.frame - options.firstFrame) /
+                                                         (options.frameCount - 1)
+                                                   : 0.0;
+    const double clock = options.clockStart + progress * (options.clockEnd - options.clockStart);
     prelude_[preludeSlotOfClock()] = Value::number(clock);
     nextStepCheck_ = nextCheckAfter(0);
 }

@@ -34,8 +34,10 @@ struct EvalOptions {
     IncludeSearch includes;               ///< -I, CRT_PATH, the standard library
     std::vector<std::string> assetRoots;  ///< --assets; empty: the script's folder and parents
     uint64_t seed = 0;                    ///< seeds rand()
-    int frame = 0;                        ///< t with --frames
+    int frame = 0;                        ///< t with --frames: the frame's number
     int frameCount = 1;
+    int firstFrame = 0;                   ///< the number of an animation's first frame
+    double clockStart = 0, clockEnd = 1;  ///< clock at the first and at the last frame
     std::optional<double> time;           ///< --time T: t is this float
     std::ostream* printOut = nullptr;     ///< where print() writes; null: standard output
     bool checkFiles = true;               ///< look up images and meshes on disk

@@ -544,23 +544,24 @@ void Interpreter::buildSettings(const ObjectBuilder& b) {
             s.gamma = gamma->asDouble();
         }
     }
-    s.supersampling = ranged("supersampling", s.supersampling, 1, 64);
-    s.dofSamples = ranged("dofsamples", s.dofSamples, 1, 100000);
+    auto count = [&](const char* name, int value, scene::CountRange range) {
+        return ranged(name, value, range.min, range.max);
+    };
+    s.supersampling = count("supersampling", s.supersampling, scene::kSupersamplingRange);
+    s.dofSamples = count("dofsamples", s.dofSamples, scene::kDofSamplesRange);
     s.recursionDepth = ranged("recursiondepth", s.recursionDepth, 0, 1000);
     if (b.get("reflectiondepth")) s.reflectionDepth = ranged("reflectiondepth", 0, 0, 1000);
     if (b.get("refractiondepth")) s.refractionDepth = ranged("refractiondepth", 0, 0, 1000);
     if (b.get("antialias")) {
-        std::string antialias = b.lowerText("antialias");
-        s.antialias = antialias == "adaptive"       ? scene::Antialias::Adaptive
-                      : antialias == "showadaptive" ? scene::Antialias::ShowAdaptive
-                      : antialias == "stratified"   ? scene::Antialias::Stratified
-                                                    : scene::Antialias::Grid;
+        const std::string antialias = b.lowerText("antialias");
+        for (size_t i = 0; i < std::size(scene::kAntialiasNames); ++i)
+            if (antialias == scene::kAntialiasNames[i]) s.antialias = static_cast<scene::Antialias>(i);
     }
     s.aaThreshold = b.number("aathreshold", s.aaThreshold);
     if (s.aaThreshold < 0) problem("aathreshold", "aathreshold must not be negative");
     s.aaDepth = ranged("aadepth", s.aaDepth, 0, 8);
-    s.shadowSamples = ranged("shadowsamples", s.shadowSamples, 1, 4096);
-    s.glossySamples = ranged("glossysamples", s.glossySamples, 1, 4096);
+    s.shadowSamples = count("shadowsamples", s.shadowSamples, scene::kShadowSamplesRange);
+    s.glossySamples = count("glossysamples", s.glossySamples, scene::kGlossySamplesRange);
     int64_t seed = b.integer("seed", static_cast<int64_t>(s.seed));
     if (seed < 0) problem("seed", "seed must not be negative");
     s.seed = static_cast<uint64_t>(seed);

@@ -1,6 +1,8 @@
 // The attribute tables of spec §5.
 #include "object_schema.hpp"
 
+#include "scene/scene_desc.hpp"
+
 #include <array>
 
 namespace crt::lang {
@@ -8,8 +10,6 @@ namespace {
 
 using A = AttrType;
 
-constexpr std::string_view kAntialiasChoices[] = {"grid", "adaptive", "showadaptive",
-                                                  "stratified"};
 constexpr std::string_view kProjectionChoices[] = {"pinhole", "spherical"};
 // "uniform" is the 2015 name of the circle (a disc sampled uniformly), kept for old scripts.
 constexpr std::string_view kApertureChoices[] = {"circle",  "triangle", "square", "pentagon",
@@ -41,7 +41,7 @@ constexpr AttributeInfo kSettings[] = {
      "How many refractions deep rays go; overrides recursiondepth for refractions."},
     {"antialias", A::Choice, false, "\"grid\"",
      "Anti-aliasing: grid, adaptive, showadaptive or stratified (jittered grid).",
-     kAntialiasChoices},
+     scene::kAntialiasNames},
     {"aathreshold", A::Float, false, "0.1", "Adaptive anti-aliasing: colour difference that subdivides."},
     {"aadepth", A::Int, false, "2", "Adaptive anti-aliasing: maximum subdivision levels."},
     {"shadowsamples", A::Int, false, "16", "Samples per area or cylinder light."},

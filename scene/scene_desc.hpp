@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -176,6 +177,18 @@ struct BackgroundDesc {
 
 /// Stratified: one jittered sample in each cell of the supersampling grid.
 enum class Antialias : uint8_t { Grid, Adaptive, ShowAdaptive, Stratified };
+/// The names of Antialias's values, as scripts and the command line spell them, in its order.
+inline constexpr std::string_view kAntialiasNames[] = {"grid", "adaptive", "showadaptive",
+                                                       "stratified"};
+
+/// The counts a setting of samples may take, whether a script or the command line sets it.
+struct CountRange {
+    int min, max;
+};
+inline constexpr CountRange kSupersamplingRange{1, 64};
+inline constexpr CountRange kDofSamplesRange{1, 100'000};
+inline constexpr CountRange kShadowSamplesRange{1, 4096};
+inline constexpr CountRange kGlossySamplesRange{1, 4096};
 
 struct SettingsDesc {
     std::string title, author, date, notes;

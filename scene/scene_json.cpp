@@ -151,12 +151,11 @@ std::string compactNumberArrays(const std::string& json) {
 }
 
 Json settingsJson(const SettingsDesc& s) {
-    static const char* antialias[] = {"grid", "adaptive", "showadaptive", "stratified"};
     Json json{{"title", s.title}, {"author", s.author}, {"date", s.date}, {"notes", s.notes},
                 {"width", s.width}, {"height", s.height},
                 {"gamma", s.srgb ? Json("srgb") : Json(s.gamma)},
                 {"supersampling", s.supersampling}, {"dofsamples", s.dofSamples},
-                {"recursiondepth", s.recursionDepth}, {"antialias", antialias[static_cast<int>(s.antialias)]},
+                {"recursiondepth", s.recursionDepth}, {"antialias", kAntialiasNames[static_cast<int>(s.antialias)]},
                 {"aathreshold", s.aaThreshold}, {"aadepth", s.aaDepth},
                 {"shadowsamples", s.shadowSamples}, {"glossysamples", s.glossySamples},
                 {"seed", s.seed}, {"ambient", color(s.ambient)}};

@@ -11,6 +11,7 @@ packages=(
     libfmt-dev libglm-dev nlohmann-json3-dev catch2
     libopenimageio-dev openimageio-tools # image input and output; oiiotool in the tests
     libpng-dev # PNG output, written without OpenImageIO
+    libcli11-dev # crtc's command line
     python3 # the language server's protocol session tests (tests/lsp)
     neovim  # the language server's end-to-end test (tests/lsp/nvim)
 )

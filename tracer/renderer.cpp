@@ -178,13 +178,15 @@ bool tilesFit(const std::vector<Tile>& tiles, int width, int height, std::string
 
 } // namespace
 
-std::vector<Tile> imageTiles(int width, int height, int size) {
+std::vector<Tile> regionTiles(const Tile& region, int size) {
     std::vector<Tile> tiles;
-    for (int y = 0; y < height; y += size)
-        for (int x = 0; x < width; x += size)
-            tiles.push_back({x, y, std::min(x + size, width), std::min(y + size, height)});
+    for (int y = region.y0; y < region.y1; y += size)
+        for (int x = region.x0; x < region.x1; x += size)
+            tiles.push_back({x, y, std::min(x + size, region.x1), std::min(y + size, region.y1)});
     return tiles;
 }
+
+std::vector<Tile> imageTiles(int width, int height, int size) { return regionTiles({0, 0, width, height}, size); }
 
 PixelBuffer::PixelBuffer(int width, int height)
     : width(width), height(height), rgb(static_cast<size_t>(width) * height * 3, 0.0f) {}

@@ -25,8 +25,10 @@ struct Tile {
 /// The side of the tiles imageTiles cuts an image into by default.
 inline constexpr int kTileSize = 16;
 
-/// A `width` × `height` image cut into square tiles of `size` pixels (narrower at the right
-/// edge, shorter at the bottom), row by row from the top.
+/// `region` cut into square tiles of `size` pixels from its top left corner (narrower at the
+/// right edge, shorter at the bottom), row by row from the top.
+std::vector<Tile> regionTiles(const Tile& region, int size = kTileSize);
+/// A whole `width` × `height` image cut into tiles, as regionTiles.
 std::vector<Tile> imageTiles(int width, int height, int size = kTileSize);
 
 /// A finished tile: its linear RGB floats, row-major from its top row.

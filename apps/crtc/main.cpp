@@ -110,31 +110,36 @@ int run(int argc, char** argv) {
         return report(c, options, printed) ? 1 : 0;
     }
 
-    int frames = std::max(options.frames, 1);
-    options.eval.frameCount = frames;
+    const crtc::FrameSelection& frames = options.frames;
+    options.eval.frameCount = std::max(frames.count, 1);
+    options.eval.firstFrame = frames.first;
+    options.eval.clockStart = frames.clockStart;
+    options.eval.clockEnd = frames.clockEnd;
     std::set<std::string> printed;
     // The last frame can have the text itself; earlier ones get a copy.
     auto compileFrame = [&](int frame, Compilation& c) {
         options.eval.frame = frame;
-        c = compile(options.script, frame + 1 == frames ? std::move(*text) : *text, options.eval);
+        c = compile(options.script, frame + 1 == frames.end() ? std::move(*text) : *text, options.eval);
         if (report(c, options, printed)) {
-            if (frames > 1) std::cerr << "crtc: frame " << frame << " has errors\n";
+            if (frames.count > 1) std::cerr << "crtc: frame " << frame << " has errors\n";
             return false;
         }
         return true;
     };
     if (options.mode == crtc::Mode::Render) return crtc::renderCommand(options, compileFrame);
 
+    // --dump-scene of an animation prints an array of the frames evaluated.
+    const bool array = frames.count > 1;
     std::string json;
-    for (int frame = 0; frame < frames; ++frame) {
+    for (int frame = frames.begin(); frame < frames.end(); ++frame) {
         Compilation c;
         if (!compileFrame(frame, c)) return 1;
         if (options.mode == crtc::Mode::DumpScene && c.scene) {
-            json += frames > 1 ? (frame == 0 ? "[\n" : ",\n") : "";
+            json += array ? (frame == frames.begin() ? "[\n" : ",\n") : "";
             json += scene::sceneToJson(*c.scene);
         }
     }
-    if (options.mode == crtc::Mode::DumpScene) std::cout << json << (frames > 1 ? "]\n" : "");
+    if (options.mode == crtc::Mode::DumpScene) std::cout << json << (array ? "]\n" : "");
     return 0;
 }
 

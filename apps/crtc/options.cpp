@@ -1,53 +1,17 @@
-// Parsing crtc's command line.
+// Parsing crtc's command line, with CLI11: --opt=value, -- before a script whose name starts
+// with '-', generated help, and crtc's own wording of errors.
 #include "options.hpp"
 
-#include <charconv>
+#include "diagnostic.hpp"
+#include "help_formatter.hpp"
+
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <charconv>
+
 namespace crt::crtc {
-
-std::string usage() {
-    return R"(usage: crtc [options] script.crt
-
-Evaluates a CRT scene script and renders it.
-
-modes:
-  --check              report diagnostics only
-  --dump-ast           print the syntax tree
-  --dump-scene         print the evaluated scene as JSON (docs/scene-json.md)
-  --format             print the script formatted (to -o FILE if given); a script
-                       with syntax errors is refused
-
-options:
-  -o FILE              output image (default: the script's name with .png, or .gif
-                       with --frames); the extension picks the format: .png .jpg .tif
-                       .exr .hdr .gif; with --frames, a name with %d or %04d writes
-                       numbered images instead of an animated GIF
-  --width N, --height N  override the script's image size
-  --threads N          render threads (default: all cores)
-  --fps F              frames per second of an animated GIF (default 15)
-  --png-compression N  zlib level of PNG output, 0 (fastest) to 9 (smallest);
-                       default 2
-  --stats              print ray and acceleration-structure counts after rendering
-  -I DIR               add DIR to the include search path (repeatable)
-  --assets DIR         asset root for "/..." image and mesh paths (repeatable)
-  --time T             evaluate with t = T (a float)
-  --frames N           evaluate N frames, t = 0 .. N-1
-  --seed S             seed of rand() (default 0)
-  --max-steps N        evaluation steps: loop iterations and macro calls (default 50000000)
-  --max-depth N        nested macro calls (default 1000)
-  --max-entities N     drawn entities and list length (default 10000000)
-  --max-size N         image width and height (default 16384)
-  -Werror              treat warnings as errors
-  --color WHEN         color diagnostics: auto, always or never (default auto)
-  -q, --quiet          print nothing but diagnostics (no progress, no summary)
-  -h, --help           show this help
-  --version            show the version
-
-exit status: 0 success, 1 errors in the script, 2 bad usage or I/O failure,
-             130 interrupted (Ctrl-C; no partial image is left)
-)";
-}
 
 namespace {
 
@@ -58,125 +22,338 @@ template <typename T> bool parseNumber(std::string_view text, T& out) {
     return error == std::errc() && end == text.data() + text.size();
 }
 
-/// The arguments after the program name, one at a time, and what went wrong with them.
-class Arguments {
-public:
-    Arguments(int argc, char** argv) : argc_(argc), argv_(argv) {}
-
-    bool done() const { return next_ >= argc_; }
-    std::string_view next() { return argv_[next_++]; }
-    /// The option's value, the next argument; false if there is none.
-    bool value(std::string_view& out) {
-        if (done()) return false;
-        out = next();
-        return true;
+/// The numbers of "A:B:…", exactly `count` of them; false if the text is not that.
+template <typename T>
+bool parseNumberList(std::string_view text, size_t count, std::vector<T>& out) {
+    out.clear();
+    for (size_t start = 0;;) {
+        const size_t colon = text.find(':', start);
+        T value{};
+        if (!parseNumber(text.substr(start, colon - start), value)) return false;
+        out.push_back(value);
+        if (colon == std::string_view::npos) break;
+        start = colon + 1;
     }
-    /// The value parsed as a number; false if there is none or it is not one.
-    template <typename T> bool number(T& out) {
-        std::string_view text;
-        return value(text) && parseNumber(text, out);
-    }
-    /// Records the first problem; returns true, so that an option handler can end with it.
-    bool fail(std::string message) {
-        if (error.empty()) error = std::move(message);
-        return true;
-    }
-
-    std::string error;
-
-private:
-    int argc_;
-    char** argv_;
-    int next_ = 1;
-};
-
-/// Modes and what is printed: true if `arg` is one of them.
-bool modeOption(std::string_view arg, Arguments& args, Options& o) {
-    std::string_view v;
-    if (arg == "--check") o.mode = Mode::Check;
-    else if (arg == "--dump-ast") o.mode = Mode::DumpAst;
-    else if (arg == "--dump-scene") o.mode = Mode::DumpScene;
-    else if (arg == "--format") o.mode = Mode::Format;
-    else if (arg == "-Werror") o.werror = true;
-    else if (arg == "-q" || arg == "--quiet") o.quiet = true;
-    else if (arg == "--stats") o.stats = true;
-    else if (arg == "--color" || arg.starts_with("--color=")) {
-        if (arg == "--color" && !args.value(v)) return args.fail("--color needs auto, always or never");
-        if (arg != "--color") v = arg.substr(8);
-        if (v == "auto") o.color = ColorWhen::Auto;
-        else if (v == "always") o.color = ColorWhen::Always;
-        else if (v == "never") o.color = ColorWhen::Never;
-        else return args.fail(fmt::format("--color takes auto, always or never, not '{}'", v));
-    } else return false;
-    return true;
+    return out.size() == count;
 }
 
-/// The image and how it is rendered: true if `arg` is one of these options.
-bool renderOption(std::string_view arg, Arguments& args, Options& o) {
-    std::string_view v;
-    if (arg == "-o") {
-        if (!args.value(v)) return args.fail("-o needs a file name");
-        o.output = v;
-    } else if (arg == "--frames") {
-        if (!args.number(o.frames) || o.frames < 1) return args.fail("--frames needs a positive integer");
-    } else if (arg == "--width" || arg == "--height") {
-        int& size = arg == "--width" ? o.width : o.height;
-        if (!args.number(size) || size < 1) return args.fail(fmt::format("{} needs a positive integer", arg));
-    } else if (arg == "--threads") {
-        if (!args.number(o.threads) || o.threads < 1) return args.fail("--threads needs a positive integer");
-    } else if (arg == "--fps") {
-        if (!args.number(o.fps) || !(o.fps > 0) || o.fps > 100) return args.fail("--fps needs a number in (0, 100]");
-    } else if (arg == "--png-compression") {
-        if (!args.number(o.pngCompression) || o.pngCompression < 0 || o.pngCompression > 9)
-            return args.fail("--png-compression needs an integer from 0 to 9");
-    } else return false;
-    return true;
+/// A validator accepting numbers of type T in [lo, hi]; `what` completes "--opt needs ...".
+template <typename T> CLI::Validator numberIn(T lo, T hi, std::string what) {
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            T value{};
+            if (parseNumber(text, value) && value >= lo && value <= hi) return "";
+            return fmt::format("needs {}, not '{}'", what, text);
+        },
+        "");
 }
 
-/// How the script is evaluated, and its limits: true if `arg` is one of these options.
-bool evalOption(std::string_view arg, Arguments& args, Options& o) {
-    std::string_view v;
+CLI::Validator positiveInt() {
+    return numberIn<int>(1, std::numeric_limits<int>::max(), "a positive integer");
+}
+
+template <typename T> CLI::Validator anyNumber(std::string what) {
+    return numberIn<T>(std::numeric_limits<T>::lowest(), std::numeric_limits<T>::max(),
+                       std::move(what));
+}
+
+CLI::Validator sampleCount(scene::CountRange range) {
+    return numberIn<int>(range.min, range.max,
+                         fmt::format("an integer from {} to {}", range.min, range.max));
+}
+
+/// A validator for one of `names`.
+CLI::Validator oneOf(std::vector<std::string> names) {
+    return CLI::Validator(
+        [names](std::string& text) -> std::string {
+            if (std::find(names.begin(), names.end(), text) != names.end()) return "";
+            std::string list;
+            for (size_t i = 0; i < names.size(); ++i)
+                list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+            return fmt::format("takes {}, not '{}'", list, text);
+        },
+        "");
+}
+
+void addModeOptions(CLI::App& app, Options& o) {
+    const char* group = "Modes (default: render)";
+    auto mode = [&](const char* name, Mode m, const char* help) {
+        return app
+            .add_flag_callback(
+                name, [&o, m] { o.mode = m; }, help)
+            ->group(group);
+    };
+    CLI::Option* check = mode("--check", Mode::Check, "report diagnostics only");
+    CLI::Option* ast = mode("--dump-ast", Mode::DumpAst, "print the syntax tree");
+    CLI::Option* dump = mode("--dump-scene", Mode::DumpScene,
+                             "print the evaluated scene as JSON (docs/scene-json.md)");
+    CLI::Option* format = mode("--format", Mode::Format,
+                               "print the script formatted (to -o FILE if given); a script with "
+                               "syntax errors is refused");
+    const std::vector<CLI::Option*> modes{check, ast, dump, format};
+    for (CLI::Option* a : modes)
+        for (CLI::Option* b : modes)
+            if (a != b) a->excludes(b);
+}
+
+void addOutputOptions(CLI::App& app, Options& o) {
+    const char* group = "Output";
+    app.add_option("-o,--output", o.output,
+                   "output image (default: the script's name with .png, or .gif with --frames); "
+                   "the extension picks the format: .png .jpg .tif .exr .hdr .gif; with --frames, "
+                   "a name with %d or %04d writes numbered images instead of an animated GIF")
+        ->type_name("FILE")
+        ->group(group);
+    app.add_option("--width", o.width, "override the script's image width")
+        ->check(positiveInt())
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--height", o.height, "override the script's image height")
+        ->check(positiveInt())
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--region",
+                   "render only columns X0..X1-1 of rows Y0..Y1-1, into an image of that size")
+        ->type_name("X0:Y0:X1:Y1")
+        ->group(group)
+        ->check(CLI::Validator(
+            [&o](std::string& text) -> std::string {
+                std::vector<int> v;
+                if (!parseNumberList(text, 4, v) || v[0] < 0 || v[1] < 0 || v[2] <= v[0] ||
+                    v[3] <= v[1])
+                    return fmt::format(
+                        "needs X0:Y0:X1:Y1 with 0 <= X0 < X1 and 0 <= Y0 < Y1, not '{}'", text);
+                o.region = tracer::Tile{v[0], v[1], v[2], v[3]};
+                return "";
+            },
+            ""));
+    app.add_option("--png-compression", o.pngCompression,
+                   "zlib level of PNG output, 0 (fastest) to 9 (smallest); default 2")
+        ->check(numberIn(0, 9, "an integer from 0 to 9"))
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--fps", o.fps, "frames per second of an animated GIF (default 15)")
+        ->check(numberIn(1e-3, 100.0, "a number from 0.001 to 100"))
+        ->type_name("F")
+        ->group(group);
+}
+
+void addQualityOptions(CLI::App& app, Options& o) {
+    const char* group = "Quality (overrides the script's Settings)";
+    scene::QualityOverrides& q = o.quality;
+    app.add_flag("--draft", q.draft,
+                 "one sample a pixel, no depth of field, one shadow and glossy ray")
+        ->group(group);
+    app.add_option("--supersampling", q.supersampling, "an N x N grid of camera samples a pixel")
+        ->check(sampleCount(scene::kSupersamplingRange))
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--antialias", "grid, adaptive, showadaptive or stratified")
+        ->type_name("MODE")
+        ->group(group)
+        ->check(oneOf({scene::kAntialiasNames[0].data(), scene::kAntialiasNames[1].data(),
+                       scene::kAntialiasNames[2].data(), scene::kAntialiasNames[3].data()}))
+        ->each([&q](const std::string& name) {
+            for (size_t i = 0; i < std::size(scene::kAntialiasNames); ++i)
+                if (name == scene::kAntialiasNames[i])
+                    q.antialias = static_cast<scene::Antialias>(i);
+        });
+    app.add_option("--dofsamples", q.dofSamples, "lens samples a camera sample (depth of field)")
+        ->check(sampleCount(scene::kDofSamplesRange))
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--shadowsamples", q.shadowSamples, "samples an area or cylinder light")
+        ->check(sampleCount(scene::kShadowSamplesRange))
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--glossysamples", q.glossySamples,
+                   "samples a glossy reflection or transmission")
+        ->check(sampleCount(scene::kGlossySamplesRange))
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--threads", o.threads, "render threads (default: all cores)")
+        ->check(positiveInt())
+        ->type_name("N")
+        ->group(group);
+}
+
+/// "A:B" as two numbers of type T, into `out`.
+template <typename T> CLI::Validator pairOf(std::pair<T, T>& out, std::string what) {
+    return CLI::Validator(
+        [&out, what](std::string& text) -> std::string {
+            std::vector<T> v;
+            if (!parseNumberList(text, 2, v)) return fmt::format("needs {}, not '{}'", what, text);
+            out = {v[0], v[1]};
+            return "";
+        },
+        "");
+}
+
+void addAnimationOptions(CLI::App& app, Options& o, std::pair<int, int>& range,
+                         std::pair<double, double>& clock) {
+    const char* group = "Animation";
+    FrameSelection& f = o.frames;
+    app.add_option("--frames", f.count, "evaluate N frames: t = 0 .. N-1, clock from 0 to 1")
+        ->check(positiveInt())
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--frame-range",
+                   "render only frames A to B (both included), numbered as in the whole animation")
+        ->check(pairOf(range, "two frame numbers A:B"))
+        ->type_name("A:B")
+        ->group(group);
+    app.add_option("--first-frame", f.first,
+                   "number the frames K .. K+N-1 (t and file numbers; default 0)")
+        ->check(numberIn(0, 1'000'000'000, "an integer from 0 to 1000000000"))
+        ->type_name("K")
+        ->group(group);
+    app.add_option("--clock", "clock at the first and at the last frame (default 0:1)")
+        ->check(pairOf(clock, "two numbers A:B"))
+        ->type_name("A:B")
+        ->group(group);
+    app.add_option("--time", "evaluate with t = T (a float); with --frames, render only frame T")
+        ->check(anyNumber<double>("a number"))
+        ->type_name("T")
+        ->group(group)
+        ->each([&o](const std::string& text) { o.eval.time = std::stod(text); });
+}
+
+void addEvaluationOptions(CLI::App& app, Options& o) {
+    const char* group = "Evaluation";
     lang::EvalOptions& eval = o.eval;
-    if (arg.starts_with("-I")) {
-        if (arg.size() > 2) eval.includes.dirs.emplace_back(arg.substr(2));
-        else if (!args.value(v)) return args.fail("-I needs a folder");
-        else eval.includes.dirs.emplace_back(v);
-    } else if (arg == "--assets") {
-        if (!args.value(v)) return args.fail("--assets needs a folder");
-        eval.assetRoots.emplace_back(v);
-    } else if (arg == "--time") {
-        double t = 0;
-        if (!args.number(t)) return args.fail("--time needs a number");
-        eval.time = t;
-    } else if (arg == "--seed") {
-        if (!args.number(eval.seed)) return args.fail("--seed needs a non-negative integer");
-    } else if (arg == "--max-steps") {
-        if (!args.number(eval.limits.maxSteps)) return args.fail("--max-steps needs a non-negative integer");
-    } else if (arg == "--max-depth") {
-        if (!args.number(eval.limits.maxDepth)) return args.fail("--max-depth needs a non-negative integer");
-        // The front end's stack holds this many nested calls.
-        if (eval.limits.maxDepth > kMaxSupportedDepth)
-            return args.fail(fmt::format("--max-depth above {} is not supported", kMaxSupportedDepth));
-    } else if (arg == "--max-entities") {
-        if (!args.number(eval.limits.maxEntities)) return args.fail("--max-entities needs a non-negative integer");
-    } else if (arg == "--max-size") {
-        if (!args.number(eval.limits.maxSize) || eval.limits.maxSize == 0)
-            return args.fail("--max-size needs a positive integer");
-    } else return false;
-    return true;
+    app.add_option("-I", eval.includes.dirs, "add DIR to the include search path (repeatable)")
+        ->allow_extra_args(false)
+        ->type_name("DIR")
+        ->group(group);
+    app.add_option("--assets", eval.assetRoots,
+                   "asset root for \"/...\" image and mesh paths (repeatable)")
+        ->allow_extra_args(false)
+        ->type_name("DIR")
+        ->group(group);
+    app.add_option("--seed", eval.seed, "seed of rand() (default 0)")
+        ->check(anyNumber<uint64_t>("a non-negative integer"))
+        ->type_name("S")
+        ->group(group);
+    lang::Limits& limits = eval.limits;
+    app.add_option("--max-steps", limits.maxSteps,
+                   fmt::format("evaluation steps: loop iterations and macro calls (default {})",
+                               limits.maxSteps))
+        ->check(anyNumber<uint64_t>("a non-negative integer"))
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--max-depth", limits.maxDepth,
+                   fmt::format("nested macro calls (default {})", limits.maxDepth))
+        ->check(numberIn<uint32_t>(0, kMaxSupportedDepth,
+                                   fmt::format("an integer from 0 to {}", kMaxSupportedDepth)))
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--max-entities", limits.maxEntities,
+                   fmt::format("drawn entities and list length (default {})", limits.maxEntities))
+        ->check(anyNumber<uint64_t>("a non-negative integer"))
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--max-size", limits.maxSize,
+                   fmt::format("image width and height (default {})", limits.maxSize))
+        ->check(numberIn<uint32_t>(1, std::numeric_limits<uint32_t>::max(), "a positive integer"))
+        ->type_name("N")
+        ->group(group);
 }
 
-/// What no single option can check.
-std::string checkCombination(const Options& o) {
+void addReportingOptions(CLI::App& app, Options& o) {
+    const char* group = "Reporting";
+    app.add_flag("--werror", o.werror, "treat warnings as errors (also -Werror)")->group(group);
+    app.add_option("--color", "color diagnostics: auto, always or never (default auto)")
+        ->type_name("WHEN")
+        ->group(group)
+        ->check(oneOf({"auto", "always", "never"}))
+        ->each([&o](const std::string& when) {
+            o.color = when == "always"  ? ColorWhen::Always
+                      : when == "never" ? ColorWhen::Never
+                                        : ColorWhen::Auto;
+        });
+    app.add_flag("-q,--quiet", o.quiet, "print nothing but diagnostics (no progress, no summary)")
+        ->group(group);
+    app.add_flag("--stats", o.stats, "print ray and acceleration-structure counts after rendering")
+        ->group(group);
+}
+
+/// The long names of `app`'s options, for did-you-mean.
+std::vector<std::string> longNames(const CLI::App& app) {
+    std::vector<std::string> names;
+    for (const CLI::Option* option : app.get_options())
+        for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+    return names;
+}
+
+/// What CLI11 left over: an unknown option or a second script, as a message ("" if none).
+std::string leftOverProblem(const CLI::App& app, const Options& o) {
+    bool afterDashes = false;
+    for (const std::string& arg : app.remaining()) {
+        if (!afterDashes && arg == "--") {
+            afterDashes = true;
+            continue;
+        }
+        if (!afterDashes && arg.size() > 1 && arg[0] == '-') {
+            const std::vector<std::string> names = longNames(app);
+            const std::string_view option = std::string_view(arg).substr(0, arg.find('='));
+            const std::string suggestion = lang::closestMatch(option, {names.begin(), names.end()});
+            return fmt::format(
+                "unknown option '{}'{}", option,
+                suggestion.empty() ? "" : fmt::format("; did you mean '{}'?", suggestion));
+        }
+        return fmt::format("only one script can be given ('{}' and '{}')", o.script, arg);
+    }
+    return "";
+}
+
+/// What no single option can check; also turns --time with --frames into a frame range.
+std::string checkCombination(Options& o, const std::optional<std::pair<int, int>>& range) {
     if (o.script.empty()) return "no script given";
-    if (o.frames > 0 && o.eval.time) return "--time and --frames cannot be combined";
+    FrameSelection& f = o.frames;
+    if (!f.animated() && (range || f.first != 0))
+        return "--frame-range and --first-frame need --frames";
+    if (range) f.range = range;
+    if (f.animated() && o.eval.time) {
+        const double t = *o.eval.time;
+        if (range) return "--time and --frame-range cannot be combined";
+        if (t != static_cast<int>(t))
+            return fmt::format("with --frames, --time needs a frame number, not {}", t);
+        f.range = std::pair{static_cast<int>(t), static_cast<int>(t)};
+        o.eval.time.reset();
+    }
+    if (f.range && (f.range->first > f.range->second || f.range->first < f.first ||
+                    f.range->second > f.last()))
+        return fmt::format("frames {} to {} are not within the animation's frames {} to {}",
+                           f.range->first, f.range->second, f.first, f.last());
     const uint32_t maxSize = o.eval.limits.maxSize;
     for (auto [name, size] : {std::pair{"--width", o.width}, {"--height", o.height}}) {
         if (static_cast<uint32_t>(size) > maxSize)
-            return fmt::format("{} {} is above the image size limit {} (raise it with --max-size)", name,
-                               size, maxSize);
+            return fmt::format("{} {} is above the image size limit {} (raise it with --max-size)",
+                               name, size, maxSize);
     }
     return "";
+}
+
+/// CLI11's "--opt: message" as crtc words it: "--opt message".
+std::string crtcWording(const CLI::ParseError& e) {
+    std::string text = e.what();
+    const size_t colon = text.find(": ");
+    if (text.starts_with('-') && colon != std::string::npos && text.find(' ') > colon)
+        text.replace(colon, 2, " ");
+    return text;
+}
+
+/// argv, with GCC's spelling -Werror taken as --werror, in the reversed order CLI11 parses.
+std::vector<std::string> reversedArguments(int argc, char** argv) {
+    std::vector<std::string> args;
+    bool afterDashes = false;
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        afterDashes = afterDashes || arg == "--";
+        args.push_back(!afterDashes && arg == "-Werror" ? "--werror" : arg);
+    }
+    std::reverse(args.begin(), args.end());
+    return args;
 }
 
 } // namespace
@@ -184,32 +361,45 @@ std::string checkCombination(const Options& o) {
 ParsedOptions parseOptions(int argc, char** argv) {
     Options o;
     ParsedOptions result;
+    CLI::App app("Evaluates a CRT scene script and renders it.", "crtc");
+    app.formatter(std::make_shared<HelpFormatter>());
+    app.footer("exit status: 0 success, 1 errors in the script, 2 bad usage or I/O failure,\n"
+               "             130 interrupted (Ctrl-C; no partial image is left)");
+    app.set_version_flag("--version", fmt::format("crtc {}", CRT_VERSION));
+    app.allow_extras();
+    app.add_option("script", o.script, "the CRT script")->type_name("SCRIPT");
+    std::pair<int, int> range{0, 0};
+    std::pair<double, double> clock{0.0, 1.0};
+    addModeOptions(app, o);
+    addOutputOptions(app, o);
+    addQualityOptions(app, o);
+    addAnimationOptions(app, o, range, clock);
+    addEvaluationOptions(app, o);
+    addReportingOptions(app, o);
     auto bad = [&](const std::string& message) {
         result.message = fmt::format("crtc: {}\nTry 'crtc --help'.", message);
         result.status = 2;
         return result;
     };
-    for (Arguments args(argc, argv); !args.done();) {
-        const std::string_view arg = args.next();
-        if (arg == "-h" || arg == "--help") {
-            result.message = usage();
-            return result;
-        }
-        if (arg == "--version") {
-            result.message = fmt::format("crtc {}", CRT_VERSION);
-            return result;
-        }
-        if (modeOption(arg, args, o) || renderOption(arg, args, o) || evalOption(arg, args, o)) {
-            if (!args.error.empty()) return bad(args.error);
-        } else if (arg.size() > 1 && arg[0] == '-') {
-            return bad(fmt::format("unknown option '{}'", arg));
-        } else if (o.script.empty()) {
-            o.script = arg;
-        } else {
-            return bad(fmt::format("only one script can be given ('{}' and '{}')", o.script, arg));
-        }
+    try {
+        std::vector<std::string> args = reversedArguments(argc, argv);
+        app.parse(args);
+    } catch (const CLI::CallForHelp&) {
+        result.message = app.help();
+        return result;
+    } catch (const CLI::CallForVersion& e) {
+        result.message = e.what();
+        return result;
+    } catch (const CLI::ParseError& e) {
+        return bad(crtcWording(e));
     }
-    if (std::string problem = checkCombination(o); !problem.empty()) return bad(problem);
+    if (std::string problem = leftOverProblem(app, o); !problem.empty()) return bad(problem);
+    o.frames.clockStart = clock.first;
+    o.frames.clockEnd = clock.second;
+    const bool rangeGiven = app.count("--frame-range") > 0;
+    if (std::string problem = checkCombination(o, rangeGiven ? std::optional(range) : std::nullopt);
+        !problem.empty())
+        return bad(problem);
     result.options = std::move(o);
     return result;
 }

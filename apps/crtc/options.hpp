@@ -2,6 +2,8 @@
 #pragma once
 
 #include "interpreter.hpp"
+#include "scene/quality_overrides.hpp"
+#include "tracer/renderer.hpp"
 
 #include <optional>
 #include <string>
@@ -12,12 +14,27 @@ namespace crt::crtc {
 enum class Mode { Render, Check, DumpAst, DumpScene, Format };
 enum class ColorWhen { Auto, Always, Never };
 
+/// The frames of an animation, and which of them this run evaluates.
+struct FrameSelection {
+    int count = 0; ///< --frames N; 0: a single evaluation
+    int first = 0; ///< --first-frame K: the frames are numbered K .. K+N-1 (t and file numbers)
+    /// --frame-range A:B, or --time with --frames: the frame numbers evaluated, both included.
+    std::optional<std::pair<int, int>> range;
+    double clockStart = 0, clockEnd = 1; ///< --clock A:B: clock at the first and the last frame
+
+    bool animated() const { return count > 0; }
+    int last() const { return first + std::max(count, 1) - 1; }
+    int begin() const { return range ? range->first : first; }
+    int end() const { return (range ? range->second : last()) + 1; }
+    int selected() const { return end() - begin(); }
+};
+
 struct Options {
     Mode mode = Mode::Render;
     std::string script;
     std::string output;
     lang::EvalOptions eval;
-    int frames = 0; ///< --frames N; 0: a single evaluation
+    FrameSelection frames;
     bool werror = false;
     ColorWhen color = ColorWhen::Auto;
     bool quiet = false;
@@ -28,6 +45,8 @@ struct Options {
     double fps = 15;   ///< --fps of an animated GIF
     int pngCompression = -1; ///< --png-compression 0-9; -1: the image writer's default
     bool stats = false; ///< --stats
+    scene::QualityOverrides quality;
+    std::optional<tracer::Tile> region; ///< --region: the part of the image rendered
 };
 
 /// The result of reading argv: options, or a message and exit status (0 for --help).
@@ -38,6 +57,5 @@ struct ParsedOptions {
 };
 
 ParsedOptions parseOptions(int argc, char** argv);
-std::string usage();
 
 } // namespace crt::crtc

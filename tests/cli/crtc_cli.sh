@@ -48,7 +48,7 @@ Scene { Sphere { center -> vec3(0, 0, 0) radius -> 1 } }
 CRT
 
 expect_status 0 "--help" "$crtc" --help
-expect_text "$work/out" "usage: crtc" "--help prints usage"
+expect_text "$work/out" "Usage: crtc" "--help prints usage"
 expect_status 0 "--version" "$crtc" --version
 expect_text "$work/out" "^crtc [0-9]+\.[0-9]+" "--version prints a version"
 expect_status 2 "no script" "$crtc"

@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
     std::ostringstream printed;
     options.eval.printOut = &printed;
     options.eval.includes.stdlibDir = CRT_SOURCE_STDLIB_DIR;
-    options.eval.frameCount = std::max(options.frames, 1);
+    options.eval.frameCount = std::max(options.frames.count, 1);
     options.eval.frame = options.eval.frameCount - 1; // the last frame, where t is largest
 
     Compilation c = compile(file.string(), text, options.eval);

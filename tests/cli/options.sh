@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# crtc's option syntax (--opt=value, --, did-you-mean) and the options that override a script's
+# quality and size: --draft, sample counts, --region, and the summary line's samples per pixel.
+set -u
+crtc=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+source "$(dirname "$0")/expect.sh"
+
+cat >"$work/dof.crt" <<'CRT'
+Settings {
+    width -> 40 height -> 30
+    dofsamples -> 16 supersampling -> 2
+    camera -> Camera { position -> vec3(0, 0, -4) pointing -> vec3(0, 0, 0) aperture -> 0.2 }
+    lights -> [AreaLight { corner -> vec3(2, 3, -3) edgeA -> vec3(1, 0, 0) edgeB -> vec3(0, 1, 0.5) color -> rgb(1, 1, 1) }]
+}
+Scene {
+    Sphere { center -> vec3(0, 0, 0) radius -> 1 material -> Material { color -> rgb(1, 0.5, 0.2) } }
+    Plane { normal -> vec3(0, 1, 0) position -> vec3(0, -1, 0) }
+}
+CRT
+cp "$work/dof.crt" "$work/-dash.crt"
+
+# Option syntax
+expect_status 0 "--opt=value" "$crtc" --width=20 --height=10 -o "$work/eq.png" "$work/dof.crt"
+expect_text "$work/err" "^crtc: 20x10," "--width=20 --height=10 sets the size"
+expect_status 0 "-- before a script named -dash.crt" "$crtc" -q --draft -o "$work/dash.png" -- "$work/-dash.crt"
+[ -s "$work/dash.png" ] || fail "-- then a script: no image written"
+expect_status 2 "did-you-mean" "$crtc" --widht 20 "$work/dof.crt"
+expect_text "$work/err" "unknown option '--widht'; did you mean '--width'\?" "did-you-mean names the option"
+expect_status 2 "bad --antialias" "$crtc" --antialias=smooth "$work/dof.crt"
+expect_text "$work/err" "--antialias takes grid, adaptive, showadaptive or stratified, not 'smooth'" "--antialias choices"
+expect_status 2 "--supersampling out of range" "$crtc" --supersampling 65 "$work/dof.crt"
+expect_text "$work/err" "--supersampling needs an integer from 1 to 64, not '65'" "--supersampling range"
+expect_status 2 "two modes" "$crtc" --check --format "$work/dof.crt"
+expect_status 2 "region outside the image" "$crtc" --region 0:0:41:30 -o "$work/r.png" "$work/dof.crt"
+expect_text "$work/err" "--region 0:0:41:30 is not inside the 40x30 image" "region message"
+expect_status 2 "malformed region" "$crtc" --region 5:5:2:8 "$work/dof.crt"
+
+# Samples per pixel: the script's 2x2 grid with 16 lens samples is 64 camera rays a pixel.
+expect_status 0 "depth of field render" "$crtc" -o "$work/dof.png" "$work/dof.crt"
+expect_text "$work/err" "^crtc: 40x30, 64 samples/pixel," "summary counts depth-of-field samples"
+expect_status 0 "--draft" "$crtc" --draft -o "$work/draft.png" "$work/dof.crt"
+expect_text "$work/err" "^crtc: 40x30, 1 sample/pixel," "--draft: one sample a pixel"
+expect_status 0 "--draft with --supersampling" "$crtc" --draft --supersampling 3 -o "$work/d3.png" "$work/dof.crt"
+expect_text "$work/err" "^crtc: 40x30, 9 samples/pixel," "a count given beside --draft wins"
+expect_status 0 "--dofsamples" "$crtc" --dofsamples 4 --supersampling 1 -o "$work/d4.png" "$work/dof.crt"
+expect_text "$work/err" "^crtc: 40x30, 4 samples/pixel," "--dofsamples overrides the script"
+expect_status 0 "--antialias adaptive" "$crtc" --antialias adaptive --dofsamples 1 -o "$work/ad.png" "$work/dof.crt"
+expect_text "$work/err" "^crtc: 40x30, [0-9]+\.[0-9]+ samples/pixel," "adaptive sampling reports its average"
+expect_status 0 "--shadowsamples" "$crtc" --draft --shadowsamples 64 --stats -o "$work/s64.png" "$work/dof.crt"
+shadow_rays() { sed -nE 's/.*shadow ([0-9]+).*/\1/p' "$1"; }
+cp "$work/err" "$work/err64"
+expect_status 0 "--draft shadows" "$crtc" --draft --stats -o "$work/s1.png" "$work/dof.crt"
+[ "$(shadow_rays "$work/err64")" -gt "$(shadow_rays "$work/err")" ] ||
+    fail "--shadowsamples 64 traces more shadow rays than --draft's one"
+if cmp -s "$work/dof.png" "$work/draft.png"; then fail "--draft renders the same image as the script's quality"; fi
+
+# A region is the same pixels as the whole image's.
+expect_status 0 "--region" "$crtc" --region 8:4:36:21 -o "$work/region.png" "$work/dof.crt"
+expect_text "$work/err" "^crtc: 28x17," "the region's size"
+if command -v oiiotool >/dev/null; then
+    oiiotool "$work/dof.png" --cut 28x17+8+4 -o "$work/cut.png"
+    idiff -fail 0 -warn 0 "$work/cut.png" "$work/region.png" >/dev/null ||
+        fail "--region differs from the same part of the whole image"
+else
+    echo "skipped the region comparison: oiiotool is not installed"
+fi
+
+# The progress bar fits a narrow terminal: no line longer than its 50 columns.
+if command -v script >/dev/null; then
+    script -qec "stty cols 50; '$crtc' --width 400 --height 300 --threads 1 -o '$work/p.png' '$work/dof.crt'" \
+        "$work/typescript" >/dev/null 2>&1
+    longest=$(tr '\r' '\n' <"$work/typescript" | grep remaining | awk '{ if (length > n) n = length } END { print n + 0 }')
+    [ "$longest" -le 49 ] || fail "the progress bar is $longest columns wide on a 50-column terminal"
+    grep -q "remaining" "$work/typescript" || fail "no progress bar was drawn on the terminal"
+else
+    echo "skipped the terminal width check: script(1) is not installed"
+fi
+
+finish
