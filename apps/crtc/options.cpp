@@ -132,6 +132,9 @@ void addOutputOptions(CLI::App& app, Options& o) {
         ->check(numberIn(0, 9, "an integer from 0 to 9"))
         ->type_name("N")
         ->group(group);
+    app.add_flag("--continue", o.resume,
+                 "finish an interrupted render of the same output, rendering only what it had not done")
+        ->group(group);
     app.add_option("--fps", o.fps, "frames per second of an animated GIF (default 15)")
         ->check(numberIn(1e-3, 100.0, "a number from 0.001 to 100"))
         ->type_name("F")

@@ -45,6 +45,7 @@ struct Options {
     double fps = 15;   ///< --fps of an animated GIF
     int pngCompression = -1; ///< --png-compression 0-9; -1: the image writer's default
     bool stats = false; ///< --stats
+    bool resume = false; ///< --continue: finish what an interrupted render of the same output began
     scene::QualityOverrides quality;
     std::optional<tracer::Tile> region; ///< --region: the part of the image rendered
 };

@@ -1,7 +1,9 @@
 // Rendering from crtc: frames, output naming, progress, Ctrl-C, the summary line and --stats.
 #include "render_command.hpp"
 
+#include "frame_hash.hpp"
 #include "progress_reporter.hpp"
+#include "resume_log.hpp"
 #include "row_assembler.hpp"
 #include "scene/quality_overrides.hpp"
 #include "scene/scene_json.hpp"
@@ -16,6 +18,7 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <regex>
 
@@ -92,7 +95,8 @@ std::string samplesPerPixel(const RenderTotals& totals) {
     return fmt::format("{:.2f} samples/pixel", static_cast<double>(rays) / totals.pixels);
 }
 
-void printSummary(const RenderTotals& totals, int frames, double seconds, const std::string& output) {
+void printSummary(const RenderTotals& totals, int frames, double seconds,
+                  const std::string& output) {
     const tracer::RenderOutcome& r = totals.outcome;
     const double mrays = r.renderSeconds > 0 ? r.stats.totalRays() / r.renderSeconds / 1e6 : 0;
     std::cerr << fmt::format("crtc: {}x{}, {}{}, {:.2f}s, {:.1f} Mrays/s -> {}\n", totals.width,
@@ -122,8 +126,9 @@ std::string sceneKey(scene::SceneDesc scene) {
 bool planOutput(const Options& options, OutputPlan& plan) {
     const FrameSelection& frames = options.frames;
     const bool sequence = frames.count > 1;
-    plan.path = options.output.empty() ? defaultOutput(options.script, sequence && frames.selected() > 1)
-                                       : options.output;
+    plan.path = options.output.empty()
+                    ? defaultOutput(options.script, sequence && frames.selected() > 1)
+                    : options.output;
     const bool gifName = fs::path(plan.path).extension() == ".gif";
     plan.numbered = sequence && hasFramePattern(plan.path);
     // One frame of an animation is an image like any other, unless a GIF is asked for.
@@ -148,45 +153,90 @@ bool renderedRegion(const Options& options, const scene::SceneDesc& scene, trace
     const int width = scene.settings.width, height = scene.settings.height;
     region = options.region.value_or(tracer::Tile{0, 0, width, height});
     if (region.x1 <= width && region.y1 <= height) return true;
-    std::cerr << fmt::format("crtc: --region {}:{}:{}:{} is not inside the {}x{} image\n", region.x0, region.y0,
-                             region.x1, region.y1, width, height);
+    std::cerr << fmt::format("crtc: --region {}:{}:{}:{} is not inside the {}x{} image\n",
+                             region.x0, region.y0, region.x1, region.y1, width, height);
     return false;
 }
 
-/// Renders `region` of one frame of `scene`: streamed to the file `target` as its rows are
-/// finished, or, with `keep`, into `keep` only. Returns 0 or crtc's exit status.
-int renderFrame(const Options& options, const scene::SceneDesc& scene, const tracer::Tile& region,
-                const std::string& target, const image_io::WriteOptions& write, ProgressReporter& progress,
-                tracer::PixelBuffer* keep, RenderTotals& totals) {
+/// One frame to render: where it goes, and what an interrupted run left of it.
+struct FrameJob {
+    int frame = 0;
+    tracer::Tile region;
+    std::string target;
+    tracer::PixelBuffer* keep = nullptr; ///< a GIF's frame: kept rather than written
+    const std::map<int, std::vector<float>>* loggedTiles = nullptr;
+};
+
+/// Renders the region of one frame of `scene`: streamed to the file `job.target` as its rows
+/// are finished, or into `job.keep`; tiles an interrupted run logged are taken from the log.
+/// Returns 0 or crtc's exit status.
+int renderFrame(const Options& options, const scene::SceneDesc& scene, const FrameJob& job,
+                const image_io::WriteOptions& write, ProgressReporter& progress, ResumeLog* log,
+                RenderTotals& totals) {
+    const tracer::Tile& region = job.region;
     const int width = region.width(), height = region.height();
     std::optional<StreamedOutput> streamed;
     std::optional<RowAssembler> rows;
-    if (!keep) {
-        streamed.emplace(target, width, height, write, stopRendering);
+    if (!job.keep) {
+        streamed.emplace(job.target, width, height, write, stopRendering);
         rows.emplace(width, height, [&](int yBegin, int yEnd, std::span<const float> rgb) {
             streamed->addRows(yBegin, yEnd, rgb);
         });
     }
-    tracer::RenderJob job;
-    job.tiles = tracer::regionTiles(region);
-    job.threads = options.threads;
-    job.cancel = &stopRendering;
+    const std::vector<tracer::Tile> tiles = tracer::regionTiles(region);
     int done = 0;
-    job.onTileDone = [&](const tracer::TileResult& result) {
-        // The output image is the region alone: its tiles move to its top left corner.
+    // The output image is the region alone: its tiles move to its top left corner.
+    auto deliver = [&](const tracer::TileResult& result) {
         const tracer::Tile& t = result.tile;
-        const tracer::TileResult placed{{t.x0 - region.x0, t.y0 - region.y0, t.x1 - region.x0, t.y1 - region.y0},
-                                        result.index, result.rgb};
-        if (keep) keep->place(placed);
-        else rows->add(placed);
-        progress.update(++done, static_cast<int>(job.tiles.size()));
+        const tracer::TileResult placed{
+            {t.x0 - region.x0, t.y0 - region.y0, t.x1 - region.x0, t.y1 - region.y0},
+            result.index,
+            result.rgb};
+        if (job.keep)
+            job.keep->place(placed);
+        else
+            rows->add(placed);
+        progress.update(++done, static_cast<int>(tiles.size()));
     };
-    const tracer::RenderOutcome r = tracer::render(scene, job);
-    progress.clear();
-    if (interrupted.load()) {
-        std::cerr << "crtc: interrupted; no image written\n";
-        return 130;
+    tracer::RenderJob render;
+    std::vector<int> tileIndex; // of each tile of the render job in `tiles`
+    uint64_t tracedPixels = 0;
+    for (int i = 0; i < static_cast<int>(tiles.size()); ++i) {
+        const tracer::Tile& tile = tiles[static_cast<size_t>(i)];
+        const std::vector<float>* logged = nullptr;
+        if (job.loggedTiles) {
+            auto found = job.loggedTiles->find(i);
+            if (found != job.loggedTiles->end() &&
+                found->second.size() == static_cast<size_t>(tile.width()) * tile.height() * 3)
+                logged = &found->second;
+        }
+        if (logged) {
+            deliver(tracer::TileResult{tile, i, *logged});
+            continue;
+        }
+        render.tiles.push_back(tile);
+        tileIndex.push_back(i);
+        tracedPixels += static_cast<uint64_t>(tile.width()) * tile.height();
     }
+    if (done > 0 && !options.quiet) {
+        progress.clear();
+        std::cerr << fmt::format("crtc: continuing {}: {} of {} tiles were rendered before\n",
+                                 job.target, done, tiles.size());
+    }
+    render.threads = options.threads;
+    render.cancel = &stopRendering;
+    render.onTileDone = [&](const tracer::TileResult& result) {
+        const tracer::TileResult indexed{result.tile, tileIndex[static_cast<size_t>(result.index)],
+                                         result.rgb};
+        if (log) log->addTile(job.frame, indexed);
+        deliver(indexed);
+    };
+    tracer::RenderOutcome r;
+    r.ok = true;
+    // Empty tiles would mean the whole image to the renderer: here, the log had every tile.
+    if (!render.tiles.empty()) r = tracer::render(scene, render);
+    progress.clear();
+    if (interrupted.load()) return 130;
     if (!r.ok && !r.cancelled) {
         std::cerr << "crtc: " << r.error << "\n";
         return 1;
@@ -198,7 +248,7 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const tra
         std::cerr << "crtc: " << error << "\n";
         return 2;
     }
-    totals.add(r, static_cast<uint64_t>(width) * height);
+    totals.add(r, tracedPixels);
     return 0;
 }
 
@@ -212,7 +262,8 @@ void applyCommandLine(const Options& options, scene::SceneDesc& scene) {
 /// How a frame is named in the progress: its number and its place in this run.
 std::string frameLabel(const FrameSelection& frames, int frame) {
     if (frames.count <= 1) return "";
-    if (frames.selected() == frames.count && frames.first == 0) return fmt::format("frame {}/{} ", frame + 1, frames.count);
+    if (frames.selected() == frames.count && frames.first == 0)
+        return fmt::format("frame {}/{} ", frame + 1, frames.count);
     return fmt::format("frame {} ({}/{}) ", frame, frame - frames.begin() + 1, frames.selected());
 }
 
@@ -222,7 +273,9 @@ std::string defaultOutput(const std::string& script, bool animation) {
     return fs::path(script).replace_extension(animation ? ".gif" : ".png").string();
 }
 
-bool hasFramePattern(const std::string& output) { return std::regex_search(output, framePattern()); }
+bool hasFramePattern(const std::string& output) {
+    return std::regex_search(output, framePattern());
+}
 
 std::string numberedOutput(const std::string& output, int frame) {
     std::smatch m;
@@ -234,69 +287,179 @@ std::string numberedOutput(const std::string& output, int frame) {
     return m.prefix().str() + number + m.suffix().str();
 }
 
-int renderCommand(const Options& options, const CompileFrame& compileFrame) {
-    const FrameSelection& frames = options.frames;
-    OutputPlan plan;
-    if (!planOutput(options, plan)) return 2;
-    std::signal(SIGINT, onInterrupt);
+namespace {
 
-    image_io::GifFrames gifFrames; // as 8-bit codes: a long animation fits in memory
-    std::string previousKey;
-    RenderTotals totals;
-    image_io::WriteOptions write;
-    if (options.pngCompression >= 0) write.pngCompression = options.pngCompression;
-    ProgressReporter progress(options.quiet, frames.selected());
-    const auto start = std::chrono::steady_clock::now();
-    for (int frame = frames.begin(); frame < frames.end(); ++frame) {
-        Compilation c;
-        if (!compileFrame(frame, c)) return 1;
-        scene::SceneDesc& scene = *c.scene;
-        applyCommandLine(options, scene);
-        tracer::Tile region;
-        if (!renderedRegion(options, scene, region)) return 2;
-        write.gamma = scene.settings.gamma;
-        write.srgb = scene.settings.srgb;
-        totals.width = region.width();
-        totals.height = region.height();
+/// A run of crtc's render mode: the frames selected, their output, and the resume log.
+class RenderRun {
+  public:
+    RenderRun(const Options& options, OutputPlan plan)
+        : options_(options), frames_(options.frames), plan_(std::move(plan)),
+          progress_(options.quiet, options.frames.selected()) {
+        if (options.pngCompression >= 0) write_.pngCompression = options.pngCompression;
+    }
 
-        std::string key = frames.selected() > 1 ? sceneKey(scene) : std::string();
-        const bool unchanged = frame > frames.begin() && key == previousKey;
-        previousKey = std::move(key);
-        progress.startFrame(frameLabel(frames, frame));
-        std::string error;
-        if (unchanged) {
-            // Nothing the renderer sees changed since the previous frame: reuse its image
-            // (a GIF repeats its codes; a numbered image is the previous file again).
-            ++totals.reusedFrames;
-            if (plan.gif) gifFrames.repeatLast();
-            else if (!image_io::copyImage(plan.target(frame - 1), plan.target(frame), error)) {
-                std::cerr << "crtc: " << error << "\n";
-                return 2;
-            }
-            progress.finishFrame();
-            continue;
+    int run(const CompileFrame& compileFrame);
+
+  private:
+    int openLog();
+    int renderOne(int frame, const Compilation& c, scene::SceneDesc& scene);
+    int reuseUnchanged(int frame);
+    int interruptedStatus();
+
+    const Options& options_;
+    const FrameSelection& frames_;
+    OutputPlan plan_;
+    ProgressReporter progress_;
+    image_io::WriteOptions write_;
+    image_io::GifFrames gifFrames_; // as 8-bit codes: a long animation fits in memory
+    RenderTotals totals_;
+    std::optional<ResumeLog> log_; // none for a GIF, whose frames wait in memory
+    std::string previousKey_;
+    std::vector<int> written_; // frames whose files are complete
+};
+
+int RenderRun::openLog() {
+    if (plan_.gif) {
+        if (!options_.resume) return 0;
+        std::cerr
+            << "crtc: --continue cannot finish an animated GIF (its frames wait in memory); render "
+               "numbered images (-o f_%04d.png) to be able to continue\n";
+        return 2;
+    }
+    const std::string path = ResumeLog::pathFor(plan_.path);
+    // Without the output's folder there is nothing to continue; the output reports it.
+    if (!options_.resume &&
+        !fs::is_directory(fs::path(path).parent_path().empty() ? "."
+                                                               : fs::path(path).parent_path()))
+        return 0;
+    log_.emplace();
+    std::string error;
+    if (options_.resume) {
+        if (!log_->load(path, error)) {
+            std::cerr << "crtc: cannot continue: " << error << "\n";
+            return 2;
         }
-        std::optional<tracer::PixelBuffer> kept;
-        if (plan.gif) kept.emplace(region.width(), region.height());
-        if (int status = renderFrame(options, scene, region, plan.target(frame), write, progress,
-                                     kept ? &*kept : nullptr, totals))
-            return status;
-        progress.finishFrame();
-        if (plan.gif && !gifFrames.add(toBuffer(std::move(*kept)), write, error)) {
-            std::cerr << fmt::format("crtc: cannot write '{}': {}\n", plan.path, error);
+        if (log_->frames().empty()) {
+            std::cerr << fmt::format(
+                "crtc: nothing to continue: no interrupted render of '{}' (its log '{}' "
+                "does not exist); render without --continue\n",
+                plan_.path, path);
             return 2;
         }
     }
-    std::string error;
-    if (plan.gif && !image_io::writeAnimatedGif(plan.path, gifFrames, options.fps, error)) {
+    if (!log_->open(path, options_.resume, error)) {
         std::cerr << "crtc: " << error << "\n";
         return 2;
     }
+    return 0;
+}
+
+/// Ctrl-C or a signal stopped the run: what was written, and how to go on.
+int RenderRun::interruptedStatus() {
+    if (log_) log_->flush();
+    std::string written = "no image written";
+    if (!written_.empty() && plan_.numbered)
+        written =
+            fmt::format("frames {} to {} written ({} to {})", written_.front(), written_.back(),
+                        plan_.target(written_.front()), plan_.target(written_.back()));
+    std::cerr << fmt::format("crtc: interrupted; {}{}\n", written,
+                             log_ ? "; crtc --continue with the same options finishes the render"
+                                  : "");
+    return 130;
+}
+
+int RenderRun::reuseUnchanged(int frame) {
+    // Nothing the renderer sees changed since the previous frame: reuse its image (a GIF
+    // repeats its codes; a numbered image is the previous file again).
+    ++totals_.reusedFrames;
+    std::string error;
+    if (plan_.gif)
+        gifFrames_.repeatLast();
+    else if (!image_io::copyImage(plan_.target(frame - 1), plan_.target(frame), error)) {
+        std::cerr << "crtc: " << error << "\n";
+        return 2;
+    }
+    return 0;
+}
+
+int RenderRun::renderOne(int frame, const Compilation& c, scene::SceneDesc& scene) {
+    FrameJob job;
+    job.frame = frame;
+    job.target = plan_.target(frame);
+    if (!renderedRegion(options_, scene, job.region)) return 2;
+    write_.gamma = scene.settings.gamma;
+    write_.srgb = scene.settings.srgb;
+    totals_.width = job.region.width();
+    totals_.height = job.region.height();
+    if (log_) {
+        const uint64_t hash = frameHash(c, scene, options_, job.region);
+        auto logged = log_->frames().find(frame);
+        if (options_.resume && logged != log_->frames().end()) {
+            if (logged->second.sceneHash != hash) {
+                std::cerr << fmt::format(
+                    "crtc: cannot continue: frame {} is not the frame the interrupted render "
+                    "began (the script, a file it reads, an option or crtc changed); render "
+                    "it again without --continue\n",
+                    frame);
+                return 2;
+            }
+            if (logged->second.done && fs::exists(job.target)) return -1; // finished before
+            job.loggedTiles = &logged->second.tiles;
+        }
+        log_->beginFrame(frame, hash);
+    }
+    std::optional<tracer::PixelBuffer> kept;
+    if (plan_.gif) job.keep = &kept.emplace(job.region.width(), job.region.height());
+    if (int status =
+            renderFrame(options_, scene, job, write_, progress_, log_ ? &*log_ : nullptr, totals_))
+        return status;
+    std::string error;
+    if (plan_.gif && !gifFrames_.add(toBuffer(std::move(*kept)), write_, error)) {
+        std::cerr << fmt::format("crtc: cannot write '{}': {}\n", plan_.path, error);
+        return 2;
+    }
+    return 0;
+}
+
+int RenderRun::run(const CompileFrame& compileFrame) {
+    if (int status = openLog()) return status;
+    const auto start = std::chrono::steady_clock::now();
+    for (int frame = frames_.begin(); frame < frames_.end(); ++frame) {
+        Compilation c;
+        if (!compileFrame(frame, c)) return 1;
+        scene::SceneDesc& scene = *c.scene;
+        applyCommandLine(options_, scene);
+        std::string key = frames_.selected() > 1 ? sceneKey(scene) : std::string();
+        const bool unchanged = frame > frames_.begin() && key == previousKey_;
+        previousKey_ = std::move(key);
+        progress_.startFrame(frameLabel(frames_, frame));
+        const int status = unchanged ? reuseUnchanged(frame) : renderOne(frame, c, scene);
+        if (status == 130) return interruptedStatus();
+        if (status > 0) return status;
+        progress_.finishFrame();
+        written_.push_back(frame);
+        if (log_) log_->frameDone(frame);
+    }
+    std::string error;
+    if (plan_.gif && !image_io::writeAnimatedGif(plan_.path, gifFrames_, options_.fps, error)) {
+        std::cerr << "crtc: " << error << "\n";
+        return 2;
+    }
+    if (log_) log_->remove();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!options.quiet) printSummary(totals, frames.selected(), seconds, plan.path);
-    if (options.stats) printStats(totals);
+    if (!options_.quiet) printSummary(totals_, frames_.selected(), seconds, plan_.path);
+    if (options_.stats) printStats(totals_);
     return 0;
+}
+
+} // namespace
+
+int renderCommand(const Options& options, const CompileFrame& compileFrame) {
+    OutputPlan plan;
+    if (!planOutput(options, plan)) return 2;
+    std::signal(SIGINT, onInterrupt);
+    return RenderRun(options, std::move(plan)).run(compileFrame);
 }
 
 } // namespace crt::crtc

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# crtc --continue: a render stopped half way (Ctrl-C, or killed as by a crash) is finished from
+# its resume log into the same bits as an uninterrupted render; a changed scene is refused.
+set -u
+crtc=$1
+work=$(mktemp -d)
+trap 'kill $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
+failures=0
+source "$(dirname "$0")/expect.sh"
+
+cat >"$work/scene.crt" <<'CRT'
+Settings {
+    width -> 480 height -> 360 supersampling -> 4
+    camera -> Camera { position -> vec3(0, 1, -5) pointing -> vec3(0, 0, 0) }
+    lights -> [AreaLight { corner -> vec3(2, 3, -3) edgeA -> vec3(1, 0, 0) edgeB -> vec3(0, 1, 0.5)
+                           color -> rgb(1, 1, 1) }]
+}
+Scene {
+    for i in range(10) { Sphere { center -> vec3(i * 0.5 - 2.2, 0, i * 0.3) radius -> 0.4 + t * 0.01 } }
+    Plane { normal -> vec3(0, 1, 0) position -> vec3(0, -0.4, 0) }
+}
+CRT
+
+# Starts a one-thread render in the background, waits until its log holds some tiles (or the
+# file `until` exists), then sends `signal`; leaves the exit status in $status.
+interrupt_render() { # signal log until crtc-arguments...
+    local signal=$1 log=$2 until=$3
+    shift 3
+    "$crtc" --threads 1 "$@" >"$work/out" 2>"$work/err" &
+    local pid=$!
+    for _ in $(seq 600); do
+        if [ -n "$until" ]; then [ -e "$until" ] && break
+        elif [ "$(stat -c %s "$log" 2>/dev/null || echo 0)" -gt 200000 ]; then break; fi
+        kill -0 $pid 2>/dev/null || break
+        sleep 0.05
+    done
+    kill -s "$signal" $pid 2>/dev/null || fail "the render ended before it could be interrupted"
+    wait $pid 2>/dev/null
+    status=$?
+}
+
+expect_status 0 "uninterrupted render" "$crtc" -q -o "$work/whole.png" "$work/scene.crt"
+
+# Ctrl-C half way: status 130, no image, a log; --continue finishes it.
+interrupt_render INT "$work/.a.png.crtc-resume" "" -o "$work/a.png" "$work/scene.crt"
+[ "$status" = 130 ] || fail "Ctrl-C: exit status $status, expected 130"
+expect_text "$work/err" "interrupted; no image written; crtc --continue" "Ctrl-C says how to go on"
+[ -e "$work/a.png" ] && fail "Ctrl-C left an image"
+[ -s "$work/.a.png.crtc-resume" ] || fail "Ctrl-C left no resume log"
+expect_status 0 "--continue after Ctrl-C" "$crtc" --continue -o "$work/a.png" "$work/scene.crt"
+expect_text "$work/err" "continuing .*a.png: [0-9]+ of 690 tiles were rendered before" "--continue says what it reuses"
+cmp -s "$work/a.png" "$work/whole.png" || fail "the continued render differs from the uninterrupted one"
+[ -e "$work/.a.png.crtc-resume" ] && fail "the log is left after the render finished"
+
+# Killed outright, as by a crash: the log written up to a second before is enough.
+interrupt_render KILL "$work/.b.png.crtc-resume" "" -o "$work/b.png" "$work/scene.crt"
+expect_status 0 "--continue after SIGKILL" "$crtc" -q --continue -o "$work/b.png" "$work/scene.crt"
+cmp -s "$work/b.png" "$work/whole.png" || fail "the render continued after SIGKILL differs"
+
+# A changed scene or option is refused; so is --continue with nothing to continue.
+interrupt_render INT "$work/.c.png.crtc-resume" "" -o "$work/c.png" "$work/scene.crt"
+sed -i 's/radius -> 0.4/radius -> 0.41/' "$work/scene.crt"
+expect_status 2 "--continue of a changed scene" "$crtc" --continue -o "$work/c.png" "$work/scene.crt"
+expect_text "$work/err" "cannot continue: frame 0 is not the frame the interrupted render began" "changed scene message"
+sed -i 's/radius -> 0.41/radius -> 0.4/' "$work/scene.crt"
+expect_status 2 "--continue with another size" "$crtc" --continue --width 240 -o "$work/c.png" "$work/scene.crt"
+expect_status 2 "nothing to continue" "$crtc" --continue -o "$work/none.png" "$work/scene.crt"
+expect_text "$work/err" "nothing to continue" "nothing to continue message"
+
+# Numbered frames: Ctrl-C during frame 1 names frame 0 as written; --continue renders the rest.
+mkdir "$work/whole_frames" "$work/frames"
+expect_status 0 "uninterrupted frames" "$crtc" -q --frames 3 --width 240 --height 180 -o "$work/whole_frames/f%d.png" "$work/scene.crt"
+interrupt_render INT "" "$work/frames/f0.png" --frames 3 --width 240 --height 180 -o "$work/frames/f%d.png" "$work/scene.crt"
+sleep 0.1
+expect_text "$work/err" "interrupted; frames 0 to 0 written" "Ctrl-C names the frames written"
+expect_status 0 "--continue frames" "$crtc" --continue --frames 3 --width 240 --height 180 -o "$work/frames/f%d.png" "$work/scene.crt"
+for f in f0 f1 f2; do
+    cmp -s "$work/frames/$f.png" "$work/whole_frames/$f.png" || fail "continued frame $f differs"
+done
+
+expect_status 2 "--continue of a GIF" "$crtc" --continue --frames 3 -o "$work/x.gif" "$work/scene.crt"
+expect_text "$work/err" "cannot finish an animated GIF" "GIF message"
+
+finish
