@@ -1,6 +1,8 @@
 // Diagnostic collection and "did you mean" suggestions.
 #include "diagnostic.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 
@@ -59,6 +61,23 @@ std::string closestMatch(std::string_view word, const std::vector<std::string_vi
         }
     }
     return std::string(found);
+}
+
+void addCallNote(Diagnostic& d, DiagnosticNote note) {
+    std::vector<DiagnosticNote>& notes = d.notes;
+    if (notes.size() < 2 * kCallNotesShown) {
+        notes.push_back(std::move(note));
+        return;
+    }
+    // notes: the first kCallNotesShown, the count left out (once there is one), the last
+    // kCallNotesShown. The oldest of the last ones joins those left out.
+    if (d.hiddenNotes == 0) notes.insert(notes.begin() + kCallNotesShown, DiagnosticNote{});
+    const auto oldestLast = notes.begin() + kCallNotesShown + 1;
+    const SourceRange left = oldestLast->range;
+    notes.erase(oldestLast);
+    ++d.hiddenNotes;
+    notes[kCallNotesShown] = {left, fmt::format("{} more call{} not shown", d.hiddenNotes, d.hiddenNotes == 1 ? "" : "s")};
+    notes.push_back(std::move(note));
 }
 
 } // namespace crt::lang

@@ -32,6 +32,7 @@ enum class WarningKind {
     ShadowedBuiltin,
     ZeroSizeEntity,
     EmptyScene,
+    DivisionByZero,
 };
 
 struct Diagnostic {
@@ -41,7 +42,15 @@ struct Diagnostic {
     std::vector<DiagnosticNote> notes;
     std::vector<FixIt> fixits;
     WarningKind warning = WarningKind::None;
+    uint32_t hiddenNotes = 0; ///< notes of a long chain left out (addCallNote)
 };
+
+/// The notes shown at each end of a long chain of call notes (innermost first).
+inline constexpr size_t kCallNotesShown = 5;
+/// Adds the note of the next call out of a chain that can be long (a recursion 200,000 calls
+/// deep): the first and the last kCallNotesShown notes are kept, and one note between them
+/// says how many calls were left out, as compilers cap their backtraces.
+void addCallNote(Diagnostic& d, DiagnosticNote note);
 
 /// Collects diagnostics in the order they are reported.
 class DiagnosticBag {

@@ -483,7 +483,7 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
     } catch (const EvalError&) {
         // Every run-time error inside a macro gets a note at each call site of the chain,
         // innermost first, whichever code raised it.
-        diagnostics_.items().back().notes.push_back({site->range, "in the macro called here"});
+        addCallNote(diagnostics_.items().back(), {site->range, "in the macro called here"});
         throw;
     }
 

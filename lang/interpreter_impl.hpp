@@ -114,6 +114,7 @@ private:
     [[gnu::noinline]] Value binaryOnValues(const BinaryExpr* node, const Value& a, const Value& b);
     Value binaryOnInts(const BinaryExpr* node, const Value& a, const Value& b);
     Value binaryOnNumbers(const BinaryExpr* node, const Value& a, const Value& b);
+    void warnDivisionByZero(const BinaryExpr* node, double dividend);
     Value binaryOnNonNumbers(const BinaryExpr* node, const Value& a, const Value& b);
     Value evalUnary(const UnaryExpr* node);
     Value evalCall(const CallExpr* node);
@@ -218,6 +219,7 @@ private:
     std::deque<Frame> frames_;
 
     uint64_t randomState_ = 0;
+    std::set<uint64_t> divisionsWarned_; ///< the '/' operators (file << 32 | offset) warned about
     bool animated_ = false; ///< the script reads t or clock
 
     // scene under construction

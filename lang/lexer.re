@@ -30,6 +30,16 @@ void Lexer::reportInvalid(const char* start, const char* end) {
         diagnostics_.error(range(start, end),
                            "unexpected character ';'; statements need no terminator")
             .fixits.push_back({range(start, end), ""});
+    } else if (text == "#") {
+        // POV-Ray's directives: #declare x = 1, #include "f.inc", #local, #macro ...
+        std::string_view after(end, static_cast<size_t>(end_ - end));
+        const size_t word = after.find_first_not_of("abcdefghijklmnopqrstuvwxyz");
+        const std::string_view directive = after.substr(0, word);
+        std::string hint = "; CRT has no '#' directives";
+        if (directive == "declare" || directive == "local") hint += ": write 'x = value' for '#declare x = value'";
+        else if (directive == "include") hint += ": write 'include \"file.crt\"'";
+        else if (directive == "macro") hint += ": write 'name = Macro (a, b) { ... }'";
+        diagnostics_.error(range(start, end), fmt::format("unexpected character '#'{}", directive.empty() ? "" : hint));
     } else {
         diagnostics_.error(range(start, end), fmt::format("unexpected character '{}'", text));
     }

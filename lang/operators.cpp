@@ -228,7 +228,9 @@ Value Interpreter::evalBinary(const BinaryExpr* node) {
         case BinaryOp::Add: return Value::number(x + y);
         case BinaryOp::Sub: return Value::number(x - y);
         case BinaryOp::Mul: return Value::number(x * y);
-        case BinaryOp::Div: return Value::number(x / y);
+        case BinaryOp::Div:
+            if (y != 0) return Value::number(x / y);
+            break; // warned about below
         default: break;
         }
     }
@@ -278,6 +280,16 @@ Value Interpreter::binaryOnInts(const BinaryExpr* node, const Value& a, const Va
     fail(node->opRange, operandError(opSpelling(op), a, b));
 }
 
+void Interpreter::warnDivisionByZero(const BinaryExpr* node, double dividend) {
+    // Once per '/' of the script: a loop would repeat it for nothing.
+    const SourceRange& where = node->opRange;
+    if (!divisionsWarned_.insert((uint64_t{where.file} << 32) | where.begin).second) return;
+    diagnostics_.warning(WarningKind::DivisionByZero, where,
+                         fmt::format("float division by zero gives {}", std::isnan(dividend) || dividend == 0 ? "nan"
+                                                                    : dividend > 0                             ? "inf"
+                                                                                                               : "-inf"));
+}
+
 /// Two numbers, at least one a float.
 Value Interpreter::binaryOnNumbers(const BinaryExpr* node, const Value& a, const Value& b) {
     BinaryOp op = node->op;
@@ -288,7 +300,9 @@ Value Interpreter::binaryOnNumbers(const BinaryExpr* node, const Value& a, const
     case BinaryOp::Add: return Value::number(x + y);
     case BinaryOp::Sub: return Value::number(x - y);
     case BinaryOp::Mul: return Value::number(x * y);
-    case BinaryOp::Div: return Value::number(x / y);
+    case BinaryOp::Div:
+        if (y == 0) warnDivisionByZero(node, x);
+        return Value::number(x / y);
     case BinaryOp::Mod: return Value::number(std::fmod(x, y));
     case BinaryOp::Less: return Value::boolean(order < 0);
     case BinaryOp::Greater: return Value::boolean(order > 0);

@@ -50,6 +50,7 @@ struct ParseContext {
     std::vector<Modifier> modifierScratch;
     std::vector<Param> paramScratch;
     Token lastToken;          ///< the token most recently handed to the parser
+    Token previousToken;      ///< the one before it
     // Error recovery: after a syntax error the token source skips to a resume point and
     // hands the parser RECOVERED before the token found there.
     bool recovering = false;
@@ -104,9 +105,41 @@ struct ParseContext {
     }
 
     /// The next token for the parser, after error recovery's skipping.
+    /// Brackets lexed and not closed yet, innermost last: what an error at a missing closer
+    /// points back to.
+    std::vector<Token> openBrackets;
+    uint32_t lastTokenEnd = 0; ///< where the last token before the end of the file ends
+
     Token nextToken() {
-        Token token = lexer.next();
+        Token token = lexNext();
         return skipping ? skipToResumePoint(token) : token;
+    }
+    /// The lexer's next token, with the open brackets kept up to date.
+    Token lexNext() {
+        Token token = lexer.next();
+        switch (token.kind) {
+        case TokenKind::LParen:
+        case TokenKind::LParenLine:
+        case TokenKind::LBrace:
+        case TokenKind::LBracket:
+        case TokenKind::LBracketLine: openBrackets.push_back(token); break;
+        case TokenKind::RParen:
+        case TokenKind::RBrace:
+        case TokenKind::RBracket:
+            if (!openBrackets.empty() && closerOf(openBrackets.back().kind) == token.kind) openBrackets.pop_back();
+            break;
+        default: break;
+        }
+        if (token.kind != TokenKind::EndOfFile) lastTokenEnd = token.end;
+        return token;
+    }
+    static TokenKind closerOf(TokenKind opener) {
+        switch (opener) {
+        case TokenKind::LParen:
+        case TokenKind::LParenLine: return TokenKind::RParen;
+        case TokenKind::LBrace: return TokenKind::RBrace;
+        default: return TokenKind::RBracket;
+        }
     }
     /// Error recovery: drops tokens from `token` on up to a resume point, which it returns.
     Token skipToResumePoint(Token token);

@@ -2,6 +2,7 @@
 #include "parser.hpp"
 
 #include "grammar.hpp"
+#include "object_schema.hpp"
 #include "parser_support.hpp"
 #include "string_escape.hpp"
 
@@ -47,7 +48,7 @@ bool isResumePoint(const Token& token) {
 Token ParseContext::skipToResumePoint(Token token) {
     int depth = skipDepth;
     skipDepth = 0;
-    for (;; token = lexer.next()) {
+    for (;; token = lexNext()) {
         if (token.kind == TokenKind::EndOfFile) break;
         if (token.kind == TokenKind::LBrace) {
             ++depth;
@@ -172,6 +173,7 @@ int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseCo
         return T::TOK_RECOVERED;
     }
     Token token = takeToken(ctx);
+    ctx.previousToken = ctx.lastToken;
     ctx.lastToken = token;
     *location = {token.begin, token.end};
     auto text = [&](std::string_view s) {
@@ -240,6 +242,51 @@ void Parser::error(const location_type& where, const std::string& message) {
     ctx.diagnostics.error(ctx.at(where), message);
 }
 
+namespace {
+
+/// The innermost bracket open before `found` (which may open one itself), or null.
+const Token* innermostOpenBracket(const ParseContext& ctx, const Token& found) {
+    for (auto it = ctx.openBrackets.rbegin(); it != ctx.openBrackets.rend(); ++it)
+        if (it->begin != found.begin) return &*it;
+    return nullptr;
+}
+
+std::string_view closerText(const Token& opener) {
+    const TokenKind closer = ParseContext::closerOf(opener.kind);
+    return closer == TokenKind::RParen ? ")" : closer == TokenKind::RBrace ? "}" : "]";
+}
+
+Parser::symbol_kind_type closerSymbol(const Token& opener) {
+    const TokenKind closer = ParseContext::closerOf(opener.kind);
+    return closer == TokenKind::RParen   ? Parser::symbol_kind::S_RPAREN
+           : closer == TokenKind::RBrace ? Parser::symbol_kind::S_RBRACE
+                                         : Parser::symbol_kind::S_RBRACKET;
+}
+
+/// What a POV-Ray user may have meant by `found`: "<x, y, z>" for a vector.
+std::string povRayHint(const ParseContext& ctx, const Token& found) {
+    if (found.kind != TokenKind::Less && found.kind != TokenKind::ModifierOpen) return "";
+    const std::string_view rest = ctx.file.text().substr(found.end);
+    const std::string_view inside = rest.substr(0, rest.find_first_of(">\n"));
+    if (inside.size() == rest.size() || rest[inside.size()] != '>' || inside.find(',') == std::string_view::npos)
+        return "";
+    return "; vectors are written vec3(x, y, z), not <x, y, z>";
+}
+
+/// `sphere {`: POV-Ray's lower-case object names; CRT's object types are capitalised.
+void lowerCaseTypeFix(const ParseContext& ctx, Diagnostic& d) {
+    const Token& name = ctx.previousToken;
+    if (name.kind != TokenKind::Identifier) return;
+    std::string capitalised(ctx.text(name));
+    capitalised[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(capitalised[0])));
+    if (findObjectType(capitalised) == ObjectType::Count) return;
+    const SourceRange range = ctx.range(name.begin, name.end);
+    d.notes.push_back({range, fmt::format("object types start with a capital letter: '{} {{ … }}'", capitalised)});
+    d.fixits.push_back({range, capitalised});
+}
+
+} // namespace
+
 void Parser::report_syntax_error(const context& yyctx) const {
     const Token& found = ctx.lastToken;
     SourceRange where = ctx.range(found.begin, found.end);
@@ -269,7 +316,8 @@ void Parser::report_syntax_error(const context& yyctx) const {
     std::string message = fmt::format("unexpected {}", foundText);
     bool expectsArrow = false;
     bool expectsBrace = std::find(names.begin(), names.end(), symbol_kind::S_RBRACE) != names.end();
-    if (count > 0 && count < kMaxExpected && names.size() <= 4) {
+    const bool listsExpected = count > 0 && count < kMaxExpected && names.size() <= 4;
+    if (listsExpected) {
         message += "; expected ";
         for (size_t i = 0; i < names.size(); ++i) {
             if (i > 0) message += i + 1 == names.size() ? " or " : ", ";
@@ -282,9 +330,27 @@ void Parser::report_syntax_error(const context& yyctx) const {
     bool topLevelKeyword = found.kind == TokenKind::KwScene || found.kind == TokenKind::KwSettings ||
                            found.kind == TokenKind::KwInclude;
     bool missingBrace = found.begin != ctx.lastResumedAt && found.atLineStart && topLevelKeyword && expectsBrace;
+    const Token* opener = innermostOpenBracket(ctx, found);
+    if (found.kind == TokenKind::EndOfFile) {
+        // Point at the end of the last line with something on it, not at an empty last line.
+        where = ctx.range(ctx.lastTokenEnd, ctx.lastTokenEnd);
+        if (opener && std::find(names.begin(), names.end(), closerSymbol(*opener)) != names.end())
+            message = fmt::format("unexpected end of file; expected '{}'", closerText(*opener));
+    }
+    message += povRayHint(ctx, found);
     if (found.begin != ctx.lastReportedAt) {
         ctx.lastReportedAt = found.begin;
         Diagnostic& d = ctx.diagnostics.error(where, std::move(message));
+        // "expected ')'" points back at the '(' it would close, as Clang does, when that is on
+        // another line.
+        const bool expectsCloser = opener && listsExpected &&
+                                   std::find(names.begin(), names.end(), closerSymbol(*opener)) != names.end();
+        const bool openerElsewhere =
+            opener && ctx.file.lineColumn(opener->begin).line != ctx.file.lineColumn(where.begin).line;
+        if (openerElsewhere && (expectsCloser || found.kind == TokenKind::EndOfFile))
+            d.notes.push_back({ctx.range(opener->begin, opener->end),
+                               fmt::format("to match this '{}'", ctx.text(*opener))});
+        if (found.kind == TokenKind::LBrace) lowerCaseTypeFix(ctx, d);
         if (expectsArrow && found.kind == TokenKind::Assign) {
             d.message += "; attributes are written 'name -> value'";
             d.fixits.push_back({where, "->"});

@@ -18,6 +18,7 @@ std::string_view warningCode(WarningKind kind) {
     case WarningKind::ShadowedBuiltin: return "shadowed-builtin";
     case WarningKind::ZeroSizeEntity: return "zero-size-entity";
     case WarningKind::EmptyScene: return "empty-scene";
+    case WarningKind::DivisionByZero: return "division-by-zero";
     }
     return "";
 }

@@ -9,7 +9,9 @@
 #include "scene/scene_json.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -28,6 +30,17 @@ bool useColor(crtc::ColorWhen when) {
     if (when == crtc::ColorWhen::Never) return false;
     const char* term = std::getenv("TERM");
     return isatty(STDERR_FILENO) && !std::getenv("NO_COLOR") && term && std::string_view(term) != "dumb";
+}
+
+/// Why the file at `path` could not be read: missing, a folder, not permitted.
+std::string whyUnreadable(const std::string& path) {
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    if (status.type() == fs::file_type::not_found) return "no such file";
+    if (status.type() == fs::file_type::directory) return "it is a folder";
+    std::ifstream probe(path);
+    if (!probe) return std::strerror(errno);
+    return "it is not a regular file";
 }
 
 /// Prints the diagnostics of one compilation, except those already printed for an
@@ -91,7 +104,7 @@ int run(int argc, char** argv) {
 
     std::optional<std::string> text = readFile(options.script);
     if (!text) {
-        std::cerr << "crtc: cannot read '" << options.script << "'\n";
+        std::cerr << "crtc: cannot read '" << options.script << "': " << whyUnreadable(options.script) << "\n";
         return 2;
     }
 
