@@ -1,0 +1,113 @@
+;;; e2e.el --- crt-mode and Eglot against crt-lsp, in batch Emacs -*- lexical-binding: t -*-
+;; Driven by run.sh, which sets CRT_LSP, CRT_EDITORS_EMACS and CRT_WORK.
+
+(require 'package)
+;; Debian's elpa-eglot (and the newer project and xref it needs), which -Q does not load.
+(setq package-directory-list '("/usr/share/emacs/site-lisp/elpa"))
+(package-initialize)
+(add-to-list 'load-path (getenv "CRT_EDITORS_EMACS"))
+(require 'crt-mode)
+(require 'eglot)
+(require 'flymake)
+
+(defun crt-e2e-step (name) (princ (format "emacs e2e: %s\n" name)))
+(defun crt-e2e-fail (format-string &rest args)
+  (princ (concat "emacs e2e: FAIL: " (apply #'format format-string args) "\n") #'external-debugging-output)
+  (kill-emacs 1))
+(defun crt-e2e-wait (predicate seconds)
+  "Process output until PREDICATE holds or SECONDS pass; the last value of PREDICATE."
+  (let ((deadline (+ (float-time) seconds)) value)
+    (while (and (not (setq value (funcall predicate))) (< (float-time) deadline))
+      (accept-process-output nil 0.05))
+    value))
+(defun crt-e2e-goto (line text)
+  "Point at the start of TEXT on LINE (1-based)."
+  (goto-char (point-min))
+  (forward-line (1- line))
+  (unless (search-forward text (line-end-position) t)
+    (crt-e2e-fail "no '%s' on line %d" text line))
+  (goto-char (match-beginning 0)))
+
+(setq crt-lsp-program (getenv "CRT_LSP"))
+(setq eglot-sync-connect 10)
+(let ((work (getenv "CRT_WORK")))
+  ;; 1. The mode, its comments and its highlighting, on a script without the server.
+  (crt-e2e-step "mode")
+  (find-file (expand-file-name "syntax.crt" work))
+  (unless (eq major-mode 'crt-mode) (crt-e2e-fail "major mode is %s" major-mode))
+  (font-lock-ensure)
+  (dolist (case '((1 "for" font-lock-comment-face) (1 "Scene" font-lock-comment-face)
+                  (2 "Sphere" font-lock-type-face) (2 "center" font-lock-variable-name-face)
+                  (2 "vec3" font-lock-builtin-face) (3 "Scene" font-lock-keyword-face)
+                  (4 "2." font-lock-constant-face) (4 "true" font-lock-constant-face)
+                  (4 "\"a" font-lock-string-face) (4 "-- done" font-lock-comment-delimiter-face)))
+    (crt-e2e-goto (nth 0 case) (nth 1 case))
+    (let ((face (get-text-property (point) 'face)))
+      (unless (if (listp face) (memq (nth 2 case) face) (eq face (nth 2 case)))
+        (crt-e2e-fail "face at %d '%s' is %S, expected %s" (nth 0 case) (nth 1 case) face (nth 2 case)))))
+  (crt-e2e-goto 1 "Scene")
+  (unless (nth 4 (syntax-ppss)) (crt-e2e-fail "line 1 is not a comment for syntax-ppss"))
+  (unless (equal comment-start "-- ") (crt-e2e-fail "comment-start is %S" comment-start))
+
+  ;; 2. Indentation: every line flush left, then indent-region: one level per bracket.
+  (crt-e2e-step "indentation")
+  (find-file (expand-file-name "indent.crt" work))
+  (let ((expected (buffer-string)))
+    (goto-char (point-min))
+    (while (re-search-forward "^[ \t]+" nil t) (replace-match ""))
+    (indent-region (point-min) (point-max))
+    (unless (equal (buffer-string) expected)
+      (crt-e2e-fail "indentation:\n%s\nexpected:\n%s" (buffer-string) expected)))
+  (set-buffer-modified-p nil)
+
+  ;; 3. Eglot: a diagnostic, hover, completion and formatting from crt-lsp.
+  (crt-e2e-step "eglot")
+  (find-file (expand-file-name "scene.crt" work))
+  ;; What M-x eglot does (eglot-ensure waits for the command loop, which batch Emacs lacks).
+  (apply #'eglot (eglot--guess-contact))
+  (unless (crt-e2e-wait #'eglot-current-server 15) (crt-e2e-fail "eglot did not connect to crt-lsp"))
+  (crt-e2e-step "diagnostics")
+  (let ((diagnostic
+         (crt-e2e-wait (lambda ()
+                         (seq-find (lambda (d) (string-match-p "radus" (flymake-diagnostic-text d)))
+                                   (flymake-diagnostics)))
+                       15)))
+    (unless diagnostic (crt-e2e-fail "no diagnostic about 'radus': %S" (flymake-diagnostics)))
+    (crt-e2e-goto 2 "radus")
+    (unless (= (flymake-diagnostic-beg diagnostic) (point))
+      (crt-e2e-fail "the diagnostic starts at %d, not at 'radus' (%d)" (flymake-diagnostic-beg diagnostic) (point)))
+    ;; Eglot gives flymake its own types; eglot-error is an error's.
+    (unless (memq (flymake-diagnostic-type diagnostic) '(eglot-error :error))
+      (crt-e2e-fail "the diagnostic is a %S" (flymake-diagnostic-type diagnostic))))
+
+  (crt-e2e-step "hover")
+  (crt-e2e-goto 2 "Sphere")
+  (forward-char 2)
+  (let* ((hover (jsonrpc-request (eglot-current-server) :textDocument/hover
+                                 (eglot--TextDocumentPositionParams)))
+         (contents (plist-get hover :contents))
+         (text (if (stringp contents) contents (plist-get contents :value))))
+    (unless (and text (string-match-p "Sphere" text)) (crt-e2e-fail "hover on Sphere: %S" hover)))
+
+  (crt-e2e-step "completion")
+  (crt-e2e-goto 2 "radus")
+  (let* ((capf (eglot-completion-at-point))
+         (candidates (and capf (all-completions "" (nth 2 capf)))))
+    (unless (member "radius" candidates) (crt-e2e-fail "completion: %S" candidates))
+    (when (member "center" candidates) (crt-e2e-fail "completion offers the given 'center'")))
+
+  (crt-e2e-step "formatting")
+  (goto-char (point-min))
+  (search-forward "radus")
+  (replace-match "radius")
+  (goto-char (point-max))
+  (insert "Scene{ball}\n")
+  (eglot-format-buffer)
+  (goto-char (point-min))
+  (unless (search-forward "\nScene { ball }\n" nil t)
+    (crt-e2e-fail "formatting gave:\n%s" (buffer-string)))
+
+  (crt-e2e-step "ok")
+  (set-buffer-modified-p nil)
+  (eglot-shutdown (eglot-current-server))
+  (kill-emacs 0))
