@@ -18,7 +18,7 @@ fi
 cp "$root/LICENSE" LICENSE
 
 ./node_modules/.bin/esbuild src/extension.js --bundle --platform=node --target=node18 \
-    --format=cjs --external:vscode --minify --sourcemap=inline --log-level=warning \
+    --format=cjs --external:vscode --minify --log-level=warning \
     --outfile=dist/extension.js
 
 version=$(node -p 'require("./package.json").version')

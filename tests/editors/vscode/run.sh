@@ -3,6 +3,8 @@
 #   run.sh grammar         the TextMate grammar on the annotated scripts in grammar/
 #   run.sh extension CRTC  activation, settings, Render and Preview under a stubbed vscode
 #                          module, and the problem matcher on the real crtc's output
+#   run.sh package         editors/vscode/package.sh: the .vsix holds the bundle and what
+#                          the marketplace page shows, nothing else, with no vsce warning
 # The pinned npm packages are installed into editors/vscode/node_modules first; exits 77
 # (skipped) when node, npm or the npm registry is not there.
 set -euo pipefail
@@ -27,8 +29,21 @@ grammar)
 extension)
     CRTC=$(realpath "$2") node --test "$here"
     ;;
+package)
+    if [ ! -f "$here/../../../LICENSE" ]; then
+        echo "skipped: the repository has no LICENSE file for the package to ship"
+        exit 77
+    fi
+    out=$(mktemp -d)
+    trap 'rm -rf "$out"' EXIT
+    "$extension/package.sh" "$out"
+    version=$(node -p "require('$extension/package.json').version")
+    mkdir "$out/unpacked"
+    (cd "$out/unpacked" && unzip -q "$out/crt-$version.vsix")
+    node "$here/package_check.js" "$out/unpacked"
+    ;;
 *)
-    echo "usage: run.sh grammar | extension CRTC" >&2
+    echo "usage: run.sh grammar | extension CRTC | package" >&2
     exit 2
     ;;
 esac
