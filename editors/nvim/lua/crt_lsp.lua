@@ -56,27 +56,33 @@ local function attach(opts)
 end
 
 local function start_or_reuse(bufnr, opts)
-  local root = vim.fn.fnamemodify(vim.api.nvim_buf_get_name(bufnr), ":p:h")
-  -- One client per folder, shared by its buffers.
-  for _, client in pairs(vim.lsp.get_active_clients()) do
-    if client.name == "crt-lsp" and client.config.root_dir == root then
-      vim.lsp.buf_attach_client(bufnr, client.id)
-      return
-    end
-  end
   local cmd = opts.cmd or { "crt-lsp" }
   if vim.fn.executable(cmd[1]) ~= 1 then
     vim.notify("crt-lsp: '" .. cmd[1] .. "' is not an executable; install crt or pass "
       .. "cmd = { '/path/to/crt-lsp' } to require('crt_lsp').setup()", vim.log.levels.ERROR)
     return
   end
-  local id = vim.lsp.start_client({
+  local config = {
     name = "crt-lsp",
     cmd = cmd,
-    root_dir = root,
+    -- One client per folder, shared by its buffers.
+    root_dir = vim.fn.fnamemodify(vim.api.nvim_buf_get_name(bufnr), ":p:h"),
     init_options = opts.init_options,
     on_attach = attach(opts),
-  })
+  }
+  -- Neovim 0.8 and later reuse a client of the same name and folder themselves (and
+  -- deprecate start_client); 0.7 has only the pieces.
+  if vim.lsp.start then
+    vim.lsp.start(config, { bufnr = bufnr })
+    return
+  end
+  for _, client in pairs(vim.lsp.get_active_clients()) do
+    if client.name == config.name and client.config.root_dir == config.root_dir then
+      vim.lsp.buf_attach_client(bufnr, client.id)
+      return
+    end
+  end
+  local id = vim.lsp.start_client(config)
   if id then vim.lsp.buf_attach_client(bufnr, id) end
 end
 

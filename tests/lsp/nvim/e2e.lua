@@ -182,6 +182,17 @@ vim.cmd("bwipeout!")
 local stopped = vim.wait(10000, function() return vim.fn.filereadable(os.getenv("CRT_FAKE_LOG") .. ".stopped") == 1 end, 50)
 if not stopped then fail("the preview process was not stopped when its buffer went") end
 
+-- 9. A server that is not there: a message naming it and the option, no client.
+step("missing server")
+local notified = {}
+vim.notify = function(message) table.insert(notified, message) end
+require("crt_lsp").setup({ cmd = { "/nonexistent/crt-lsp" } })
+vim.cmd("edit " .. os.getenv("CRT_SYNTAX_FILE"))
+local message = table.concat(notified, "\n")
+if not (message:find("'/nonexistent/crt-lsp' is not an executable", 1, true) and message:find("cmd = ", 1, true)) then
+  fail("no message about the missing server: " .. message)
+end
+
 step("ok")
 vim.lsp.stop_client(client_id)
 vim.wait(2000, function() return vim.lsp.get_client_by_id(client_id) == nil end, 50)
