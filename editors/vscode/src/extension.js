@@ -30,9 +30,13 @@ function createClient() {
 }
 
 async function restartClient() {
-  if (client) await client.stop();
-  client = createClient();
-  if (client) await client.start();
+  try {
+    if (client) await client.stop();
+    client = createClient();
+    if (client) await client.start();
+  } catch (error) {
+    vscode.window.showErrorMessage(`CRT: crt-lsp could not start: ${error.message}`);
+  }
 }
 
 function activate(context) {
