@@ -107,6 +107,13 @@
   (unless (search-forward "\nScene { ball }\n" nil t)
     (crt-e2e-fail "formatting gave:\n%s" (buffer-string)))
 
+  (crt-e2e-step "missing server")
+  (let* ((crt-lsp-program "/nonexistent/crt-lsp")
+         (message (condition-case err (progn (crt-eglot-contact) nil)
+                    (user-error (error-message-string err)))))
+    (unless (and message (string-match-p "/nonexistent/crt-lsp.*crt-lsp-program" message))
+      (crt-e2e-fail "no error naming the missing server and the setting: %S" message)))
+
   (crt-e2e-step "ok")
   (set-buffer-modified-p nil)
   (eglot-shutdown (eglot-current-server))

@@ -131,3 +131,8 @@ test("a tasks.json entry resolves to crtc with its options before the file", asy
   assert.deepEqual(resolved.execution.args, ["--width", "64", "/s/a.crt"]);
   assert.equal(provider.resolveTask({ definition: { type: "crt" } }), undefined);
 });
+
+test("the extension's version is the project's (CMakeLists.txt)", () => {
+  const cmake = require("fs").readFileSync(path.join(__dirname, "../../../CMakeLists.txt"), "utf8");
+  assert.equal(manifest.version, /project\(crt VERSION (\S+)/.exec(cmake)[1]);
+});
