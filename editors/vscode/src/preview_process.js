@@ -43,7 +43,8 @@ function startPreview(crtc, file) {
       resolve({ ...preview, process: child });
     });
     child.on("error", (error) => fail(`cannot run '${crtc}': ${error.message}`));
-    child.on("exit", (code, signal) =>
+    // "close", not "exit": by then standard error has been read to its end.
+    child.on("close", (code, signal) =>
       fail(`crtc --preview ended (${signal || `exit status ${code}`}) before printing its URL`),
     );
   });
