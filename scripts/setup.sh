@@ -15,7 +15,13 @@ packages=(
     python3 # the language server's protocol session tests (tests/lsp), docs transcripts (tests/docs)
     jq # the docs' transcripts that pipe JSON through it
     neovim  # the language server's end-to-end test (tests/lsp/nvim)
+    emacs-nox elpa-eglot # the Emacs mode's end-to-end test (tests/editors/emacs)
+    unzip # the VS Code package's test opens the .vsix (tests/editors/vscode)
 )
+# The VS Code extension's tests and package.sh need node and npm. The machines come with
+# Node.js 20 and its npm (not Debian's packages, which conflict with them): Debian's only
+# where there is none.
+command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 case "${1:-}" in
 --bench) packages+=(povray time) ;;
 --fuzz) packages+=(clang libclang-rt-14-dev) ;;

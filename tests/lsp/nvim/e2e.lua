@@ -15,7 +15,33 @@ end
 -- The editors/nvim glue: filetype detection, syntax and the client setup.
 vim.opt.runtimepath:append(os.getenv("CRT_EDITORS_NVIM"))
 vim.cmd("runtime! ftdetect/crt.vim")
-require("crt_lsp").setup({ cmd = { lsp_path } })
+local opened_url
+require("crt_lsp").setup({
+  cmd = { lsp_path },
+  crtc = os.getenv("CRT_FAKE_CRTC"),
+  mappings = { rename = "<leader>R", format = "<leader>F", references = false },
+  open_url = function(url) opened_url = url end,
+})
+-- The syntax file, on a script of its own (its invalid escape would be a diagnostic below):
+-- (line, text, expected group at the text's first column).
+step("syntax")
+vim.cmd("edit " .. os.getenv("CRT_SYNTAX_FILE"))
+for _, case in ipairs({
+  { 1, "--", "crtComment" }, { 1, "for", "crtComment" }, { 1, "Scene", "crtComment" },
+  { 1, "2.", "crtComment" }, { 2, "Sphere", "crtType" }, { 2, "center", "crtAttribute" },
+  { 2, "->", "crtOperator" }, { 2, "-- é", "crtComment" }, { 3, "Scene", "crtKeyword" },
+  { 4, "2.,", "crtNumber" }, { 4, "., .25", "crtNumber" }, { 4, ".25", "crtNumber" },
+  { 4, "\\t", "crtEscape" }, { 4, "\\q", "crtEscapeError" }, { 4, "true", "crtBoolean" },
+  { 4, "1e3", "crtNumber" },
+}) do
+  local lnum, text, want = case[1], case[2], case[3]
+  local col = vim.api.nvim_buf_get_lines(0, lnum - 1, lnum, false)[1]:find(text, 1, true)
+  local got = vim.fn.synIDattr(vim.fn.synID(lnum, col, 1), "name")
+  if got ~= want then
+    fail(string.format("syntax at %d:%d ('%s') is '%s', expected '%s'", lnum, col, text, got, want))
+  end
+end
+
 vim.cmd("edit " .. file)
 local buf = vim.api.nvim_get_current_buf()
 if vim.bo[buf].filetype ~= "crt" then fail("filetype is '" .. vim.bo[buf].filetype .. "', not crt") end
@@ -28,6 +54,16 @@ vim.wait(5000, function()
   return client_id ~= nil
 end, 20)
 if not client_id then fail("crt-lsp did not attach to the buffer") end
+
+-- The mappings set on attach: defaults, an override, a disabled one; and the omnifunc.
+step("mappings")
+if vim.bo[buf].omnifunc ~= "v:lua.vim.lsp.omnifunc" then fail("omnifunc is '" .. vim.bo[buf].omnifunc .. "'") end
+local function mapped(lhs) return vim.fn.maparg(lhs, "n", false, true).buffer == 1 end
+for _, lhs in ipairs({ "K", "gd", "<leader>R", "<leader>F" }) do
+  if not mapped(lhs) then fail("no buffer mapping for " .. lhs) end
+end
+if mapped("gr") then fail("gr is mapped although references = false") end
+if mapped("<leader>rn") then fail("the default rename mapping stayed beside its override") end
 
 local function request(method, params)
   local responses, err = vim.lsp.buf_request_sync(buf, method, params, 10000)
@@ -124,6 +160,38 @@ local broken = vim.wait(15000, function()
   return false
 end, 50)
 if not broken then fail("no diagnostic for the new error: " .. vim.inspect(vim.diagnostic.get(buf))) end
+
+-- 7. Formatting, by typing the mapping (format() or, on 0.7, formatting(): both asynchronous).
+step("formatting")
+vim.api.nvim_buf_set_lines(buf, 3, 4, false, { "Scene{ball}" })
+vim.api.nvim_feedkeys(vim.api.nvim_replace_termcodes("<leader>F", true, false, true), "mx", false)
+local formatted = vim.wait(15000, function()
+  return vim.api.nvim_buf_get_lines(buf, 3, 4, false)[1] == "Scene { ball }"
+end, 50)
+if not formatted then fail("formatting: " .. vim.api.nvim_buf_get_lines(buf, 3, 4, false)[1]) end
+
+-- 8. :CrtPreview runs crtc --preview on the file, opens the URL it prints, and stops it
+-- when the buffer goes.
+step("preview")
+vim.cmd("CrtPreview")
+if not vim.wait(10000, function() return opened_url ~= nil end, 50) then fail("the preview URL was not opened") end
+if opened_url ~= "http://127.0.0.1:8123/?token=abc" then fail("opened " .. opened_url) end
+local args = table.concat(vim.fn.readfile(os.getenv("CRT_FAKE_LOG")), " ")
+if args ~= "--preview " .. file then fail("crtc ran with: " .. args) end
+vim.cmd("bwipeout!")
+local stopped = vim.wait(10000, function() return vim.fn.filereadable(os.getenv("CRT_FAKE_LOG") .. ".stopped") == 1 end, 50)
+if not stopped then fail("the preview process was not stopped when its buffer went") end
+
+-- 9. A server that is not there: a message naming it and the option, no client.
+step("missing server")
+local notified = {}
+vim.notify = function(message) table.insert(notified, message) end
+require("crt_lsp").setup({ cmd = { "/nonexistent/crt-lsp" } })
+vim.cmd("edit " .. os.getenv("CRT_SYNTAX_FILE"))
+local message = table.concat(notified, "\n")
+if not (message:find("'/nonexistent/crt-lsp' is not an executable", 1, true) and message:find("cmd = ", 1, true)) then
+  fail("no message about the missing server: " .. message)
+end
 
 step("ok")
 vim.lsp.stop_client(client_id)
