@@ -13,6 +13,9 @@ packages=(
     libpng-dev # PNG output, written without OpenImageIO
     python3 # the language server's protocol session tests (tests/lsp)
     neovim  # the language server's end-to-end test (tests/lsp/nvim)
+    go-md2man # the manual pages, from docs/man/*.md
+    dpkg-dev file # the Debian package: dpkg-shlibdeps computes Depends, on files file finds ELF
+    man-db    # the install tests read the installed manual pages with man
 )
 case "${1:-}" in
 --bench) packages+=(povray time) ;;
