@@ -18,6 +18,11 @@ for tool in dpkg dpkg-deb apt-get man; do
         exit 77
     fi
 done
+# Slim container images tell dpkg to drop manual pages and documentation on install.
+if grep -sqE '^path-exclude[= ]+/usr/share/(man|doc)' /etc/dpkg/dpkg.cfg /etc/dpkg/dpkg.cfg.d/*; then
+    echo "skipped: dpkg is told not to install manual pages or documentation (path-exclude in /etc/dpkg)"
+    exit 77
+fi
 if dpkg-query -W -f='${Status}' crt 2>/dev/null | grep -q "install ok installed"; then
     echo "skipped: a crt package is installed already; this test would replace and remove it"
     exit 77
