@@ -7,17 +7,11 @@
 # tree's crtc, whose image the installed one must reproduce bit for bit.
 # Prints FAIL lines and exits 1 on any failure.
 set -u
+source "$(dirname "$0")/common.sh"
 prefix=$1 build_crtc=$2 source_dir=$3 python=$4
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-failures=0
-fail() {
-    echo "FAIL: $*"
-    failures=$((failures + 1))
-}
-# The installed programs must need nothing from the environment or the source tree.
-run() { env -u CRT_PATH -u CRT_IMAGE_IO_MODULE "$@"; }
 
 for file in bin/crtc bin/crt-lsp lib/crt/crt_image_io_oiio.so share/crt/stdlib/colors.crt \
     share/man/man1/crtc.1.gz share/man/man1/crt-lsp.1.gz \
@@ -39,21 +33,21 @@ diff -u "$work/editors.want" "$work/editors.got" >"$work/editors.diff" ||
 # build tree's crtc makes (PNG, written without the image module).
 cp -r "$prefix/share/doc/crt/examples" "$work/examples"
 size=(--width 80 --height 60 -q)
-run "$prefix/bin/crtc" "$work/examples/piano_foot.crt" "${size[@]}" -o "$work/installed.png" ||
+run_installed "$prefix/bin/crtc" "$work/examples/piano_foot.crt" "${size[@]}" -o "$work/installed.png" ||
     fail "the installed crtc could not render piano_foot.crt to PNG"
-run "$build_crtc" "$work/examples/piano_foot.crt" "${size[@]}" -o "$work/built.png" ||
+run_installed "$build_crtc" "$work/examples/piano_foot.crt" "${size[@]}" -o "$work/built.png" ||
     fail "the build tree's crtc could not render piano_foot.crt"
 cmp -s "$work/installed.png" "$work/built.png" ||
     fail "the installed crtc's image differs from the build tree's"
 # A JPEG goes through the image module: the one in lib/crt/.
-run "$prefix/bin/crtc" "$work/examples/piano_foot.crt" "${size[@]}" -o "$work/installed.jpg" ||
+run_installed "$prefix/bin/crtc" "$work/examples/piano_foot.crt" "${size[@]}" -o "$work/installed.jpg" ||
     fail "the installed crtc could not render piano_foot.crt to JPEG (the image module)"
 [ "$(head -c 3 "$work/installed.jpg" | od -An -tx1 | tr -d ' ')" = ffd8ff ] ||
     fail "installed.jpg is not a JPEG file"
 
-[ "$(run "$prefix/bin/crtc" --version)" = "$(run "$build_crtc" --version)" ] ||
+[ "$(run_installed "$prefix/bin/crtc" --version)" = "$(run_installed "$build_crtc" --version)" ] ||
     fail "crtc --version differs between the installed and the built crtc"
-run "$prefix/bin/crt-lsp" --version | grep -qE '^crt-lsp [0-9]' || fail "crt-lsp --version"
+run_installed "$prefix/bin/crt-lsp" --version | grep -qE '^crt-lsp [0-9]' || fail "crt-lsp --version"
 
 # man finds the pages and renders them.
 [ "$(MANPATH="$prefix/share/man" man -w crtc)" = "$prefix/share/man/man1/crtc.1.gz" ] ||
@@ -69,8 +63,7 @@ completion=$(bash -c 'source "$1"
 [ "$completion" = $'--frames\nalways' ] || fail "the installed completion offers: $completion"
 
 # The language server resolves includes from the installed standard library.
-run "$python" "$source_dir/tests/lsp/run_session.py" "$prefix/bin/crt-lsp" \
+run_installed "$python" "$source_dir/tests/lsp/run_session.py" "$prefix/bin/crt-lsp" \
     "$here/stdlib_session.json" || fail "the crt-lsp session with the installed standard library"
 
-[ $failures -eq 0 ] || exit 1
-echo "installed crt in $prefix: ok"
+finish "installed crt in $prefix"

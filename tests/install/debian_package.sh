@@ -6,6 +6,7 @@
 # Skipped (77) unless run as root with dpkg and apt-get, or when a crt package is installed
 # already (it would be replaced, then removed).
 set -u
+source "$(dirname "$0")/common.sh"
 build=$1 source_dir=$2 python=$3
 here=$(cd "$(dirname "$0")" && pwd)
 if [ "$(id -u)" -ne 0 ]; then
@@ -37,11 +38,6 @@ cleanup() {
     rm -rf "$work"
 }
 trap cleanup EXIT
-failures=0
-fail() {
-    echo "FAIL: $*"
-    failures=$((failures + 1))
-}
 
 if ! (cd "$work" && cpack --config "$build/CPackConfig.cmake" -G DEB -B "$work") >"$work/cpack.log" 2>&1; then
     cat "$work/cpack.log"
@@ -80,5 +76,4 @@ installed=false
 [ -e /usr/bin/crtc ] && fail "/usr/bin/crtc is still there after apt-get remove"
 [ -e /usr/lib/crt ] && fail "/usr/lib/crt is still there after apt-get remove"
 
-[ $failures -eq 0 ] || exit 1
-echo "Debian package $(basename "$deb"): ok"
+finish "Debian package $(basename "$deb")"

@@ -4,6 +4,7 @@
 # module installed beside it, the installed crtc fails and says where it looked.
 #   install_prefix.sh BUILD_DIR SOURCE_DIR PYTHON
 set -u
+source "$(dirname "$0")/common.sh"
 build=$1 source_dir=$2 python=$3
 here=$(cd "$(dirname "$0")" && pwd)
 if ! command -v man >/dev/null 2>&1; then
@@ -12,12 +13,6 @@ if ! command -v man >/dev/null 2>&1; then
 fi
 prefix=$(mktemp -d)
 trap 'rm -rf "$prefix"' EXIT
-failures=0
-fail() {
-    echo "FAIL: $*"
-    failures=$((failures + 1))
-}
-run() { env -u CRT_PATH -u CRT_IMAGE_IO_MODULE "$@"; }
 
 if ! cmake --install "$build" --prefix "$prefix" >"$prefix.log" 2>&1; then
     cat "$prefix.log"
@@ -30,7 +25,7 @@ bash "$here/check_installed.sh" "$prefix" "$build/bin/crtc" "$source_dir" "$pyth
 
 scene=$prefix/share/doc/crt/examples/piano_foot.crt # includes colors.crt
 mv "$prefix/share/crt/stdlib" "$prefix/stdlib.away"
-run "$prefix/bin/crtc" --check "$scene" >/dev/null 2>"$prefix/err"
+run_installed "$prefix/bin/crtc" --check "$scene" >/dev/null 2>"$prefix/err"
 status=$?
 [ $status -eq 1 ] || fail "without the installed standard library, crtc --check exited $status, not 1"
 grep -q "cannot find include file \"colors.crt\"" "$prefix/err" ||
@@ -39,12 +34,11 @@ grep -q "$source_dir/stdlib" "$prefix/err" && fail "the installed crtc searched 
 mv "$prefix/stdlib.away" "$prefix/share/crt/stdlib"
 
 mv "$prefix/lib/crt/crt_image_io_oiio.so" "$prefix/module.away"
-run "$prefix/bin/crtc" "$scene" --width 8 --height 6 -q -o "$prefix/out.jpg" 2>"$prefix/err"
+run_installed "$prefix/bin/crtc" "$scene" --width 8 --height 6 -q -o "$prefix/out.jpg" 2>"$prefix/err"
 status=$?
 [ $status -eq 2 ] || fail "without the installed image module, a JPEG render exited $status, not 2"
 grep -q "$prefix/lib/crt/crt_image_io_oiio.so" "$prefix/err" ||
     fail "without the installed image module: $(cat "$prefix/err")"
 [ -e "$prefix/out.jpg" ] && fail "a JPEG was written without the image module"
 
-[ $failures -eq 0 ] || exit 1
-echo "install into a prefix: ok"
+finish "install into a prefix"

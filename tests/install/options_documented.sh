@@ -6,13 +6,9 @@
 # Options are read from the help text as words starting with - or -- (the layout of the
 # help text does not matter).
 set -u
+source "$(dirname "$0")/common.sh"
 crtc=$1 crt_lsp=$2 source_dir=$3
 completion=$source_dir/apps/crtc/completion/crtc.bash
-failures=0
-fail() {
-    echo "FAIL: $*"
-    failures=$((failures + 1))
-}
 
 # The options named in a text: -x, -Word, --long-option (not Ctrl-C, N-1 or --color's =WHEN).
 options_in() {
@@ -64,5 +60,4 @@ while read -r kind option; do
     fi
 done <<<"$offered"
 
-[ $failures -eq 0 ] || exit 1
-echo "crtc: ${#crtc_options[@]} options, crt-lsp: ${#lsp_options[@]} options: documented and completed"
+finish "crtc: ${#crtc_options[@]} options, crt-lsp: ${#lsp_options[@]} options: documented and completed"
