@@ -32,8 +32,8 @@ work=$(mktemp -d)
 installed=false
 cleanup() {
     if $installed; then
-        DEBIAN_FRONTEND=noninteractive apt-get remove -y -qq crt >/dev/null ||
-            echo "FAIL: apt-get remove crt"
+        DEBIAN_FRONTEND=noninteractive apt-get purge -y -qq crt >/dev/null ||
+            echo "FAIL: apt-get purge crt"
     fi
     rm -rf "$work"
 }
@@ -71,9 +71,10 @@ installed=true
 [ "$(crt-lsp --version)" = "crt-lsp $(field Version)" ] || fail "crt-lsp --version: $(crt-lsp --version 2>&1)"
 bash "$here/check_installed.sh" /usr "$build/bin/crtc" "$source_dir" "$python" || fail "check_installed.sh /usr"
 
-DEBIAN_FRONTEND=noninteractive apt-get remove -y -qq crt >/dev/null || fail "apt-get remove crt"
+DEBIAN_FRONTEND=noninteractive apt-get purge -y -qq crt >/dev/null || fail "apt-get purge crt"
 installed=false
-[ -e /usr/bin/crtc ] && fail "/usr/bin/crtc is still there after apt-get remove"
-[ -e /usr/lib/crt ] && fail "/usr/lib/crt is still there after apt-get remove"
+[ -e /usr/bin/crtc ] && fail "/usr/bin/crtc is still there after apt-get purge"
+[ -e /usr/lib/crt ] && fail "/usr/lib/crt is still there after apt-get purge"
+dpkg-query -W crt >/dev/null 2>&1 && fail "dpkg still lists crt after apt-get purge"
 
 finish "Debian package $(basename "$deb")"
