@@ -57,9 +57,9 @@ MANPATH="$prefix/share/man" MANWIDTH=80 man crt-lsp 2>/dev/null | grep -q -- "--
 
 # The completion, sourced as bash-completion would: options and their values.
 completion=$(bash -c 'source "$1"
-    COMP_WORDS=(crtc --fra); COMP_CWORD=1; _crtc; echo "${COMPREPLY[*]}"
-    COMP_WORDS=(crtc --color al); COMP_CWORD=2; _crtc; echo "${COMPREPLY[*]}"' \
-    _ "$prefix/share/bash-completion/completions/crtc")
+    COMP_WORDS=("$2" --fra); COMP_CWORD=1; _crtc; echo "${COMPREPLY[*]}"
+    COMP_WORDS=("$2" --color al); COMP_CWORD=2; _crtc; echo "${COMPREPLY[*]}"' \
+    _ "$prefix/share/bash-completion/completions/crtc" "$prefix/bin/crtc")
 [ "$completion" = $'--frames\nalways' ] || fail "the installed completion offers: $completion"
 
 # The language server resolves includes from the installed standard library.
