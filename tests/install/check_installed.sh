@@ -57,10 +57,10 @@ MANPATH="$prefix/share/man" MANWIDTH=80 man crt-lsp 2>/dev/null | grep -q -- "--
 
 # The completion, sourced as bash-completion would: options and their values.
 completion=$(bash -c 'source "$1"
-    COMP_WORDS=("$2" --fra); COMP_CWORD=1; _crtc; echo "${COMPREPLY[*]}"
+    COMP_WORDS=("$2" --dump-s); COMP_CWORD=1; _crtc; echo "${COMPREPLY[*]}"
     COMP_WORDS=("$2" --color al); COMP_CWORD=2; _crtc; echo "${COMPREPLY[*]}"' \
     _ "$prefix/share/bash-completion/completions/crtc" "$prefix/bin/crtc")
-[ "$completion" = $'--frames\nalways' ] || fail "the installed completion offers: $completion"
+[ "$completion" = $'--dump-scene\nalways' ] || fail "the installed completion offers: $completion"
 
 # The language server resolves includes from the installed standard library.
 run_installed "$python" "$source_dir/tests/lsp/run_session.py" "$prefix/bin/crt-lsp" \
