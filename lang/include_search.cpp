@@ -30,14 +30,15 @@ fs::path IncludeSearch::find(const std::string& name, const fs::path& scriptFold
     return {};
 }
 
+// Only a program run from the build tree's bin/ falls back on the source tree: an installed
+// program must not read a source tree that happens to be on the machine, or be changed by it.
 std::string defaultStdlibDir() {
     std::error_code error;
     fs::path program = fs::canonical("/proc/self/exe", error);
-    if (!error) {
-        fs::path installed = program.parent_path().parent_path() / "share" / "crt" / "stdlib";
-        if (fs::is_directory(installed, error)) return installed.string();
-    }
-    return CRT_SOURCE_STDLIB_DIR;
+    if (error) return CRT_SOURCE_STDLIB_DIR;
+    fs::path programDir = program.parent_path();
+    if (fs::equivalent(programDir, CRT_BUILD_PROGRAM_DIR, error)) return CRT_SOURCE_STDLIB_DIR;
+    return (programDir.parent_path() / "share" / "crt" / "stdlib").string();
 }
 
 } // namespace crt::lang

@@ -22,8 +22,8 @@ struct IncludeSearch {
                                const std::filesystem::path& scriptFolder) const;
 };
 
-/// The standard library that came with the running program: `share/crt/stdlib` beside the
-/// `bin` folder of an installed program, else the source tree's `stdlib/`.
+/// The standard library that came with the running program: the source tree's `stdlib/` for
+/// a program in the build tree's `bin/`, else `share/crt/stdlib` beside its `bin` folder.
 std::string defaultStdlibDir();
 
 } // namespace crt::lang
