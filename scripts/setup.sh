@@ -15,14 +15,11 @@ packages=(
     python3 # the language server's protocol session tests (tests/lsp), docs transcripts (tests/docs)
     jq # the docs' transcripts that pipe JSON through it
     neovim  # the language server's end-to-end test (tests/lsp/nvim)
-<<<<<<< HEAD
     emacs-nox elpa-eglot # the Emacs mode's end-to-end test (tests/editors/emacs)
     unzip # the VS Code package's test opens the .vsix (tests/editors/vscode)
-=======
     go-md2man # the manual pages, from docs/man/*.md
     dpkg-dev file # the Debian package: dpkg-shlibdeps computes Depends, on files file finds ELF
     man-db    # the install tests read the installed manual pages with man
->>>>>>> install
 )
 # The VS Code extension's tests and package.sh need node and npm. The machines come with
 # Node.js 20 and its npm (not Debian's packages, which conflict with them): Debian's only
