@@ -7,6 +7,8 @@
 #include "options.hpp"
 #include "render_command.hpp"
 #include "scene/scene_json.hpp"
+#include "stop_signals.hpp"
+#include "tracer/image_io/temporary_file.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -58,26 +60,18 @@ int formatCommand(const crtc::Options& options, std::string text) {
         std::cout << result.text;
         return 0;
     }
-    // Write beside the target and rename, so a failed write never truncates the file.
-    std::string temporary = options.output + ".crtc-format.tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
+    // Written beside the target and renamed, so a failed write never truncates the file.
+    std::string error;
+    tracer::image_io::TemporaryFile temporary(options.output, error);
+    if (temporary.ok()) {
+        std::ofstream out(temporary.path(), std::ios::binary | std::ios::trunc);
         out << result.text;
-        if (!out.flush()) {
-            std::error_code ignored;
-            fs::remove(temporary, ignored);
-            std::cerr << "crtc: cannot write '" << options.output << "'\n";
-            return 2;
-        }
+        out.close();
+        if (!out) error = "the write failed";
+        else if (temporary.commit(error)) return 0;
     }
-    std::error_code error;
-    fs::rename(temporary, options.output, error);
-    if (error) {
-        fs::remove(temporary, error);
-        std::cerr << "crtc: cannot write '" << options.output << "'\n";
-        return 2;
-    }
-    return 0;
+    std::cerr << "crtc: cannot write '" << options.output << "': " << error << "\n";
+    return 2;
 }
 
 int run(int argc, char** argv) {
@@ -87,6 +81,8 @@ int run(int argc, char** argv) {
         return parsed.status;
     }
     crtc::Options& options = *parsed.options;
+    crtc::installStopHandlers();
+    crtc::installExitCleanup();
     options.eval.includes.stdlibDir = defaultStdlibDir();
 
     std::optional<std::string> text = readFile(options.script);

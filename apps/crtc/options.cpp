@@ -45,7 +45,8 @@ options:
   --version            show the version
 
 exit status: 0 success, 1 errors in the script, 2 bad usage or I/O failure,
-             130 interrupted (Ctrl-C; no partial image is left)
+             128+N stopped by signal N (Ctrl-C 130, SIGTERM 143; no partial
+             image or temporary file is left)
 )";
 }
 

@@ -3,6 +3,7 @@
 
 #include "progress_reporter.hpp"
 #include "row_assembler.hpp"
+#include "stop_signals.hpp"
 #include "scene/scene_json.hpp"
 #include "streamed_output.hpp"
 #include "tracer/image_io/image_io.hpp"
@@ -12,7 +13,6 @@
 
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -26,14 +26,8 @@ using lang::Compilation;
 
 namespace {
 
-std::atomic<bool> interrupted{false};
-/// Set by Ctrl-C or by an output that failed: either way the rest of the render is of no use.
+/// Set by an output that failed: the rest of the render is of no use.
 std::atomic<bool> stopRendering{false};
-
-extern "C" void onInterrupt(int) {
-    interrupted.store(true);
-    stopRendering.store(true);
-}
 
 const std::regex& framePattern() {
     static const std::regex pattern("%0?[0-9]*d");
@@ -106,6 +100,13 @@ std::string sceneKey(scene::SceneDesc scene) {
     return scene::sceneToJson(scene);
 }
 
+/// What an interruption after frame `last` of a numbered sequence leaves: the files before it.
+std::string framesWrittenNote(const OutputPlan& plan, int last, int frames) {
+    return fmt::format("crtc: interrupted; frames 0 to {} of {} were written ({} to {}), no "
+                       "others\n",
+                       last, frames, plan.target(0), plan.target(last));
+}
+
 /// Checks the output name against the frame count; false, having said why, for a name
 /// crtc cannot write.
 bool planOutput(const Options& options, int frames, OutputPlan& plan) {
@@ -153,16 +154,11 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const std
     };
     const tracer::RenderOutcome r = tracer::render(scene, job);
     progress.finish();
-    if (interrupted.load()) {
-        std::cerr << "crtc: interrupted; no image written\n";
-        return 130;
-    }
     if (!r.ok && !r.cancelled) {
         std::cerr << "crtc: " << r.error << "\n";
         return 1;
     }
-    // A render stopped without Ctrl-C was stopped by its output's failure, which finish()
-    // reports.
+    // A cancelled render was stopped by its output's failure, which finish() reports.
     std::string error;
     if (streamed && !streamed->finish(error)) {
         std::cerr << "crtc: " << error << "\n";
@@ -194,7 +190,7 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
     const int frames = std::max(options.frames, 1);
     OutputPlan plan;
     if (!planOutput(options, frames, plan)) return 2;
-    std::signal(SIGINT, onInterrupt);
+    setStopNote("crtc: interrupted; no image written\n");
 
     image_io::GifFrames gifFrames; // as 8-bit codes: a long animation fits in memory
     std::string previousKey;
@@ -226,6 +222,7 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
                 std::cerr << "crtc: " << error << "\n";
                 return 2;
             }
+            if (plan.numbered) setStopNote(framesWrittenNote(plan, frame, frames));
             continue;
         }
         const std::string label = frames > 1 ? fmt::format("frame {}/{} ", frame + 1, frames) : "";
@@ -234,6 +231,7 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
         if (int status = renderFrame(options, scene, plan.target(frame), write, label,
                                      kept ? &*kept : nullptr, totals))
             return status;
+        if (plan.numbered) setStopNote(framesWrittenNote(plan, frame, frames));
         if (plan.gif && !gifFrames.add(toBuffer(std::move(*kept)), write, error)) {
             std::cerr << fmt::format("crtc: cannot write '{}': {}\n", plan.path, error);
             return 2;

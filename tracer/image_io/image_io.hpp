@@ -20,6 +20,8 @@ struct CrtImageIoModule;
 
 namespace crt::tracer::image_io {
 
+class TemporaryFile;
+
 /// Row-major, top row first, `channels` floats per pixel (3 = RGB).
 struct ImageBuffer {
     int width = 0;
@@ -86,9 +88,10 @@ class ImageStream {
 
     const CrtImageIoModule* module_ = nullptr;
     void* handle_ = nullptr;
-    std::string path_, temporary_;
+    std::string path_;
+    std::unique_ptr<TemporaryFile> temporary_;
     int width_ = 0, height_ = 0, channels_ = 3;
-    bool expandGrey_ = false, eightBit_ = true, finished_ = false;
+    bool expandGrey_ = false, eightBit_ = true;
     WriteOptions options_;
     int nextRow_ = 0;
 };
