@@ -8,6 +8,7 @@
 #include "render_command.hpp"
 #include "scene/scene_json.hpp"
 #include "stop_signals.hpp"
+#include "terminal_text.hpp"
 #include "tracer/image_io/temporary_file.hpp"
 
 #include <algorithm>
@@ -53,7 +54,7 @@ int formatCommand(const crtc::Options& options, std::string text) {
         Compilation c = compile(options.script, std::move(text), options.eval, false);
         std::set<std::string> printed;
         report(c, options, printed);
-        std::cerr << "crtc: not formatted: " << result.error << "\n";
+        std::cerr << "crtc: not formatted: " << terminalSafe(result.error) << "\n";
         return 1;
     }
     if (options.output.empty()) {
@@ -70,7 +71,7 @@ int formatCommand(const crtc::Options& options, std::string text) {
         if (!out) error = "the write failed";
         else if (temporary.commit(error)) return 0;
     }
-    std::cerr << "crtc: cannot write '" << options.output << "': " << error << "\n";
+    std::cerr << "crtc: cannot write '" << terminalSafe(options.output) << "': " << error << "\n";
     return 2;
 }
 
@@ -87,7 +88,7 @@ int run(int argc, char** argv) {
 
     std::optional<std::string> text = readFile(options.script);
     if (!text) {
-        std::cerr << "crtc: cannot read '" << options.script << "'\n";
+        std::cerr << "crtc: cannot read '" << terminalSafe(options.script) << "'\n";
         return 2;
     }
 
@@ -97,6 +98,7 @@ int run(int argc, char** argv) {
     if (options.mode == crtc::Mode::DumpAst || options.mode == crtc::Mode::DumpScene) {
         options.eval.printOut = &std::cerr;
     }
+    options.eval.escapePrint = isatty(options.eval.printOut ? STDERR_FILENO : STDOUT_FILENO);
     if (options.mode == crtc::Mode::DumpAst) {
         Compilation c = compile(options.script, std::move(*text), options.eval, false);
         std::string dump;

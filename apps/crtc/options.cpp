@@ -31,6 +31,9 @@ options:
   --stats              print ray and acceleration-structure counts after rendering
   -I DIR               add DIR to the include search path (repeatable)
   --assets DIR         asset root for "/..." image and mesh paths (repeatable)
+  --allow-read DIR     let the script read files under DIR too (repeatable); else
+                       only its folder, the include path and the asset roots
+  --allow-read-all     let the script read any file
   --time T             evaluate with t = T (a float)
   --frames N           evaluate N frames, t = 0 .. N-1
   --seed S             seed of rand() (default 0)
@@ -51,8 +54,6 @@ exit status: 0 success, 1 errors in the script, 2 bad usage or I/O failure,
 }
 
 namespace {
-
-constexpr uint32_t kMaxSupportedDepth = 200'000;
 
 template <typename T> bool parseNumber(std::string_view text, T& out) {
     auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), out);
@@ -156,13 +157,26 @@ bool evalOption(std::string_view arg, Arguments& args, Options& o) {
     } else if (arg == "--max-depth") {
         if (!args.number(eval.limits.maxDepth)) return args.fail("--max-depth needs a non-negative integer");
         // The front end's stack holds this many nested calls.
-        if (eval.limits.maxDepth > kMaxSupportedDepth)
-            return args.fail(fmt::format("--max-depth above {} is not supported", kMaxSupportedDepth));
+        if (eval.limits.maxDepth > lang::Limits::kMaxSupportedDepth)
+            return args.fail(fmt::format("--max-depth above {} is not supported",
+                                         lang::Limits::kMaxSupportedDepth));
     } else if (arg == "--max-entities") {
         if (!args.number(eval.limits.maxEntities)) return args.fail("--max-entities needs a non-negative integer");
     } else if (arg == "--max-size") {
         if (!args.number(eval.limits.maxSize) || eval.limits.maxSize == 0)
             return args.fail("--max-size needs a positive integer");
+    } else return false;
+    return true;
+}
+
+/// Which files the script may read (lang/file_access.hpp): true if `arg` is one of these.
+bool accessOption(std::string_view arg, Arguments& args, Options& o) {
+    std::string_view v;
+    if (arg == "--allow-read") {
+        if (!args.value(v)) return args.fail("--allow-read needs a folder");
+        o.eval.access.allowRead.emplace_back(v);
+    } else if (arg == "--allow-read-all") {
+        o.eval.access.allowAll = true;
     } else return false;
     return true;
 }
@@ -200,7 +214,8 @@ ParsedOptions parseOptions(int argc, char** argv) {
             result.message = fmt::format("crtc {}", CRT_VERSION);
             return result;
         }
-        if (modeOption(arg, args, o) || renderOption(arg, args, o) || evalOption(arg, args, o)) {
+        if (modeOption(arg, args, o) || renderOption(arg, args, o) || evalOption(arg, args, o) ||
+            accessOption(arg, args, o)) {
             if (!args.error.empty()) return bad(args.error);
         } else if (arg.size() > 1 && arg[0] == '-') {
             return bad(fmt::format("unknown option '{}'", arg));

@@ -6,6 +6,7 @@
 #include "stop_signals.hpp"
 #include "scene/scene_json.hpp"
 #include "streamed_output.hpp"
+#include "terminal_text.hpp"
 #include "tracer/image_io/image_io.hpp"
 #include "tracer/renderer.hpp"
 
@@ -28,6 +29,12 @@ namespace {
 
 /// Set by an output that failed: the rest of the render is of no use.
 std::atomic<bool> stopRendering{false};
+
+/// Prints "crtc: " and the message, which can quote a script's bytes (an OBJ file's token, a
+/// file name), escaped for the terminal.
+void printError(const std::string& message) {
+    std::cerr << "crtc: " << lang::terminalSafe(message) << "\n";
+}
 
 const std::regex& framePattern() {
     static const std::regex pattern("%0?[0-9]*d");
@@ -155,13 +162,13 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const std
     const tracer::RenderOutcome r = tracer::render(scene, job);
     progress.finish();
     if (!r.ok && !r.cancelled) {
-        std::cerr << "crtc: " << r.error << "\n";
+        printError(r.error);
         return 1;
     }
     // A cancelled render was stopped by its output's failure, which finish() reports.
     std::string error;
     if (streamed && !streamed->finish(error)) {
-        std::cerr << "crtc: " << error << "\n";
+        printError(error);
         return 2;
     }
     totals.add(r);
@@ -219,7 +226,7 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
             ++totals.reusedFrames;
             if (plan.gif) gifFrames.repeatLast();
             else if (!image_io::copyImage(plan.target(frame - 1), plan.target(frame), error)) {
-                std::cerr << "crtc: " << error << "\n";
+                printError(error);
                 return 2;
             }
             if (plan.numbered) setStopNote(framesWrittenNote(plan, frame, frames));
@@ -233,13 +240,13 @@ int renderCommand(const Options& options, const CompileFrame& compileFrame) {
             return status;
         if (plan.numbered) setStopNote(framesWrittenNote(plan, frame, frames));
         if (plan.gif && !gifFrames.add(toBuffer(std::move(*kept)), write, error)) {
-            std::cerr << fmt::format("crtc: cannot write '{}': {}\n", plan.path, error);
+            printError(fmt::format("cannot write '{}': {}", plan.path, error));
             return 2;
         }
     }
     std::string error;
     if (plan.gif && !image_io::writeAnimatedGif(plan.path, gifFrames, options.fps, error)) {
-        std::cerr << "crtc: " << error << "\n";
+        printError(error);
         return 2;
     }
     const double seconds =

@@ -16,16 +16,7 @@ Settings { width -> 24 height -> 16 }
 Scene { Sphere { center -> vec3(0, 0, 0) radius -> 1 } }
 CRT
 # Long enough that a signal arrives while the image is being written.
-cat >"$work/heavy.crt" <<'CRT'
-Settings {
-    width -> 2000 height -> 1500 supersampling -> 4 recursiondepth -> 8
-    lights -> [PointLight { origin -> vec3(2, 4, -3) color -> rgb(1, 1, 1) }]
-}
-m = Material { color -> rgb(0.8, 0.8, 0.8) reflectivity -> 0.8 }
-Scene {
-    for i in range(40) { Sphere { center -> vec3(i % 8 - 3.5, i / 8 - 2.0, 3.0 + i % 3) radius -> 0.45 material -> m } }
-}
-CRT
+heavy=$(dirname "$0")/scenes/heavy.crt
 # Frame 0 is quick, frame 1 long: a signal during frame 1 finds frame 0 written.
 cat >"$work/frames.crt" <<'CRT'
 Settings {
@@ -72,7 +63,7 @@ wait_for_temporary() { # folder pid
 for signal in TERM HUP QUIT INT; do
     dir=$work/signal-$signal
     mkdir "$dir"
-    "$crtc" -q -o "$dir/heavy.png" "$work/heavy.crt" 2>"$dir.err" &
+    "$crtc" -q -o "$dir/heavy.png" "$heavy" 2>"$dir.err" &
     pid=$!
     wait_for_temporary "$dir" "$pid" || fail "SIG$signal: no temporary appeared"
     kill -"$signal" "$pid"
