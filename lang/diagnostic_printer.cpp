@@ -128,6 +128,13 @@ void appendHeader(std::string& out, const SourceManager& sources, SourceRange ra
     out += '\n';
 }
 
+/// Whether a diagnostic in file `index` shows its source line: always for the main script
+/// (file 0), which the user named; for an included file only if it is a .crt file, so that
+/// an include of another kind of file (allowed by --allow-read) is not printed line by line.
+bool quotesLines(const SourceManager& sources, uint32_t index) {
+    return index == 0 || (index < sources.fileCount() && sources.file(index).path().ends_with(".crt"));
+}
+
 } // namespace
 
 std::string formatLocation(const SourceManager& sources, SourceRange range) {
@@ -143,7 +150,7 @@ std::string formatDiagnostic(const SourceManager& sources, const Diagnostic& dia
     bool known = diagnostic.range.file < sources.fileCount();
     appendHeader(out, sources, diagnostic.range, diagnostic.severity, diagnostic.message,
                  options);
-    if (known && options.sourceLines) {
+    if (known && options.sourceLines && quotesLines(sources, diagnostic.range.file)) {
         // A replacement is shown under the caret only when it applies right there.
         const std::string* replacement = nullptr;
         if (!diagnostic.fixits.empty() && diagnostic.fixits.front().range.begin == diagnostic.range.begin &&
@@ -155,7 +162,7 @@ std::string formatDiagnostic(const SourceManager& sources, const Diagnostic& dia
     }
     for (const DiagnosticNote& note : diagnostic.notes) {
         appendHeader(out, sources, note.range, Severity::Note, note.message, options);
-        if (note.range.file < sources.fileCount() && options.sourceLines) {
+        if (options.sourceLines && quotesLines(sources, note.range.file)) {
             appendSnippet(out, sources.file(note.range.file), note.range, options, nullptr);
         }
     }

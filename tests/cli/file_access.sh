@@ -94,6 +94,8 @@ has '"/dev/zero".* it is a device, not a file' "device"
 # --- --allow-read-all: the old rule; a file that is not a script is still not shown.
 run 1 "--allow-read-all reads /etc/passwd" --check --allow-read-all "$work/proj/abs.crt"
 lacks 'outside the folders' "--allow-read-all"
+has '^/etc/passwd:1:[0-9]+: error' "the allowed include's errors"
+lacks 'root:' "the lines of an included file that is not a .crt file"
 printf 'include "%s"\n' "$(command -v ls)" >"$work/proj/binary.crt"
 run 1 "include of a binary" --check --allow-read-all "$work/proj/binary.crt"
 has 'it is not a CRT script \(it holds NUL bytes or invalid UTF-8\)' "binary include"
