@@ -38,13 +38,14 @@ void FileAccess::addRoot(const fs::path& folder) {
     if (!error && fs::is_directory(resolved, error)) roots_.push_back(std::move(resolved));
 }
 
+bool isUnder(const fs::path& path, const fs::path& folder) {
+    auto [folderEnd, pathAt] = std::mismatch(folder.begin(), folder.end(), path.begin(), path.end());
+    return folderEnd == folder.end();
+}
+
 bool FileAccess::inside(const fs::path& resolved) const {
-    for (const fs::path& root : roots_) {
-        // Component by component: "/a/bc" is not inside "/a/b".
-        auto [rootEnd, pathAt] = std::mismatch(root.begin(), root.end(), resolved.begin(), resolved.end());
-        if (rootEnd == root.end()) return true;
-    }
-    return false;
+    return std::any_of(roots_.begin(), roots_.end(),
+                       [&](const fs::path& root) { return isUnder(resolved, root); });
 }
 
 FileCheck FileAccess::check(const fs::path& path) const {

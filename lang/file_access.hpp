@@ -50,6 +50,10 @@ class FileAccess {
     std::string howToAllow_;
 };
 
+/// Whether `path` is `folder` or below it, component by component ("/a/bc" is not below
+/// "/a/b"); both as given, nothing resolved.
+bool isUnder(const std::filesystem::path& path, const std::filesystem::path& folder);
+
 /// The access of a script in `scriptFolder`: that folder, the include search path, the asset
 /// roots and the allowed folders.
 FileAccess scriptFileAccess(const std::filesystem::path& scriptFolder, const IncludeSearch& includes,

@@ -27,6 +27,17 @@ std::vector<fs::path> assetSearchFolders(const fs::path& scriptFolder,
     return folders;
 }
 
+/// Whether a refusal of `check`, for a name looked for in `folder`, may be reported. A name
+/// that leaves the folder it is looked for in (by "..", or a link) is refused whether or not
+/// it exists. In the folders above the script's, which are searched but not allowed, a file
+/// is named only if it is there: otherwise the search goes on.
+bool reportRefusal(const FileCheck& check, const fs::path& folder, bool searchedAbove) {
+    if (check.kind != FileCheck::Kind::Outside || !searchedAbove) return true;
+    std::error_code error;
+    if (!isUnder(check.resolved, fs::weakly_canonical(folder, error))) return true;
+    return fs::exists(check.resolved, error);
+}
+
 /// Looks a file up as an image or mesh, among the files `access` allows: "/x" in the
 /// assetSearchFolders, else next to the script. Empty, with `problem` saying why, when there
 /// is none.
@@ -34,29 +45,24 @@ std::string findAsset(const std::string& name, std::string_view what, const std:
                       const std::vector<std::string>& assetRoots, const FileAccess& access,
                       std::string& problem) {
     const fs::path scriptFolder = folderOf(scriptPath);
-    std::vector<fs::path> candidates;
-    if (name.starts_with('/'))
-        for (const fs::path& folder : assetSearchFolders(scriptFolder, assetRoots))
-            candidates.push_back(folder / name.substr(1));
-    else
-        candidates.push_back(scriptFolder / name);
-    for (const fs::path& candidate : candidates) {
+    const bool rooted = name.starts_with('/');
+    const std::vector<fs::path> folders =
+        rooted ? assetSearchFolders(scriptFolder, assetRoots) : std::vector{scriptFolder};
+    for (const fs::path& folder : folders) {
+        const fs::path candidate = folder / (rooted ? name.substr(1) : name);
         const FileCheck check = access.check(candidate);
         if (check.readable()) return candidate.lexically_normal().string();
-        std::error_code error;
-        // A file outside the roots is named only if the search found it: the folders above the
-        // script's are searched, not allowed.
-        if (problem.empty() && (check.kind == FileCheck::Kind::Refused ||
-                                (check.refused() && fs::exists(check.resolved, error))))
+        if (check.refused() && reportRefusal(check, folder, rooted && assetRoots.empty())) {
             problem = fmt::format("{} \"{}\" {}", what, candidate.lexically_normal().string(),
                                   check.reason);
+            return {};
+        }
     }
-    if (!problem.empty()) return {};
-    const char* where = !name.starts_with('/')   ? "in the script's folder"
+    const char* where = !rooted             ? "in the script's folder"
                         : assetRoots.empty() ? "in the script's folder or those above it"
                                              : "under the asset roots (--assets)";
     problem = fmt::format("cannot find {} \"{}\" {}", what, name, where);
-    if (name.starts_with('/')) {
+    if (rooted) {
         // An absolute name of the machine is read only inside the roots.
         const FileCheck check = access.check(name);
         if (check.readable()) return name;

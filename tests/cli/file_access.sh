@@ -55,6 +55,13 @@ background ../other/sky.ppm >"$work/proj/up.crt"
 run 1 "an image in a sibling folder" --check "$work/proj/up.crt"
 has 'error: image ".*other/sky.ppm" is outside the folders' "relative image outside"
 run 0 "--allow-read lets a folder be read" --check --allow-read "$work/other" "$work/proj/up.crt"
+# Refused alike when it does not exist, by a relative name or a "/..." name that climbs out.
+background ../other/no-such.ppm >"$work/proj/up-missing.crt"
+run 1 "a missing image in a sibling folder" --check "$work/proj/up-missing.crt"
+has 'error: image ".*other/no-such.ppm" is outside the folders' "relative missing image outside: no existence oracle"
+background /../../../../../../../../etc/no-such-file >"$work/proj/climb.crt"
+run 1 "a /... name that climbs out with .." --check "$work/proj/climb.crt"
+has 'error: image ".*etc/no-such-file" is outside the folders' "climbing /... name: no existence oracle"
 
 # A missing file is one line, not every parent folder.
 background /nothere/x.ppm >"$work/proj/missing.crt"
