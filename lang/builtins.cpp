@@ -292,7 +292,7 @@ Value b_print(BuiltinCall& call) {
         line += call.interpreter.str(call.args[i]);
     }
     line += '\n';
-    call.interpreter.printOut() << line;
+    call.interpreter.print(line);
     return Value::none();
 }
 

@@ -1,6 +1,8 @@
 // GCC/Clang-style rendering of diagnostics.
 #include "diagnostic_printer.hpp"
 
+#include "terminal_text.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -34,6 +36,22 @@ const char* severityColor(Severity severity) {
     return kRed;
 }
 
+/// The columns `text` takes once terminalSafe has escaped it (a tab counts as one: it is
+/// copied under itself).
+uint32_t displayWidth(std::string_view text) {
+    uint32_t width = 0;
+    std::string shown;
+    for (size_t at = 0; at < text.size();) {
+        if (text[at] == '\t') {
+            ++width, ++at;
+            continue;
+        }
+        at += nextCharacter(text, at, shown).size();
+        width += shown.starts_with('\\') ? static_cast<uint32_t>(shown.size()) : 1;
+    }
+    return width;
+}
+
 /// The source line of `range` with a caret under its start and tildes under the rest
 /// (clipped to the first line).
 void appendSnippet(std::string& out, const SourceFile& file, SourceRange range,
@@ -42,9 +60,9 @@ void appendSnippet(std::string& out, const SourceFile& file, SourceRange range,
     std::string_view line = file.lineText(start.line);
     uint32_t lineEnd = file.lineStart(start.line) + static_cast<uint32_t>(line.size());
     uint32_t width = range.end > range.begin
-                         ? codePointCount(file.text().substr(range.begin,
-                                                             std::min(range.end, lineEnd) -
-                                                                 std::min(range.begin, lineEnd)))
+                         ? displayWidth(file.text().substr(range.begin,
+                                                           std::min(range.end, lineEnd) -
+                                                               std::min(range.begin, lineEnd)))
                          : 0;
     // A very long line (generated code) is shown as a window around the caret.
     uint32_t lineBegin = file.lineStart(start.line);
@@ -62,16 +80,24 @@ void appendSnippet(std::string& out, const SourceFile& file, SourceRange range,
         trail = to < line.size() ? "..." : "";
         lineBegin += from;
         caretByte -= from;
-        width = std::min(width, to - caretByte - from);
+        width = std::min(width, displayWidth(line.substr(from + caretByte, to - caretByte - from)));
     }
-    out += fmt::format("    {}{}{}\n    {}", lead, shown, trail, std::string(lead.size(), ' '));
-    // Tabs in the prefix are copied so the caret lines up in a terminal.
+    out += fmt::format("    {}{}{}\n    {}", lead, terminalSafe(shown), trail,
+                       std::string(lead.size(), ' '));
+    // Tabs in the prefix are copied so the caret lines up in a terminal; an escaped byte
+    // takes the columns of its escape.
     std::string_view prefix = shown.substr(0, caretByte);
     uint32_t column = 1;
-    for (char c : prefix) {
-        if ((static_cast<unsigned char>(c) & 0xC0) == 0x80) continue; // continuation byte
-        out += c == '\t' ? '\t' : ' ';
-        ++column;
+    std::string escaped;
+    for (size_t at = 0; at < prefix.size();) {
+        if (prefix[at] == '\t') {
+            out += '\t', ++column, ++at;
+            continue;
+        }
+        at += nextCharacter(prefix, at, escaped).size();
+        const uint32_t columns = escaped.starts_with('\\') ? static_cast<uint32_t>(escaped.size()) : 1;
+        out.append(columns, ' ');
+        column += columns;
     }
     if (options.color) out += kGreen;
     out += '^';
@@ -82,7 +108,7 @@ void appendSnippet(std::string& out, const SourceFile& file, SourceRange range,
         out += "    ";
         out.append(column - 1, ' ');
         if (options.color) out += kGreen;
-        out += *replacement;
+        out += terminalSafe(*replacement, true);
         if (options.color) out += kReset;
         out += '\n';
     }
@@ -91,15 +117,22 @@ void appendSnippet(std::string& out, const SourceFile& file, SourceRange range,
 void appendHeader(std::string& out, const SourceManager& sources, SourceRange range,
                   Severity severity, const std::string& message, const PrintOptions& options) {
     if (options.color) out += kBold;
-    out += formatLocation(sources, range);
+    out += terminalSafe(formatLocation(sources, range), true);
     out += ": ";
     if (options.color) out += severityColor(severity);
     out += severityName(severity);
     out += ": ";
     if (options.color) out += kReset, out += kBold;
-    out += message;
+    out += terminalSafe(message);
     if (options.color) out += kReset;
     out += '\n';
+}
+
+/// Whether a diagnostic in file `index` shows its source line: always for the main script
+/// (file 0), which the user named; for an included file only if it is a .crt file, so that
+/// an include of another kind of file (allowed by --allow-read) is not printed line by line.
+bool quotesLines(const SourceManager& sources, uint32_t index) {
+    return index == 0 || (index < sources.fileCount() && sources.file(index).path().ends_with(".crt"));
 }
 
 } // namespace
@@ -117,7 +150,7 @@ std::string formatDiagnostic(const SourceManager& sources, const Diagnostic& dia
     bool known = diagnostic.range.file < sources.fileCount();
     appendHeader(out, sources, diagnostic.range, diagnostic.severity, diagnostic.message,
                  options);
-    if (known && options.sourceLines) {
+    if (known && options.sourceLines && quotesLines(sources, diagnostic.range.file)) {
         // A replacement is shown under the caret only when it applies right there.
         const std::string* replacement = nullptr;
         if (!diagnostic.fixits.empty() && diagnostic.fixits.front().range.begin == diagnostic.range.begin &&
@@ -129,7 +162,7 @@ std::string formatDiagnostic(const SourceManager& sources, const Diagnostic& dia
     }
     for (const DiagnosticNote& note : diagnostic.notes) {
         appendHeader(out, sources, note.range, Severity::Note, note.message, options);
-        if (note.range.file < sources.fileCount() && options.sourceLines) {
+        if (options.sourceLines && quotesLines(sources, note.range.file)) {
             appendSnippet(out, sources.file(note.range.file), note.range, options, nullptr);
         }
     }

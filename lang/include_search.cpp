@@ -1,6 +1,8 @@
 // The include search path and the standard library's location.
 #include "include_search.hpp"
 
+#include "file_access.hpp"
+
 #include <cstdlib>
 #include <sstream>
 
@@ -21,13 +23,19 @@ std::vector<fs::path> IncludeSearch::folders(const fs::path& scriptFolder) const
     return result;
 }
 
-fs::path IncludeSearch::find(const std::string& name, const fs::path& scriptFolder) const {
-    std::error_code error;
-    if (fs::path(name).is_absolute()) return fs::is_regular_file(name, error) ? fs::path(name) : fs::path();
-    for (const fs::path& dir : folders(scriptFolder)) {
-        if (fs::is_regular_file(dir / name, error)) return dir / name;
+FoundInclude IncludeSearch::find(const std::string& name, const fs::path& scriptFolder,
+                                 const FileAccess& access) const {
+    std::vector<fs::path> candidates;
+    if (fs::path(name).is_absolute()) candidates.emplace_back(name);
+    else
+        for (const fs::path& dir : folders(scriptFolder)) candidates.push_back(dir / name);
+    FoundInclude result;
+    for (const fs::path& candidate : candidates) {
+        const FileCheck check = access.check(candidate);
+        if (check.readable()) return {candidate, {}};
+        if (check.refused() && result.refusal.empty()) result.refusal = check.reason;
     }
-    return {};
+    return result;
 }
 
 // Only a program run from the build tree's bin/ falls back on the source tree: an installed

@@ -4,6 +4,7 @@
 #include "builtins.hpp"
 #include "large_stack.hpp"
 #include "parser.hpp"
+#include "terminal_text.hpp"
 #include "value_format.hpp"
 
 #include <filesystem>
@@ -55,6 +56,10 @@ uint64_t Interpreter::nextRandom() {
 }
 
 std::ostream& Interpreter::printOut() { return options_.printOut ? *options_.printOut : std::cout; }
+
+void Interpreter::print(const std::string& line) {
+    printOut() << (options_.escapePrint ? terminalSafe(line) : line);
+}
 
 SourceRange Interpreter::argRange(const CallExpr* site, size_t index) const {
     return index < site->args.size() ? site->args[index]->range : site->range;
@@ -318,17 +323,29 @@ void Interpreter::draw(const Value& value, const Node* where) {
     }
 }
 
+const FileAccess& Interpreter::fileAccess() {
+    if (!fileAccess_) {
+        fileAccess_.emplace(scriptFileAccess(folderOf(compilation_.sources.file(0).path()),
+                                             options_.includes, options_.assetRoots,
+                                             options_.access));
+    }
+    return *fileAccess_;
+}
+
 void Interpreter::execInclude(const IncludeStmt* node) {
     std::string name(node->path->value);
     const SourceFile& including = compilation_.sources.file(node->range.file);
     const fs::path folder = folderOf(including.path());
-    const fs::path found = options_.includes.find(name, folder);
+    const FoundInclude include = options_.includes.find(name, folder, fileAccess());
+    const fs::path& found = include.path;
+    if (!include.refusal.empty() && found.empty())
+        fail(node->path->range, fmt::format("cannot include \"{}\": it {}", name, include.refusal));
+    if (found.empty() && fs::path(name).is_absolute())
+        fail(node->path->range, fmt::format("cannot find include file \"{}\"", name));
     if (found.empty()) {
-        const std::vector<fs::path> searched = fs::path(name).is_absolute()
-                                                   ? std::vector{fs::path(name).parent_path()}
-                                                   : options_.includes.folders(folder);
         std::string folders;
-        for (const fs::path& dir : searched) folders += fmt::format("\n  {}", dir.lexically_normal().string());
+        for (const fs::path& dir : options_.includes.folders(folder))
+            folders += fmt::format("\n  {}", dir.lexically_normal().string());
         fail(node->path->range, fmt::format("cannot find include file \"{}\"; searched:{}", name, folders));
     }
     std::error_code error;
@@ -345,6 +362,11 @@ void Interpreter::execInclude(const IncludeStmt* node) {
 
     std::optional<std::string> text = readFile(found.string());
     if (!text) fail(node->path->range, fmt::format("cannot read include file \"{}\"", found.string()));
+    // Its lines would be quoted in diagnostics: a file that is not text is refused unseen.
+    if (!isScriptText(*text))
+        fail(node->path->range, fmt::format("cannot include \"{}\": it is not a CRT script (it "
+                                            "holds NUL bytes or invalid UTF-8)",
+                                            name));
 
     uint32_t fileIndex = compilation_.sources.add(found.lexically_normal().string(), std::move(*text));
     size_t errorsBefore = diagnostics_.errorCount();

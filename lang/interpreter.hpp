@@ -3,6 +3,7 @@
 
 #include "ast.hpp"
 #include "diagnostic.hpp"
+#include "file_access.hpp"
 #include "include_search.hpp"
 #include "resolver.hpp"
 #include "token.hpp"
@@ -27,12 +28,15 @@ struct Limits {
     uint32_t maxDepth = 1'000;      ///< nested macro calls
     uint64_t maxEntities = 10'000'000; ///< drawn entities, and the length of any list
     uint32_t maxSize = 16'384;      ///< image width and height
+    /// The most nested calls the front end's stack (large_stack.hpp) holds: maxDepth's ceiling.
+    static constexpr uint32_t kMaxSupportedDepth = 200'000;
 };
 
 struct EvalOptions {
     Limits limits;
     IncludeSearch includes;               ///< -I, CRT_PATH, the standard library
     std::vector<std::string> assetRoots;  ///< --assets; empty: the script's folder and parents
+    ReadPermissions access;               ///< --allow-read, --allow-read-all (file_access.hpp)
     uint64_t seed = 0;                    ///< seeds rand()
     int frame = 0;                        ///< t with --frames: the frame's number
     int frameCount = 1;
@@ -40,6 +44,9 @@ struct EvalOptions {
     double clockStart = 0, clockEnd = 1;  ///< clock at the first and at the last frame
     std::optional<double> time;           ///< --time T: t is this float
     std::ostream* printOut = nullptr;     ///< where print() writes; null: standard output
+    /// print() shows control characters as escapes (terminal_text.hpp): for a terminal, where
+    /// they would act; into a file or a pipe the script's output goes as it is.
+    bool escapePrint = false;
     bool checkFiles = true;               ///< look up images and meshes on disk
     /// Polled every few thousand steps; returning true stops evaluation with an error: for a
     /// time budget, or to drop work on text that has changed since.

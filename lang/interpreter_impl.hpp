@@ -61,6 +61,8 @@ public:
     const std::vector<Value>* newList(std::vector<Value> items);
     uint64_t nextRandom();
     std::ostream& printOut();
+    /// Writes print()'s line, escaped if EvalOptions::escapePrint says so.
+    void print(const std::string& line);
     std::string str(const Value& value) const;
     const Limits& limits() const { return options_.limits; }
     SourceRange argRange(const CallExpr* site, size_t index) const;
@@ -171,6 +173,8 @@ private:
     void recordSettingsLinks(const ObjectBuilder& b);
     /// The image or mesh file an attribute names, found on disk (unless checkFiles is off).
     std::string findFile(const ObjectBuilder& b, std::string_view attribute, std::string_view what);
+    /// What the script may read, made from the options when first needed.
+    const FileAccess& fileAccess();
     int32_t defaultMaterial();
     int32_t addEntity(scene::EntityDesc entity, EntityInfo info);
     /// A warning reported once per construct, however often evaluation passes it.
@@ -246,6 +250,7 @@ private:
     // include bookkeeping
     std::vector<std::string> includedFiles_; ///< canonical paths, in order
     std::vector<std::string> includeStack_;  ///< canonical paths being run
+    std::optional<FileAccess> fileAccess_;
 };
 
 /// The absolute folder of `path` ("." for a bare file name).

@@ -12,35 +12,63 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Looks a file up as an image or mesh: "/x" under each asset root, else next to the script.
-std::string findAsset(const std::string& name, const std::string& scriptPath,
-                      const std::vector<std::string>& assetRoots,
-                      std::vector<std::string>& searched) {
+/// Where an image or mesh named "/x" is looked for: under each asset root, or without
+/// --assets, in the script's folder and those above it (as the original did). This is a
+/// search, not a permission: what it finds is still checked against the FileAccess, and it
+/// stops below the file system's root, so that "/etc/passwd" is never "/" + "etc/passwd".
+std::vector<fs::path> assetSearchFolders(const fs::path& scriptFolder,
+                                         const std::vector<std::string>& assetRoots) {
     std::error_code error;
-    fs::path scriptDir = folderOf(scriptPath);
-    if (!name.empty() && name[0] == '/') {
-        std::vector<fs::path> roots;
-        if (!assetRoots.empty()) {
-            for (const std::string& root : assetRoots) roots.push_back(fs::absolute(root, error));
-        } else {
-            if (!scriptDir.has_filename()) scriptDir = scriptDir.parent_path(); // "/dir/" -> "/dir"
-            for (fs::path dir = scriptDir;; dir = dir.parent_path()) {
-                roots.push_back(dir);
-                if (dir == dir.parent_path()) break;
-            }
+    std::vector<fs::path> folders;
+    for (const std::string& root : assetRoots) folders.push_back(fs::absolute(root, error));
+    if (!assetRoots.empty()) return folders;
+    fs::path dir = scriptFolder.has_filename() ? scriptFolder : scriptFolder.parent_path();
+    for (; dir != dir.parent_path(); dir = dir.parent_path()) folders.push_back(dir);
+    return folders;
+}
+
+/// Whether a refusal of `check`, for a name looked for in `folder`, may be reported. A name
+/// that leaves the folder it is looked for in (by "..", or a link) is refused whether or not
+/// it exists. In the folders above the script's, which are searched but not allowed, a file
+/// is named only if it is there: otherwise the search goes on.
+bool reportRefusal(const FileCheck& check, const fs::path& folder, bool searchedAbove) {
+    if (check.kind != FileCheck::Kind::Outside || !searchedAbove) return true;
+    std::error_code error;
+    if (!isUnder(check.resolved, fs::weakly_canonical(folder, error))) return true;
+    return fs::exists(check.resolved, error);
+}
+
+/// Looks a file up as an image or mesh, among the files `access` allows: "/x" in the
+/// assetSearchFolders, else next to the script. Empty, with `problem` saying why, when there
+/// is none.
+std::string findAsset(const std::string& name, std::string_view what, const std::string& scriptPath,
+                      const std::vector<std::string>& assetRoots, const FileAccess& access,
+                      std::string& problem) {
+    const fs::path scriptFolder = folderOf(scriptPath);
+    const bool rooted = name.starts_with('/');
+    const std::vector<fs::path> folders =
+        rooted ? assetSearchFolders(scriptFolder, assetRoots) : std::vector{scriptFolder};
+    for (const fs::path& folder : folders) {
+        const fs::path candidate = folder / (rooted ? name.substr(1) : name);
+        const FileCheck check = access.check(candidate);
+        if (check.readable()) return candidate.lexically_normal().string();
+        if (check.refused() && reportRefusal(check, folder, rooted && assetRoots.empty())) {
+            problem = fmt::format("{} \"{}\" {}", what, candidate.lexically_normal().string(),
+                                  check.reason);
+            return {};
         }
-        for (const fs::path& root : roots) {
-            fs::path candidate = root / name.substr(1);
-            searched.push_back(root.string());
-            if (fs::is_regular_file(candidate, error)) return candidate.lexically_normal().string();
-        }
-        if (fs::is_regular_file(name, error)) return name;
-        return {};
     }
-    fs::path candidate = fs::path(name).is_absolute() ? fs::path(name) : scriptDir / name;
-    searched.push_back(candidate.parent_path().string());
-    return fs::is_regular_file(candidate, error) ? candidate.lexically_normal().string()
-                                                 : std::string();
+    const char* where = !rooted             ? "in the script's folder"
+                        : assetRoots.empty() ? "in the script's folder or those above it"
+                                             : "under the asset roots (--assets)";
+    problem = fmt::format("cannot find {} \"{}\" {}", what, name, where);
+    if (rooted) {
+        // An absolute name of the machine is read only inside the roots.
+        const FileCheck check = access.check(name);
+        if (check.readable()) return name;
+        if (check.refused()) problem += fmt::format("; as an absolute path, it {}", check.reason);
+    }
+    return {};
 }
 
 /// Whether a shape has no extent, and so draws nothing.
@@ -197,15 +225,10 @@ std::string Interpreter::findFile(const ObjectBuilder& b, std::string_view attri
                                   std::string_view what) {
     std::string name = b.text(attribute, std::string());
     if (!options_.checkFiles) return std::string();
-    std::vector<std::string> searched;
-    std::string found = findAsset(name, compilation_.sources.file(b.range.file).path(),
-                                  options_.assetRoots, searched);
-    if (found.empty()) {
-        std::string folders;
-        for (const std::string& dir : searched) folders += "\n  " + dir;
-        fail(b.where(attribute),
-             fmt::format("cannot find {} \"{}\"; looked in:{}", what, name, folders));
-    }
+    std::string problem;
+    std::string found = findAsset(name, what, compilation_.sources.file(b.range.file).path(),
+                                  options_.assetRoots, fileAccess(), problem);
+    if (found.empty()) fail(b.where(attribute), problem);
     return found;
 }
 

@@ -5,6 +5,7 @@
 #include "large_stack.hpp"
 #include "parser.hpp"
 #include "resolver.hpp"
+#include "terminal_text.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -22,9 +23,18 @@ using namespace lang;
 // ---------------------------------------------------------------- includes
 
 std::string findInclude(const std::string& name, const std::string& folder,
-                        const AnalysisOptions& options) {
-    fs::path found = options.includes.find(name, folder);
+                        const AnalysisOptions& options, const FileAccess& access) {
+    fs::path found = options.includes.find(name, folder, access).path;
     return found.empty() ? std::string() : found.lexically_normal().string();
+}
+
+EvalOptions evalOptions(const AnalysisOptions& options) {
+    EvalOptions eval;
+    eval.limits = options.limits;
+    eval.includes = options.includes;
+    eval.assetRoots = options.assetRoots;
+    eval.access = options.access;
+    return eval;
 }
 
 namespace {
@@ -92,7 +102,7 @@ std::shared_ptr<const IncludedFile> IncludeCache::get(const std::string& path) {
     auto it = entries_.find(path);
     if (it != entries_.end() && it->second.mtime == mtime) return it->second.file;
     std::optional<std::string> text = readFile(path);
-    if (!text) return nullptr;
+    if (!text || !isScriptText(*text)) return nullptr; // a binary file is not indexed
     auto parsed = parseIncluded(path, std::move(*text));
     entries_[path] = {mtime, parsed};
     return parsed;
@@ -252,10 +262,7 @@ private:
 
 std::shared_ptr<const Analysis> analyze(const std::string& path, std::string text,
                                         const AnalysisOptions& options, IncludeCache& cache) {
-    EvalOptions eval;
-    eval.limits = options.limits;
-    eval.includes = options.includes;
-    return analyze(compile(path, std::move(text), eval, false), options, cache);
+    return analyze(compile(path, std::move(text), evalOptions(options), false), options, cache);
 }
 
 std::shared_ptr<Analysis> analyze(Compilation compilation, const AnalysisOptions& options,
@@ -287,11 +294,13 @@ void index(Analysis& a, const SourceFile& file, const AnalysisOptions& options, 
         // Included files, breadth first, each once.
         std::error_code error;
         std::string folder = fs::absolute(path, error).parent_path().string();
+        const FileAccess access =
+            scriptFileAccess(folder, options.includes, options.assetRoots, options.access);
         std::vector<std::pair<std::string, std::string>> pending; // name, folder
         for (const std::string& name : includeNames) pending.emplace_back(name, folder);
         std::set<std::string> seen;
         for (size_t i = 0; i < pending.size() && i < 256; ++i) {
-            std::string found = findInclude(pending[i].first, pending[i].second, options);
+            std::string found = findInclude(pending[i].first, pending[i].second, options, access);
             if (found.empty()) continue;
             std::string canonical = fs::weakly_canonical(found, error).string();
             if (!seen.insert(canonical).second) continue;

@@ -18,6 +18,10 @@ namespace crt::lsp {
 /// How the server runs the front end; set from the command line and initializationOptions.
 struct AnalysisOptions {
     lang::IncludeSearch includes; ///< as crtc's -I and standard library
+    std::vector<std::string> assetRoots; ///< as crtc's --assets
+    /// What a script may read beyond its roots (crtc's --allow-read); the workspace folders
+    /// are added to allowRead.
+    lang::ReadPermissions access{{}, false, "the setting allowRead (or allowReadAll)"};
     /// Tighter than crtc's defaults: an editor wants an answer, not a finished render.
     lang::Limits limits{5'000'000, 1'000, 1'000'000, 16'384};
     std::chrono::milliseconds timeBudget{1500}; ///< wall-clock limit of one evaluation
@@ -145,9 +149,12 @@ void index(Analysis& analysis, const lang::SourceFile& file, const AnalysisOptio
 std::shared_ptr<const Analysis> lexOnly(const std::string& path, std::string text);
 
 /// Where `include "name"` in a file of folder `folder` finds its file, as the interpreter
-/// looks (lang::IncludeSearch). Empty if nowhere.
+/// looks (lang::IncludeSearch), among the files `access` allows. Empty if nowhere.
 std::string findInclude(const std::string& name, const std::string& folder,
-                        const AnalysisOptions& options);
+                        const AnalysisOptions& options, const lang::FileAccess& access);
+
+/// The evaluation options of a document: limits, include search, asset roots and access.
+lang::EvalOptions evalOptions(const AnalysisOptions& options);
 
 /// A short static description of what an expression yields ("vec3", "Sphere", "macro (a, b)").
 /// Looks at most `depth` levels into the expression.

@@ -36,9 +36,7 @@ void DiagnosticsWorker::forget(const std::string& uri) {
 }
 
 lang::EvalOptions DiagnosticsWorker::evalOptions() const {
-    lang::EvalOptions eval;
-    eval.limits = options_.limits;
-    eval.includes = options_.includes;
+    lang::EvalOptions eval = lsp::evalOptions(options_);
     eval.keepGlobalValues = true;
     return eval;
 }

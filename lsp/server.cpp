@@ -8,7 +8,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <thread>
 #include <utility>
 
@@ -273,16 +275,59 @@ void Server::readClientCapabilities(const json& params) {
                     .value("snippetSupport", false);
 }
 
+namespace {
+
+/// Appends the strings of `init[key]`, if it is a list, to `out`.
+void readStrings(const json& init, const char* key, std::vector<std::string>& out) {
+    if (!init.contains(key) || !init[key].is_array()) return;
+    for (const json& item : init[key]) {
+        if (item.is_string()) out.push_back(item);
+    }
+}
+
+/// Sets `out` from `init[key]` if that is a non-negative integer that fits.
+template <typename T> void readCount(const json& init, const char* key, T& out) {
+    if (!init.contains(key) || !init[key].is_number_unsigned()) return;
+    const uint64_t value = init[key].get<uint64_t>();
+    if (value <= std::numeric_limits<T>::max()) out = static_cast<T>(value);
+}
+
+} // namespace
+
+void Server::readWorkspaceFolders(const json& params) {
+    // The workspace's folders are roots of what a script may read, as the script's own is.
+    std::vector<std::string>& roots = options_.analysis.access.allowRead;
+    if (params.contains("workspaceFolders") && params["workspaceFolders"].is_array()) {
+        for (const json& folder : params["workspaceFolders"]) {
+            if (folder.is_object() && folder.contains("uri") && folder["uri"].is_string())
+                roots.push_back(uriToPath(folder["uri"].get<std::string>()));
+        }
+    } else if (params.contains("rootUri") && params["rootUri"].is_string()) {
+        roots.push_back(uriToPath(params["rootUri"].get<std::string>()));
+    }
+}
+
 void Server::readInitializationOptions(const json& params) {
-    if (!params.is_object() || !params.contains("initializationOptions")) return;
+    if (!params.is_object()) return;
+    readWorkspaceFolders(params);
+    if (!params.contains("initializationOptions")) return;
     const json& init = params["initializationOptions"];
     if (!init.is_object()) return;
-    if (init.contains("includeDirs") && init["includeDirs"].is_array()) {
-        for (const json& dir : init["includeDirs"]) {
-            if (dir.is_string()) options_.analysis.includes.dirs.push_back(dir);
-        }
-    }
-    if (init.contains("stdlib") && init["stdlib"].is_string()) options_.analysis.includes.stdlibDir = init["stdlib"];
+    AnalysisOptions& analysis = options_.analysis;
+    readStrings(init, "includeDirs", analysis.includes.dirs);
+    if (init.contains("stdlib") && init["stdlib"].is_string()) analysis.includes.stdlibDir = init["stdlib"];
+    readStrings(init, "assetRoots", analysis.assetRoots);
+    readStrings(init, "allowRead", analysis.access.allowRead);
+    if (init.contains("allowReadAll") && init["allowReadAll"].is_boolean())
+        analysis.access.allowAll = init["allowReadAll"].get<bool>();
+    readCount(init, "maxSteps", analysis.limits.maxSteps);
+    readCount(init, "maxEntities", analysis.limits.maxEntities);
+    readCount(init, "maxDepth", analysis.limits.maxDepth);
+    // The front end's stack holds at most this many nested calls (crtc's --max-depth limit).
+    analysis.limits.maxDepth = std::min<uint32_t>(analysis.limits.maxDepth, lang::Limits::kMaxSupportedDepth);
+    int64_t milliseconds = 0;
+    readCount(init, "timeBudgetMs", milliseconds);
+    if (milliseconds > 0) analysis.timeBudget = std::chrono::milliseconds(milliseconds);
     if (init.contains("debounceMs") && init["debounceMs"].is_number_integer()) {
         options_.debounce = std::chrono::milliseconds(std::max<int64_t>(0, init["debounceMs"].get<int64_t>()));
     }

@@ -97,6 +97,7 @@ private:
     // The lifecycle.
     json onInitialize(const json& params);
     void readClientCapabilities(const json& params);
+    void readWorkspaceFolders(const json& params);
     void readInitializationOptions(const json& params);
     json serverCapabilities() const;
     void onInitialized(const json& params);

@@ -2,17 +2,48 @@
 #include "include_search.hpp"
 #include "server.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <string>
 
 namespace {
 
 void usage(std::FILE* out) {
-    std::fputs("usage: crt-lsp [-I DIR]... [--stdlib DIR] [--debounce-ms N] [--time-budget-ms N]\n"
+    std::fputs("usage: crt-lsp [-I DIR]... [--stdlib DIR] [--assets DIR]... [--allow-read DIR]...\n"
+               "               [--allow-read-all] [--max-steps N] [--max-entities N] [--max-depth N]\n"
+               "               [--debounce-ms N] [--time-budget-ms N]\n"
                "The CRT language server; an editor starts it and talks LSP over stdin/stdout.\n",
                out);
+}
+
+/// `text` as a count for `option`; ends the program (status 2) if it is not one.
+template <typename T> T count(const std::string& option, const std::string& text) {
+    T value{};
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size()) {
+        std::fprintf(stderr, "crt-lsp: %s needs a non-negative integer\n", option.c_str());
+        std::exit(2);
+    }
+    return value;
+}
+
+/// Which files scripts may read and how far they are evaluated: true if `arg` is one of these.
+bool evaluationOption(const std::string& arg, const std::function<std::string()>& value,
+                      crt::lsp::AnalysisOptions& analysis) {
+    crt::lang::Limits& limits = analysis.limits;
+    if (arg == "--assets") analysis.assetRoots.push_back(value());
+    else if (arg == "--allow-read") analysis.access.allowRead.push_back(value());
+    else if (arg == "--allow-read-all") analysis.access.allowAll = true;
+    else if (arg == "--max-steps") limits.maxSteps = count<uint64_t>(arg, value());
+    else if (arg == "--max-entities") limits.maxEntities = count<uint64_t>(arg, value());
+    else if (arg == "--max-depth")
+        limits.maxDepth = std::min(count<uint32_t>(arg, value()), crt::lang::Limits::kMaxSupportedDepth);
+    else return false;
+    return true;
 }
 
 } // namespace
@@ -22,7 +53,7 @@ int main(int argc, char** argv) {
     options.analysis.includes.stdlibDir = crt::lang::defaultStdlibDir();
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
-        auto value = [&]() -> std::string {
+        std::function<std::string()> value = [&]() -> std::string {
             if (i + 1 >= argc) {
                 std::fprintf(stderr, "crt-lsp: %s needs a value\n", arg.c_str());
                 std::exit(2);
@@ -43,6 +74,7 @@ int main(int argc, char** argv) {
             options.debounce = std::chrono::milliseconds(std::atoi(value().c_str()));
         } else if (arg == "--time-budget-ms") {
             options.analysis.timeBudget = std::chrono::milliseconds(std::atoi(value().c_str()));
+        } else if (evaluationOption(arg, value, options.analysis)) {
         } else if (arg == "--stdio") {
             // what VS Code's client passes; stdio is the only transport anyway
         } else {

@@ -7,6 +7,9 @@
 #include "options.hpp"
 #include "render_command.hpp"
 #include "scene/scene_json.hpp"
+#include "stop_signals.hpp"
+#include "terminal_text.hpp"
+#include "tracer/image_io/temporary_file.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -64,33 +67,25 @@ int formatCommand(const crtc::Options& options, std::string text) {
         Compilation c = compile(options.script, std::move(text), options.eval, false);
         std::set<std::string> printed;
         report(c, options, printed);
-        std::cerr << "crtc: not formatted: " << result.error << "\n";
+        std::cerr << "crtc: not formatted: " << terminalSafe(result.error) << "\n";
         return 1;
     }
     if (options.output.empty()) {
         std::cout << result.text;
         return 0;
     }
-    // Write beside the target and rename, so a failed write never truncates the file.
-    std::string temporary = options.output + ".crtc-format.tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
+    // Written beside the target and renamed, so a failed write never truncates the file.
+    std::string error;
+    tracer::image_io::TemporaryFile temporary(options.output, error);
+    if (temporary.ok()) {
+        std::ofstream out(temporary.path(), std::ios::binary | std::ios::trunc);
         out << result.text;
-        if (!out.flush()) {
-            std::error_code ignored;
-            fs::remove(temporary, ignored);
-            std::cerr << "crtc: cannot write '" << options.output << "'\n";
-            return 2;
-        }
+        out.close();
+        if (!out) error = "the write failed";
+        else if (temporary.commit(error)) return 0;
     }
-    std::error_code error;
-    fs::rename(temporary, options.output, error);
-    if (error) {
-        fs::remove(temporary, error);
-        std::cerr << "crtc: cannot write '" << options.output << "'\n";
-        return 2;
-    }
-    return 0;
+    std::cerr << "crtc: cannot write '" << terminalSafe(options.output) << "': " << error << "\n";
+    return 2;
 }
 
 int run(int argc, char** argv) {
@@ -100,11 +95,14 @@ int run(int argc, char** argv) {
         return parsed.status;
     }
     crtc::Options& options = *parsed.options;
+    crtc::installStopHandlers();
+    crtc::installExitCleanup();
     options.eval.includes.stdlibDir = defaultStdlibDir();
 
     std::optional<std::string> text = readFile(options.script);
     if (!text) {
-        std::cerr << "crtc: cannot read '" << options.script << "': " << whyUnreadable(options.script) << "\n";
+        std::cerr << "crtc: cannot read '" << terminalSafe(options.script) << "': " << whyUnreadable(options.script)
+                  << "\n";
         return 2;
     }
 
@@ -114,6 +112,7 @@ int run(int argc, char** argv) {
     if (options.mode == crtc::Mode::DumpAst || options.mode == crtc::Mode::DumpScene) {
         options.eval.printOut = &std::cerr;
     }
+    options.eval.escapePrint = isatty(options.eval.printOut ? STDERR_FILENO : STDOUT_FILENO);
     if (options.mode == crtc::Mode::DumpAst) {
         Compilation c = compile(options.script, std::move(*text), options.eval, false);
         std::string dump;

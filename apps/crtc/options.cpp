@@ -15,8 +15,6 @@ namespace crt::crtc {
 
 namespace {
 
-constexpr uint32_t kMaxSupportedDepth = 200'000;
-
 template <typename T> bool parseNumber(std::string_view text, T& out) {
     auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), out);
     return error == std::errc() && end == text.data() + text.size();
@@ -233,6 +231,13 @@ void addEvaluationOptions(CLI::App& app, Options& o) {
         ->allow_extra_args(false)
         ->type_name("DIR")
         ->group(group);
+    app.add_option("--allow-read", eval.access.allowRead,
+                   "let the script read files under DIR too (repeatable); else only its folder, the include "
+                   "path and the asset roots")
+        ->allow_extra_args(false)
+        ->type_name("DIR")
+        ->group(group);
+    app.add_flag("--allow-read-all", eval.access.allowAll, "let the script read any file")->group(group);
     app.add_option("--seed", eval.seed, "seed of rand() (default 0)")
         ->check(anyNumber<uint64_t>("a non-negative integer"))
         ->type_name("S")
@@ -246,8 +251,8 @@ void addEvaluationOptions(CLI::App& app, Options& o) {
         ->group(group);
     app.add_option("--max-depth", limits.maxDepth,
                    fmt::format("nested macro calls (default {})", limits.maxDepth))
-        ->check(numberIn<uint32_t>(0, kMaxSupportedDepth,
-                                   fmt::format("an integer from 0 to {}", kMaxSupportedDepth)))
+        ->check(numberIn<uint32_t>(0, lang::Limits::kMaxSupportedDepth,
+                                   fmt::format("an integer from 0 to {}", lang::Limits::kMaxSupportedDepth)))
         ->type_name("N")
         ->group(group);
     app.add_option("--max-entities", limits.maxEntities,
@@ -367,7 +372,8 @@ ParsedOptions parseOptions(int argc, char** argv) {
     CLI::App app("Evaluates a CRT scene script and renders it.", "crtc");
     app.formatter(std::make_shared<HelpFormatter>());
     app.footer("exit status: 0 success, 1 errors in the script, 2 bad usage or I/O failure,\n"
-               "             130 interrupted (Ctrl-C; no partial image is left)");
+               "             128+N stopped by signal N (Ctrl-C 130, SIGTERM 143; no partial\n"
+               "             image or temporary file is left)");
     app.set_version_flag("--version", fmt::format("crtc {}", CRT_VERSION));
     app.allow_extras();
     app.add_option("script", o.script, "the CRT script")->type_name("SCRIPT");

@@ -7,7 +7,9 @@
 #include "row_assembler.hpp"
 #include "scene/quality_overrides.hpp"
 #include "scene/scene_json.hpp"
+#include "stop_signals.hpp"
 #include "streamed_output.hpp"
+#include "terminal_text.hpp"
 #include "tracer/image_io/image_io.hpp"
 #include "tracer/renderer.hpp"
 
@@ -15,7 +17,6 @@
 
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -30,13 +31,13 @@ using lang::Compilation;
 
 namespace {
 
-std::atomic<bool> interrupted{false};
-/// Set by Ctrl-C or by an output that failed: either way the rest of the render is of no use.
+/// Set by an output that failed: the rest of the render is of no use.
 std::atomic<bool> stopRendering{false};
 
-extern "C" void onInterrupt(int) {
-    interrupted.store(true);
-    stopRendering.store(true);
+/// Prints "crtc: " and the message, which can quote a script's bytes (an OBJ file's token, a
+/// file name), escaped for the terminal.
+void printError(const std::string& message) {
+    std::cerr << "crtc: " << lang::terminalSafe(message) << "\n";
 }
 
 const std::regex& framePattern() {
@@ -236,16 +237,14 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const Fra
     // Empty tiles would mean the whole image to the renderer: here, the log had every tile.
     if (!render.tiles.empty()) r = tracer::render(scene, render);
     progress.clear();
-    if (interrupted.load()) return 130;
     if (!r.ok && !r.cancelled) {
-        std::cerr << "crtc: " << r.error << "\n";
+        printError(r.error);
         return 1;
     }
-    // A render stopped without Ctrl-C was stopped by its output's failure, which finish()
-    // reports.
+    // A cancelled render was stopped by its output's failure, which finish() reports.
     std::string error;
     if (streamed && !streamed->finish(error)) {
-        std::cerr << "crtc: " << error << "\n";
+        printError(error);
         return 2;
     }
     totals.add(r, tracedPixels);
@@ -304,7 +303,8 @@ class RenderRun {
     int openLog();
     int renderOne(int frame, const Compilation& c, scene::SceneDesc& scene);
     int reuseUnchanged(int frame);
-    int interruptedStatus();
+    void updateStopNote();
+    int failed(int status);
 
     const Options& options_;
     const FrameSelection& frames_;
@@ -316,6 +316,7 @@ class RenderRun {
     std::optional<ResumeLog> log_; // none for a GIF, whose frames wait in memory
     std::string previousKey_;
     std::vector<int> written_; // frames whose files are complete
+    bool continueRefused_ = false;
 };
 
 int RenderRun::openLog() {
@@ -348,24 +349,38 @@ int RenderRun::openLog() {
         }
     }
     if (!log_->open(path, options_.resume, error)) {
-        std::cerr << "crtc: " << error << "\n";
-        return 2;
+        if (options_.resume) {
+            printError(error);
+            return 2;
+        }
+        // The log only helps after an interruption: render without it (a full disk also
+        // stops the output, which reports it).
+        std::cerr << "crtc: warning: " << lang::terminalSafe(error)
+                  << "; the render cannot be continued if it is interrupted\n";
+        log_->remove();
+        log_.reset();
     }
     return 0;
 }
 
-/// Ctrl-C or a signal stopped the run: what was written, and how to go on.
-int RenderRun::interruptedStatus() {
-    if (log_) log_->flush();
+/// A run that failed (not one a signal stopped, which keeps its log for --continue): its log
+/// goes, as it would only take room on what is often a full disk.
+int RenderRun::failed(int status) {
+    if (log_ && !continueRefused_) log_->remove();
+    return status;
+}
+
+/// What a signal that stops the run now leaves (printed by the stop handler): what was
+/// written, and how to go on.
+void RenderRun::updateStopNote() {
     std::string written = "no image written";
     if (!written_.empty() && plan_.numbered)
         written =
             fmt::format("frames {} to {} written ({} to {})", written_.front(), written_.back(),
                         plan_.target(written_.front()), plan_.target(written_.back()));
-    std::cerr << fmt::format("crtc: interrupted; {}{}\n", written,
-                             log_ ? "; crtc --continue with the same options finishes the render"
-                                  : "");
-    return 130;
+    setStopNote(
+        fmt::format("crtc: interrupted; {}{}\n", written,
+                    log_ ? "; crtc --continue with the same options finishes the render" : ""));
 }
 
 int RenderRun::reuseUnchanged(int frame) {
@@ -376,7 +391,7 @@ int RenderRun::reuseUnchanged(int frame) {
     if (plan_.gif)
         gifFrames_.repeatLast();
     else if (!image_io::copyImage(plan_.target(frame - 1), plan_.target(frame), error)) {
-        std::cerr << "crtc: " << error << "\n";
+        printError(error);
         return 2;
     }
     return 0;
@@ -401,6 +416,7 @@ int RenderRun::renderOne(int frame, const Compilation& c, scene::SceneDesc& scen
                     "began (the script, a file it reads, an option or crtc changed); render "
                     "it again without --continue\n",
                     frame);
+                continueRefused_ = true; // the log stays: the change may be undone
                 return 2;
             }
             if (logged->second.done && fs::exists(job.target)) return -1; // finished before
@@ -415,7 +431,7 @@ int RenderRun::renderOne(int frame, const Compilation& c, scene::SceneDesc& scen
         return status;
     std::string error;
     if (plan_.gif && !gifFrames_.add(toBuffer(std::move(*kept)), write_, error)) {
-        std::cerr << fmt::format("crtc: cannot write '{}': {}\n", plan_.path, error);
+        printError(fmt::format("cannot write '{}': {}", plan_.path, error));
         return 2;
     }
     return 0;
@@ -423,10 +439,11 @@ int RenderRun::renderOne(int frame, const Compilation& c, scene::SceneDesc& scen
 
 int RenderRun::run(const CompileFrame& compileFrame) {
     if (int status = openLog()) return status;
+    updateStopNote();
     const auto start = std::chrono::steady_clock::now();
     for (int frame = frames_.begin(); frame < frames_.end(); ++frame) {
         Compilation c;
-        if (!compileFrame(frame, c)) return 1;
+        if (!compileFrame(frame, c)) return failed(1);
         scene::SceneDesc& scene = *c.scene;
         applyCommandLine(options_, scene);
         std::string key = frames_.selected() > 1 ? sceneKey(scene) : std::string();
@@ -434,15 +451,15 @@ int RenderRun::run(const CompileFrame& compileFrame) {
         previousKey_ = std::move(key);
         progress_.startFrame(frameLabel(frames_, frame));
         const int status = unchanged ? reuseUnchanged(frame) : renderOne(frame, c, scene);
-        if (status == 130) return interruptedStatus();
-        if (status > 0) return status;
+        if (status > 0) return failed(status);
         progress_.finishFrame();
         written_.push_back(frame);
         if (log_) log_->frameDone(frame);
+        updateStopNote();
     }
     std::string error;
     if (plan_.gif && !image_io::writeAnimatedGif(plan_.path, gifFrames_, options_.fps, error)) {
-        std::cerr << "crtc: " << error << "\n";
+        printError(error);
         return 2;
     }
     if (log_) log_->remove();
@@ -458,7 +475,6 @@ int RenderRun::run(const CompileFrame& compileFrame) {
 int renderCommand(const Options& options, const CompileFrame& compileFrame) {
     OutputPlan plan;
     if (!planOutput(options, plan)) return 2;
-    std::signal(SIGINT, onInterrupt);
     return RenderRun(options, std::move(plan)).run(compileFrame);
 }
 

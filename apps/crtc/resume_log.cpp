@@ -84,7 +84,10 @@ bool ResumeLog::open(const std::string& path, bool keep, std::string& error) {
         error = fmt::format("cannot write the resume log '{}': {}", path, std::strerror(errno));
         return false;
     }
-    std::fwrite(kMagic, 1, sizeof kMagic, file_);
+    if (std::fwrite(kMagic, 1, sizeof kMagic, file_) != sizeof kMagic || !flush()) {
+        error = fmt::format("cannot write the resume log '{}': {}", path, std::strerror(errno));
+        return false;
+    }
     for (const auto& [number, frame] : frames_) {
         record(kFrameBegun, number, frame.sceneHash, nullptr, 0);
         for (const auto& [index, rgb] : frame.tiles)

@@ -207,16 +207,7 @@ expect_status 2 "--png-compression 10" "$crtc" -q --png-compression 10 -o "$work
 expect_text "$work/err" "--png-compression needs an integer from 0 to 9" "--png-compression range message"
 
 # A render far longer than the wait: Ctrl-C must exit 130 and leave no image (nor a temporary).
-cat >"$work/scenes/heavy.crt" <<'CRT'
-Settings {
-    width -> 2000 height -> 1500 supersampling -> 4 recursiondepth -> 8
-    lights -> [PointLight { origin -> vec3(2, 4, -3) color -> rgb(1, 1, 1) }]
-}
-m = Material { color -> rgb(0.8, 0.8, 0.8) reflectivity -> 0.8 }
-Scene {
-    for i in range(40) { Sphere { center -> vec3(i % 8 - 3.5, i / 8 - 2.0, 3.0 + i % 3) radius -> 0.45 material -> m } }
-}
-CRT
+cp "$(dirname "$0")/scenes/heavy.crt" "$work/scenes/heavy.crt"
 # An output that cannot be written stops the render at the first finished rows, rather than after
 # tracing the whole image: the progress lines (standard error is not a terminal) stop short of 100 %.
 expect_status 2 "a long render to a folder that does not exist" \

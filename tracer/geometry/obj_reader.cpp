@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -44,6 +45,8 @@ class Parser {
 
     bool line(std::string_view text, size_t lineNumber);
     MeshData mesh;
+    size_t statements = 0; ///< lines that start with an OBJ keyword
+    size_t otherLines = 0; ///< lines with something else, which are skipped
 
   private:
     bool fail(const std::string& message) {
@@ -128,6 +131,7 @@ bool Parser::line(std::string_view text, size_t lineNumber) {
     std::string_view rest = text;
     std::string_view keyword = nextToken(rest);
     double xyz[3];
+    if (keyword == "v" || keyword == "vn" || keyword == "vt") ++statements;
     if (keyword == "v") {
         if (!numbers(rest, xyz, 3, 3)) return false;
         mesh.positions.emplace_back(xyz[0], xyz[1], xyz[2]);
@@ -138,15 +142,32 @@ bool Parser::line(std::string_view text, size_t lineNumber) {
         if (!numbers(rest, xyz, 1, 2)) return false;
         mesh.uvs.emplace_back(xyz[0], xyz[1]);
     } else if (keyword == "f") {
+        ++statements;
         return face(rest);
     }
-    return true; // o, g, s, usemtl, mtllib and anything else: not geometry we use
+    // o, g, s, usemtl, mtllib and others: not geometry we use. A file of nothing but unknown
+    // lines is another kind of file, named as a mesh by mistake.
+    static constexpr std::string_view kOtherKeywords[] = {"o", "g", "s", "usemtl", "mtllib",
+                                                          "l", "p", "vp"};
+    if (keyword.empty()) return true;
+    if (std::find(std::begin(kOtherKeywords), std::end(kOtherKeywords), keyword) !=
+        std::end(kOtherKeywords))
+        ++statements;
+    else
+        ++otherLines;
+    return true;
 }
 
 } // namespace
 
 std::optional<MeshData> parseObj(std::string_view text, const std::string& nameForErrors,
                                  std::string& error) {
+    // Any file can be named as a mesh; one that is not text, or has no face, is not an OBJ
+    // mesh, and saying so beats drawing nothing.
+    if (text.find('\0') != std::string_view::npos) {
+        error = fmt::format("{}: not a Wavefront OBJ mesh (it holds binary data)", nameForErrors);
+        return std::nullopt;
+    }
     Parser parser(nameForErrors, error);
     size_t lineNumber = 0;
     while (!text.empty()) {
@@ -154,6 +175,11 @@ std::optional<MeshData> parseObj(std::string_view text, const std::string& nameF
         std::string_view line = text.substr(0, end);
         text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
         if (!parser.line(line, ++lineNumber)) return std::nullopt;
+    }
+    if (parser.statements == 0 && parser.otherLines > 0) {
+        error = fmt::format("{}: not a Wavefront OBJ mesh (no line of it is an OBJ statement)",
+                            nameForErrors);
+        return std::nullopt;
     }
     return std::move(parser.mesh);
 }

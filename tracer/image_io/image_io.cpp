@@ -5,6 +5,7 @@
 #include "tracer/image_io/encoding.hpp"
 #include "tracer/image_io/module_loader.hpp"
 #include "tracer/image_io/png_writer.hpp"
+#include "tracer/image_io/temporary_file.hpp"
 
 #include <unistd.h>
 
@@ -147,21 +148,6 @@ std::string replaceAll(std::string text, const std::string& from, const std::str
     return text;
 }
 
-// The temporary name is hidden, unique per process and call, and in the target's directory
-// so that the final rename is atomic (same file system).
-fs::path temporaryPathFor(const fs::path& target) {
-    static std::atomic<unsigned> counter{0};
-    // Appended piece by piece: `"." + std::string` trips GCC 12's -Wrestrict false positive.
-    std::string name(1, '.');
-    name += target.filename().string();
-    name += '.';
-    name += std::to_string(::getpid());
-    name += '.';
-    name += std::to_string(counter++);
-    name += ".tmp";
-    return target.parent_path() / name;
-}
-
 // Whether `path` can be written: its directory exists and it is not one.
 bool checkTarget(const std::string& path, std::string& error) {
     const fs::path target(path);
@@ -185,13 +171,11 @@ std::string failureOf(const std::string& path, const std::string& temporary,
     return "cannot write " + quotedName(path) + ": " + replaceAll(problem, temporary, path);
 }
 
-// Renames the finished temporary over `path`; removes it if that fails.
-bool moveIntoPlace(const std::string& temporary, const std::string& path, std::string& error) {
-    std::error_code ec;
-    fs::rename(temporary, path, ec);
-    if (!ec) return true;
-    fs::remove(temporary, ec);
-    error = "cannot write " + quotedName(path) + ": " + ec.message();
+// Renames the finished temporary over `path` (removing it if that fails).
+bool commitTemporary(TemporaryFile& temporary, const std::string& path, std::string& error) {
+    std::string why;
+    if (temporary.commit(why)) return true;
+    error = "cannot write " + quotedName(path) + ": " + why;
     return false;
 }
 
@@ -199,15 +183,31 @@ bool moveIntoPlace(const std::string& temporary, const std::string& path, std::s
 template <class Write>
 bool writeThroughTemporary(const std::string& path, std::string& error, Write&& write) {
     if (!checkTarget(path, error)) return false;
-    const std::string temporary = temporaryPathFor(fs::path(path)).string();
     std::string problem;
-    if (!write(temporary, problem)) {
-        std::error_code ec;
-        fs::remove(temporary, ec);
-        error = failureOf(path, temporary, problem);
+    TemporaryFile temporary(path, problem);
+    if (temporary.ok() && write(temporary.path(), problem))
+        return commitTemporary(temporary, path, error);
+    error = failureOf(path, temporary.path(), problem);
+    return false;
+}
+
+// OpenImageIO's writers do not all report a failed write: on a full disk a GIF was "written"
+// as an empty file. So a file the module wrote must read back with the size and number of
+// images it was given before it replaces anything.
+bool readsBack(const CrtImageIoModule& module, const std::string& file, int width, int height,
+               int images, std::string& problem) {
+    CrtImageInfo info{};
+    CallContext context;
+    if (!module.describeImage || !module.describeImage(file.c_str(), &info, storeError, &context)) {
+        // The reader's own words ("no format reader …") would only confuse.
+        problem = "the written file does not read back (is the disk full?)";
         return false;
     }
-    return moveIntoPlace(temporary, path, error);
+    if (info.width != width || info.height != height || info.subimages != images) {
+        problem = "the written file reads back as another image (is the disk full?)";
+        return false;
+    }
+    return true;
 }
 
 // The module, or null with "<action>: <why it could not be loaded>" in `error`.
@@ -269,9 +269,13 @@ std::unique_ptr<ImageStream> ImageStream::open(const std::string& path, int widt
     if (!module) return nullptr;
 
     std::unique_ptr<ImageStream> stream(new ImageStream());
+    stream->temporary_ = std::make_unique<TemporaryFile>(path, problem);
+    if (!stream->temporary_->ok()) {
+        error = "cannot write " + quotedName(path) + ": " + problem;
+        return nullptr;
+    }
     stream->module_ = module;
     stream->path_ = path;
-    stream->temporary_ = temporaryPathFor(fs::path(path)).string();
     stream->width_ = width;
     stream->height_ = height;
     stream->channels_ = channels;
@@ -280,12 +284,12 @@ std::unique_ptr<ImageStream> ImageStream::open(const std::string& path, int widt
     stream->options_ = options;
     CallContext context;
     stream->handle_ = module->openImage(
-        stream->temporary_.c_str(), format->oiioName, width, height,
+        stream->temporary_->path().c_str(), format->oiioName, width, height,
         stream->expandGrey_ ? 3 : channels, format->eightBit ? 0 : 1,
         format->eightBit && options.srgb ? 1 : 0, options.pngCompression, storeError, &context);
     if (!stream->handle_) {
-        error = failureOf(path, stream->temporary_, context.error);
-        return nullptr; // the destructor removes whatever the module created
+        error = failureOf(path, stream->temporary_->path(), context.error);
+        return nullptr; // the destructor removes the temporary
     }
     return stream;
 }
@@ -310,7 +314,7 @@ bool ImageStream::writeRows(int yBegin, int yEnd, std::span<const float> values,
                                    : static_cast<const void*>(stored.data());
     CallContext context;
     if (!module_->writeRows(handle_, yBegin, yEnd, pixels, storeError, &context)) {
-        error = failureOf(path_, temporary_, context.error);
+        error = failureOf(path_, temporary_->path(), context.error);
         return false;
     }
     nextRow_ = yEnd;
@@ -326,24 +330,22 @@ bool ImageStream::finish(std::string& error) {
     CallContext context;
     const int closed = module_->closeImage(handle_, 0, storeError, &context);
     handle_ = nullptr;
-    if (!closed) {
-        std::error_code ec;
-        fs::remove(temporary_, ec);
-        error = failureOf(path_, temporary_, context.error);
-        return false;
+    std::string problem = context.error;
+    // The built-in PNG writer checks every write itself, and has no reader.
+    if (!closed || (module_->describeImage &&
+                    !readsBack(*module_, temporary_->path(), width_, height_, 1, problem))) {
+        error = failureOf(path_, temporary_->path(), problem);
+        return false; // the destructor removes the temporary
     }
-    finished_ = true;
-    return moveIntoPlace(temporary_, path_, error);
+    return commitTemporary(*temporary_, path_, error);
 }
 
 ImageStream::~ImageStream() {
-    if (finished_) return;
     if (handle_) {
         CallContext ignored;
         module_->closeImage(handle_, 1, storeError, &ignored);
     }
-    std::error_code ec;
-    fs::remove(temporary_, ec);
+    // temporary_, unless committed, removes its file.
 }
 
 bool writeImage(const std::string& path, const ImageBuffer& image, const WriteOptions& options,
@@ -434,7 +436,8 @@ bool writeAnimatedGif(const std::string& path, const GifFrames& frames, double f
                                      frames.channels(), int(frames.size()), framePointers.data(),
                                      400, int(4 * delay + 1), storeError, &context);
         why = context.error;
-        return ok != 0;
+        return ok != 0 && readsBack(*module, temporary, frames.width(), frames.height(),
+                                    int(frames.size()), why);
     });
 }
 

@@ -20,6 +20,8 @@ struct CrtImageIoModule;
 
 namespace crt::tracer::image_io {
 
+class TemporaryFile;
+
 /// Row-major, top row first, `channels` floats per pixel (3 = RGB).
 struct ImageBuffer {
     int width = 0;
@@ -55,8 +57,10 @@ std::optional<ImageBuffer> readImage(const std::string& path, std::string& error
 /// when `options.srgb`; EXR and HDR store the linear values unclamped. `image.channels` may be
 /// 1, 3 or 4 where the format allows it; a fourth channel is straight (not premultiplied) alpha,
 /// quantised without the gamma. The image goes to a temporary file in the same
-/// directory that is renamed into place, so a failed or interrupted write never leaves a
-/// partial file under `path`; the temporary is removed on failure.
+/// directory (temporary_file.hpp: a random name, created exclusively) that is renamed into
+/// place once it is complete: flushed to the disk, not empty, and, when OpenImageIO wrote it,
+/// read back with the expected size. So a failed or interrupted write never leaves a partial
+/// file under `path`, nor replaces the previous one; the temporary is removed on failure.
 bool writeImage(const std::string& path, const ImageBuffer& image, const WriteOptions& options,
                 std::string& error);
 
@@ -86,9 +90,10 @@ class ImageStream {
 
     const CrtImageIoModule* module_ = nullptr;
     void* handle_ = nullptr;
-    std::string path_, temporary_;
+    std::string path_;
+    std::unique_ptr<TemporaryFile> temporary_;
     int width_ = 0, height_ = 0, channels_ = 3;
-    bool expandGrey_ = false, eightBit_ = true, finished_ = false;
+    bool expandGrey_ = false, eightBit_ = true;
     WriteOptions options_;
     int nextRow_ = 0;
 };
