@@ -5,3 +5,8 @@ find_package(fmt REQUIRED)
 find_package(glm REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(Catch2 2 REQUIRED)
+# crtc --preview's HTTP server (cpp-httplib: declarations in httplib.h, the code in the shared
+# library; its pkg-config flags must be used as given, they change the classes' layout).
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(CPP_HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
+find_package(PNG REQUIRED)

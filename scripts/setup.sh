@@ -13,6 +13,8 @@ packages=(
     libpng-dev # PNG output, written without OpenImageIO
     python3 # the language server's protocol session tests (tests/lsp)
     neovim  # the language server's end-to-end test (tests/lsp/nvim)
+    pkg-config libcpp-httplib-dev # crtc --preview's HTTP server
+    chromium nodejs npm # crtc --preview's browser test (puppeteer-core, tests/preview)
 )
 case "${1:-}" in
 --bench) packages+=(povray time) ;;

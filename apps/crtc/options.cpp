@@ -17,6 +17,8 @@ modes:
   --dump-scene         print the evaluated scene as JSON (docs/scene-json.md)
   --format             print the script formatted (to -o FILE if given); a script
                        with syntax errors is refused
+  --preview            serve a live preview with a mouse-driven camera on
+                       127.0.0.1 and print its URL (docs/preview.md)
 
 options:
   -o FILE              output image (default: the script's name with .png, or .gif
@@ -28,6 +30,8 @@ options:
   --fps F              frames per second of an animated GIF (default 15)
   --png-compression N  zlib level of PNG output, 0 (fastest) to 9 (smallest);
                        default 2
+  --port N             --preview: listen on port N (default: a free port)
+  --open               --preview: open the URL with xdg-open
   --stats              print ray and acceleration-structure counts after rendering
   -I DIR               add DIR to the include search path (repeatable)
   --assets DIR         asset root for "/..." image and mesh paths (repeatable)
@@ -133,6 +137,16 @@ bool renderOption(std::string_view arg, Arguments& args, Options& o) {
     return true;
 }
 
+/// The live preview: true if `arg` is one of its options.
+bool previewOption(std::string_view arg, Arguments& args, Options& o) {
+    if (arg == "--preview") o.mode = Mode::Preview;
+    else if (arg == "--open") o.open = true;
+    else if (arg == "--port") {
+        if (!args.number(o.port) || o.port < 1 || o.port > 65535) return args.fail("--port needs a port number from 1 to 65535");
+    } else return false;
+    return true;
+}
+
 /// How the script is evaluated, and its limits: true if `arg` is one of these options.
 bool evalOption(std::string_view arg, Arguments& args, Options& o) {
     std::string_view v;
@@ -170,6 +184,7 @@ bool evalOption(std::string_view arg, Arguments& args, Options& o) {
 std::string checkCombination(const Options& o) {
     if (o.script.empty()) return "no script given";
     if (o.frames > 0 && o.eval.time) return "--time and --frames cannot be combined";
+    if ((o.port != 0 || o.open) && o.mode != Mode::Preview) return "--port and --open need --preview";
     const uint32_t maxSize = o.eval.limits.maxSize;
     for (auto [name, size] : {std::pair{"--width", o.width}, {"--height", o.height}}) {
         if (static_cast<uint32_t>(size) > maxSize)
@@ -199,7 +214,8 @@ ParsedOptions parseOptions(int argc, char** argv) {
             result.message = fmt::format("crtc {}", CRT_VERSION);
             return result;
         }
-        if (modeOption(arg, args, o) || renderOption(arg, args, o) || evalOption(arg, args, o)) {
+        if (modeOption(arg, args, o) || renderOption(arg, args, o) || previewOption(arg, args, o) ||
+            evalOption(arg, args, o)) {
             if (!args.error.empty()) return bad(args.error);
         } else if (arg.size() > 1 && arg[0] == '-') {
             return bad(fmt::format("unknown option '{}'", arg));

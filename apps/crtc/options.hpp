@@ -9,7 +9,7 @@
 
 namespace crt::crtc {
 
-enum class Mode { Render, Check, DumpAst, DumpScene, Format };
+enum class Mode { Render, Check, DumpAst, DumpScene, Format, Preview };
 enum class ColorWhen { Auto, Always, Never };
 
 struct Options {
@@ -28,6 +28,9 @@ struct Options {
     double fps = 15;   ///< --fps of an animated GIF
     int pngCompression = -1; ///< --png-compression 0-9; -1: the image writer's default
     bool stats = false; ///< --stats
+    // Preview
+    int port = 0;        ///< --port; 0: a free port
+    bool open = false;   ///< --open: show the preview in the desktop's browser
 };
 
 /// The result of reading argv: options, or a message and exit status (0 for --help).
