@@ -12,7 +12,13 @@ std::vector<RenderPass> refinementPasses(const ViewQuality& quality) {
     return passes;
 }
 
-RenderPass interactivePass(const ViewQuality& quality) { return {quality.scale / 2, true}; }
+RenderPass interactivePass(const ViewQuality& quality, double fraction) { return {quality.scale * fraction, true}; }
+
+double nextDragFraction(double fraction, double seconds) {
+    constexpr double kFrameSeconds = 1.0 / 20;
+    if (!(seconds > 0)) return fraction;
+    return std::clamp(fraction * std::sqrt(kFrameSeconds / seconds), 1.0 / 8, 0.5);
+}
 
 scene::SceneDesc passScene(const scene::SceneDesc& scene, const RenderPass& pass) {
     scene::SceneDesc desc = scene;

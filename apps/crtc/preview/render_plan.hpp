@@ -26,8 +26,15 @@ struct RenderPass {
 /// then (unless the page asks for draft) the full size at the script's own quality.
 std::vector<RenderPass> refinementPasses(const ViewQuality& quality);
 
-/// The pass rendered for each move while the camera is dragged: half the size, in draft.
-RenderPass interactivePass(const ViewQuality& quality);
+/// The pass rendered for each move while the camera is dragged: `fraction` of the page's
+/// size, in draft.
+RenderPass interactivePass(const ViewQuality& quality, double fraction);
+
+/// The fraction of the size for the drag's next frame, given the last one's and the seconds
+/// it took: what keeps a drag at about 20 frames a second, between 1/8 and 1/2 (a pass's
+/// time grows with its pixels, so with the square of the fraction).
+double nextDragFraction(double fraction, double seconds);
+inline constexpr double kFirstDragFraction = 0.5;
 
 /// The scene as `pass` renders it: its image size scaled (at least 1×1), and with draft,
 /// its sampling reduced.

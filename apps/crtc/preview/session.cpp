@@ -91,6 +91,7 @@ void Session::changed() {
 void Session::reload() {
     std::lock_guard lock(mutex_);
     needsEvaluation_ = true;
+    evaluationStale_.store(true);
     interactive_ = false;
     changed();
 }
@@ -129,6 +130,7 @@ void Session::setFrame(int frame) {
     std::lock_guard lock(mutex_);
     frame_ = std::clamp(frame, 0, std::max(options_.frames, 1) - 1);
     needsEvaluation_ = true;
+    evaluationStale_.store(true);
     interactive_ = false;
     changed();
 }
@@ -182,11 +184,13 @@ json Session::pick(double fx, double fy) const {
                    {"distance", found->distance}};
     if (entity.material >= 0)
         answer["material"] = spanLocation(scene, scene.materials[static_cast<size_t>(entity.material)].source);
+    // The entity drawn, when the surface is part of something larger built elsewhere (a CSG,
+    // a macro's group).
     const int32_t root = drawnRootOf(scene, found->entity);
-    if (root >= 0 && root != found->entity) {
-        const scene::EntityDesc& drawn = scene.entities[static_cast<size_t>(root)];
-        answer["drawn"] = {{"kind", entityKind(drawn)}, {"location", spanLocation(scene, drawn.source)}};
-    }
+    const std::string rootLocation =
+        root >= 0 ? spanLocation(scene, scene.entities[static_cast<size_t>(root)].source) : "";
+    if (!rootLocation.empty() && rootLocation != answer["location"])
+        answer["drawn"] = {{"kind", entityKind(scene.entities[static_cast<size_t>(root)])}, {"location", rootLocation}};
     return answer;
 }
 
@@ -207,8 +211,8 @@ void Session::publishDiagnostics(const std::vector<std::string>& diagnostics, bo
 bool Session::evaluate(int frame) {
     lang::EvalOptions eval = options_.eval;
     eval.frame = frame;
-    // A change while evaluating makes this evaluation useless: stop it early.
-    eval.interrupt = [this] { return cancel_.load(std::memory_order_relaxed); };
+    // An edit while evaluating makes this evaluation useless: stop it early.
+    eval.interrupt = [this] { return evaluationStale_.load(std::memory_order_relaxed); };
     std::optional<std::string> text = lang::readFile(options_.script);
     if (!text) {
         watcher_.watch({options_.script});
@@ -222,11 +226,7 @@ bool Session::evaluate(int frame) {
         return false;
     }
     lang::Compilation c = lang::compile(options_.script, *text, eval);
-    if (cancel_.load()) {
-        std::lock_guard lock(mutex_);
-        needsEvaluation_ = true; // the next round evaluates again
-        return false;
-    }
+    if (evaluationStale_.load()) return false; // the next round evaluates the new text
     watcher_.watch(filesRead(c));
     if (options_.werror) c.diagnostics.promoteWarnings();
     std::vector<std::string> diagnostics;
@@ -252,7 +252,7 @@ bool Session::evaluate(int frame) {
 }
 
 bool Session::renderPass(const scene::SceneDesc& base, const RenderPass& pass, int index, int count,
-                         bool final) {
+                         bool final, double* seconds) {
     const scene::SceneDesc scene = passScene(base, pass);
     const int width = scene.settings.width, height = scene.settings.height;
     tracer::PixelBuffer pixels(width, height);
@@ -292,7 +292,8 @@ bool Session::renderPass(const scene::SceneDesc& base, const RenderPass& pass, i
     image->final = final;
     image->png = encodePng(width, height,
                            tracer::image_io::quantise8(pixels.rgb, scene.settings.gamma, scene.settings.srgb));
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const double took = std::chrono::duration<double>(Clock::now() - start).count();
+    if (seconds) *seconds = took;
     ViewQuality quality;
     {
         std::lock_guard lock(mutex_);
@@ -309,7 +310,7 @@ bool Session::renderPass(const scene::SceneDesc& base, const RenderPass& pass, i
                        {"passes", count},
                        {"draft", pass.draft},
                        {"final", final},
-                       {"seconds", seconds}});
+                       {"seconds", took}});
     return true;
 }
 
@@ -334,6 +335,7 @@ void Session::run() {
             seen = generation_;
             cancel_.store(false);
             request = {needsEvaluation_, interactive_, frame_, quality_};
+            if (needsEvaluation_) evaluationStale_.store(false);
             needsEvaluation_ = false;
         }
         // A script with errors leaves the last good image on screen as it is.
@@ -342,8 +344,11 @@ void Session::run() {
         if (!currentScene(scene)) continue;
         std::vector<RenderPass> passes = refinementPasses(request.quality);
         if (request.interactive) {
-            const RenderPass quick = interactivePass(request.quality);
-            if (!renderPass(scene, quick, 0, 1, false) || !waitForStillness(seen)) continue;
+            const RenderPass quick = interactivePass(request.quality, dragFraction_);
+            double seconds = 0;
+            if (!renderPass(scene, quick, 0, 1, false, &seconds)) continue;
+            dragFraction_ = nextDragFraction(dragFraction_, seconds);
+            if (!waitForStillness(seen)) continue;
             // The drag's image stands in for the coarser passes.
             std::erase_if(passes, [&](const RenderPass& p) { return p.draft && p.scale <= quick.scale; });
         }

@@ -86,8 +86,9 @@ private:
     /// The scene to render now (script's scene, page's camera); false before a good evaluation.
     bool currentScene(scene::SceneDesc& out) const;
     /// Renders a pass and publishes its image; false if cancelled or failed. `final`: the last
-    /// pass of a refinement (not a drag's quick image).
-    bool renderPass(const scene::SceneDesc& scene, const RenderPass& pass, int index, int count, bool final);
+    /// pass of a refinement (not a drag's quick image). `seconds` (optional): how long it took.
+    bool renderPass(const scene::SceneDesc& scene, const RenderPass& pass, int index, int count, bool final,
+                    double* seconds = nullptr);
     /// Waits until the camera has not moved for a moment; false if something else came first.
     bool waitForStillness(uint64_t generation);
     void publishDiagnostics(const std::vector<std::string>& diagnostics, bool errors);
@@ -95,6 +96,9 @@ private:
     Options options_;
     Publish publish_;
     std::atomic<bool> cancel_{false};
+    /// Set by an edit or another frame: the evaluation under way is of no use any more (a
+    /// camera move cancels renders, not evaluations).
+    std::atomic<bool> evaluationStale_{false};
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     uint64_t generation_ = 1;
@@ -104,6 +108,7 @@ private:
     std::chrono::steady_clock::time_point lastMove_;
     int frame_ = 0;
     ViewQuality quality_;
+    double dragFraction_ = kFirstDragFraction; ///< of the size, for a drag's frames (render loop only)
     std::optional<scene::SceneDesc> scene_;         ///< the last evaluation without errors
     std::optional<scene::CameraDesc> pageCamera_;   ///< once the page moved the camera
     std::vector<std::string> diagnostics_;
