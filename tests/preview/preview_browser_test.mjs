@@ -4,6 +4,7 @@
 import { createRequire } from "node:module";
 import { readFileSync, writeFileSync } from "node:fs";
 import assert from "node:assert/strict";
+import http from "node:http";
 
 const require = createRequire(process.env.PUPPETEER_DIR + "/");
 const puppeteer = require("puppeteer-core");
@@ -16,6 +17,17 @@ const timeout = 60000;
 let shot = 0;
 
 function step(text) { console.log(`- ${text}`); }
+
+/// The status of a GET of `path` (with `query`) sent with the given headers.
+function statusOf(path, query, headers) {
+  return new Promise((resolve, reject) => {
+    const request = http.get({ host: "127.0.0.1", port: base.port, path: "/" + path + query, headers }, (response) => {
+      response.resume();
+      resolve(response.statusCode);
+    });
+    request.on("error", reject);
+  });
+}
 
 /// Statistics of the image the page shows, read back through a canvas.
 async function imageStats(page) {
@@ -71,6 +83,14 @@ try {
   const page = await browser.newPage();
   const pageErrors = [];
   page.on("pageerror", (error) => pageErrors.push(error.message));
+
+  step("requests without the token, or from another Host or Origin, are refused");
+  const own = { Host: base.host };
+  assert.equal(await statusOf("api/state", base.search, own), 200);
+  assert.equal(await statusOf("api/state", "", own), 403);
+  assert.equal(await statusOf("api/state", "?token=0123", own), 403);
+  assert.equal(await statusOf("", base.search, { Host: `rebound.example:${base.port}` }), 403);
+  assert.equal(await statusOf("api/state", base.search, { ...own, Origin: "http://evil.example" }), 403);
 
   step("the page loads and shows a rendered, non-uniform image");
   await page.goto(url);

@@ -65,4 +65,18 @@ if ls "$out"/*.tmp >/dev/null 2>&1; then
     echo "crtc left a temporary file behind" >&2
     exit 1
 fi
+# SIGTERM (as Ctrl-C) stops it too, with status 0.
+"$crtc" --preview --threads 2 "$out/scene.crt" >"$out/stdout2.txt" 2>"$out/stderr2.txt" &
+crtc_pid=$!
+for _ in $(seq 100); do
+    [ -s "$out/stdout2.txt" ] && break
+    sleep 0.1
+done
+kill -TERM "$crtc_pid"
+status=0
+wait "$crtc_pid" || status=$?
+if [ "$status" -ne 0 ]; then
+    echo "crtc --preview exited with status $status after SIGTERM" >&2
+    exit 1
+fi
 echo "preview browser test passed; screenshots in $out"
