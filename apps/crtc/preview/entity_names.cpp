@@ -1,26 +1,12 @@
 // Names of the scene's entities (see entity_names.hpp).
 #include "preview/entity_names.hpp"
 
+#include "scene/entity_parts.hpp"
+
 #include <array>
 #include <variant>
 
 namespace crt::crtc::preview {
-
-namespace {
-
-/// The entities an entity is made of: CSG operands, a transform's child, a group's members.
-template <typename Visit> void forEachPart(const scene::EntityDesc& entity, Visit&& visit) {
-    if (auto* csg = std::get_if<scene::CsgNode>(&entity.shape)) {
-        visit(csg->left);
-        visit(csg->right);
-    } else if (auto* transform = std::get_if<scene::TransformNode>(&entity.shape)) {
-        visit(transform->child);
-    } else if (auto* group = std::get_if<scene::GroupNode>(&entity.shape)) {
-        for (int32_t member : group->members) visit(member);
-    }
-}
-
-} // namespace
 
 std::string entityKind(const scene::EntityDesc& entity) {
     static constexpr std::array<const char*, std::variant_size_v<scene::Shape>> kNames{
@@ -52,7 +38,7 @@ int32_t drawnRootOf(const scene::SceneDesc& scene, int32_t entity) {
             if (e == entity) return root;
             if (e < 0 || seen[static_cast<size_t>(e)]) continue;
             seen[static_cast<size_t>(e)] = true;
-            forEachPart(scene.entities[static_cast<size_t>(e)], [&](int32_t part) { pending.push_back(part); });
+            scene::forEachPart(scene.entities[static_cast<size_t>(e)], [&](int32_t part) { pending.push_back(part); });
         }
     }
     return -1;
