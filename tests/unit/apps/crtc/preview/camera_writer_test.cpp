@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 using namespace crt;
 using namespace crt::crtc::preview;
@@ -101,7 +102,7 @@ TEST_CASE("scripts the camera cannot be placed in are refused with a reason", "[
 
 TEST_CASE("replaceFile swaps the whole file and leaves no temporary behind", "[preview]") {
     namespace fs = std::filesystem;
-    const fs::path folder = fs::temp_directory_path() / "crtc_preview_writer_test";
+    const fs::path folder = fs::temp_directory_path() / ("crtc_preview_writer_test_" + std::to_string(::getpid()));
     fs::remove_all(folder);
     fs::create_directories(folder);
     const std::string path = (folder / "scene.crt").string();

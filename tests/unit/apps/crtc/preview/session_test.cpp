@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <unistd.h>
 
 using namespace crt;
 using namespace crt::crtc::preview;
@@ -61,8 +62,9 @@ std::string sceneText(int width, int height, int supersampling, const char* colo
            "reflectivity -> 0.3 } } }\n";
 }
 
+/// A script in a folder of its own: test cases run in parallel processes.
 struct ScriptFile {
-    fs::path folder = fs::temp_directory_path() / "crtc_preview_session_test";
+    fs::path folder = fs::temp_directory_path() / ("crtc_preview_session_test_" + std::to_string(::getpid()));
     std::string path = (folder / "scene.crt").string();
 
     explicit ScriptFile(const std::string& text) {
