@@ -6,3 +6,8 @@ find_package(glm REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(Catch2 2 REQUIRED)
 find_package(CLI11 2.1 REQUIRED) # crtc's command line
+# crtc --preview's HTTP server (cpp-httplib: declarations in httplib.h, the code in the shared
+# library; its pkg-config flags must be used as given, they change the classes' layout).
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(CPP_HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
+find_package(PNG REQUIRED)

@@ -3,6 +3,7 @@
 #include "object_builder.hpp"
 
 #include "builtins.hpp"
+#include "scene/entity_parts.hpp"
 
 #include <algorithm>
 #include <map>
@@ -25,18 +26,6 @@ template <typename T> std::vector<int32_t> compact(std::vector<T>& items, const 
     return remap;
 }
 
-/// Calls `visit` on every entity index a node refers to.
-template <typename F> void forEachChild(scene::EntityDesc& entity, F&& visit) {
-    if (auto* csg = std::get_if<scene::CsgNode>(&entity.shape)) {
-        visit(csg->left);
-        visit(csg->right);
-    } else if (auto* transform = std::get_if<scene::TransformNode>(&entity.shape)) {
-        visit(transform->child);
-    } else if (auto* group = std::get_if<scene::GroupNode>(&entity.shape)) {
-        for (int32_t& member : group->members) visit(member);
-    }
-}
-
 } // namespace
 
 void Interpreter::dropUnreachable(const std::vector<bool>& keepEntity, const std::vector<bool>& keepMaterial,
@@ -46,7 +35,7 @@ void Interpreter::dropUnreachable(const std::vector<bool>& keepEntity, const std
     std::vector<int32_t> textureMap = compact(scene_.textures, keepTexture);
     for (scene::EntityDesc& entity : scene_.entities) {
         if (entity.material >= 0) entity.material = materialMap[static_cast<size_t>(entity.material)];
-        forEachChild(entity, [&](int32_t& child) { child = entityMap[static_cast<size_t>(child)]; });
+        scene::forEachPart(entity, [&](int32_t& child) { child = entityMap[static_cast<size_t>(child)]; });
     }
     for (int32_t& root : scene_.drawn) root = entityMap[static_cast<size_t>(root)];
     // A finish of dropped materials only may name a dropped texture: it becomes -1, unused.
@@ -100,7 +89,7 @@ void Interpreter::keepReachable() {
         pending.pop_back();
         if (keepEntity[static_cast<size_t>(index)]) continue;
         keepEntity[static_cast<size_t>(index)] = true;
-        forEachChild(scene_.entities[static_cast<size_t>(index)], [&](int32_t child) { pending.push_back(child); });
+        scene::forEachPart(scene_.entities[static_cast<size_t>(index)], [&](int32_t child) { pending.push_back(child); });
     }
     std::vector<bool> keepMaterial(scene_.materials.size(), false);
     for (size_t i = 0; i < scene_.entities.size(); ++i) {

@@ -20,6 +20,8 @@ packages=(
     go-md2man # the manual pages, from docs/man/*.md
     dpkg-dev file # the Debian package: dpkg-shlibdeps computes Depends, on files file finds ELF
     man-db    # the install tests read the installed manual pages with man
+    pkg-config libcpp-httplib-dev # crtc --preview's HTTP server
+    chromium # crtc --preview's browser test (puppeteer-core, tests/preview)
 )
 # The VS Code extension's tests and package.sh need node and npm. The machines come with
 # Node.js 20 and its npm (not Debian's packages, which conflict with them): Debian's only

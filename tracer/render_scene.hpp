@@ -116,6 +116,9 @@ struct ShadingMaterial : scene::FinishDesc {
 class RenderScene {
 public:
     std::vector<Primitive> primitives;
+    /// The SceneDesc entity each primitive was built from (a mesh's for its triangles), for
+    /// naming what a ray met (pick.hpp).
+    std::vector<int32_t> primitiveEntities;
     std::vector<TransformPair> transforms;
     std::vector<CsgTreeNode> csgNodes;
     std::vector<ShadingMaterial> materials;

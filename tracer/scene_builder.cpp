@@ -51,9 +51,9 @@ private:
                 int32_t node = addCsg(op);
                 if (node >= 0) scene_.objects.push_back(~node);
             } else if (auto* m = std::get_if<scene::MeshShape>(&e.shape)) {
-                if (!addMesh(*m, e, op.transform)) return false;
+                if (!addMesh(*m, op.entity, op.transform)) return false;
             } else {
-                int32_t p = addPrimitive(e, op.transform);
+                int32_t p = addPrimitive(op.entity, op.transform);
                 if (p >= 0) scene_.objects.push_back(p);
             }
         }
@@ -73,14 +73,17 @@ private:
         return static_cast<int32_t>(scene_.transforms.size() - 1);
     }
 
-    int32_t addPrimitive(const scene::EntityDesc& e, const Transform& toWorld) {
+    int32_t addPrimitive(int32_t entity, const Transform& toWorld) {
+        const scene::EntityDesc& e = desc_.entities[entity];
         std::optional<Geometry> geometry = makeGeometry(e.shape);
         if (!geometry) return -1;
         scene_.primitives.push_back({std::move(*geometry), addTransform(toWorld), materialOf(e)});
+        scene_.primitiveEntities.push_back(entity);
         return static_cast<int32_t>(scene_.primitives.size() - 1);
     }
 
-    bool addMesh(const scene::MeshShape& mesh, const scene::EntityDesc& e, const Transform& toWorld) {
+    bool addMesh(const scene::MeshShape& mesh, int32_t entity, const Transform& toWorld) {
+        const scene::EntityDesc& e = desc_.entities[entity];
         const std::string& path = scene::fileToOpen(mesh.resolvedFile, mesh.file);
         auto cached = meshes_.find(path);
         if (cached == meshes_.end()) {
@@ -91,6 +94,7 @@ private:
         int32_t transform = addTransform(toWorld);
         for (size_t i = 0; i < cached->second->triangles.size(); ++i) {
             scene_.primitives.push_back({MeshTriangleGeometry(cached->second, i), transform, materialOf(e)});
+            scene_.primitiveEntities.push_back(entity);
             scene_.objects.push_back(static_cast<int32_t>(scene_.primitives.size() - 1));
         }
         return true;
@@ -124,7 +128,7 @@ private:
             return addCsg({t->child, operand.transform.compose(Transform::fromModifiers(t->modifiers))});
         const scene::CsgNode* c = std::get_if<scene::CsgNode>(&e.shape);
         if (!c && !std::holds_alternative<scene::GroupNode>(e.shape)) {
-            int32_t p = addPrimitive(e, operand.transform);
+            int32_t p = addPrimitive(operand.entity, operand.transform);
             if (p < 0) return -1;
             CsgTreeNode leaf;
             leaf.primitive = p;

@@ -5,6 +5,7 @@
 #include "interpreter.hpp"
 #include "large_stack.hpp"
 #include "options.hpp"
+#include "preview/preview_command.hpp"
 #include "render_command.hpp"
 #include "scene/scene_json.hpp"
 #include "stop_signals.hpp"
@@ -107,6 +108,7 @@ int run(int argc, char** argv) {
     }
 
     if (options.mode == crtc::Mode::Format) return formatCommand(options, std::move(*text));
+    if (options.mode == crtc::Mode::Preview) return crtc::previewCommand(options);
 
     // The dumps own standard output: print() goes to standard error beside them.
     if (options.mode == crtc::Mode::DumpAst || options.mode == crtc::Mode::DumpScene) {

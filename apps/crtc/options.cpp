@@ -88,7 +88,10 @@ void addModeOptions(CLI::App& app, Options& o) {
     CLI::Option* format = mode("--format", Mode::Format,
                                "print the script formatted (to -o FILE if given); a script with "
                                "syntax errors is refused");
-    const std::vector<CLI::Option*> modes{check, ast, dump, format};
+    CLI::Option* preview = mode("--preview", Mode::Preview,
+                                "serve a live preview with a mouse-driven camera on 127.0.0.1 and print its URL "
+                                "(docs/preview.md)");
+    const std::vector<CLI::Option*> modes{check, ast, dump, format, preview};
     for (CLI::Option* a : modes)
         for (CLI::Option* b : modes)
             if (a != b) a->excludes(b);
@@ -137,6 +140,15 @@ void addOutputOptions(CLI::App& app, Options& o) {
         ->check(numberIn(1e-3, 100.0, "a number from 0.001 to 100"))
         ->type_name("F")
         ->group(group);
+}
+
+void addPreviewOptions(CLI::App& app, Options& o) {
+    const char* group = "Preview";
+    app.add_option("--port", o.port, "--preview: listen on port N (default: a free port)")
+        ->check(numberIn(1, 65535, "a port number from 1 to 65535"))
+        ->type_name("N")
+        ->group(group);
+    app.add_flag("--open", o.open, "--preview: open the URL with xdg-open")->group(group);
 }
 
 void addQualityOptions(CLI::App& app, Options& o) {
@@ -382,6 +394,7 @@ ParsedOptions parseOptions(int argc, char** argv) {
     addModeOptions(app, o);
     addOutputOptions(app, o);
     addQualityOptions(app, o);
+    addPreviewOptions(app, o);
     addAnimationOptions(app, o, range, clock);
     addEvaluationOptions(app, o);
     addReportingOptions(app, o);
@@ -403,6 +416,7 @@ ParsedOptions parseOptions(int argc, char** argv) {
         return bad(crtcWording(e));
     }
     if (std::string problem = leftOverProblem(app, o); !problem.empty()) return bad(problem);
+    if ((o.port != 0 || o.open) && o.mode != Mode::Preview) return bad("--port and --open need --preview");
     o.frames.clockStart = clock.first;
     o.frames.clockEnd = clock.second;
     const bool rangeGiven = app.count("--frame-range") > 0;

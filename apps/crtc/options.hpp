@@ -11,7 +11,7 @@
 
 namespace crt::crtc {
 
-enum class Mode { Render, Check, DumpAst, DumpScene, Format };
+enum class Mode { Render, Check, DumpAst, DumpScene, Format, Preview };
 enum class ColorWhen { Auto, Always, Never };
 
 /// The frames of an animation, and which of them this run evaluates.
@@ -48,6 +48,9 @@ struct Options {
     bool resume = false; ///< --continue: finish what an interrupted render of the same output began
     scene::QualityOverrides quality;
     std::optional<tracer::Tile> region; ///< --region: the part of the image rendered
+    // Preview
+    int port = 0;        ///< --port; 0: a free port
+    bool open = false;   ///< --open: show the preview in the desktop's browser
 };
 
 /// The result of reading argv: options, or a message and exit status (0 for --help).

@@ -66,8 +66,11 @@ def transcript_commands(lines):
 
 def run(command, crtc, folder):
     shell = re.sub(r"(^|\|\s*)crtc\b", lambda m: m.group(1) + crtc, command)
-    result = subprocess.run(["bash", "-c", shell], cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                            text=True, timeout=120, env=dict(os.environ, NO_COLOR="1"))
+    try:
+        result = subprocess.run(["bash", "-c", shell], cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                text=True, timeout=120, env=dict(os.environ, NO_COLOR="1"))
+    except subprocess.TimeoutExpired:
+        return "(did not finish within 120 s)"
     # The pages show the folder as /tmp/scenes and the standard library where it is installed.
     return (result.stdout.replace(os.path.realpath(folder), "/tmp/scenes").replace(folder, "/tmp/scenes")
             .replace(os.path.join(REPOSITORY, "stdlib"), "/usr/share/crt/stdlib"))

@@ -1,0 +1,47 @@
+// Names of the scene's entities (see entity_names.hpp).
+#include "preview/entity_names.hpp"
+
+#include "scene/entity_parts.hpp"
+
+#include <array>
+#include <variant>
+
+namespace crt::crtc::preview {
+
+std::string entityKind(const scene::EntityDesc& entity) {
+    static constexpr std::array<const char*, std::variant_size_v<scene::Shape>> kNames{
+        "Sphere", "Box", "Plane", "Cylinder", "Cone", "Torus", "Disc", "Quad", "Triangle", "Mesh", "CSG",
+        "transformed entity", "group"};
+    if (auto* csg = std::get_if<scene::CsgNode>(&entity.shape)) {
+        switch (csg->op) {
+        case scene::CsgOp::Union: return "union";
+        case scene::CsgOp::Difference: return "difference";
+        case scene::CsgOp::Intersection: return "intersection";
+        }
+    }
+    return kNames[entity.shape.index()];
+}
+
+std::string spanLocation(const scene::SceneDesc& scene, const scene::SourceSpan& span) {
+    if (span.line == 0 || span.file >= scene.files.size()) return "";
+    return scene.files[span.file] + ":" + std::to_string(span.line) + ":" + std::to_string(span.column);
+}
+
+int32_t drawnRootOf(const scene::SceneDesc& scene, int32_t entity) {
+    // Entities are shared, so the graph is a DAG: remember what was searched already.
+    std::vector<bool> seen(scene.entities.size(), false);
+    for (int32_t root : scene.drawn) {
+        std::vector<int32_t> pending{root};
+        while (!pending.empty()) {
+            int32_t e = pending.back();
+            pending.pop_back();
+            if (e == entity) return root;
+            if (e < 0 || seen[static_cast<size_t>(e)]) continue;
+            seen[static_cast<size_t>(e)] = true;
+            scene::forEachPart(scene.entities[static_cast<size_t>(e)], [&](int32_t part) { pending.push_back(part); });
+        }
+    }
+    return -1;
+}
+
+} // namespace crt::crtc::preview

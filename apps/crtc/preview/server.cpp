@@ -1,0 +1,212 @@
+// The preview's HTTP routes (see server.hpp and docs/preview.md).
+#include "preview/server.hpp"
+
+#include "preview/camera_controls.hpp"
+#include "preview/camera_json.hpp"
+#include "preview/camera_writer.hpp"
+#include "preview_page.hpp"
+
+#include <httplib.h>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+namespace crt::crtc::preview {
+
+namespace {
+
+using nlohmann::json;
+
+/// How long an event stream waits before it checks that its page is still there.
+constexpr auto kEventPoll = std::chrono::milliseconds(1000);
+
+void replyJson(httplib::Response& res, const json& body, int status = 200) {
+    res.status = status;
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(body.dump(), "application/json");
+}
+
+void replyError(httplib::Response& res, const std::string& message, int status = 400) {
+    replyJson(res, {{"error", message}}, status);
+}
+
+/// The request's JSON body; throws std::invalid_argument when it is not a JSON object.
+json bodyOf(const httplib::Request& req) {
+    json body = json::parse(req.body, nullptr, false);
+    if (body.is_discarded() || !body.is_object()) throw std::invalid_argument("the body must be a JSON object");
+    return body;
+}
+
+double numberIn(const json& body, const char* name, double fallback) {
+    if (!body.contains(name)) return fallback;
+    const json& value = body[name];
+    if (!value.is_number() || !std::isfinite(value.get<double>()))
+        throw std::invalid_argument(std::string(name) + " must be a finite number");
+    return value.get<double>();
+}
+
+/// Runs a handler that reads a JSON body; bad input becomes a 400 with its reason.
+template <typename Handler> httplib::Server::Handler withJson(Handler handler) {
+    return [handler](const httplib::Request& req, httplib::Response& res) {
+        try {
+            handler(bodyOf(req), res);
+        } catch (const std::exception& e) {
+            replyError(res, e.what());
+        }
+    };
+}
+
+/// Compares without stopping at the first difference, so timing does not leak the token.
+bool sameSecret(const std::string& a, const std::string& b) {
+    if (a.size() != b.size()) return false;
+    unsigned char difference = 0;
+    for (size_t i = 0; i < a.size(); ++i) difference |= static_cast<unsigned char>(a[i] ^ b[i]);
+    return difference == 0;
+}
+
+} // namespace
+
+std::string newToken() {
+    std::random_device device;
+    std::string token;
+    for (int i = 0; i < 4; ++i) token += fmt::format("{:08x}", device());
+    return token;
+}
+
+Server::Server(Session& session, EventHub& events, std::string token, std::function<void()> onQuit)
+    : session_(session), events_(events), token_(std::move(token)), onQuit_(std::move(onQuit)),
+      http_(std::make_unique<httplib::Server>()) {
+    // Event streams hold a thread each: room for a few pages beside their requests.
+    http_->new_task_queue = [] { return new httplib::ThreadPool(16); };
+    http_->set_payload_max_length(1 << 16);
+    http_->set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+        if (allowed(req.get_header_value("Host"), req.get_header_value("Origin"), req.get_param_value("token")))
+            return httplib::Server::HandlerResponse::Unhandled;
+        res.status = 403;
+        res.set_content("forbidden: open the URL crtc --preview printed\n", "text/plain");
+        return httplib::Server::HandlerResponse::Handled;
+    });
+    addRoutes();
+    addCameraRoutes();
+}
+
+Server::~Server() = default;
+
+bool Server::allowed(const std::string& host, const std::string& origin, const std::string& token) const {
+    const std::string ip = fmt::format("127.0.0.1:{}", port_), name = fmt::format("localhost:{}", port_);
+    if (host != ip && host != name) return false;
+    if (!origin.empty() && origin != "http://" + ip && origin != "http://" + name) return false;
+    return sameSecret(token, token_);
+}
+
+bool Server::bind(int port, std::string& error) {
+    port_ = port == 0 ? http_->bind_to_any_port("127.0.0.1") : (http_->bind_to_port("127.0.0.1", port) ? port : -1);
+    if (port_ > 0) return true;
+    error = port == 0 ? "cannot listen on 127.0.0.1" : fmt::format("cannot listen on 127.0.0.1:{}", port);
+    return false;
+}
+
+void Server::serve() { http_->listen_after_bind(); }
+
+void Server::stop() { http_->stop(); }
+
+void Server::addRoutes() {
+    http_->Get("/", [](const httplib::Request&, httplib::Response& res) {
+        res.set_header("Cache-Control", "no-store");
+        res.set_header("Referrer-Policy", "no-referrer"); // the URL holds the token
+        res.set_header("X-Frame-Options", "DENY");
+        res.set_header("Content-Security-Policy",
+                       "default-src 'none'; img-src 'self' blob:; style-src 'unsafe-inline'; "
+                       "script-src 'unsafe-inline'; connect-src 'self'; frame-ancestors 'none'");
+        res.set_content(std::string(kPreviewPage), "text/html; charset=utf-8");
+    });
+    http_->Get("/api/frame.png", [this](const httplib::Request&, httplib::Response& res) {
+        std::shared_ptr<const FrameImage> image = session_.latestImage();
+        if (!image) return replyError(res, "no image yet", 404);
+        res.set_header("Cache-Control", "no-store");
+        res.set_header("X-Frame-Number", std::to_string(image->number));
+        res.set_header("X-Frame-Pass", fmt::format("{}/{}", image->pass, image->passes));
+        res.set_header("X-Frame-Final", image->final ? "true" : "false");
+        res.set_content(reinterpret_cast<const char*>(image->png.data()), image->png.size(), "image/png");
+    });
+    http_->Get("/api/state", [this](const httplib::Request&, httplib::Response& res) { replyJson(res, session_.state()); });
+    http_->Get("/api/events", [this](const httplib::Request&, httplib::Response& res) {
+        std::shared_ptr<EventHub::Subscription> subscription = events_.subscribe();
+        res.set_header("Cache-Control", "no-store");
+        res.set_chunked_content_provider(
+            "text/event-stream",
+            [subscription](size_t, httplib::DataSink& sink) {
+                std::optional<std::string> event = subscription->next(kEventPoll);
+                if (!event || !sink.is_writable()) return false;
+                return sink.write(event->data(), event->size());
+            },
+            [this, subscription](bool) { events_.unsubscribe(subscription); });
+    });
+    http_->Post("/api/quality", withJson([this](const json& body, httplib::Response& res) {
+        ViewQuality quality;
+        if (body.contains("draft")) {
+            if (!body["draft"].is_boolean()) throw std::invalid_argument("draft must be true or false");
+            quality.draft = body["draft"].get<bool>();
+        }
+        quality.scale = numberIn(body, "scale", 1);
+        if (quality.scale < 1.0 / 16 || quality.scale > 1) throw std::invalid_argument("scale must be in [1/16, 1]");
+        session_.setQuality(quality);
+        replyJson(res, session_.state());
+    }));
+    http_->Post("/api/frame", withJson([this](const json& body, httplib::Response& res) {
+        const double frame = numberIn(body, "frame", 0);
+        if (frame != std::floor(frame)) throw std::invalid_argument("frame must be an integer");
+        session_.setFrame(static_cast<int>(std::clamp(frame, -1e9, 1e9)));
+        replyJson(res, session_.state());
+    }));
+    http_->Post("/api/pick", withJson([this](const json& body, httplib::Response& res) {
+        const double x = numberIn(body, "x", -1), y = numberIn(body, "y", -1);
+        if (x < 0 || x > 1 || y < 0 || y > 1) throw std::invalid_argument("x and y must be in [0, 1]");
+        replyJson(res, session_.pick(x, y));
+    }));
+    http_->Post("/api/quit", [this](const httplib::Request&, httplib::Response& res) {
+        replyJson(res, {{"quitting", true}});
+        onQuit_();
+    });
+}
+
+void Server::addCameraRoutes() {
+    http_->Get("/api/camera", [this](const httplib::Request&, httplib::Response& res) {
+        replyJson(res, cameraJson(session_.camera()));
+    });
+    http_->Get("/api/camera.crt", [this](const httplib::Request&, httplib::Response& res) {
+        res.set_header("Cache-Control", "no-store");
+        res.set_content(cameraLiteral(session_.camera()) + "\n", "text/plain; charset=utf-8");
+    });
+    http_->Post("/api/camera", withJson([this](const json& body, httplib::Response& res) {
+        cameraFromJson(session_.camera(), body); // refuses bad values before anything changes
+        const bool interactive = body.value("interactive", false);
+        replyJson(res, cameraJson(session_.changeCamera(
+                           [&](scene::CameraDesc c) { return cameraFromJson(c, body); }, interactive)));
+    }));
+    http_->Post("/api/camera/move", withJson([this](const json& body, httplib::Response& res) {
+        const double yaw = numberIn(body, "orbitX", 0), pitch = numberIn(body, "orbitY", 0);
+        const double right = numberIn(body, "panX", 0), up = numberIn(body, "panY", 0);
+        const double factor = numberIn(body, "dolly", 1), fov = numberIn(body, "fov", 0);
+        if (!(factor > 0)) throw std::invalid_argument("dolly must be positive");
+        const bool interactive = body.value("interactive", false);
+        replyJson(res, cameraJson(session_.changeCamera(
+                           [&](scene::CameraDesc c) {
+                               c = dolly(pan(orbit(c, yaw, pitch), right, up), factor);
+                               return fov > 0 ? withFov(c, fov) : c;
+                           },
+                           interactive)));
+    }));
+    http_->Post("/api/camera/reset", [this](const httplib::Request&, httplib::Response& res) {
+        session_.resetCamera();
+        replyJson(res, cameraJson(session_.camera()));
+    });
+    http_->Post("/api/camera/write", [this](const httplib::Request&, httplib::Response& res) {
+        const CameraEdit edit = session_.writeCamera();
+        replyJson(res, {{"written", edit.ok}, {"message", edit.message}});
+    });
+}
+
+} // namespace crt::crtc::preview

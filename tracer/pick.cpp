@@ -1,0 +1,26 @@
+// The entity under one image point (see pick.hpp).
+#include "tracer/pick.hpp"
+
+#include "tracer/camera.hpp"
+#include "tracer/render_scene.hpp"
+
+namespace crt::tracer {
+
+std::optional<PickResult> pick(const scene::SceneDesc& scene, double x, double y, std::string& error) {
+    std::unique_ptr<RenderScene> geometry = buildRenderScene(scene, error);
+    if (!geometry) return std::nullopt;
+    const Camera camera(scene.camera, scene.settings.width, scene.settings.height, 1);
+    const Ray ray = camera.ray(x, y);
+    Hit hit;
+    QueryScratch scratch;
+    RayStats stats;
+    PickResult result;
+    if (!geometry->intersect(ray, kInfinity, hit, scratch, stats)) return result;
+    result.hit = true;
+    result.entity = geometry->primitiveEntities[static_cast<size_t>(hit.primitive)];
+    result.distance = hit.t;
+    result.point = ray.at(hit.t);
+    return result;
+}
+
+} // namespace crt::tracer
