@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Ray kernel benchmark: crtc against Embree 3's single-ray API on the same grid of spheres
-# (see bench/README.md, "Ray kernel vs Embree"). Per pixel one camera ray and, where the
+# (see bench/README.md, "Ray kernel vs Embree 3"). Per pixel one camera ray and, where the
 # surface faces the point light, one shadow ray. Both tools run alternately; the table gives
 # median render rates (rays / render seconds, each tool's own clock), their ratio measured
 # in the same run, BVH build times and peak memory.

@@ -1,4 +1,4 @@
-// The Embree side of bench/embree/run.sh (see bench/README.md, "Ray kernel vs Embree"): a
+// The Embree side of bench/embree/run.sh (see bench/README.md, "Ray kernel vs Embree 3"): a
 // grid of spheres (RTC_GEOMETRY_TYPE_SPHERE_POINT), a pinhole camera with crtc's conventions
 // and a point light; per pixel one camera ray (rtcIntersect1) and, where the surface faces
 // the light, one shadow ray (rtcOccluded1), shaded with ambient + Lambert as crtc's plain
