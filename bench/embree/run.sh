@@ -167,7 +167,7 @@ echo "Embree: $(dpkg-query -W -f='${Package} ${Version}' libembree3-3 2>/dev/nul
 echo "runs per tool and case: $runs (median reported); load average: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
 for n in "${grid_list[@]}"; do write_crt "$n" "$out/grid$n.crt"; done
 
-declare -A E_RATE E_BUILD E_PEAK E_RAYS C_RATE C_BUILD C_PEAK C_RAYS E_ALL C_ALL STATUS
+declare -A E_RATE E_BUILD E_PEAK E_RAYS C_RATE C_BUILD C_PEAK C_RAYS E_ALL C_ALL
 failed=0
 for n in "${grid_list[@]}"; do
     for t in "${thread_list[@]}"; do
@@ -182,11 +182,11 @@ for n in "${grid_list[@]}"; do
             [[ $((r % 2)) -eq 0 ]] && order="crtc embree"
             for tool in $order; do
                 if [[ $tool == embree ]]; then
-                    run_embree "$n" "$t" "$r" || { status=embree-error; break 2; }
+                    run_embree "$n" "$t" "$r" || { status="embree-error"; break 2; }
                     er+=("$(mrays "$rays" "$render")") eb+=("$build") ep+=("$peak")
                     E_RAYS[$k]="$camera + $shadow"
                 elif [[ $have_crtc -eq 1 ]]; then
-                    run_crtc "$n" "$t" "$r" || { status=crtc-error; break 2; }
+                    run_crtc "$n" "$t" "$r" || { status="crtc-error"; break 2; }
                     cr+=("$(mrays "$rays" "$render")") cb+=("$build") cp+=("$peak")
                     C_RAYS[$k]="$camera + $shadow"
                 fi
@@ -200,7 +200,6 @@ for n in "${grid_list[@]}"; do
             C_RATE[$k]=$(median "${cr[@]}") C_BUILD[$k]=$(median "${cb[@]}") C_PEAK[$k]=$(median "${cp[@]}")
             C_ALL[$k]=${cr[*]}
         fi
-        STATUS[$k]=$status
         [[ $status != ok ]] && failed=1
     done
 done
