@@ -172,7 +172,10 @@ Options parse(int argc, char** argv) {
         else if (!std::strcmp(arg, "--ppm")) o.ppm = value;
         else usage(argv[0]);
     }
-    if (o.grid < 1 || o.width < 1 || o.height < 1 || o.threads < 1 || !(o.radius > 0)) usage(argv[0]);
+    // Bounded like crtc's own limits, so a typo cannot ask for terabytes.
+    if (o.grid < 1 || o.grid > 10000 || o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384 ||
+        o.threads < 1 || o.threads > 256 || !(o.radius > 0))
+        usage(argv[0]);
     return o;
 }
 
