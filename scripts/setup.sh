@@ -2,7 +2,7 @@
 # Installs everything crt needs to build and test, from Debian 12's packages.
 # Quick and quiet when everything is already installed. Run as root.
 #   scripts/setup.sh          build and test dependencies
-#   scripts/setup.sh --bench  also POV-Ray and the tools the benchmarks use
+#   scripts/setup.sh --bench  also POV-Ray, Embree and the tools the benchmarks use
 #   scripts/setup.sh --fuzz   also clang and its libFuzzer runtime (tests/fuzz/)
 set -euo pipefail
 
@@ -28,7 +28,7 @@ packages=(
 # where there is none.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 case "${1:-}" in
---bench) packages+=(povray time) ;;
+--bench) packages+=(povray time libembree-dev) ;; # libembree-dev: bench/embree/ only
 --fuzz) packages+=(clang libclang-rt-14-dev) ;;
 esac
 

@@ -1,0 +1,264 @@
+#!/usr/bin/env bash
+# Ray kernel benchmark: crtc against Embree 3's single-ray API on the same grid of spheres
+# (see bench/README.md, "Ray kernel vs Embree 3"). Per pixel one camera ray and, where the
+# surface faces the point light, one shadow ray. Both tools run alternately; the table gives
+# median render rates (rays / render seconds, each tool's own clock), their ratio measured
+# in the same run, BVH build times and peak memory.
+#
+# usage: bench/embree/run.sh [--runs N] [--grids LIST] [--threads LIST] [CRTC]
+#
+#   --runs N        timed runs per tool and case; medians reported (default $RUNS, else 3)
+#   --grids LIST    comma-separated spheres per side (default 100,1000: 10,000 and 1,000,000)
+#   --threads LIST  comma-separated thread counts (default 1,2)
+#   CRTC            path of the crtc binary (default: $CRTC, else build/bin/crtc under the
+#                   repository root)
+#
+# environment:
+#   BENCH_OUT   folder for the scenes, images, logs and the Embree program (default: a
+#               temporary folder, removed at exit)
+#   CXX         compiler for the Embree program (default g++)
+#
+# Needs Debian's libembree-dev (Embree 3) and time (scripts/setup.sh --bench installs
+# them). The Embree program is built here, into the output folder; crtc never links Embree.
+#
+# exit status: 0 done; 1 a run failed or the two tools traced different numbers of rays;
+#              2 bad usage or missing tool; 3 crtc not found (Embree side only).
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+# shellcheck source=../common.sh
+source "$here/../common.sh"
+root=$(cd "$here/../.." && pwd)
+
+usage() { awk 'NR == 1 { next } !/^#/ { exit } { sub(/^# ?/, ""); print }' "${BASH_SOURCE[0]}"; }
+
+runs=${RUNS:-3}
+grids=100,1000
+thread_counts=1,2
+crtc_arg=
+while [[ $# -gt 0 ]]; do
+    case $1 in
+        -h | --help) usage; exit 0 ;;
+        --runs) runs=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
+        --runs=*) runs=${1#--runs=}; shift ;;
+        --grids) grids=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
+        --grids=*) grids=${1#--grids=}; shift ;;
+        --threads) thread_counts=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
+        --threads=*) thread_counts=${1#--threads=}; shift ;;
+        -*) echo "$0: unknown option '$1'" >&2; usage >&2; exit 2 ;;
+        *)
+            if [[ -n $crtc_arg ]]; then echo "$0: more than one CRTC given" >&2; exit 2; fi
+            crtc_arg=$1; shift ;;
+    esac
+done
+crtc=${crtc_arg:-${CRTC:-$root/build/bin/crtc}}
+
+positive_list() { [[ $1 =~ ^[1-9][0-9]*(,[1-9][0-9]*)*$ ]]; }
+[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "$0: --runs must be a positive integer, got '$runs'" >&2; exit 2; }
+positive_list "$grids" || { echo "$0: bad --grids '$grids'" >&2; exit 2; }
+positive_list "$thread_counts" || { echo "$0: bad --threads '$thread_counts'" >&2; exit 2; }
+IFS=, read -r -a grid_list <<<"$grids"
+IFS=, read -r -a thread_list <<<"$thread_counts"
+if [[ ! -f /usr/include/embree3/rtcore.h ]]; then
+    echo "$0: Embree 3 not found: apt-get install libembree-dev, or scripts/setup.sh --bench" >&2
+    exit 2
+fi
+[[ -x /usr/bin/time ]] || { echo "$0: /usr/bin/time is needed (Debian: time)" >&2; exit 2; }
+
+have_crtc=1
+if [[ ! -x $crtc ]]; then
+    have_crtc=0
+    echo "$0: no crtc at '$crtc' (build it, or pass its path); measuring Embree only" >&2
+fi
+bench_output_folder embree
+
+# ---------------------------------------------------------------------------
+# The scene: the one place its numbers are set. Spheres of radius 0.45·spacing on a
+# grid × grid square 100 units wide at y = radius, a camera looking down on it from the
+# near edge, a point light above and to the left.
+
+width=800 height=600
+eye=0,50,-30 target=0,0,50 fov=40 light=-30,80,-20
+spacing_of() { awk -v n="$1" 'BEGIN { printf "%.17g", 100 / n }'; }
+radius_of() { awk -v n="$1" 'BEGIN { printf "%.17g", 45 / n }'; }
+
+# write_crt GRID FILE: the scene in CRT, a plain diffuse white material (ambient 0.1 from
+# Settings, Lambert 0.9 from the light, as the Embree program shades), no reflection, so
+# crtc traces one camera ray and at most one shadow ray per pixel.
+write_crt() {
+    local n=$1 file=$2 s r half
+    s=$(spacing_of "$n") r=$(radius_of "$n") half=$(awk -v n="$n" 'BEGIN { print (n - 1) / 2 }')
+    cat >"$file" <<EOF
+-- Written by bench/embree/run.sh: $((n * n)) spheres, the scene of its Embree program.
+light = PointLight { origin -> vec3($light) color -> rgb(0.9, 0.9, 0.9) }
+white = Material { color -> rgb(1.0, 1.0, 1.0) }
+Settings {
+    width -> $width
+    height -> $height
+    lights -> [light]
+    camera -> Camera { position -> vec3($eye) pointing -> vec3($target) fov -> $fov }
+    background -> rgb(0.0, 0.0, 0.0)
+    ambient -> rgb(0.1, 0.1, 0.1)
+    recursiondepth -> 0
+    supersampling -> 1
+}
+Scene {
+    for i in range($n) {
+        for j in range($n) {
+            Sphere { center -> vec3($s * (i - $half), $r, $s * j) radius -> $r material -> white }
+        }
+    }
+}
+EOF
+}
+
+embree_bin=$out/sphere_grid
+echo "building the Embree program: ${CXX:-g++} -O3 $here/sphere_grid.cpp -lembree3" >&2
+"${CXX:-g++}" -std=c++17 -O3 -Wall -Wextra -o "$embree_bin" "$here/sphere_grid.cpp" -lembree3 -pthread
+
+# run_embree GRID THREADS RUN: sets rays, camera, shadow, build, render, peak (MB)
+run_embree() {
+    local n=$1 t=$2 r=$3 log extra=()
+    log=$logs/embree.$n.$t.$r
+    [[ $r -eq 1 ]] && extra=(--ppm "$out/embree.$n.ppm")
+    if ! /usr/bin/time -f %M -o "$log.mem" "$embree_bin" --grid "$n" --spacing "$(spacing_of "$n")" \
+        --radius "$(radius_of "$n")" --size "${width}x$height" --threads "$t" --eye "$eye" \
+        --target "$target" --fov "$fov" --light "$light" "${extra[@]}" >"$log.out" 2>"$log.err"; then
+        echo "the Embree program failed (grid $n, $t threads); log: $log.err$keep_hint" >&2
+        head -n 20 "$log.err" >&2
+        return 1
+    fi
+    read -r _ camera _ shadow _ rays < <(sed -n 's/^rays //p' "$log.out")
+    build=$(sed -n 's/^build //p' "$log.out")
+    render=$(sed -n 's/^render //p' "$log.out")
+    peak=$(awk '{ printf "%.1f", $1 / 1024 }' "$log.mem")
+}
+
+# run_crtc GRID THREADS RUN: the same values from crtc --stats
+run_crtc() {
+    local n=$1 t=$2 r=$3 log
+    log=$logs/crtc.$n.$t.$r
+    if ! /usr/bin/time -f %M -o "$log.mem" "$crtc" "$out/grid$n.crt" -o "$out/crtc.$n.png" \
+        --threads "$t" --stats -q --max-entities 2000000 >"$log.out" 2>"$log.err"; then
+        echo "$crtc failed on grid $n ($t threads); log: $log.err$keep_hint" >&2
+        head -n 20 "$log.err" >&2
+        return 1
+    fi
+    local stats
+    stats=$(grep 'stats:' "$log.err")
+    camera=$(sed -n 's/.*rays: camera \([0-9]*\),.*/\1/p' <<<"$stats")
+    shadow=$(sed -n 's/.*shadow \([0-9]*\) (total.*/\1/p' <<<"$stats")
+    rays=$(sed -n 's/.*(total \([0-9]*\)).*/\1/p' <<<"$stats")
+    build=$(sed -n 's/.*build \([0-9.]*\)s,.*/\1/p' <<<"$stats")
+    render=$(sed -n 's/.*render \([0-9.]*\)s.*/\1/p' <<<"$stats")
+    peak=$(awk '{ printf "%.1f", $1 / 1024 }' "$log.mem")
+    if [[ -z $rays || -z $render ]]; then
+        echo "could not read crtc --stats; log: $log.err$keep_hint" >&2
+        return 1
+    fi
+}
+
+mrays() { awk -v r="$1" -v s="$2" 'BEGIN { if (s > 0) printf "%.2f", r / s / 1e6; else print "inf" }'; }
+
+# ---------------------------------------------------------------------------
+
+echo "crtc:   $crtc" >&2
+echo "Embree: $(dpkg-query -W -f='${Package} ${Version}' libembree3-3 2>/dev/null || echo 'version unknown')" >&2
+echo "runs per tool and case: $runs (median reported); load average: $(cut -d' ' -f1-3 /proc/loadavg)" >&2
+for n in "${grid_list[@]}"; do write_crt "$n" "$out/grid$n.crt"; done
+
+declare -A E_RATE E_BUILD E_PEAK E_RAYS C_RATE C_BUILD C_PEAK C_RAYS E_ALL C_ALL
+failed=0
+for n in "${grid_list[@]}"; do
+    for t in "${thread_list[@]}"; do
+        k="$n $t"
+        echo "running $((n * n)) spheres, $t threads ..." >&2
+        er=() eb=() ep=() cr=() cb=() cp=()
+        status=ok
+        for ((r = 1; r <= runs; r++)); do
+            # The tools take turns at running first, so neither always meets the machine
+            # as the other left it.
+            order="embree crtc"
+            [[ $((r % 2)) -eq 0 ]] && order="crtc embree"
+            for tool in $order; do
+                if [[ $tool == embree ]]; then
+                    run_embree "$n" "$t" "$r" || { status="embree-error"; break 2; }
+                    er+=("$(mrays "$rays" "$render")") eb+=("$build") ep+=("$peak")
+                    E_RAYS[$k]="$camera + $shadow"
+                elif [[ $have_crtc -eq 1 ]]; then
+                    run_crtc "$n" "$t" "$r" || { status="crtc-error"; break 2; }
+                    cr+=("$(mrays "$rays" "$render")") cb+=("$build") cp+=("$peak")
+                    C_RAYS[$k]="$camera + $shadow"
+                fi
+            done
+        done
+        if [[ ${#er[@]} -eq $runs ]]; then
+            E_RATE[$k]=$(median "${er[@]}") E_BUILD[$k]=$(median "${eb[@]}") E_PEAK[$k]=$(median "${ep[@]}")
+            E_ALL[$k]=${er[*]}
+        fi
+        if [[ ${#cr[@]} -eq $runs ]]; then
+            C_RATE[$k]=$(median "${cr[@]}") C_BUILD[$k]=$(median "${cb[@]}") C_PEAK[$k]=$(median "${cp[@]}")
+            C_ALL[$k]=${cr[*]}
+        fi
+        [[ $status != ok ]] && failed=1
+    done
+done
+
+# ---------------------------------------------------------------------------
+
+echo
+echo "| spheres | threads | crtc Mrays/s | Embree Mrays/s | crtc / Embree | crtc build (s) | Embree build (s) | crtc peak MB | Embree peak MB |"
+echo "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+for n in "${grid_list[@]}"; do
+    for t in "${thread_list[@]}"; do
+        k="$n $t"
+        ratio=—
+        [[ -n ${C_RATE[$k]:-} && -n ${E_RATE[$k]:-} ]] &&
+            ratio=$(awk -v a="${C_RATE[$k]}" -v b="${E_RATE[$k]}" 'BEGIN { printf "%.0f %%", 100 * a / b }')
+        printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$((n * n))" "$t" \
+            "${C_RATE[$k]:-—}" "${E_RATE[$k]:-—}" "$ratio" "${C_BUILD[$k]:-—}" "${E_BUILD[$k]:-—}" \
+            "${C_PEAK[$k]:-—}" "${E_PEAK[$k]:-—}"
+    done
+done
+
+echo
+echo "Rays (camera + shadow; both must trace one camera ray per pixel and a shadow ray per lit"
+echo "point), every single rate in run order, and the images' difference (crtc's PNG against"
+echo "the Embree program's grey image, 1/255 units):"
+echo
+echo "| spheres | threads | crtc rays | Embree rays | crtc runs (Mrays/s) | Embree runs (Mrays/s) |"
+echo "| ---: | ---: | --- | --- | --- | --- |"
+for n in "${grid_list[@]}"; do
+    for t in "${thread_list[@]}"; do
+        k="$n $t"
+        printf '| %s | %s | %s | %s | %s | %s |\n' "$((n * n))" "$t" "${C_RAYS[$k]:-—}" "${E_RAYS[$k]:-—}" \
+            "${C_ALL[$k]:-—}" "${E_ALL[$k]:-—}"
+        # The shadow rays may differ by a few where float and double tests disagree at
+        # silhouettes; more than 0.1 % means the scenes differ.
+        if [[ -n ${C_RAYS[$k]:-} && -n ${E_RAYS[$k]:-} ]] &&
+            ! awk -v a="${C_RAYS[$k]}" -v b="${E_RAYS[$k]}" 'BEGIN {
+                split(a, x, " \\+ "); split(b, y, " \\+ ");
+                d = x[2] - y[2]; if (d < 0) d = -d;
+                exit !(x[1] == y[1] && d <= 0.001 * (x[1] + x[2])) }'; then
+            echo "the two tools traced different rays for $((n * n)) spheres, $t threads" >&2
+            failed=1
+        fi
+    done
+done
+if [[ $have_crtc -eq 1 ]] && command -v oiiotool >/dev/null; then
+    echo
+    for n in "${grid_list[@]}"; do
+        [[ -f $out/crtc.$n.png && -f $out/embree.$n.ppm ]] || continue
+        rmse=$(oiiotool "$out/crtc.$n.png" --ch R "$out/embree.$n.ppm" --diff 2>&1 |
+            sed -n 's/.*RMS error = \([0-9.eE+-]*\).*/\1/p' | head -n 1 || true)
+        echo "- $((n * n)) spheres: image RMSE $(awk -v v="${rmse:-0}" 'BEGIN { printf "%.3f", v * 255 }')/255" \
+            "(float against double tests at the silhouettes)"
+    done
+fi
+echo
+echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
+[[ -n ${BENCH_OUT:-} ]] && echo "scenes, images and logs: $out"
+
+if [[ $failed -ne 0 ]]; then exit 1; fi
+if [[ $have_crtc -eq 0 ]]; then exit 3; fi
+exit 0
