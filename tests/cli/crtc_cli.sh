@@ -6,25 +6,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 
-expect_status() { # expected-status description command...
-    local want=$1 what=$2
-    shift 2
-    "$@" >"$work/out" 2>"$work/err"
-    local got=$?
-    if [ "$got" != "$want" ]; then
-        echo "FAIL: $what: exit status $got, expected $want"
-        sed 's/^/  stdout: /' "$work/out" | head -5
-        sed 's/^/  stderr: /' "$work/err" | head -5
-        failures=$((failures + 1))
-    fi
-}
-expect_text() { # file pattern description
-    if ! grep -qE -- "$2" "$1"; then
-        echo "FAIL: $3: no match for '$2' in:"
-        head -5 "$1" | sed 's/^/  /'
-        failures=$((failures + 1))
-    fi
-}
+source "$(dirname "$0")/expect.sh"
 
 cat >"$work/good.crt" <<'CRT'
 s = Sphere { center -> vec3(0, 0, 0) radius -> 1 }
