@@ -31,6 +31,7 @@ Interpreter::Interpreter(Compilation& compilation, const EvalOptions& options)
     const double clock = options.clockStart + progress * (options.clockEnd - options.clockStart);
     prelude_[preludeSlotOfClock()] = Value::number(clock);
     nextStepCheck_ = nextCheckAfter(0);
+    maxNesting_ = maxNesting();
 }
 
 void Interpreter::fail(SourceRange where, std::string message) {
@@ -39,11 +40,41 @@ void Interpreter::fail(SourceRange where, std::string message) {
 }
 
 const std::string* Interpreter::newString(std::string text) {
+    charge(sizeof(std::string) + text.capacity());
     return &strings_.emplace_back(std::move(text));
 }
 
 const std::vector<Value>* Interpreter::newList(std::vector<Value> items) {
+    charge(sizeof(items) + items.capacity() * sizeof(Value));
     return &lists_.emplace_back(std::move(items));
+}
+
+void Interpreter::checkRoom(uint64_t bytes) {
+    if (bytes > options_.limits.maxMemory - std::min(memoryUsed_, options_.limits.maxMemory)) {
+        fail(statement_ ? statement_->range : SourceRange{},
+             fmt::format("evaluation needs more than {} MiB of memory; raise the limit with "
+                         "--max-memory",
+                         options_.limits.maxMemory >> 20));
+    }
+}
+
+void Interpreter::charge(uint64_t bytes) {
+    const SourceRange where = statement_ ? statement_->range : SourceRange{};
+    checkRoom(bytes);
+    memoryUsed_ += bytes;
+    steps_ += bytes / kBytesPerStep;
+    if (steps_ >= nextStepCheck_) checkSteps(where);
+}
+
+void Interpreter::reportOutOfMemory() {
+    const SourceRange where = statement_ ? statement_->range : SourceRange{};
+    diagnostics_.error(where, "out of memory while evaluating this statement");
+}
+
+void Interpreter::nestedTooDeep(const Node* node) {
+    fail(node->range, fmt::format("expressions, blocks and macro calls nested deeper than {} "
+                                  "levels",
+                                  maxNesting_));
 }
 
 uint64_t Interpreter::nextRandom() {
@@ -103,6 +134,8 @@ void Interpreter::evaluateResolved() {
     } catch (const EvalError&) {
         // reported already
         if (options_.keepGlobalValues) keepGlobalValues();
+    } catch (const std::bad_alloc&) {
+        reportOutOfMemory();
     }
 }
 
@@ -111,10 +144,14 @@ void Interpreter::keepGlobalValues() {
     for (uint32_t slot = 0; slot < globals_.size() && slot < globalValues_.size(); ++slot) {
         const Value& value = globalValues_[slot];
         if (value.kind == ValueKind::Unset) continue;
-        std::string text = value.kind == ValueKind::List && value.list->size() > 32
-                               ? fmt::format("a list of {} values", value.list->size())
-                           : value.kind == ValueKind::String ? lang::quoted(*value.s)
-                                                             : str(value);
+        std::string text;
+        if (value.kind == ValueKind::List && value.list->size() > 32) {
+            text = fmt::format("a list of {} values", value.list->size());
+        } else if (value.kind == ValueKind::String) {
+            text = lang::quoted(std::string_view(*value.s).substr(0, kMaxText + 1));
+        } else {
+            appendText(text, value, kMaxText + 1);
+        }
         if (text.size() > kMaxText) text = text.substr(0, kMaxText) + "…";
         compilation_.globalValues.emplace_back(globals_.entry(slot).name, std::move(text));
     }
@@ -123,10 +160,16 @@ void Interpreter::keepGlobalValues() {
 // ---------------------------------------------------------------- statements
 
 void Interpreter::execStatements(std::span<Node* const> statements) {
-    for (const Node* statement : statements) exec(statement);
+    const Node* enclosing = statement_;
+    for (const Node* statement : statements) {
+        statement_ = statement;
+        exec(statement);
+    }
+    statement_ = enclosing;
 }
 
 Value Interpreter::exec(const Node* node) {
+    NestingLevel level(*this, node);
     switch (node->kind) {
     case NodeKind::While: {
         auto* w = static_cast<const WhileStmt*>(node);
@@ -259,10 +302,19 @@ void Interpreter::emit(const Value& value, const Node* where) {
 }
 
 uint64_t Interpreter::countMembers(int32_t entity) const {
-    const auto* group = std::get_if<scene::GroupNode>(&scene_.entities[static_cast<size_t>(entity)].shape);
-    if (!group) return 1;
+    // Without recursion: groups of groups nest as deep as a loop makes them.
     uint64_t count = 0;
-    for (int32_t member : group->members) count += countMembers(member);
+    std::vector<int32_t> pending{entity};
+    while (!pending.empty()) {
+        const int32_t next = pending.back();
+        pending.pop_back();
+        const auto* group = std::get_if<scene::GroupNode>(&scene_.entities[static_cast<size_t>(next)].shape);
+        if (!group) {
+            ++count;
+            continue;
+        }
+        pending.insert(pending.end(), group->members.begin(), group->members.end());
+    }
     return count;
 }
 
@@ -298,16 +350,28 @@ void Interpreter::draw(const Value& value, const Node* where) {
         }
         scene_.drawn.push_back(static_cast<int32_t>(value.index));
         return;
-    case ValueKind::List:
-        for (const Value& item : *value.list) {
-            if (item.kind != ValueKind::Entity && item.kind != ValueKind::List) {
+    case ValueKind::List: {
+        // Depth-first in source order, without recursion: lists can nest deeply.
+        std::vector<std::pair<const std::vector<Value>*, size_t>> stack{{value.list, 0}};
+        while (!stack.empty()) {
+            auto& [items, next] = stack.back();
+            if (next == items->size()) {
+                stack.pop_back();
+                continue;
+            }
+            const Value& item = (*items)[next++];
+            if (item.kind == ValueKind::List) {
+                stack.emplace_back(item.list, 0);
+            } else if (item.kind == ValueKind::Entity) {
+                draw(item, where);
+            } else {
                 fail(where->range, fmt::format("cannot draw a list holding {}; only entities "
                                                "can be drawn",
                                                typeName(item)));
             }
-            draw(item, where);
         }
         return;
+    }
     case ValueKind::None:
     case ValueKind::Unset: return;
     default:
@@ -472,8 +536,10 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
 
     Value last = Value::none();
     const auto& statements = macro->body->statements;
+    const Node* callingStatement = statement_;
     try {
         for (size_t i = 0; i < statements.size(); ++i) {
+            statement_ = statements[i];
             Value value = exec(statements[i]);
             if (i + 1 == statements.size() && isExpression(statements[i]) &&
                 statements[i]->kind != NodeKind::Assign) {
@@ -485,7 +551,12 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
         // innermost first, whichever code raised it.
         addCallNote(diagnostics_.items().back(), {site->range, "in the macro called here"});
         throw;
+    } catch (const std::bad_alloc&) {
+        reportOutOfMemory();
+        addCallNote(diagnostics_.items().back(), {site->range, "in the macro called here"});
+        throw EvalError{};
     }
+    statement_ = callingStatement;
 
     --depth_;
     if (!macro->capturesFrame) stack_.resize(base);

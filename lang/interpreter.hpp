@@ -27,6 +27,8 @@ struct Limits {
     uint32_t maxDepth = 1'000;      ///< nested macro calls
     uint64_t maxEntities = 10'000'000; ///< drawn entities, and the length of any list
     uint32_t maxSize = 16'384;      ///< image width and height
+    /// Approximate bytes of the strings, lists and entities evaluation makes (--max-memory).
+    uint64_t maxMemory = uint64_t{4} << 30;
 };
 
 struct EvalOptions {

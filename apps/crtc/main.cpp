@@ -49,9 +49,21 @@ bool report(Compilation& c, const crtc::Options& options, std::set<std::string>&
     if (options.werror) c.diagnostics.promoteWarnings();
     PrintOptions print;
     print.color = useColor(options.color);
+    // As compilers do: past --max-errors errors the rest is noise (a binary file given as a
+    // script makes millions), so reporting stops there.
+    size_t errors = 0;
     for (const Diagnostic& diagnostic : c.diagnostics.items()) {
+        const bool isError = diagnostic.severity == Severity::Error;
+        if (isError && options.maxErrors != 0 && errors == options.maxErrors) {
+            std::cerr << "crtc: too many errors (" << c.diagnostics.errorCount()
+                      << "); stopping after " << options.maxErrors << " (--max-errors)\n";
+            break;
+        }
         std::string text = formatDiagnostic(c.sources, diagnostic, print);
-        if (printed.insert(text).second) std::cerr << text;
+        if (printed.insert(text).second) {
+            std::cerr << text;
+            errors += isError ? 1 : 0;
+        }
     }
     return c.diagnostics.hasErrors();
 }
@@ -158,4 +170,13 @@ int run(int argc, char** argv) {
 
 } // namespace
 
-int main(int argc, char** argv) { return run(argc, argv); }
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::bad_alloc&) {
+        // Evaluation reports this at the script's statement; what is left (parsing a huge
+        // file, building the scene) ends here rather than in an abort.
+        std::cerr << "crtc: out of memory\n";
+        return 2;
+    }
+}
