@@ -19,7 +19,7 @@ namespace crt::lsp {
 struct AnalysisOptions {
     lang::IncludeSearch includes; ///< as crtc's -I and standard library
     /// Tighter than crtc's defaults: an editor wants an answer, not a finished render.
-    lang::Limits limits{5'000'000, 1'000, 1'000'000, 16'384};
+    lang::Limits limits{5'000'000, 1'000, 1'000'000, 16'384, uint64_t{512} << 20};
     std::chrono::milliseconds timeBudget{1500}; ///< wall-clock limit of one evaluation
 };
 

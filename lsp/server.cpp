@@ -283,6 +283,9 @@ void Server::readInitializationOptions(const json& params) {
         }
     }
     if (init.contains("stdlib") && init["stdlib"].is_string()) options_.analysis.includes.stdlibDir = init["stdlib"];
+    if (init.contains("maxMemory") && init["maxMemory"].is_number_unsigned() && init["maxMemory"].get<uint64_t>() > 0) {
+        options_.analysis.limits.maxMemory = init["maxMemory"].get<uint64_t>() << 20; // MiB, as --max-memory
+    }
     if (init.contains("debounceMs") && init["debounceMs"].is_number_integer()) {
         options_.debounce = std::chrono::milliseconds(std::max<int64_t>(0, init["debounceMs"].get<int64_t>()));
     }

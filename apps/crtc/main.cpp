@@ -6,6 +6,8 @@
 #include "large_stack.hpp"
 #include "options.hpp"
 #include "render_command.hpp"
+#include "render_cost.hpp"
+#include "scene/quality_overrides.hpp"
 #include "scene/scene_json.hpp"
 
 #include <algorithm>
@@ -66,6 +68,22 @@ bool report(Compilation& c, const crtc::Options& options, std::set<std::string>&
         }
     }
     return c.diagnostics.hasErrors();
+}
+
+/// Warns (once, as report() prints) when the render the scene and the command line ask for
+/// is estimated beyond any reasonable time.
+void warnAboutCost(const scene::SceneDesc& evaluated, const crtc::Options& options, std::set<std::string>& printed) {
+    scene::SceneDesc asRendered; // what the estimate reads, with the command line's overrides
+    asRendered.settings = evaluated.settings;
+    asRendered.camera = evaluated.camera;
+    asRendered.lights = evaluated.lights;
+    asRendered.finishes = evaluated.finishes;
+    scene::applyQuality(asRendered, options.quality);
+    if (options.width > 0) asRendered.settings.width = options.width;
+    if (options.height > 0) asRendered.settings.height = options.height;
+    if (std::optional<std::string> warning = crtc::renderCostWarning(asRendered)) {
+        if (printed.insert(*warning).second) std::cerr << *warning;
+    }
 }
 
 /// crtc --format: the formatted script on standard output or in -o FILE.
@@ -148,6 +166,9 @@ int run(int argc, char** argv) {
         if (report(c, options, printed)) {
             if (frames.count > 1) std::cerr << "crtc: frame " << frame << " has errors\n";
             return false;
+        }
+        if ((options.mode == crtc::Mode::Render || options.mode == crtc::Mode::Check) && c.scene) {
+            warnAboutCost(*c.scene, options, printed);
         }
         return true;
     };
