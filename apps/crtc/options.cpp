@@ -261,7 +261,7 @@ void addEvaluationOptions(CLI::App& app, Options& o) {
         ->type_name("N")
         ->group(group);
     app.add_option("--max-memory")
-        ->description(fmt::format("MiB of strings, lists and objects evaluation may make (default {})",
+        ->description(fmt::format("MiB for strings, lists, objects (default {})",
                                   limits.maxMemory >> 20))
         ->check(numberIn<uint64_t>(1, uint64_t{1} << 40, "an integer from 1 to 1099511627776"))
         ->type_name("MIB")
@@ -273,7 +273,7 @@ void addReportingOptions(CLI::App& app, Options& o) {
     const char* group = "Reporting";
     app.add_flag("--werror", o.werror, "treat warnings as errors (also -Werror)")->group(group);
     app.add_option("--max-errors", o.maxErrors,
-                   fmt::format("stop reporting after N errors, 0 for no limit (default {})", o.maxErrors))
+                   fmt::format("errors shown before stopping, 0: all (default {})", o.maxErrors))
         ->check(anyNumber<uint32_t>("a non-negative integer"))
         ->type_name("N")
         ->group(group);

@@ -34,7 +34,7 @@ std::optional<std::string> renderCostWarning(const scene::SceneDesc& scene) {
     const RenderCost cost = estimateRenderCost(scene);
     if (cost.rays() <= kRaysWorthAWarning) return std::nullopt;
     return fmt::format("crtc: warning: this render traces up to about {:.1e} rays ({}x{} pixels, {:.0f} "
-                       "camera samples a pixel, {:.0f} rays a sample with shadows and glossy "
+                       "camera samples a pixel, {:.0f} ray(s) a sample with shadows and glossy "
                        "reflections) and may take days; lower the size or the sample counts, or "
                        "try --draft\n",
                        cost.rays(), scene.settings.width, scene.settings.height,

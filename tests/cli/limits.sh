@@ -91,4 +91,19 @@ expect_status 1 "--max-errors 3" "$crtc" --check --max-errors 3 "$work/flood.crt
 expect_status 1 "--max-errors 0" "$crtc" --check --max-errors 0 "$work/flood.crt"
 [ "$(grep -c ': error: ' "$work/err")" -eq 100000 ] || fail "--max-errors 0: expected every error"
 
+# A render far beyond any machine is announced before it starts, by --check too.
+cat >"$work/huge.crt" <<'CRT'
+Settings {
+    width -> 16384 height -> 16384 supersampling -> 64 dofsamples -> 100000
+    camera -> Camera { position -> vec3(0, 0, -4) pointing -> vec3(0, 0, 0) aperture -> 0.2 }
+    lights -> [AreaLight { corner -> vec3(2, 3, -3) edgeA -> vec3(1, 0, 0) edgeB -> vec3(0, 1, 0) color -> rgb(1, 1, 1) }]
+}
+Scene { Sphere { center -> vec3(0, 0, 0) radius -> 1 } }
+CRT
+expect_status 0 "--check of a render needing 10^18 rays" "$crtc" --check "$work/huge.crt"
+expect_text "$work/err" "^crtc: warning: this render traces up to about 1\.9e\+18 rays \(16384x16384 pixels, 409600000 camera samples a pixel, 17 ray\(s\) a sample" \
+    "the render cost warning"
+expect_status 0 "--check --draft of the same" "$crtc" --check --draft "$work/huge.crt"
+grep -q "rays" "$work/err" && fail "--draft: the cost warning is still there"
+
 finish
