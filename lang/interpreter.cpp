@@ -297,7 +297,7 @@ void Interpreter::emit(const Value& value, const Node* where) {
         emitted_->push_back(value);
     } else if (value.kind == ValueKind::List) {
         std::vector<Value> flat;
-        if (flattenEntities(value, flat)) emitted_->insert(emitted_->end(), flat.begin(), flat.end());
+        if (!flattenEntities(value, flat)) emitted_->insert(emitted_->end(), flat.begin(), flat.end());
     }
 }
 
@@ -318,7 +318,7 @@ uint64_t Interpreter::countMembers(int32_t entity) const {
     return count;
 }
 
-bool Interpreter::flattenEntities(const Value& list, std::vector<Value>& out) {
+const Value* Interpreter::flattenEntities(const Value& list, std::vector<Value>& out) {
     // Depth-first in source order, without recursion: lists can nest deeply.
     std::vector<std::pair<const std::vector<Value>*, size_t>> stack{{list.list, 0}};
     while (!stack.empty()) {
@@ -333,10 +333,10 @@ bool Interpreter::flattenEntities(const Value& list, std::vector<Value>& out) {
         } else if (item.kind == ValueKind::Entity) {
             out.push_back(item);
         } else {
-            return false;
+            return &item;
         }
     }
-    return true;
+    return nullptr;
 }
 
 void Interpreter::draw(const Value& value, const Node* where) {
@@ -351,25 +351,12 @@ void Interpreter::draw(const Value& value, const Node* where) {
         scene_.drawn.push_back(static_cast<int32_t>(value.index));
         return;
     case ValueKind::List: {
-        // Depth-first in source order, without recursion: lists can nest deeply.
-        std::vector<std::pair<const std::vector<Value>*, size_t>> stack{{value.list, 0}};
-        while (!stack.empty()) {
-            auto& [items, next] = stack.back();
-            if (next == items->size()) {
-                stack.pop_back();
-                continue;
-            }
-            const Value& item = (*items)[next++];
-            if (item.kind == ValueKind::List) {
-                stack.emplace_back(item.list, 0);
-            } else if (item.kind == ValueKind::Entity) {
-                draw(item, where);
-            } else {
-                fail(where->range, fmt::format("cannot draw a list holding {}; only entities "
-                                               "can be drawn",
-                                               typeName(item)));
-            }
+        std::vector<Value> entities;
+        if (const Value* other = flattenEntities(value, entities)) {
+            fail(where->range, fmt::format("cannot draw a list holding {}; only entities can be drawn",
+                                           typeName(*other)));
         }
+        for (const Value& entity : entities) draw(entity, where);
         return;
     }
     case ValueKind::None:

@@ -103,8 +103,9 @@ private:
     void reserveLike(size_t entitiesBefore, size_t materialsBefore, uint64_t remaining);
     void emit(const Value& value, const Node* where);
     void draw(const Value& value, const Node* where);
-    /// Appends the entities of a (nested) list in order; false if it holds anything else.
-    static bool flattenEntities(const Value& list, std::vector<Value>& out);
+    /// Appends the entities of a (nested) list in order; returns the first item that is
+    /// neither an entity nor a list, or null.
+    static const Value* flattenEntities(const Value& list, std::vector<Value>& out);
     /// How many entities drawing `entity` draws: a group draws its members.
     uint64_t countMembers(int32_t entity) const;
 
