@@ -58,10 +58,16 @@ cat >"$work/deep_recursion.crt" <<'CRT'
 m = Macro (n) { n == 0 ? 0 : 1 + (1 + (1 + (1 + (1 + (1 + (1 + m(n - 1))))))) }
 print(m(199000))
 CRT
-expect_status 1 "macro recursion 199,000 deep, nesting 9 levels a call" "$crtc" --check --max-depth 200000 "$work/deep_recursion.crt"
-expect_text "$work/err" "deep_recursion.crt:1:[0-9]+: error: expressions, blocks and macro calls nested deeper than 1000000 levels" \
-    "deep macro recursion: the nesting error"
-expect_text "$work/err" "note: in the macro called here" "deep macro recursion: the call notes"
+if [ "$sanitized" = 1 ]; then
+    # AddressSanitizer does not clean up a stack deeper than 64 MiB an exception leaves
+    # (google/sanitizers issue 189) and then reports false errors.
+    echo "note: a sanitizer build; the error thrown from 900 MiB of stack is not checked"
+else
+    expect_status 1 "macro recursion 199,000 deep, nesting 9 levels a call" "$crtc" --check --max-depth 200000 "$work/deep_recursion.crt"
+    expect_text "$work/err" "deep_recursion.crt:1:[0-9]+: error: expressions, blocks and macro calls nested deeper than 1000000 levels" \
+        "deep macro recursion: the nesting error"
+    expect_text "$work/err" "note: in the macro called here" "deep macro recursion: the call notes"
+fi
 
 # Memory: a string doubling forever stops at --max-memory with an error at its statement.
 printf 's = "x"\nwhile (true) { s = s + s }\n' >"$work/double.crt"
