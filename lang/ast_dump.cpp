@@ -161,7 +161,17 @@ private:
             node(a.value, depth + 1);
         }
     }
-    void indent(int depth) { out_.append(static_cast<size_t>(depth) * 2, ' '); }
+    void indent(int depth) {
+        // Past kMaxIndent levels the depth is written as a number: indenting every line of a
+        // tree 100,000 levels deep by its depth would make the dump quadratic in its size.
+        constexpr int kMaxIndent = 100;
+        if (depth <= kMaxIndent) {
+            out_.append(static_cast<size_t>(depth) * 2, ' ');
+        } else {
+            out_.append(static_cast<size_t>(kMaxIndent) * 2, ' ');
+            out_ += fmt::format("[{}] ", depth);
+        }
+    }
     void line(const Node* n, int depth, std::string_view what) { text(n->range, depth, what); }
     void text(SourceRange range, int depth, std::string_view what) {
         indent(depth);

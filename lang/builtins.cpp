@@ -10,12 +10,16 @@
 #include <glm/geometric.hpp>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <ostream>
 #include <utility>
 
 namespace crt::lang {
 
-std::string Interpreter::str(const Value& value) const {
+namespace {
+
+/// The text of a value that is not a list nor an object, or nothing for those.
+std::optional<std::string> plainText(const Value& value) {
     switch (value.kind) {
     case ValueKind::Unset:
     case ValueKind::None: return "none";
@@ -33,15 +37,14 @@ std::string Interpreter::str(const Value& value) const {
         }
         return fmt::format("rgba({}, {}, {}, {})", formatFloat(value.v[0]), formatFloat(value.v[1]),
                            formatFloat(value.v[2]), formatFloat(value.v[3]));
-    case ValueKind::List: {
-        std::string out = "[";
-        for (size_t i = 0; i < value.list->size(); ++i) {
-            if (i) out += ", ";
-            const Value& item = (*value.list)[i];
-            out += item.kind == ValueKind::String ? lang::quoted(*item.s) : str(item);
-        }
-        return out + "]";
+    default: return std::nullopt;
     }
+}
+
+} // namespace
+
+std::string Interpreter::objectText(const Value& value) const {
+    switch (value.kind) {
     case ValueKind::Macro: {
         LineColumn at = compilation_.sources.file(value.closure->macro->range.file)
                             .lineColumn(value.closure->macro->range.begin);
@@ -81,6 +84,54 @@ std::string Interpreter::str(const Value& value) const {
     default: break;
     }
     return fmt::format("<{} {}:{}>", type, where.line, where.column);
+}
+
+bool Interpreter::appendText(std::string& out, const Value& value, size_t maxBytes,
+                             const std::function<void()>& onItems) const {
+    // Without recursion, and appending in place: lists nest as deep as a loop makes them, and
+    // building each item's text apart made nesting quadratic.
+    std::vector<std::pair<const std::vector<Value>*, size_t>> open;
+    auto appendItem = [&](const Value& item, bool inList) {
+        if (item.kind == ValueKind::List) {
+            out += '[';
+            open.emplace_back(item.list, 0);
+        } else if (item.kind == ValueKind::String && inList) {
+            out += lang::quoted(*item.s);
+        } else if (std::optional<std::string> text = plainText(item)) {
+            out += *text;
+        } else {
+            out += objectText(item);
+        }
+    };
+    appendItem(value, false);
+    size_t items = 0;
+    while (!open.empty() && out.size() <= maxBytes) {
+        if (++items % kTextItemsPerCall == 0 && onItems) onItems();
+        auto& [items, next] = open.back();
+        if (next == items->size()) {
+            out += ']';
+            open.pop_back();
+            continue;
+        }
+        if (next > 0) out += ", ";
+        appendItem((*items)[next++], true);
+    }
+    return out.size() <= maxBytes;
+}
+
+std::string Interpreter::str(const Value& value) {
+    // The text of a list holding a list many times grows exponentially with the nesting:
+    // each item written counts against the step limit (and the time budget), and the
+    // string, which may double as it grows, against the memory limit.
+    std::string out;
+    const uint64_t room = options_.limits.maxMemory - std::min(memoryUsed_, options_.limits.maxMemory);
+    const size_t maxBytes = static_cast<size_t>(std::min<uint64_t>(room / 2, SIZE_MAX));
+    auto countWork = [&] {
+        steps_ += kTextItemsPerCall; // an item's text takes about as long as a loop iteration
+        if (steps_ >= nextStepCheck_) checkSteps(statement_ ? statement_->range : SourceRange{});
+    };
+    if (!appendText(out, value, maxBytes, countWork)) checkRoom(room + 1);
+    return out;
 }
 
 namespace {

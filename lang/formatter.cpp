@@ -198,7 +198,9 @@ FormatResult formatSource(std::string_view source, const FormatOptions& options,
     DiagnosticBag diagnostics;
     Arena arena;
     std::vector<Token> comments;
-    Script script = parse(file, 0, arena, diagnostics, &comments);
+    Script script;
+    // On the large stack, so that the nesting limit is the one compiling the script has.
+    runOnLargeStack([&] { script = parse(file, 0, arena, diagnostics, &comments); });
     if (diagnostics.hasErrors()) {
         result.error = "the script has syntax errors; formatting needs a script that parses";
         return result;

@@ -32,6 +32,7 @@ Interpreter::Interpreter(Compilation& compilation, const EvalOptions& options)
     const double clock = options.clockStart + progress * (options.clockEnd - options.clockStart);
     prelude_[preludeSlotOfClock()] = Value::number(clock);
     nextStepCheck_ = nextCheckAfter(0);
+    maxNesting_ = maxNesting();
 }
 
 void Interpreter::fail(SourceRange where, std::string message) {
@@ -40,11 +41,41 @@ void Interpreter::fail(SourceRange where, std::string message) {
 }
 
 const std::string* Interpreter::newString(std::string text) {
+    charge(sizeof(std::string) + text.capacity());
     return &strings_.emplace_back(std::move(text));
 }
 
 const std::vector<Value>* Interpreter::newList(std::vector<Value> items) {
+    charge(sizeof(items) + items.capacity() * sizeof(Value));
     return &lists_.emplace_back(std::move(items));
+}
+
+void Interpreter::checkRoom(uint64_t bytes) {
+    if (bytes > options_.limits.maxMemory - std::min(memoryUsed_, options_.limits.maxMemory)) {
+        fail(statement_ ? statement_->range : SourceRange{},
+             fmt::format("evaluation needs more than {} MiB of memory; raise the limit with "
+                         "--max-memory",
+                         options_.limits.maxMemory >> 20));
+    }
+}
+
+void Interpreter::charge(uint64_t bytes) {
+    const SourceRange where = statement_ ? statement_->range : SourceRange{};
+    checkRoom(bytes);
+    memoryUsed_ += bytes;
+    steps_ += bytes / kBytesPerStep;
+    if (steps_ >= nextStepCheck_) checkSteps(where);
+}
+
+void Interpreter::reportOutOfMemory() {
+    const SourceRange where = statement_ ? statement_->range : SourceRange{};
+    diagnostics_.error(where, "out of memory while evaluating this statement");
+}
+
+void Interpreter::nestedTooDeep(const Node* node) {
+    fail(node->range, fmt::format("expressions, blocks and macro calls nested deeper than {} "
+                                  "levels",
+                                  maxNesting_));
 }
 
 uint64_t Interpreter::nextRandom() {
@@ -108,6 +139,8 @@ void Interpreter::evaluateResolved() {
     } catch (const EvalError&) {
         // reported already
         if (options_.keepGlobalValues) keepGlobalValues();
+    } catch (const std::bad_alloc&) {
+        reportOutOfMemory();
     }
 }
 
@@ -116,10 +149,14 @@ void Interpreter::keepGlobalValues() {
     for (uint32_t slot = 0; slot < globals_.size() && slot < globalValues_.size(); ++slot) {
         const Value& value = globalValues_[slot];
         if (value.kind == ValueKind::Unset) continue;
-        std::string text = value.kind == ValueKind::List && value.list->size() > 32
-                               ? fmt::format("a list of {} values", value.list->size())
-                           : value.kind == ValueKind::String ? lang::quoted(*value.s)
-                                                             : str(value);
+        std::string text;
+        if (value.kind == ValueKind::List && value.list->size() > 32) {
+            text = fmt::format("a list of {} values", value.list->size());
+        } else if (value.kind == ValueKind::String) {
+            text = lang::quoted(std::string_view(*value.s).substr(0, kMaxText + 1));
+        } else {
+            appendText(text, value, kMaxText + 1);
+        }
         if (text.size() > kMaxText) text = text.substr(0, kMaxText) + "…";
         compilation_.globalValues.emplace_back(globals_.entry(slot).name, std::move(text));
     }
@@ -128,10 +165,16 @@ void Interpreter::keepGlobalValues() {
 // ---------------------------------------------------------------- statements
 
 void Interpreter::execStatements(std::span<Node* const> statements) {
-    for (const Node* statement : statements) exec(statement);
+    const Node* enclosing = statement_;
+    for (const Node* statement : statements) {
+        statement_ = statement;
+        exec(statement);
+    }
+    statement_ = enclosing;
 }
 
 Value Interpreter::exec(const Node* node) {
+    NestingLevel level(*this, node);
     switch (node->kind) {
     case NodeKind::While: {
         auto* w = static_cast<const WhileStmt*>(node);
@@ -259,19 +302,28 @@ void Interpreter::emit(const Value& value, const Node* where) {
         emitted_->push_back(value);
     } else if (value.kind == ValueKind::List) {
         std::vector<Value> flat;
-        if (flattenEntities(value, flat)) emitted_->insert(emitted_->end(), flat.begin(), flat.end());
+        if (!flattenEntities(value, flat)) emitted_->insert(emitted_->end(), flat.begin(), flat.end());
     }
 }
 
 uint64_t Interpreter::countMembers(int32_t entity) const {
-    const auto* group = std::get_if<scene::GroupNode>(&scene_.entities[static_cast<size_t>(entity)].shape);
-    if (!group) return 1;
+    // Without recursion: groups of groups nest as deep as a loop makes them.
     uint64_t count = 0;
-    for (int32_t member : group->members) count += countMembers(member);
+    std::vector<int32_t> pending{entity};
+    while (!pending.empty()) {
+        const int32_t next = pending.back();
+        pending.pop_back();
+        const auto* group = std::get_if<scene::GroupNode>(&scene_.entities[static_cast<size_t>(next)].shape);
+        if (!group) {
+            ++count;
+            continue;
+        }
+        pending.insert(pending.end(), group->members.begin(), group->members.end());
+    }
     return count;
 }
 
-bool Interpreter::flattenEntities(const Value& list, std::vector<Value>& out) {
+const Value* Interpreter::flattenEntities(const Value& list, std::vector<Value>& out) {
     // Depth-first in source order, without recursion: lists can nest deeply.
     std::vector<std::pair<const std::vector<Value>*, size_t>> stack{{list.list, 0}};
     while (!stack.empty()) {
@@ -286,10 +338,10 @@ bool Interpreter::flattenEntities(const Value& list, std::vector<Value>& out) {
         } else if (item.kind == ValueKind::Entity) {
             out.push_back(item);
         } else {
-            return false;
+            return &item;
         }
     }
-    return true;
+    return nullptr;
 }
 
 void Interpreter::draw(const Value& value, const Node* where) {
@@ -303,16 +355,15 @@ void Interpreter::draw(const Value& value, const Node* where) {
         }
         scene_.drawn.push_back(static_cast<int32_t>(value.index));
         return;
-    case ValueKind::List:
-        for (const Value& item : *value.list) {
-            if (item.kind != ValueKind::Entity && item.kind != ValueKind::List) {
-                fail(where->range, fmt::format("cannot draw a list holding {}; only entities "
-                                               "can be drawn",
-                                               typeName(item)));
-            }
-            draw(item, where);
+    case ValueKind::List: {
+        std::vector<Value> entities;
+        if (const Value* other = flattenEntities(value, entities)) {
+            fail(where->range, fmt::format("cannot draw a list holding {}; only entities can be drawn",
+                                           typeName(*other)));
         }
+        for (const Value& entity : entities) draw(entity, where);
         return;
+    }
     case ValueKind::None:
     case ValueKind::Unset: return;
     default:
@@ -494,8 +545,10 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
 
     Value last = Value::none();
     const auto& statements = macro->body->statements;
+    const Node* callingStatement = statement_;
     try {
         for (size_t i = 0; i < statements.size(); ++i) {
+            statement_ = statements[i];
             Value value = exec(statements[i]);
             if (i + 1 == statements.size() && isExpression(statements[i]) &&
                 statements[i]->kind != NodeKind::Assign) {
@@ -507,7 +560,12 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
         // innermost first, whichever code raised it.
         addCallNote(diagnostics_.items().back(), {site->range, "in the macro called here"});
         throw;
+    } catch (const std::bad_alloc&) {
+        reportOutOfMemory();
+        addCallNote(diagnostics_.items().back(), {site->range, "in the macro called here"});
+        throw EvalError{};
     }
+    statement_ = callingStatement;
 
     --depth_;
     if (!macro->capturesFrame) stack_.resize(base);

@@ -30,6 +30,8 @@ struct Limits {
     uint32_t maxSize = 16'384;      ///< image width and height
     /// The most nested calls the front end's stack (large_stack.hpp) holds: maxDepth's ceiling.
     static constexpr uint32_t kMaxSupportedDepth = 200'000;
+    /// Approximate bytes of the strings, lists and entities evaluation makes (--max-memory).
+    uint64_t maxMemory = uint64_t{4} << 30;
 };
 
 struct EvalOptions {

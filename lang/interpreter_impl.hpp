@@ -18,6 +18,10 @@
 
 namespace crt::lang {
 
+/// Bytes that cost one evaluation step: making a long string or list takes time in
+/// proportion to its size, and the step limit and the time budget must see it.
+inline constexpr uint64_t kBytesPerStep = 1024;
+
 /// Thrown after a run-time error has been reported; evaluation stops at the first one.
 struct EvalError {};
 
@@ -63,7 +67,26 @@ public:
     std::ostream& printOut();
     /// Writes print()'s line, escaped if EvalOptions::escapePrint says so.
     void print(const std::string& line);
-    std::string str(const Value& value) const;
+    /// The text form of `value`, as str() gives it; an error at the statement running if it
+    /// would pass the memory limit (a list holding itself many times grows exponentially).
+    std::string str(const Value& value);
+    /// At most about `maxBytes` of the text form; false if it was cut short there.
+    /// `onItems` is called after every kTextItemsPerCall list items written.
+    bool appendText(std::string& out, const Value& value, size_t maxBytes,
+                    const std::function<void()>& onItems = {}) const;
+    static constexpr size_t kTextItemsPerCall = 4096;
+    /// The text of a macro, built-in or object: its kind and where it was made.
+    std::string objectText(const Value& value) const;
+    /// Counts `bytes` that evaluation is about to hold against --max-memory, and their cost
+    /// in steps (copying them takes time), reporting an error at the running statement if
+    /// either limit is passed. Call it before allocating, so that the limit holds.
+    void charge(uint64_t bytes);
+    /// Reports an error at the running statement unless `bytes` more fit in --max-memory.
+    void checkRoom(uint64_t bytes);
+    /// `a + b` for a string and a string, number or bool.
+    Value concatenate(const Value& a, const Value& b);
+    /// Reports running out of memory at the running statement (after a std::bad_alloc).
+    void reportOutOfMemory();
     const Limits& limits() const { return options_.limits; }
     SourceRange argRange(const CallExpr* site, size_t index) const;
 
@@ -82,13 +105,26 @@ private:
     void reserveLike(size_t entitiesBefore, size_t materialsBefore, uint64_t remaining);
     void emit(const Value& value, const Node* where);
     void draw(const Value& value, const Node* where);
-    /// Appends the entities of a (nested) list in order; false if it holds anything else.
-    static bool flattenEntities(const Value& list, std::vector<Value>& out);
+    /// Appends the entities of a (nested) list in order; returns the first item that is
+    /// neither an entity nor a list, or null.
+    static const Value* flattenEntities(const Value& list, std::vector<Value>& out);
     /// How many entities drawing `entity` draws: a group draws its members.
     uint64_t countMembers(int32_t entity) const;
 
     // expressions
     Value eval(const Expr* node);
+    /// Counts one more level of nesting (expressions and blocks, across macro calls) for as
+    /// long as it lives: every level takes stack, so their number is limited.
+    struct NestingLevel {
+        Interpreter& in;
+        NestingLevel(Interpreter& interpreter, const Node* node) : in(interpreter) {
+            if (++in.nesting_ > in.maxNesting_) [[unlikely]] in.nestedTooDeep(node);
+        }
+        ~NestingLevel() { --in.nesting_; }
+        NestingLevel(const NestingLevel&) = delete;
+        NestingLevel& operator=(const NestingLevel&) = delete;
+    };
+    [[noreturn, gnu::cold, gnu::noinline]] void nestedTooDeep(const Node* node);
     Value evalVar(const VarExpr* node);
     Value evalString(const StringLit* node);
     /// Stores an assignment's value (none for a value-less one) and returns it. Inline, so
@@ -210,6 +246,11 @@ private:
     Frame* heapFrame_ = nullptr; ///< the running macro's frame if heap-allocated
     Frame* enclosing_ = nullptr; ///< the running macro's closure environment
     uint32_t depth_ = 0;
+    uint32_t nesting_ = 0;    ///< levels of NestingLevel alive
+    uint32_t maxNesting_ = 0; ///< what the stack allows (maxNesting())
+    uint64_t memoryUsed_ = 0; ///< bytes charged so far
+    /// The innermost statement running: where limits and running out of memory are reported.
+    const Node* statement_ = nullptr;
     uint64_t steps_ = 0;
     uint64_t nextStepCheck_ = 0; ///< when step() next calls checkSteps (set by the constructor)
 

@@ -104,7 +104,10 @@ std::partial_ordering compareNumbers(const Value& a, const Value& b) {
                                                      : order;
 }
 
-bool valuesEqual(const Value& a, const Value& b) {
+namespace {
+
+/// Equality of two values that are not both lists (lists are compared by valuesEqual).
+bool scalarsEqual(const Value& a, const Value& b) {
     if (a.isNumber() && b.isNumber()) return compareNumbers(a, b) == 0;
     switch (a.kind) {
     case ValueKind::None: return true;
@@ -113,24 +116,39 @@ bool valuesEqual(const Value& a, const Value& b) {
     case ValueKind::Vec3: return a.v[0] == b.v[0] && a.v[1] == b.v[1] && a.v[2] == b.v[2];
     case ValueKind::Color:
         return a.v[0] == b.v[0] && a.v[1] == b.v[1] && a.v[2] == b.v[2] && a.v[3] == b.v[3];
-    case ValueKind::List: {
-        if (a.list->size() != b.list->size()) return false;
-        for (size_t i = 0; i < a.list->size(); ++i) {
-            const Value& x = (*a.list)[i];
-            const Value& y = (*b.list)[i];
-            bool comparable = x.kind == y.kind || (x.isNumber() && y.isNumber());
-            if (!comparable || !valuesEqual(x, y)) return false;
-        }
-        return true;
-    }
     case ValueKind::Macro: return a.closure == b.closure;
     default: return a.index == b.index && a.objectType == b.objectType; // objects: identity
     }
 }
 
+} // namespace
+
+bool valuesEqual(const Value& a, const Value& b) {
+    // Without recursion: lists can nest as deep as a loop makes them.
+    std::vector<std::pair<const Value*, const Value*>> pending{{&a, &b}};
+    while (!pending.empty()) {
+        auto [x, y] = pending.back();
+        pending.pop_back();
+        if (x->kind != ValueKind::List) {
+            if (!scalarsEqual(*x, *y)) return false;
+            continue;
+        }
+        if (x->list == y->list) continue; // the same list
+        if (x->list->size() != y->list->size()) return false;
+        for (size_t i = x->list->size(); i-- > 0;) { // reversed: compared in order
+            const Value& u = (*x->list)[i];
+            const Value& v = (*y->list)[i];
+            if (u.kind != v.kind && !(u.isNumber() && v.isNumber())) return false;
+            pending.emplace_back(&u, &v);
+        }
+    }
+    return true;
+}
+
 // Kept to a bare dispatch so that every case is a tail call: the interpreter's time goes
 // into this function's prologue otherwise.
 Value Interpreter::eval(const Expr* node) {
+    NestingLevel level(*this, node);
     switch (node->kind) {
     case NodeKind::IntLit: return Value::integer(static_cast<const IntLit*>(node)->value);
     case NodeKind::FloatLit: return Value::number(static_cast<const FloatLit*>(node)->value);
@@ -334,7 +352,7 @@ Value Interpreter::binaryOnNonNumbers(const BinaryExpr* node, const Value& a, co
             bool printable = [](const Value& v) {
                 return v.kind == ValueKind::String || v.isNumber() || v.kind == ValueKind::Bool;
             }(a.kind == ValueKind::String ? b : a);
-            if (printable) return Value::string(newString(str(a) + str(b)));
+            if (printable) return concatenate(a, b);
         }
         [[fallthrough]];
     case BinaryOp::Sub:
@@ -357,6 +375,19 @@ Value Interpreter::binaryOnNonNumbers(const BinaryExpr* node, const Value& a, co
     default: break;
     }
     fail(node->opRange, operandError(opSpelling(op), a, b));
+}
+
+Value Interpreter::concatenate(const Value& a, const Value& b) {
+    // Sized and checked before anything is copied: a loop doubling a string reaches the
+    // memory limit with an error, not with an allocation the system refuses.
+    constexpr size_t kScalarText = 32; // the longest text of a number or bool, with room
+    auto textSize = [](const Value& v) { return v.kind == ValueKind::String ? v.s->size() : kScalarText; };
+    checkRoom(textSize(a) + textSize(b));
+    std::string text;
+    text.reserve(textSize(a) + textSize(b));
+    text += a.kind == ValueKind::String ? *a.s : str(a);
+    text += b.kind == ValueKind::String ? *b.s : str(b);
+    return Value::string(newString(std::move(text)));
 }
 
 Value Interpreter::evalIndex(const IndexExpr* node) {
@@ -457,6 +488,7 @@ Value Interpreter::evalModify(const ModifyExpr* node) {
     // Modifying a transformed entity extends its list rather than nesting transforms.
     int32_t child = static_cast<int32_t>(target.index);
     if (auto* inner = std::get_if<scene::TransformNode>(&scene_.entities[target.index].shape)) {
+        charge((inner->modifiers.size() + modifiers.size()) * sizeof(scene::Modifier));
         std::vector<scene::Modifier> combined = inner->modifiers;
         combined.insert(combined.end(), modifiers.begin(), modifiers.end());
         modifiers = std::move(combined);

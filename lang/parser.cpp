@@ -6,6 +6,10 @@
 #include "parser_support.hpp"
 #include "string_escape.hpp"
 
+#include "large_stack.hpp"
+
+#include <fmt/format.h>
+
 namespace crt::lang {
 namespace {
 
@@ -41,6 +45,34 @@ bool canStartStatement(TokenKind kind) {
 bool isResumePoint(const Token& token) {
     return token.kind == TokenKind::RBrace || token.kind == TokenKind::EndOfFile ||
            (token.atLineStart && canStartStatement(token.kind));
+}
+
+/// The first node of `item`'s tree nested deeper than `limit`, found without recursion, or
+/// null: every walk over the tree (resolver, interpreter, formatter, dumps) recurses.
+const Node* tooDeep(Node* item, uint32_t limit) {
+    std::vector<std::pair<Node*, uint32_t>> pending{{item, 1}};
+    while (!pending.empty()) {
+        auto [node, depth] = pending.back();
+        pending.pop_back();
+        if (depth > limit) return node;
+        forEachChild(node, [&, depth = depth](Node* child) { pending.emplace_back(child, depth + 1); });
+    }
+    return nullptr;
+}
+
+/// Replaces each top-level statement that nests deeper than the front end's limit by an error
+/// node, after reporting it, so that nothing later walks the too-deep tree.
+void limitNesting(ParseContext& ctx) {
+    const uint32_t limit = maxNesting();
+    for (Node*& item : ctx.items) {
+        const Node* deepest = tooDeep(item, limit);
+        if (!deepest) continue;
+        ctx.diagnostics.error(deepest->range,
+                              fmt::format("expressions and blocks nested deeper than {} levels; "
+                                          "split this into smaller pieces",
+                                          limit));
+        item = ctx.node<Node>(NodeKind::Error, item->range);
+    }
 }
 
 } // namespace
@@ -385,6 +417,7 @@ Script parse(const SourceFile& file, uint32_t fileIndex, Arena& arena, Diagnosti
     ctx.lexer.collectComments(comments);
     grammar::Parser parser(ctx);
     parser.parse();
+    limitNesting(ctx);
     return Script{arena.copy(ctx.items), fileIndex};
 }
 

@@ -38,7 +38,18 @@ SourceRange firstInclude(const Compilation& c) {
 std::vector<DocumentDiagnostic> documentDiagnostics(const Compilation& c) {
     std::vector<DocumentDiagnostic> result;
     const uint32_t files = c.sources.fileCount();
-    for (const Diagnostic& d : c.diagnostics.items()) {
+    const auto& items = c.diagnostics.items();
+    for (size_t index = 0; index < items.size(); ++index) {
+        const Diagnostic& d = items[index];
+        if (result.size() + 1 == kMaxPublishedDiagnostics && index + 1 < items.size()) {
+            // The last place says what was left out, at the first of those left out.
+            DocumentDiagnostic more;
+            more.range = d.range.file == 0 ? d.range : SourceRange{0, 0, 0};
+            more.severity = Severity::Warning;
+            more.message = fmt::format("{} more problems not shown (too many)", items.size() - index);
+            result.push_back(std::move(more));
+            break;
+        }
         DocumentDiagnostic out;
         out.severity = d.severity;
         out.message = d.message;

@@ -25,7 +25,12 @@ struct DocumentDiagnostic {
     std::vector<lang::FixIt> fixits; ///< only those inside the document
 };
 
-/// The diagnostics of `compilation`, in report order. A problem inside an included file
+/// At most this many diagnostics are published for a document: an editor cannot show more
+/// usefully, and a binary file opened as a script makes millions.
+inline constexpr size_t kMaxPublishedDiagnostics = 200;
+
+/// The diagnostics of `compilation`, in report order, at most kMaxPublishedDiagnostics (the
+/// last then says how many were left out). A problem inside an included file
 /// is shown at the `include` that reaches it, with the file's own location in the message.
 std::vector<DocumentDiagnostic> documentDiagnostics(const lang::Compilation& compilation);
 

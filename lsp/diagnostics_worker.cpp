@@ -1,7 +1,9 @@
 // The analysis thread: index at once, evaluate after the debounce, cancel on newer text.
 #include "diagnostics_worker.hpp"
 
+#include <cstdio>
 #include <future>
+#include <new>
 #include <ostream>
 
 namespace crt::lsp {
@@ -50,15 +52,25 @@ bool DiagnosticsWorker::prepareOne(std::unique_lock<std::mutex>& lock) {
     std::string uri = job->first;
     uint64_t generation = job->second.generation;
     std::shared_ptr<Analysis> analysis = job->second.parsed; // kept alive if the job is replaced
-    if (!analysis) {
-        std::string path = job->second.path;
-        std::string text = std::move(job->second.text);
-        lock.unlock();
-        analysis = std::make_shared<Analysis>();
-        analysis->compilation = lang::compile(path, std::move(text), evalOptions(), false);
-    } else {
-        lock.unlock();
-        index(*analysis, analysis->file(), options_, includes_);
+    try {
+        if (!analysis) {
+            std::string path = job->second.path;
+            std::string text = std::move(job->second.text);
+            lock.unlock();
+            analysis = std::make_shared<Analysis>();
+            analysis->compilation = lang::compile(path, std::move(text), evalOptions(), false);
+        } else {
+            lock.unlock();
+            index(*analysis, analysis->file(), options_, includes_);
+        }
+    } catch (const std::bad_alloc&) {
+        // Evaluation reports this as a diagnostic; a document too big to parse or index in
+        // the memory there is has this version dropped, and the server goes on.
+        std::fputs("crt-lsp: out of memory analysing a document; that version is skipped\n", stderr);
+        lock.lock();
+        auto dropped = pending_.find(uri);
+        if (dropped != pending_.end() && dropped->second.generation == generation) pending_.erase(dropped);
+        return true;
     }
     lock.lock();
     auto again = pending_.find(uri);

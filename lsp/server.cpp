@@ -328,6 +328,8 @@ void Server::readInitializationOptions(const json& params) {
     int64_t milliseconds = 0;
     readCount(init, "timeBudgetMs", milliseconds);
     if (milliseconds > 0) analysis.timeBudget = std::chrono::milliseconds(milliseconds);
+    if (init.contains("maxMemory") && init["maxMemory"].is_number_unsigned() && init["maxMemory"].get<uint64_t>() > 0)
+        analysis.limits.maxMemory = init["maxMemory"].get<uint64_t>() << 20; // MiB, as --max-memory
     if (init.contains("debounceMs") && init["debounceMs"].is_number_integer()) {
         options_.debounce = std::chrono::milliseconds(std::max<int64_t>(0, init["debounceMs"].get<int64_t>()));
     }

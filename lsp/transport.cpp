@@ -1,6 +1,9 @@
 // Content-Length framing: headers up to an empty line, then exactly that many bytes.
 #include "transport.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <string_view>
@@ -32,7 +35,26 @@ bool equalsIgnoringCase(std::string_view a, std::string_view b) {
 
 } // namespace
 
+bool Transport::readBody(size_t length, std::string& body) {
+    constexpr size_t kChunk = size_t{1} << 20;
+    body.clear();
+    while (body.size() < length) {
+        const size_t before = body.size();
+        const size_t want = std::min(kChunk, length - before);
+        body.resize(before + want);
+        const size_t got = std::fread(body.data() + before, 1, want, in_);
+        if (got != want) return false;
+    }
+    return true;
+}
+
 Transport::Incoming Transport::read() {
+    char discard[1 << 16];
+    while (skipBeforeNext_ > 0) {
+        const size_t want = std::min(sizeof discard, skipBeforeNext_);
+        if (std::fread(discard, 1, want, in_) != want) return {Status::End, {}};
+        skipBeforeNext_ -= want;
+    }
     std::string line;
     bool sawHeader = false;
     bool haveLength = false;
@@ -58,15 +80,14 @@ Transport::Incoming Transport::read() {
         }
     }
     if (!haveLength || badLength) return {Status::Malformed, "missing or invalid Content-Length header"};
-    if (length > kMaxMessageBytes) {
-        for (size_t i = 0; i < length; ++i) {
-            if (std::fgetc(in_) == EOF) return {Status::End, {}};
-        }
-        return {Status::Malformed, "message too large"};
+    if (length > maxMessageBytes_) {
+        skipBeforeNext_ = length;
+        return {Status::Malformed, fmt::format("message of {} bytes is larger than the limit of {} MiB "
+                                               "(crt-lsp --max-message-mib); its body is skipped",
+                                               length, maxMessageBytes_ >> 20)};
     }
-    std::string body(length, '\0');
-    size_t got = length ? std::fread(body.data(), 1, length, in_) : 0;
-    if (got != length) return {Status::End, {}};
+    std::string body;
+    if (!readBody(length, body)) return {Status::End, {}};
     return {Status::Message, std::move(body)};
 }
 

@@ -10,7 +10,8 @@ namespace crt::lsp {
 /// Reads and writes framed messages. Reading is for one thread; writing may come from any.
 class Transport {
 public:
-    Transport(std::FILE* in, std::FILE* out) : in_(in), out_(out) {}
+    Transport(std::FILE* in, std::FILE* out, size_t maxMessageBytes = kDefaultMaxMessageBytes)
+        : in_(in), out_(out), maxMessageBytes_(maxMessageBytes) {}
 
     enum class Status { Message, Malformed, End };
     struct Incoming {
@@ -23,12 +24,19 @@ public:
     /// Writes one message with its header, atomically with respect to other writers.
     void write(const std::string& body);
 
-    /// Frames larger than this are read and dropped (Malformed): no document is that big.
-    static constexpr size_t kMaxMessageBytes = size_t{256} << 20;
+    /// Frames larger than this are Malformed at once (so the client hears why without
+    /// waiting), and their bodies are skipped by the next read: no document is that big.
+    static constexpr size_t kDefaultMaxMessageBytes = size_t{64} << 20;
 
 private:
+    /// Reads `length` bytes of body, growing the buffer as they arrive rather than trusting
+    /// the header; false at the end of input.
+    bool readBody(size_t length, std::string& body);
+
     std::FILE* in_;
     std::FILE* out_;
+    size_t maxMessageBytes_;
+    size_t skipBeforeNext_ = 0; ///< the body of a frame too large, still to drop
     std::mutex writeMutex_;
 };
 

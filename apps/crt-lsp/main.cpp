@@ -15,7 +15,7 @@ namespace {
 void usage(std::FILE* out) {
     std::fputs("usage: crt-lsp [-I DIR]... [--stdlib DIR] [--assets DIR]... [--allow-read DIR]...\n"
                "               [--allow-read-all] [--max-steps N] [--max-entities N] [--max-depth N]\n"
-               "               [--debounce-ms N] [--time-budget-ms N]\n"
+               "               [--max-memory MIB] [--max-message-mib MIB] [--debounce-ms N] [--time-budget-ms N]\n"
                "The CRT language server; an editor starts it and talks LSP over stdin/stdout.\n",
                out);
 }
@@ -50,6 +50,7 @@ bool evaluationOption(const std::string& arg, const std::function<std::string()>
 
 int main(int argc, char** argv) {
     crt::lsp::ServerOptions options;
+    size_t maxMessageBytes = crt::lsp::Transport::kDefaultMaxMessageBytes;
     options.analysis.includes.stdlibDir = crt::lang::defaultStdlibDir();
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
@@ -59,6 +60,15 @@ int main(int argc, char** argv) {
                 std::exit(2);
             }
             return argv[++i];
+        };
+        auto positive = [&](const std::string& text) -> uint64_t {
+            char* end = nullptr;
+            const unsigned long long number = std::strtoull(text.c_str(), &end, 10);
+            if (text.empty() || *end != '\0' || number == 0 || number > (uint64_t{1} << 40) || text[0] == '-') {
+                std::fprintf(stderr, "crt-lsp: %s needs a positive number of MiB, not '%s'\n", arg.c_str(), text.c_str());
+                std::exit(2);
+            }
+            return number;
         };
         if (arg == "--help" || arg == "-h") {
             usage(stdout);
@@ -75,6 +85,10 @@ int main(int argc, char** argv) {
         } else if (arg == "--time-budget-ms") {
             options.analysis.timeBudget = std::chrono::milliseconds(std::atoi(value().c_str()));
         } else if (evaluationOption(arg, value, options.analysis)) {
+        } else if (arg == "--max-memory") {
+            options.analysis.limits.maxMemory = positive(value()) << 20;
+        } else if (arg == "--max-message-mib") {
+            maxMessageBytes = positive(value()) << 20;
         } else if (arg == "--stdio") {
             // what VS Code's client passes; stdio is the only transport anyway
         } else {
@@ -84,7 +98,7 @@ int main(int argc, char** argv) {
         }
     }
     std::signal(SIGPIPE, SIG_IGN); // a client that went away must not kill us mid-write
-    crt::lsp::Transport transport(stdin, stdout);
+    crt::lsp::Transport transport(stdin, stdout, maxMessageBytes);
     int code;
     {
         crt::lsp::Server server(transport, options);

@@ -7,6 +7,8 @@
 #include "options.hpp"
 #include "preview/preview_command.hpp"
 #include "render_command.hpp"
+#include "render_cost.hpp"
+#include "scene/quality_overrides.hpp"
 #include "scene/scene_json.hpp"
 #include "stop_signals.hpp"
 #include "terminal_text.hpp"
@@ -53,11 +55,39 @@ bool report(Compilation& c, const crtc::Options& options, std::set<std::string>&
     if (options.werror) c.diagnostics.promoteWarnings();
     PrintOptions print;
     print.color = useColor(options.color);
+    // As compilers do: past --max-errors errors the rest is noise (a binary file given as a
+    // script makes millions), so reporting stops there.
+    size_t errors = 0;
     for (const Diagnostic& diagnostic : c.diagnostics.items()) {
+        const bool isError = diagnostic.severity == Severity::Error;
+        if (isError && options.maxErrors != 0 && errors == options.maxErrors) {
+            std::cerr << "crtc: too many errors (" << c.diagnostics.errorCount()
+                      << "); stopping after " << options.maxErrors << " (--max-errors)\n";
+            break;
+        }
         std::string text = formatDiagnostic(c.sources, diagnostic, print);
-        if (printed.insert(text).second) std::cerr << text;
+        if (printed.insert(text).second) {
+            std::cerr << text;
+            errors += isError ? 1 : 0;
+        }
     }
     return c.diagnostics.hasErrors();
+}
+
+/// Warns (once, as report() prints) when the render the scene and the command line ask for
+/// is estimated beyond any reasonable time.
+void warnAboutCost(const scene::SceneDesc& evaluated, const crtc::Options& options, std::set<std::string>& printed) {
+    scene::SceneDesc asRendered; // what the estimate reads, with the command line's overrides
+    asRendered.settings = evaluated.settings;
+    asRendered.camera = evaluated.camera;
+    asRendered.lights = evaluated.lights;
+    asRendered.finishes = evaluated.finishes;
+    scene::applyQuality(asRendered, options.quality);
+    if (options.width > 0) asRendered.settings.width = options.width;
+    if (options.height > 0) asRendered.settings.height = options.height;
+    if (std::optional<std::string> warning = crtc::renderCostWarning(asRendered)) {
+        if (printed.insert(*warning).second) std::cerr << *warning;
+    }
 }
 
 /// crtc --format: the formatted script on standard output or in -o FILE.
@@ -138,6 +168,9 @@ int run(int argc, char** argv) {
             if (frames.count > 1) std::cerr << "crtc: frame " << frame << " has errors\n";
             return false;
         }
+        if ((options.mode == crtc::Mode::Render || options.mode == crtc::Mode::Check) && c.scene) {
+            warnAboutCost(*c.scene, options, printed);
+        }
         return true;
     };
     if (options.mode == crtc::Mode::Render) return crtc::renderCommand(options, compileFrame);
@@ -159,4 +192,13 @@ int run(int argc, char** argv) {
 
 } // namespace
 
-int main(int argc, char** argv) { return run(argc, argv); }
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::bad_alloc&) {
+        // Evaluation reports this at the script's statement; what is left (parsing a huge
+        // file, building the scene) ends here rather than in an abort.
+        std::cerr << "crtc: out of memory\n";
+        return 2;
+    }
+}

@@ -277,11 +277,23 @@ void addEvaluationOptions(CLI::App& app, Options& o) {
         ->check(numberIn<uint32_t>(1, std::numeric_limits<uint32_t>::max(), "a positive integer"))
         ->type_name("N")
         ->group(group);
+    app.add_option("--max-memory")
+        ->description(fmt::format("MiB for strings, lists, objects (default {})",
+                                  limits.maxMemory >> 20))
+        ->check(numberIn<uint64_t>(1, uint64_t{1} << 40, "an integer from 1 to 1099511627776"))
+        ->type_name("MIB")
+        ->group(group)
+        ->each([&limits](const std::string& text) { limits.maxMemory = std::stoull(text) << 20; });
 }
 
 void addReportingOptions(CLI::App& app, Options& o) {
     const char* group = "Reporting";
     app.add_flag("--werror", o.werror, "treat warnings as errors (also -Werror)")->group(group);
+    app.add_option("--max-errors", o.maxErrors,
+                   fmt::format("errors shown before stopping, 0: all (default {})", o.maxErrors))
+        ->check(anyNumber<uint32_t>("a non-negative integer"))
+        ->type_name("N")
+        ->group(group);
     app.add_option("--color", "color diagnostics: auto, always or never (default auto)")
         ->type_name("WHEN")
         ->group(group)

@@ -36,6 +36,7 @@ struct Options {
     lang::EvalOptions eval;
     FrameSelection frames;
     bool werror = false;
+    uint32_t maxErrors = 50; ///< errors printed before "too many errors"; 0: all
     ColorWhen color = ColorWhen::Auto;
     bool quiet = false;
     // Rendering

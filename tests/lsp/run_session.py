@@ -16,7 +16,7 @@ element-wise with the same length, unless written {"$contains": [...]} (each exp
 matches some item) or {"$length": N}; {"$any": true} matches anything, {"$absent": true} a
 missing member, and {"$regex": "..."} a string.
 Strings "$URI" and "$DIR" are replaced by the session document's URI and folder; a text
-{"$repeat": "TEXT", "times": N} is expanded.
+{"$repeat": "TEXT", "times": N} is expanded, and {"$join": [TEXT, ...]} joins its texts.
 """
 import json
 import os
@@ -41,6 +41,8 @@ def substitute(value, env):
     if isinstance(value, dict):
         if "$repeat" in value and "times" in value:
             return substitute(value["$repeat"], env) * value["times"]
+        if "$join" in value:
+            return "".join(substitute(value["$join"], env))
         return {substitute(k, env): substitute(v, env) for k, v in value.items()}
     return value
 
