@@ -6,3 +6,6 @@ find_package(glm REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(Catch2 2 REQUIRED)
 find_package(CLI11 2.1 REQUIRED) # crtc's command line
+# MPI (optional): with it, crtc under mpirun shares a render out over the processes
+# (apps/crtc/distributed); without it, crtc says so when started by mpirun.
+find_package(MPI COMPONENTS CXX QUIET)

@@ -17,6 +17,7 @@ packages=(
     neovim  # the language server's end-to-end test (tests/lsp/nvim)
     emacs-nox elpa-eglot # the Emacs mode's end-to-end test (tests/editors/emacs)
     unzip # the VS Code package's test opens the .vsix (tests/editors/vscode)
+    libopenmpi-dev openmpi-bin # crtc under mpirun (apps/crtc/distributed, tests/mpi)
 )
 # The VS Code extension's tests and package.sh need node and npm. The machines come with
 # Node.js 20 and its npm (not Debian's packages, which conflict with them): Debian's only
