@@ -18,6 +18,11 @@ namespace crt::crtc::distributed {
 namespace {
 
 constexpr auto kPollInterval = std::chrono::microseconds(200);
+/// Tiles a worker keeps queued per render thread: enough that its threads do not wait for rank
+/// 0's answer, even when a loaded machine wakes the sleeping main thread late (small tiles of
+/// an animation take a fraction of a millisecond), few enough that the last tiles of a frame
+/// are shared evenly.
+constexpr int kQueuedPerThread = 8;
 
 /// One frame's tiles on a worker: the render threads trace what the main thread got from rank 0
 /// and queue what they finish for the main thread to send.
@@ -36,8 +41,8 @@ class TileWorker {
     int nextTile();
     void finished(const tracer::TileResult& result);
     void exchange();
-    /// Asks rank 0 for tiles while fewer than a thread's worth wait, so that no thread waits
-    /// for the network; false once there is nothing more to ask.
+    /// Asks rank 0 for more tiles once fewer than kQueuedPerThread / 2 per thread wait, so that
+    /// no thread waits for the network; false once there is nothing more to ask.
     bool askIfLow();
 
     MpiSession& session_;
@@ -72,8 +77,9 @@ bool TileWorker::askIfLow() {
     {
         std::lock_guard lock(mutex_);
         if (asked_ || noMore_ || renderDone_) return asked_;
-        if (static_cast<int>(queue_.size()) >= threads_) return true;
-        want = 2 * threads_ - static_cast<int>(queue_.size());
+        const int target = kQueuedPerThread * threads_;
+        if (static_cast<int>(queue_.size()) >= target / 2) return true;
+        want = target - static_cast<int>(queue_.size());
         asked_ = true;
     }
     session_.send(0, kRequestTag, &want, sizeof want);
