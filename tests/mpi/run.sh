@@ -19,8 +19,10 @@ fi
 # (which ptrace restrictions forbid); root may run MPI jobs here.
 export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
 export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-# Under the sanitizers: what OpenMPI's and OpenImageIO's libraries keep until exit is not ours.
-export LSAN_OPTIONS="suppressions=$here/lsan_mpi.supp:print_suppressions=0"
+# Under the sanitizers: what OpenMPI's and OpenImageIO's libraries keep until exit is not ours;
+# their allocations are recognised by the whole stack (the fast unwinder stops in libraries
+# built without frame pointers, which leaves nothing for the suppressions to match).
+export LSAN_OPTIONS="suppressions=$here/lsan_mpi.supp:print_suppressions=0:fast_unwind_on_malloc=0"
 mpi() { # processes crtc-arguments...
     local processes=$1
     shift

@@ -105,7 +105,7 @@ void TileWorker::exchange() {
         if (session_.poll(source, tag, bytes) && tag == kTilesTag) {
             const std::vector<char> message = session_.receive(0, kTilesTag);
             std::vector<int> tiles(message.size() / sizeof(int));
-            std::memcpy(tiles.data(), message.data(), tiles.size() * sizeof(int));
+            if (!tiles.empty()) std::memcpy(tiles.data(), message.data(), tiles.size() * sizeof(int));
             lock.lock();
             asked_ = false;
             noMore_ = tiles.empty();
