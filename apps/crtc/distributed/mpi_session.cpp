@@ -5,7 +5,9 @@
 #include <mpi.h>
 
 #include <array>
+#include <chrono>
 #include <cstdlib>
+#include <thread>
 
 namespace crt::crtc::distributed {
 
@@ -47,7 +49,15 @@ std::string MpiSession::describe(int rank) const {
 
 void MpiSession::broadcast(Command& command) {
     int values[4] = {command.kind, command.frame, command.tileCount, command.status};
-    MPI_Bcast(values, 4, MPI_INT, 0, MPI_COMM_WORLD);
+    // The other ranks wait here while rank 0 finishes a frame's file: asleep, not spinning in
+    // MPI_Bcast on a core that rank 0's threads could use.
+    MPI_Request request;
+    MPI_Ibcast(values, 4, MPI_INT, 0, MPI_COMM_WORLD, &request);
+    for (int done = 0;;) {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done) break;
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
     command = Command{values[0], values[1], values[2], values[3]};
 }
 

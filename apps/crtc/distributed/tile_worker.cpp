@@ -4,7 +4,9 @@
 #include "frame_agreement.hpp"
 #include "tile_message.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <deque>
 #include <exception>
@@ -18,11 +20,12 @@ namespace crt::crtc::distributed {
 namespace {
 
 constexpr auto kPollInterval = std::chrono::microseconds(200);
-/// Tiles a worker keeps queued per render thread: enough that its threads do not wait for rank
-/// 0's answer, even when a loaded machine wakes the sleeping main thread late (small tiles of
-/// an animation take a fraction of a millisecond), few enough that the last tiles of a frame
-/// are shared evenly.
-constexpr int kQueuedPerThread = 8;
+/// The work a worker keeps queued per render thread, in seconds of tracing: enough that its
+/// threads do not wait for rank 0's answer (a round trip of a few polling intervals, longer
+/// on a loaded machine), little enough that the last tiles of a frame are shared evenly.
+constexpr double kQueuedSeconds = 0.005;
+/// The tiles a worker keeps queued per thread, at least and at most, whatever tiles cost.
+constexpr int kQueuedMin = 2, kQueuedMax = 64;
 
 /// One frame's tiles on a worker: the render threads trace what the main thread got from rank 0
 /// and queue what they finish for the main thread to send.
@@ -41,9 +44,11 @@ class TileWorker {
     int nextTile();
     void finished(const tracer::TileResult& result);
     void exchange();
-    /// Asks rank 0 for more tiles once fewer than kQueuedPerThread / 2 per thread wait, so that
-    /// no thread waits for the network; false once there is nothing more to ask.
+    /// Asks rank 0 for more tiles once fewer than half the queue's target wait, so that no
+    /// thread waits for the network; false once there is nothing more to ask.
     bool askIfLow();
+    /// The tiles to keep queued: kQueuedSeconds of work at the pace tiles have been finished.
+    int queueTarget() const;
 
     MpiSession& session_;
     const int threads_;
@@ -53,7 +58,17 @@ class TileWorker {
     std::deque<int> queue_;                ///< tiles handed to this rank, not yet begun
     std::deque<std::vector<char>> outbox_; ///< finished tiles not yet sent
     bool asked_ = false, noMore_ = false, renderDone_ = false;
+    std::chrono::steady_clock::time_point start_;
+    int tilesDone_ = 0;
 };
+
+int TileWorker::queueTarget() const {
+    if (tilesDone_ == 0) return kQueuedMin * threads_;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double secondsPerTile = elapsed * threads_ / tilesDone_; // of one thread
+    const double perThread = std::ceil(kQueuedSeconds / std::max(secondsPerTile, 1e-6));
+    return threads_ * static_cast<int>(std::clamp(perThread, double(kQueuedMin), double(kQueuedMax)));
+}
 
 int TileWorker::nextTile() {
     std::unique_lock lock(mutex_);
@@ -69,6 +84,7 @@ void TileWorker::finished(const tracer::TileResult& result) {
     std::vector<char> message = encodeTile(result);
     std::lock_guard lock(mutex_);
     outbox_.push_back(std::move(message));
+    ++tilesDone_;
     changed_.notify_all();
 }
 
@@ -77,7 +93,7 @@ bool TileWorker::askIfLow() {
     {
         std::lock_guard lock(mutex_);
         if (asked_ || noMore_ || renderDone_) return asked_;
-        const int target = kQueuedPerThread * threads_;
+        const int target = queueTarget();
         if (static_cast<int>(queue_.size()) >= target / 2) return true;
         want = target - static_cast<int>(queue_.size());
         asked_ = true;
@@ -122,6 +138,8 @@ void TileWorker::render(const scene::SceneDesc* scene, const std::vector<tracer:
     queue_.clear();
     outbox_.clear();
     asked_ = noMore_ = renderDone_ = false;
+    tilesDone_ = 0;
+    start_ = std::chrono::steady_clock::now();
     tracer::RenderOutcome outcome;
     if (!scene) {
         outcome.error = "the frame was not evaluated";
