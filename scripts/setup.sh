@@ -22,6 +22,7 @@ packages=(
     man-db    # the install tests read the installed manual pages with man
     pkg-config libcpp-httplib-dev # crtc --preview's HTTP server
     chromium # crtc --preview's browser test (puppeteer-core, tests/preview)
+    libopenmpi-dev openmpi-bin # crtc under mpirun (apps/crtc/distributed, tests/mpi)
 )
 # The VS Code extension's tests and package.sh need node and npm. The machines come with
 # Node.js 20 and its npm (not Debian's packages, which conflict with them): Debian's only

@@ -233,8 +233,8 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
         TraceContext context;
         std::vector<float> rgb;
         while (!(job.cancel && job.cancel->load(std::memory_order_relaxed))) {
-            const int tile = nextTile.fetch_add(1);
-            if (tile >= tileCount) break;
+            const int tile = job.nextTile ? job.nextTile() : nextTile.fetch_add(1);
+            if (tile < 0 || tile >= tileCount) break;
             traceTile(sampler, tiles[static_cast<size_t>(tile)], rgb, context);
             if (job.onTileDone) {
                 std::lock_guard lock(callbackMutex);
@@ -252,7 +252,10 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     for (const RayStats& st : stats) outcome.stats += st;
     outcome.renderSeconds = secondsSince(renderStart);
     outcome.tilesDone = doneTiles.load();
-    outcome.cancelled = outcome.tilesDone < tileCount;
+    // A job that hands out its own tiles may trace only some of them: only its cancel says
+    // whether it was stopped.
+    outcome.cancelled = job.nextTile ? job.cancel && job.cancel->load()
+                                     : outcome.tilesDone < tileCount;
     outcome.ok = !outcome.cancelled;
     return outcome;
 }

@@ -56,6 +56,10 @@ struct RenderJob {
     /// `rgb` is valid during the call only. A tile's pixels do not depend on which thread traced
     /// it, nor on the other tiles of the job: the same tile of the same scene is the same bits.
     std::function<void(const TileResult&)> onTileDone;
+    /// Which tile a worker traces next: an index into `tiles`, or -1 when it should stop. Empty:
+    /// every tile once, in order. Lets the caller share the tiles out with other processes
+    /// while the render goes on; it is called from the workers, concurrently, and may block.
+    std::function<int()> nextTile;
 };
 
 struct RenderOutcome {

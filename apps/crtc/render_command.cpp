@@ -1,6 +1,7 @@
 // Rendering from crtc: frames, output naming, progress, Ctrl-C, the summary line and --stats.
 #include "render_command.hpp"
 
+#include "distributed/distributed_render.hpp"
 #include "frame_hash.hpp"
 #include "progress_reporter.hpp"
 #include "resume_log.hpp"
@@ -173,7 +174,7 @@ struct FrameJob {
 /// Returns 0 or crtc's exit status.
 int renderFrame(const Options& options, const scene::SceneDesc& scene, const FrameJob& job,
                 const image_io::WriteOptions& write, ProgressReporter& progress, ResumeLog* log,
-                RenderTotals& totals) {
+                RenderTotals& totals, const TileRenderer& renderTiles) {
     const tracer::Tile& region = job.region;
     const int width = region.width(), height = region.height();
     std::optional<StreamedOutput> streamed;
@@ -232,10 +233,7 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const Fra
         if (log) log->addTile(job.frame, indexed);
         deliver(indexed);
     };
-    tracer::RenderOutcome r;
-    r.ok = true;
-    // Empty tiles would mean the whole image to the renderer: here, the log had every tile.
-    if (!render.tiles.empty()) r = tracer::render(scene, render);
+    const tracer::RenderOutcome r = renderTiles(scene, render);
     progress.clear();
     if (!r.ok && !r.cancelled) {
         printError(r.error);
@@ -251,13 +249,6 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const Fra
     return 0;
 }
 
-/// Applies the command line's size and quality to an evaluated scene.
-void applyCommandLine(const Options& options, scene::SceneDesc& scene) {
-    if (options.width > 0) scene.settings.width = options.width;
-    if (options.height > 0) scene.settings.height = options.height;
-    scene::applyQuality(scene, options.quality);
-}
-
 /// How a frame is named in the progress: its number and its place in this run.
 std::string frameLabel(const FrameSelection& frames, int frame) {
     if (frames.count <= 1) return "";
@@ -267,6 +258,12 @@ std::string frameLabel(const FrameSelection& frames, int frame) {
 }
 
 } // namespace
+
+void applyCommandLine(const Options& options, scene::SceneDesc& scene) {
+    if (options.width > 0) scene.settings.width = options.width;
+    if (options.height > 0) scene.settings.height = options.height;
+    scene::applyQuality(scene, options.quality);
+}
 
 std::string defaultOutput(const std::string& script, bool animation) {
     return fs::path(script).replace_extension(animation ? ".gif" : ".png").string();
@@ -291,9 +288,9 @@ namespace {
 /// A run of crtc's render mode: the frames selected, their output, and the resume log.
 class RenderRun {
   public:
-    RenderRun(const Options& options, OutputPlan plan)
+    RenderRun(const Options& options, OutputPlan plan, const TileRenderer& renderTiles)
         : options_(options), frames_(options.frames), plan_(std::move(plan)),
-          progress_(options.quiet, options.frames.selected()) {
+          progress_(options.quiet, options.frames.selected()), renderTiles_(renderTiles) {
         if (options.pngCompression >= 0) write_.pngCompression = options.pngCompression;
     }
 
@@ -310,6 +307,7 @@ class RenderRun {
     const FrameSelection& frames_;
     OutputPlan plan_;
     ProgressReporter progress_;
+    const TileRenderer& renderTiles_;
     image_io::WriteOptions write_;
     image_io::GifFrames gifFrames_; // as 8-bit codes: a long animation fits in memory
     RenderTotals totals_;
@@ -427,7 +425,8 @@ int RenderRun::renderOne(int frame, const Compilation& c, scene::SceneDesc& scen
     std::optional<tracer::PixelBuffer> kept;
     if (plan_.gif) job.keep = &kept.emplace(job.region.width(), job.region.height());
     if (int status =
-            renderFrame(options_, scene, job, write_, progress_, log_ ? &*log_ : nullptr, totals_))
+            renderFrame(options_, scene, job, write_, progress_, log_ ? &*log_ : nullptr, totals_,
+                        renderTiles_))
         return status;
     std::string error;
     if (plan_.gif && !gifFrames_.add(toBuffer(std::move(*kept)), write_, error)) {
@@ -472,10 +471,24 @@ int RenderRun::run(const CompileFrame& compileFrame) {
 
 } // namespace
 
-int renderCommand(const Options& options, const CompileFrame& compileFrame) {
+int renderFrames(const Options& options, const CompileFrame& compileFrame,
+                 const TileRenderer& renderTiles) {
     OutputPlan plan;
     if (!planOutput(options, plan)) return 2;
-    return RenderRun(options, std::move(plan)).run(compileFrame);
+    return RenderRun(options, std::move(plan), renderTiles).run(compileFrame);
+}
+
+int renderCommand(const Options& options, const CompileFrame& compileFrame) {
+    if (distributed::underMpi()) return distributed::renderDistributed(options, compileFrame);
+    return renderFrames(options, compileFrame, renderTilesHere);
+}
+
+tracer::RenderOutcome renderTilesHere(const scene::SceneDesc& scene, const tracer::RenderJob& job) {
+    tracer::RenderOutcome r;
+    r.ok = true;
+    // Empty tiles would mean the whole image to the renderer: here, the log had every tile.
+    if (!job.tiles.empty()) r = tracer::render(scene, job);
+    return r;
 }
 
 } // namespace crt::crtc

@@ -1,0 +1,24 @@
+// Every rank evaluates the frame itself (no scene is sent over the network), then the ranks
+// check that they built the same one before any of them renders it.
+#pragma once
+
+#include "mpi_session.hpp"
+#include "render_command.hpp"
+
+#include <sstream>
+
+namespace crt::crtc::distributed {
+
+/// Evaluates `frame` into `c` on this rank; every rank calls it for the same frame. Returns
+/// whether every rank evaluated it without errors, from the same inputs (frame_hash.hpp: the
+/// script's files, the options, the images and meshes it reads). Rank 0 says why not: the
+/// messages of a rank that failed (`captured`, its standard error, is sent to rank 0) or
+/// that the ranks differ.
+bool evaluateOnEveryRank(MpiSession& session, const Options& options,
+                         const CompileFrame& compileFrame, int frame, lang::Compilation& c,
+                         std::ostringstream* captured);
+
+/// The environment variable that makes one rank's evaluation fail, for crtc's tests.
+inline constexpr const char* kTestFailRankVariable = "CRT_TEST_FAIL_RANK";
+
+} // namespace crt::crtc::distributed

@@ -1,0 +1,210 @@
+// The side of a shared render on the ranks other than 0.
+#include "tile_worker.hpp"
+
+#include "frame_agreement.hpp"
+#include "tile_message.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <iostream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+namespace crt::crtc::distributed {
+
+namespace {
+
+constexpr auto kPollInterval = std::chrono::microseconds(200);
+/// The work a worker keeps queued per render thread, in seconds of tracing: enough that its
+/// threads do not wait for rank 0's answer (a round trip of a few polling intervals, longer
+/// on a loaded machine), little enough that the last tiles of a frame are shared evenly.
+constexpr double kQueuedSeconds = 0.005;
+/// The tiles a worker keeps queued per thread, at least and at most, whatever tiles cost.
+constexpr int kQueuedMin = 2, kQueuedMax = 64;
+
+/// One frame's tiles on a worker: the render threads trace what the main thread got from rank 0
+/// and queue what they finish for the main thread to send.
+class TileWorker {
+  public:
+    TileWorker(MpiSession& session, const Options& options)
+        : session_(session),
+          threads_(options.threads > 0 ? options.threads
+                                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
+          options_(options) {}
+
+    /// Renders the tiles rank 0 hands out of `tiles` of `scene` (none if it was not evaluated).
+    void render(const scene::SceneDesc* scene, const std::vector<tracer::Tile>& tiles);
+
+  private:
+    int nextTile();
+    void finished(const tracer::TileResult& result);
+    void exchange();
+    /// Asks rank 0 for more tiles once fewer than half the queue's target wait, so that no
+    /// thread waits for the network; false once there is nothing more to ask.
+    bool askIfLow();
+    /// The tiles to keep queued: kQueuedSeconds of work at the pace tiles have been finished.
+    int queueTarget() const;
+
+    MpiSession& session_;
+    const int threads_;
+    const Options& options_;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::deque<int> queue_;                ///< tiles handed to this rank, not yet begun
+    std::deque<std::vector<char>> outbox_; ///< finished tiles not yet sent
+    bool asked_ = false, noMore_ = false, renderDone_ = false;
+    std::chrono::steady_clock::time_point start_;
+    int tilesDone_ = 0;
+};
+
+int TileWorker::queueTarget() const {
+    if (tilesDone_ == 0) return kQueuedMin * threads_;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double secondsPerTile = elapsed * threads_ / tilesDone_; // of one thread
+    const double perThread = std::ceil(kQueuedSeconds / std::max(secondsPerTile, 1e-6));
+    return threads_ * static_cast<int>(std::clamp(perThread, double(kQueuedMin), double(kQueuedMax)));
+}
+
+int TileWorker::nextTile() {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [&] { return !queue_.empty() || noMore_; });
+    if (queue_.empty()) return -1;
+    const int tile = queue_.front();
+    queue_.pop_front();
+    changed_.notify_all();
+    return tile;
+}
+
+void TileWorker::finished(const tracer::TileResult& result) {
+    std::vector<char> message = encodeTile(result);
+    std::lock_guard lock(mutex_);
+    outbox_.push_back(std::move(message));
+    ++tilesDone_;
+    changed_.notify_all();
+}
+
+bool TileWorker::askIfLow() {
+    int want = 0;
+    {
+        std::lock_guard lock(mutex_);
+        if (asked_ || noMore_ || renderDone_) return asked_;
+        const int target = queueTarget();
+        if (static_cast<int>(queue_.size()) >= target / 2) return true;
+        want = target - static_cast<int>(queue_.size());
+        asked_ = true;
+    }
+    session_.send(0, kRequestTag, &want, sizeof want);
+    return true;
+}
+
+/// The main thread's loop: sends finished tiles, asks for more and takes rank 0's answers,
+/// until the render threads are done and no question is left unanswered.
+void TileWorker::exchange() {
+    for (;;) {
+        std::unique_lock lock(mutex_);
+        while (!outbox_.empty()) {
+            const std::vector<char> message = std::move(outbox_.front());
+            outbox_.pop_front();
+            lock.unlock();
+            session_.send(0, kResultTag, message.data(), message.size());
+            lock.lock();
+        }
+        if (renderDone_ && !asked_) return;
+        lock.unlock();
+        askIfLow();
+        int source = 0, tag = 0, bytes = 0;
+        if (session_.poll(source, tag, bytes) && tag == kTilesTag) {
+            const std::vector<char> message = session_.receive(0, kTilesTag);
+            std::vector<int> tiles(message.size() / sizeof(int));
+            if (!tiles.empty()) std::memcpy(tiles.data(), message.data(), tiles.size() * sizeof(int));
+            lock.lock();
+            asked_ = false;
+            noMore_ = tiles.empty();
+            queue_.insert(queue_.end(), tiles.begin(), tiles.end());
+            changed_.notify_all();
+            continue;
+        }
+        lock.lock();
+        changed_.wait_for(lock, kPollInterval);
+    }
+}
+
+void TileWorker::render(const scene::SceneDesc* scene, const std::vector<tracer::Tile>& tiles) {
+    queue_.clear();
+    outbox_.clear();
+    asked_ = noMore_ = renderDone_ = false;
+    tilesDone_ = 0;
+    start_ = std::chrono::steady_clock::now();
+    tracer::RenderOutcome outcome;
+    if (!scene) {
+        outcome.error = "the frame was not evaluated";
+        renderDone_ = true;
+    }
+    std::thread renderer([&] {
+        if (!scene) return;
+        tracer::RenderJob job;
+        job.tiles = tiles;
+        job.threads = options_.threads;
+        job.nextTile = [this] { return nextTile(); };
+        job.onTileDone = [this](const tracer::TileResult& result) { finished(result); };
+        try {
+            outcome = tracer::render(*scene, job);
+        } catch (const std::exception& e) {
+            outcome.ok = false;
+            outcome.error = e.what();
+        }
+        std::lock_guard lock(mutex_);
+        renderDone_ = true;
+        changed_.notify_all();
+    });
+    exchange();
+    renderer.join();
+    if (!outcome.ok) session_.send(0, kErrorTag, outcome.error.data(), outcome.error.size());
+    session_.send(0, kDoneTag, nullptr, 0);
+    session_.sumStats(outcome.stats);
+}
+
+/// Keeps this rank's standard error (diagnostics, warnings) for rank 0 while it lives.
+class CapturedErrors {
+  public:
+    CapturedErrors() : previous_(std::cerr.rdbuf(text_.rdbuf())) {}
+    ~CapturedErrors() { std::cerr.rdbuf(previous_); }
+    CapturedErrors(const CapturedErrors&) = delete;
+    CapturedErrors& operator=(const CapturedErrors&) = delete;
+    std::ostringstream& text() { return text_; }
+
+  private:
+    std::ostringstream text_;
+    std::streambuf* previous_;
+};
+
+} // namespace
+
+int serveRankZero(MpiSession& session, const Options& options, const CompileFrame& compileFrame) {
+    CapturedErrors errors;
+    lang::Compilation c;
+    bool evaluated = false;
+    TileWorker worker(session, options);
+    for (;;) {
+        Command command;
+        session.broadcast(command);
+        if (command.kind == Command::Stop) return command.status;
+        if (command.kind == Command::Evaluate) {
+            evaluated = evaluateOnEveryRank(session, options, compileFrame, command.frame, c,
+                                            &errors.text());
+            if (evaluated) applyCommandLine(options, *c.scene);
+        } else if (command.kind == Command::Render) {
+            std::vector<int> corners;
+            session.broadcast(corners, 4 * command.tileCount);
+            if (command.tileCount > 0)
+                worker.render(evaluated ? &*c.scene : nullptr, tilesOfCorners(corners));
+        }
+    }
+}
+
+} // namespace crt::crtc::distributed

@@ -1,0 +1,14 @@
+// The side of a shared render on the ranks other than 0: they evaluate every frame rank 0
+// evaluates, and trace the tiles it hands them (tile_dispatcher.hpp has the protocol).
+#pragma once
+
+#include "mpi_session.hpp"
+#include "render_command.hpp"
+
+namespace crt::crtc::distributed {
+
+/// Follows rank 0's commands until it says stop; returns the job's exit status. Standard error
+/// is kept for rank 0, which prints it if this rank fails.
+int serveRankZero(MpiSession& session, const Options& options, const CompileFrame& compileFrame);
+
+} // namespace crt::crtc::distributed

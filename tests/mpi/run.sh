@@ -1,0 +1,149 @@
+#!/usr/bin/env bash
+# crtc under a real mpirun (OpenMPI): renders shared over 1, 2 and 3 processes are the same
+# bits as crtc alone; a rank that fails or is killed ends the job with an error and no image.
+#   run.sh stills|animation|failure|killed CRTC
+set -u
+case_name=$1
+crtc=$2
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+source "$here/../cli/expect.sh"
+
+if ! command -v mpirun >/dev/null 2>&1; then
+    echo "SKIP: mpirun is not installed (scripts/setup.sh installs openmpi-bin)"
+    exit 77
+fi
+# A container without a network: shared memory between the processes, no kernel-assisted copy
+# (which ptrace restrictions forbid); root may run MPI jobs here.
+export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
+export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# Under the sanitizers: what OpenMPI's and OpenImageIO's libraries keep until exit is not ours;
+# their allocations are recognised by the whole stack (the fast unwinder stops in libraries
+# built without frame pointers, which leaves nothing for the suppressions to match).
+export LSAN_OPTIONS="suppressions=$here/lsan_mpi.supp:print_suppressions=0:fast_unwind_on_malloc=0"
+mpi() { # processes crtc-arguments...
+    local processes=$1
+    shift
+    timeout 120 mpirun --allow-run-as-root --oversubscribe -np "$processes" "$crtc" "$@"
+}
+# crtc built without MPI says so under mpirun: nothing to test then.
+if ! mpi 2 --quiet "$here/still.crt" --width 8 --height 8 -o "$work/probe.png" 2>"$work/probe.err"; then
+    if grep -q "built without MPI" "$work/probe.err"; then
+        echo "SKIP: crtc was built without MPI (libopenmpi-dev was not found)"
+        exit 77
+    fi
+fi
+
+# The same image from crtc alone and from each number of processes and threads.
+same_as_alone() { # description reference output crtc-arguments...
+    local what=$1 reference=$2 output=$3
+    shift 3
+    for processes in 1 2 3; do
+        for threads in 1 2; do
+            rm -f "$output"
+            expect_status 0 "$what, $processes processes" mpi "$processes" --quiet --threads "$threads" "$@"
+            cmp -s "$reference" "$output" ||
+                fail "$what: $processes processes x $threads threads differ from crtc alone"
+        done
+    done
+}
+
+stills() {
+    "$crtc" --quiet "$here/still.crt" -o "$work/alone.png"
+    same_as_alone "still" "$work/alone.png" "$work/shared.png" "$here/still.crt" -o "$work/shared.png"
+    "$crtc" --quiet "$here/costly_tile.crt" -o "$work/costly_alone.png"
+    same_as_alone "one costly tile" "$work/costly_alone.png" "$work/costly.png" \
+        "$here/costly_tile.crt" -o "$work/costly.png"
+    # --region and a Radiance HDR (floats: no rounding to 8 bits to hide a wrong pixel).
+    "$crtc" --quiet "$here/still.crt" --region 5:3:77:41 -o "$work/alone.hdr"
+    expect_status 0 "region as HDR" mpi 3 --quiet "$here/still.crt" --region 5:3:77:41 -o "$work/shared.hdr"
+    cmp -s "$work/alone.hdr" "$work/shared.hdr" || fail "--region over 3 processes differs"
+    # The summary and --stats count every process's rays.
+    "$crtc" --stats "$here/still.crt" -o "$work/alone.png" 2>"$work/alone.err"
+    expect_status 0 "--stats" mpi 3 --stats "$here/still.crt" -o "$work/shared.png"
+    diff <(grep -E "rays:|samples/pixel" "$work/alone.err" | sed 's/[0-9.]*s,.*//') \
+        <(grep -E "rays:|samples/pixel" "$work/err" | sed 's/[0-9.]*s,.*//') >/dev/null ||
+        fail "--stats over 3 processes differs from crtc alone: $(grep rays: "$work/err")"
+    [ "$(grep -c 'crtc: stats: rays' "$work/err")" = 1 ] || fail "--stats printed by more than rank 0"
+}
+
+animation() {
+    mkdir "$work/alone" "$work/shared"
+    "$crtc" --quiet --frames 6 "$here/animation.crt" -o "$work/alone/f_%02d.png"
+    "$crtc" --quiet --frames 6 "$here/animation.crt" -o "$work/alone.gif"
+    for processes in 1 2 3; do
+        rm -f "$work"/shared/*
+        expect_status 0 "numbered frames, $processes processes" mpi "$processes" --stats --frames 6 \
+            "$here/animation.crt" -o "$work/shared/f_%02d.png"
+        expect_text "$work/err" "frames reused unchanged 2" "unchanged frames reused"
+        for f in "$work"/alone/*.png; do
+            cmp -s "$f" "$work/shared/$(basename "$f")" ||
+                fail "$(basename "$f") of $processes processes differs from crtc alone's"
+        done
+        expect_status 0 "GIF, $processes processes" mpi "$processes" --quiet --frames 6 \
+            "$here/animation.crt" -o "$work/shared.gif"
+        cmp -s "$work/alone.gif" "$work/shared.gif" || fail "the GIF of $processes processes differs"
+    done
+    rm -f "$work"/shared/*
+    expect_status 0 "--frame-range" mpi 2 --quiet --frames 6 --frame-range 2:4 \
+        "$here/animation.crt" -o "$work/shared/f_%02d.png"
+    [ "$(ls "$work/shared" | tr '\n' ' ')" = "f_02.png f_03.png f_04.png " ] ||
+        fail "--frame-range 2:4 wrote $(ls "$work/shared" | tr '\n' ' ')"
+    for f in "$work"/shared/*.png; do
+        cmp -s "$f" "$work/alone/$(basename "$f")" || fail "$(basename "$f") of --frame-range differs"
+    done
+}
+
+failure() {
+    # The rank that fails is named on rank 0, with its message; nothing is written.
+    CRT_TEST_FAIL_RANK=1 expect_status 1 "rank 1 fails" mpi 3 "$here/still.crt" -o "$work/out.png"
+    expect_text "$work/err" "rank 1 on .* cannot evaluate frame 0" "the failed rank is named"
+    expect_text "$work/err" "evaluation failed on purpose" "its message is shown"
+    [ ! -e "$work/out.png" ] || fail "an image was written although rank 1 failed"
+    # A script error: every rank fails alike, and its diagnostic is printed once.
+    printf 'Settings { width -> 8 height -> 8 }\nScene { Sphere { radius -> nope } }\n' >"$work/bad.crt"
+    expect_status 1 "a script error" mpi 2 "$work/bad.crt" -o "$work/out.png"
+    [ "$(grep -c "bad.crt:2:" "$work/err")" = 1 ] || fail "the script's error was not printed once: $(cat "$work/err")"
+    # Ranks that read different scripts (same name, another folder each) refuse to render.
+    cat >"$work/differ.sh" <<SH
+#!/usr/bin/env bash
+mkdir -p "$work/rank\$OMPI_COMM_WORLD_RANK" && cd "$work/rank\$OMPI_COMM_WORLD_RANK"
+printf 'Settings { width -> 8 height -> 8 }\nScene { Sphere { center -> vec3(0, 0, 0) radius -> 0.%s } }\n' "\${OMPI_COMM_WORLD_RANK}5" >scene.crt
+exec "$crtc" scene.crt -o "$work/differ.png"
+SH
+    chmod +x "$work/differ.sh"
+    expect_status 1 "different scenes" timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 "$work/differ.sh"
+    expect_text "$work/err" "evaluated different scenes" "different scenes are reported"
+    [ ! -e "$work/differ.png" ] || fail "an image was written from different scenes"
+}
+
+killed() {
+    # A render of a few seconds; once rank 0 reports progress, rank 1 is killed.
+    mpi 3 --threads 1 "$here/still.crt" --width 640 --height 480 --supersampling 4 \
+        -o "$work/out.png" >"$work/out" 2>"$work/err" &
+    local job=$! rank1=""
+    for _ in $(seq 600); do
+        grep -q "crtc: [0-9]*%" "$work/err" 2>/dev/null && break
+        sleep 0.1
+    done
+    for pid in $(pgrep -x crtc); do
+        if tr '\0' '\n' <"/proc/$pid/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=1" &&
+            tr '\0' '\n' <"/proc/$pid/environ" 2>/dev/null | grep -q "^PWD=$PWD$"; then
+            rank1=$pid
+        fi
+    done
+    [ -n "$rank1" ] || fail "rank 1's process was not found"
+    [ -n "$rank1" ] && kill -9 "$rank1"
+    wait "$job"
+    local status=$?
+    [ "$status" != 0 ] || fail "the job succeeded although rank 1 was killed"
+    [ "$status" != 124 ] || fail "the job hung after rank 1 was killed"
+    expect_text "$work/err" "rank 1 .*exited on signal 9" "mpirun names the killed rank"
+    [ ! -e "$work/out.png" ] || fail "an image was written although rank 1 was killed"
+    ls -A "$work" | grep -q "\.tmp$" && fail "a temporary file was left: $(ls -A "$work")"
+}
+
+"$case_name"
+finish
