@@ -25,6 +25,33 @@ std::string_view warningCode(WarningKind kind) {
 
 namespace {
 
+/// The front end advises crtc's options for its limits; in an editor, the language server's
+/// settings raise them (initialization options, and VS Code's settings of the same names).
+struct LimitSetting {
+    std::string_view crtcOption;
+    std::string_view advice;
+};
+constexpr LimitSetting kLimitSettings[] = {
+    {"--max-steps", "the language server's maxSteps setting (crt.maxSteps in VS Code)"},
+    {"--max-entities", "the language server's maxEntities setting (crt.maxEntities in VS Code)"},
+    {"--max-depth", "the language server's maxDepth setting"},
+    {"--max-memory", "the language server's maxMemory setting"},
+};
+
+/// `message` with crtc's limit options named as the settings that raise them in an editor.
+std::string inEditorTerms(std::string message) {
+    for (const LimitSetting& setting : kLimitSettings) {
+        const std::string with = fmt::format("with {}", setting.crtcOption);
+        const size_t at = message.find(with);
+        // Whole options only: "--max-steps" but not the start of a longer option name.
+        const size_t after = at + with.size();
+        if (at != std::string::npos && (after == message.size() || message[after] == ')' || message[after] == ';' ||
+                                        message[after] == ' ' || message[after] == ','))
+            message.replace(at, with.size(), fmt::format("with {}", setting.advice));
+    }
+    return message;
+}
+
 /// The first top-level include of the document: where problems of included files are shown.
 SourceRange firstInclude(const Compilation& c) {
     for (const Node* item : c.main.items) {
@@ -52,7 +79,7 @@ std::vector<DocumentDiagnostic> documentDiagnostics(const Compilation& c) {
         }
         DocumentDiagnostic out;
         out.severity = d.severity;
-        out.message = d.message;
+        out.message = inEditorTerms(d.message);
         out.code = std::string(warningCode(d.warning));
         if (d.range.file == 0 && files > 0) {
             out.range = d.range;
@@ -60,8 +87,8 @@ std::vector<DocumentDiagnostic> documentDiagnostics(const Compilation& c) {
             const SourceFile& file = c.sources.file(d.range.file);
             LineColumn at = file.lineColumn(d.range.begin);
             out.range = firstInclude(c);
-            out.message = fmt::format("{}:{}:{}: {}", file.path(), at.line, at.column, d.message);
-            out.related.push_back({&file, d.range, d.message});
+            out.message = fmt::format("{}:{}:{}: {}", file.path(), at.line, at.column, inEditorTerms(d.message));
+            out.related.push_back({&file, d.range, inEditorTerms(d.message)});
         } else {
             out.range = {0, 0, 0}; // not in any file (an unreadable script)
         }

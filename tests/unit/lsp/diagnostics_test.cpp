@@ -34,3 +34,14 @@ TEST_CASE("warnings carry their code and notes", "[diagnostics]") {
     CHECK(diagnostics[1].code == "unused-variable");
     CHECK(diagnostics[1].severity == crt::lang::Severity::Warning);
 }
+
+TEST_CASE("a limit's diagnostic names the server setting that raises it, not crtc's option", "[diagnostics]") {
+    crt::lang::EvalOptions options;
+    options.limits.maxSteps = 1000;
+    auto c = crt::lang::compile("loop.crt", "while (true) { }\n", options);
+    auto diagnostics = documentDiagnostics(c);
+    REQUIRE(!diagnostics.empty());
+    CHECK_THAT(diagnostics[0].message, Contains("exceeded 1000 steps"));
+    CHECK_THAT(diagnostics[0].message, Contains("with the language server's maxSteps setting (crt.maxSteps in VS Code)"));
+    CHECK_THAT(diagnostics[0].message, !Contains("--max-steps"));
+}
