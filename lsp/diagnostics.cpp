@@ -45,8 +45,9 @@ std::string inEditorTerms(std::string message) {
         const size_t at = message.find(with);
         // Whole options only: "--max-steps" but not the start of a longer option name.
         const size_t after = at + with.size();
-        if (at != std::string::npos && (after == message.size() || message[after] == ')' || message[after] == ';' ||
-                                        message[after] == ' ' || message[after] == ','))
+        if (at != std::string::npos &&
+            (after == message.size() || message[after] == ')' || message[after] == ';' ||
+             message[after] == ' ' || message[after] == ','))
             message.replace(at, with.size(), fmt::format("with {}", setting.advice));
     }
     return message;
@@ -73,7 +74,8 @@ std::vector<DocumentDiagnostic> documentDiagnostics(const Compilation& c) {
             DocumentDiagnostic more;
             more.range = d.range.file == 0 ? d.range : SourceRange{0, 0, 0};
             more.severity = Severity::Warning;
-            more.message = fmt::format("{} more problems not shown (too many)", items.size() - index);
+            more.message =
+                fmt::format("{} more problems not shown (too many)", items.size() - index);
             result.push_back(std::move(more));
             break;
         }
@@ -87,13 +89,15 @@ std::vector<DocumentDiagnostic> documentDiagnostics(const Compilation& c) {
             const SourceFile& file = c.sources.file(d.range.file);
             LineColumn at = file.lineColumn(d.range.begin);
             out.range = firstInclude(c);
-            out.message = fmt::format("{}:{}:{}: {}", file.path(), at.line, at.column, inEditorTerms(d.message));
+            out.message = fmt::format("{}:{}:{}: {}", file.path(), at.line, at.column,
+                                      inEditorTerms(d.message));
             out.related.push_back({&file, d.range, inEditorTerms(d.message)});
         } else {
             out.range = {0, 0, 0}; // not in any file (an unreadable script)
         }
         for (const DiagnosticNote& note : d.notes) {
-            if (note.range.file < files) out.related.push_back({&c.sources.file(note.range.file), note.range, note.message});
+            if (note.range.file < files)
+                out.related.push_back({&c.sources.file(note.range.file), note.range, note.message});
         }
         for (const FixIt& fix : d.fixits) {
             if (fix.range.file == 0 && d.range.file == 0) out.fixits.push_back(fix);
