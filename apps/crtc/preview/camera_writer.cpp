@@ -3,6 +3,7 @@
 
 #include "diagnostic_printer.hpp"
 #include "formatter.hpp"
+#include "tracer/image_io/temporary_file.hpp"
 
 #include <fmt/format.h>
 
@@ -134,24 +135,28 @@ CameraEdit placeCamera(const std::string& path, const std::string& text, const s
 }
 
 bool replaceFile(const std::string& path, const std::string& text, std::string& error) {
-    const std::string temporary = path + ".crtc-preview.tmp";
-    std::error_code code;
+    // The temporary crtc writes every output through: an unguessable name created with
+    // O_EXCL | O_NOFOLLOW, removed by the stop handlers, renamed only once complete.
+    tracer::image_io::TemporaryFile temporary(path, error);
+    if (!temporary.ok()) {
+        error = "cannot replace '" + path + "': " + error;
+        return false;
+    }
     {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        std::ofstream out(temporary.path(), std::ios::binary | std::ios::trunc);
         out << text;
-        if (!out.flush()) {
-            fs::remove(temporary, code);
-            error = "cannot write '" + temporary + "'";
+        out.close();
+        if (!out) {
+            error = "cannot replace '" + path + "': the write failed";
             return false;
         }
     }
     // Keep the script's permissions: the rename replaces the file with the temporary one.
+    std::error_code code;
     const fs::perms permissions = fs::status(path, code).permissions();
-    if (!code) fs::permissions(temporary, permissions, code);
-    fs::rename(temporary, path, code);
-    if (code) {
-        fs::remove(temporary, code);
-        error = "cannot replace '" + path + "'";
+    if (!code) fs::permissions(temporary.path(), permissions, code);
+    if (!temporary.commit(error)) {
+        error = "cannot replace '" + path + "': " + error;
         return false;
     }
     return true;
