@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <ostream>
 
 namespace crt::lang {
@@ -129,10 +131,16 @@ void appendHeader(std::string& out, const SourceManager& sources, SourceRange ra
 }
 
 /// Whether a diagnostic in file `index` shows its source line: always for the main script
-/// (file 0), which the user named; for an included file only if it is a .crt file, so that
-/// an include of another kind of file (allowed by --allow-read) is not printed line by line.
+/// (file 0), which the user named; for another file only if it is a script (.crt) or a mesh
+/// (.obj) the script names, so that an include of another kind of file (allowed by
+/// --allow-read) is not printed line by line.
 bool quotesLines(const SourceManager& sources, uint32_t index) {
-    return index == 0 || (index < sources.fileCount() && sources.file(index).path().ends_with(".crt"));
+    if (index == 0) return true;
+    if (index >= sources.fileCount()) return false;
+    std::string extension = std::filesystem::path(sources.file(index).path()).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return extension == ".crt" || extension == ".obj";
 }
 
 } // namespace

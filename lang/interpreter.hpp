@@ -28,6 +28,8 @@ struct Limits {
     uint32_t maxDepth = 1'000;      ///< nested macro calls
     uint64_t maxEntities = 10'000'000; ///< drawn entities, and the length of any list
     uint32_t maxSize = 16'384;      ///< image width and height
+    /// Vertices, normals, texture coordinates or triangles of one mesh file (each on its own).
+    uint64_t maxMeshSize = scene::kDefaultMaxMeshSize;
     /// The most nested calls the front end's stack (large_stack.hpp) holds: maxDepth's ceiling.
     static constexpr uint32_t kMaxSupportedDepth = 200'000;
     /// Approximate bytes of the strings, lists and entities evaluation makes (--max-memory).

@@ -4,10 +4,13 @@
 // (empty) scene. Indices refer to the vectors of SceneDesc; -1 means "none".
 #pragma once
 
+#include "scene/obj_mesh.hpp"
+
 #include <glm/vec3.hpp>
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -103,6 +106,9 @@ struct TriangleShape { glm::dvec3 a{0.0}; glm::dvec3 b{0.0}; glm::dvec3 c{0.0}; 
 struct MeshShape {
     std::string file;         ///< as written in the script
     std::string resolvedFile; ///< the path found on disk, or "" if not found
+    /// The mesh as the front end read it (the renderer draws what was checked); null: the
+    /// renderer reads the file.
+    std::shared_ptr<const MeshData> data = nullptr;
 };
 
 enum class CsgOp : uint8_t { Union, Difference, Intersection };

@@ -1,6 +1,5 @@
 // Builds the render scene from a SceneDesc: flattens transforms, groups and top-level
 // unions into primitives, rebalances CSG chains, reads meshes, and builds the BVH.
-#include "tracer/geometry/obj_reader.hpp"
 #include "tracer/render_scene.hpp"
 
 #include <algorithm>
@@ -84,16 +83,20 @@ private:
 
     bool addMesh(const scene::MeshShape& mesh, int32_t entity, const Transform& toWorld) {
         const scene::EntityDesc& e = desc_.entities[entity];
-        const std::string& path = scene::fileToOpen(mesh.resolvedFile, mesh.file);
-        auto cached = meshes_.find(path);
-        if (cached == meshes_.end()) {
-            std::optional<MeshData> data = readObj(path, error_);
-            if (!data) return false;
-            cached = meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*data))).first;
+        std::shared_ptr<const MeshData> data = mesh.data;
+        if (!data) {
+            const std::string& path = scene::fileToOpen(mesh.resolvedFile, mesh.file);
+            auto cached = meshes_.find(path);
+            if (cached == meshes_.end()) {
+                std::optional<MeshData> read = scene::readObj(path, scene::kDefaultMaxMeshSize, error_);
+                if (!read) return false;
+                cached = meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*read))).first;
+            }
+            data = cached->second;
         }
         int32_t transform = addTransform(toWorld);
-        for (size_t i = 0; i < cached->second->triangles.size(); ++i) {
-            scene_.primitives.push_back({MeshTriangleGeometry(cached->second, i), transform, materialOf(e)});
+        for (size_t i = 0; i < data->triangles.size(); ++i) {
+            scene_.primitives.push_back({MeshTriangleGeometry(data, i), transform, materialOf(e)});
             scene_.primitiveEntities.push_back(entity);
             scene_.objects.push_back(static_cast<int32_t>(scene_.primitives.size() - 1));
         }

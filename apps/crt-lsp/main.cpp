@@ -40,6 +40,7 @@ bool evaluationOption(const std::string& arg, const std::function<std::string()>
     else if (arg == "--allow-read-all") analysis.access.allowAll = true;
     else if (arg == "--max-steps") limits.maxSteps = count<uint64_t>(arg, value());
     else if (arg == "--max-entities") limits.maxEntities = count<uint64_t>(arg, value());
+    else if (arg == "--max-mesh-size") limits.maxMeshSize = count<uint64_t>(arg, value());
     else if (arg == "--max-depth")
         limits.maxDepth = std::min(count<uint32_t>(arg, value()), crt::lang::Limits::kMaxSupportedDepth);
     else return false;

@@ -272,6 +272,12 @@ void addEvaluationOptions(CLI::App& app, Options& o) {
         ->check(anyNumber<uint64_t>("a non-negative integer"))
         ->type_name("N")
         ->group(group);
+    app.add_option("--max-mesh-size", limits.maxMeshSize,
+                   fmt::format("vertices or triangles of one mesh file (default {})",
+                               limits.maxMeshSize))
+        ->check(numberIn<uint64_t>(1, uint64_t{1} << 31, "an integer from 1 to 2147483648"))
+        ->type_name("N")
+        ->group(group);
     app.add_option("--max-size", limits.maxSize,
                    fmt::format("image width and height (default {})", limits.maxSize))
         ->check(numberIn<uint32_t>(1, std::numeric_limits<uint32_t>::max(), "a positive integer"))

@@ -156,15 +156,21 @@ if ls -a "$work/images" | grep -q '\.tmp$'; then
     failures=$((failures + 1))
 fi
 
-# A bad OBJ file is an error naming the file and line.
+# A bad OBJ file is an error of the script at `file ->`, with a note at the file's line, for
+# a render and for --check.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n' >"$work/scenes/broken.obj"
 cat >"$work/scenes/mesh.crt" <<'CRT'
 Settings { width -> 32 height -> 24 }
 Scene { Mesh { file -> "broken.obj" } }
 CRT
 expect_status 1 "a broken OBJ file" "$crtc" -q -o "$work/images/mesh.png" "$work/scenes/mesh.crt"
-expect_text "$work/err" "broken\.obj:4: .*index 7 out of range" "the OBJ error names file and line"
+expect_text "$work/err" "^$work/scenes/mesh\.crt:2:24: error: bad mesh 'broken\.obj': vertex index 7 out of range" \
+    "the OBJ error is at the script's file attribute"
+expect_text "$work/err" "broken\.obj:4:7: note: line 4 of the mesh" "the note points at the OBJ's line and column"
+expect_text "$work/err" "^ +f 1 2 7$" "the note quotes the OBJ's line"
 expect_no_file "$work/images/mesh.png" "no image for a broken mesh"
+expect_status 1 "--check of a broken OBJ file" "$crtc" --check "$work/scenes/mesh.crt"
+expect_text "$work/err" "mesh\.crt:2:24: error: bad mesh" "--check reports the bad mesh"
 
 expect_status 0 "--stats" "$crtc" --stats -o "$work/images/s.png" "$work/scenes/tiny.crt"
 expect_text "$work/err" "stats: rays: camera 768, reflection 0, refraction 0, shadow 0" "--stats counts the rays"

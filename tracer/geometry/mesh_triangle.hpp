@@ -1,12 +1,14 @@
 // One triangle of a mesh read from an OBJ file, with interpolated vertex normals and UVs.
 #pragma once
 
-#include "tracer/geometry/obj_reader.hpp"
+#include "scene/obj_mesh.hpp"
 #include "tracer/geometry/triangle.hpp"
 
 #include <memory>
 
 namespace crt::tracer {
+
+using scene::MeshData;
 
 /// Triangle `index` of a mesh; a surface, not a solid. The vertex positions are copied so the
 /// crossing test does not chase the mesh. The geometric normal follows the right-hand rule of

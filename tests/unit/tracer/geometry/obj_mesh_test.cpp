@@ -10,19 +10,30 @@ using namespace crt::tracer::test;
 
 namespace {
 
+using crt::scene::kDefaultMaxMeshSize;
+using crt::scene::ObjError;
+using crt::scene::readObj;
+
 MeshData parseOk(std::string_view text) {
-    std::string error;
-    std::optional<MeshData> mesh = parseObj(text, "mesh.obj", error);
-    INFO(error);
+    ObjError error;
+    std::optional<MeshData> mesh = crt::scene::parseObj(text, kDefaultMaxMeshSize, error);
+    INFO(error.message);
     REQUIRE(mesh);
-    CHECK(error.empty());
+    CHECK(error.message.empty());
     return *mesh;
 }
 
-std::string parseError(std::string_view text) {
-    std::string error;
-    CHECK_FALSE(parseObj(text, "bad.obj", error));
+ObjError parseFailure(std::string_view text, uint64_t maxSize = kDefaultMaxMeshSize) {
+    ObjError error;
+    CHECK_FALSE(crt::scene::parseObj(text, maxSize, error));
     return error;
+}
+
+std::string parseError(std::string_view text) { return parseFailure(text).describe("bad.obj"); }
+
+/// The bytes an error is about.
+std::string_view blamed(std::string_view text, const ObjError& error) {
+    return text.substr(error.begin, error.end - error.begin);
 }
 
 void checkTriangle(const MeshData::Triangle& t, std::array<int, 3> v, std::array<int, 3> uv,
@@ -109,6 +120,37 @@ TEST_CASE("obj: errors name the file and line") {
           "bad.obj:4: vertex index 0 out of range (3 defined)");
 }
 
+TEST_CASE("obj: an error points at the bytes it is about") {
+    const std::string_view badIndex = "v 0 0 0\nv 1 0 0\nv 0 1 0\n  f 1 2 -7/1  # far\n";
+    ObjError e = parseFailure(badIndex);
+    CHECK(e.line == 4);
+    CHECK(blamed(badIndex, e) == "-7"); // the vertex part of the corner "-7/1"
+    const std::string_view shortFace = "v 0 0 0\r\n\tf 1 1 \r\n";
+    e = parseFailure(shortFace);
+    CHECK(blamed(shortFace, e) == "f 1 1"); // the whole statement, without blanks around it
+    const std::string_view badNumber = "vt 0.5 .5x\n";
+    CHECK(blamed(badNumber, parseFailure(badNumber)) == ".5x");
+    CHECK(parseFailure("\x01\x02\0").line == 0); // binary: about the whole file
+    CHECK(parseError("hello\nworld\n") ==
+          "bad.obj: not a Wavefront OBJ mesh (no line of it is an OBJ statement)");
+}
+
+TEST_CASE("obj: sizes above the limit are refused before they are stored") {
+    const std::string_view quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+    ObjError e = parseFailure(quad, 3);
+    CHECK(e.overLimit);
+    CHECK(e.line == 4);
+    CHECK(e.message == "more than 3 vertices");
+    e = parseFailure("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3\nf 1 2 3\nf 3 2 1 # 4th\n", 3);
+    CHECK(e.message == "more than 3 triangles");
+    CHECK(e.line == 7);
+    CHECK(parseFailure("vn 0 0 1\nvn 0 0 1\n", 1).message == "more than 1 normals");
+    CHECK(parseFailure("vt 0 0\nvt 0 0\n", 1).message == "more than 1 texture coordinates");
+    ObjError ok;
+    CHECK(crt::scene::parseObj(quad, 4, ok)); // exactly at the limit
+    CHECK_FALSE(parseFailure("v 0 0\n", 1).overLimit);
+}
+
 TEST_CASE("obj: reading files") {
     namespace fs = std::filesystem;
     fs::path path = fs::temp_directory_path() / "crt_geometry_obj_test.obj";
@@ -117,19 +159,19 @@ TEST_CASE("obj: reading files") {
         out << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
     }
     std::string error;
-    std::optional<MeshData> mesh = readObj(path.string(), error);
+    std::optional<MeshData> mesh = readObj(path.string(), kDefaultMaxMeshSize, error);
     REQUIRE(mesh);
     CHECK(mesh->triangles.size() == 1);
     fs::remove(path);
-    CHECK_FALSE(readObj(path.string(), error));
+    CHECK_FALSE(readObj(path.string(), kDefaultMaxMeshSize, error));
     CHECK(error == "cannot read '" + path.string() + "'");
-    CHECK_FALSE(readObj(fs::temp_directory_path().string(), error)); // a directory
+    CHECK_FALSE(readObj(fs::temp_directory_path().string(), kDefaultMaxMeshSize, error)); // a directory
     CHECK(error == "cannot read '" + fs::temp_directory_path().string() + "'");
     {
         std::ofstream out(path, std::ios::binary);
         out << "v 0 0 0\nf 1 1\n";
     }
-    CHECK_FALSE(readObj(path.string(), error));
+    CHECK_FALSE(readObj(path.string(), kDefaultMaxMeshSize, error));
     CHECK(error == path.string() + ":2: face with 2 vertices (at least 3 needed)");
     fs::remove(path);
 }

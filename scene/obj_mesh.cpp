@@ -1,15 +1,16 @@
 // Reading Wavefront OBJ meshes: positions, normals, UVs and fan-triangulated polygons.
-#include "tracer/geometry/obj_reader.hpp"
+#include "scene/obj_mesh.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
-namespace crt::tracer {
+namespace crt::scene {
 
 namespace {
 
@@ -39,51 +40,71 @@ bool parseIndex(std::string_view token, long& value) {
     return ec == std::errc() && end == token.data() + token.size();
 }
 
+/// Triangles index their corners with int32_t: no list may be longer than this.
+constexpr uint64_t kIndexLimit = uint64_t{1} << 31;
+
 class Parser {
   public:
-    Parser(const std::string& name, std::string& error) : name_(name), error_(error) {}
+    Parser(std::string_view text, uint64_t maxSize, ObjError& error)
+        : text_(text), maxSize_(std::min(maxSize, kIndexLimit)), error_(error) {}
 
-    bool line(std::string_view text, size_t lineNumber);
+    bool line(std::string_view text, uint32_t lineNumber);
     MeshData mesh;
     size_t statements = 0; ///< lines that start with an OBJ keyword
     size_t otherLines = 0; ///< lines with something else, which are skipped
 
   private:
-    bool fail(const std::string& message) {
-        error_ = fmt::format("{}:{}: {}", name_, line_, message);
+    /// Fails with a message about `where`, a part of the current line.
+    bool fail(std::string_view where, std::string message) {
+        error_.message = std::move(message);
+        error_.line = line_;
+        error_.begin = size_t(where.data() - text_.data());
+        error_.end = error_.begin + where.size();
         return false;
     }
+    /// Room for one more element in a list of `size`.
+    bool room(std::string_view where, size_t size, const char* what);
     /// Reads `count` numbers (at least `required`), ignoring any beyond `count`.
     bool numbers(std::string_view rest, double* out, int required, int count);
     /// Resolves a 1-based (or negative, relative) index into a vector of `size` elements.
     bool index(std::string_view token, size_t size, const char* what, int32_t& out);
     bool face(std::string_view rest);
 
-    const std::string& name_;
-    std::string& error_;
-    size_t line_ = 0;
+    std::string_view text_;
+    uint64_t maxSize_;
+    ObjError& error_;
+    std::string_view lineText_;
+    uint32_t line_ = 0;
 };
+
+bool Parser::room(std::string_view where, size_t size, const char* what) {
+    if (size < maxSize_) return true;
+    error_.overLimit = true;
+    return fail(where, fmt::format("more than {} {}", maxSize_, what));
+}
 
 bool Parser::numbers(std::string_view rest, double* out, int required, int count) {
     for (int i = 0; i < count; ++i) {
         std::string_view token = nextToken(rest);
         if (token.empty()) {
             if (i < required)
-                return fail(fmt::format("expected {} numbers, found {}", required, i));
+                return fail(lineText_, fmt::format("expected {} numbers, found {}", required, i));
             out[i] = 0;
             continue;
         }
-        if (!parseNumber(token, out[i])) return fail(fmt::format("bad number '{}'", token));
+        if (!parseNumber(token, out[i])) return fail(token, fmt::format("bad number '{}'", token));
     }
     return true;
 }
 
 bool Parser::index(std::string_view token, size_t size, const char* what, int32_t& out) {
     long value = 0;
-    if (!parseIndex(token, value)) return fail(fmt::format("bad {} index '{}'", what, token));
+    if (!parseIndex(token, value))
+        return fail(token, fmt::format("bad {} index '{}'", what, token));
     long resolved = value > 0 ? value - 1 : long(size) + value;
     if (value == 0 || resolved < 0 || resolved >= long(size))
-        return fail(fmt::format("{} index {} out of range ({} defined)", what, value, size));
+        return fail(token,
+                    fmt::format("{} index {} out of range ({} defined)", what, value, size));
     out = int32_t(resolved);
     return true;
 }
@@ -111,7 +132,9 @@ bool Parser::face(std::string_view rest) {
         corners.push_back(c);
     }
     if (corners.size() < 3)
-        return fail(fmt::format("face with {} vertices (at least 3 needed)", corners.size()));
+        return fail(lineText_,
+                    fmt::format("face with {} vertices (at least 3 needed)", corners.size()));
+    if (!room(lineText_, mesh.triangles.size() + corners.size() - 3, "triangles")) return false;
     for (size_t i = 1; i + 1 < corners.size(); ++i) {
         const Corner* fan[3] = {&corners[0], &corners[i], &corners[i + 1]};
         MeshData::Triangle tri;
@@ -125,21 +148,28 @@ bool Parser::face(std::string_view rest) {
     return true;
 }
 
-bool Parser::line(std::string_view text, size_t lineNumber) {
+bool Parser::line(std::string_view text, uint32_t lineNumber) {
     line_ = lineNumber;
     if (size_t hash = text.find('#'); hash != std::string_view::npos) text = text.substr(0, hash);
+    constexpr std::string_view kBlank = " \t\r\f\v";
+    text.remove_prefix(std::min(text.size(), text.find_first_not_of(kBlank)));
+    text.remove_suffix(text.size() - std::min(text.size(), text.find_last_not_of(kBlank) + 1));
+    lineText_ = text;
     std::string_view rest = text;
     std::string_view keyword = nextToken(rest);
     double xyz[3];
     if (keyword == "v" || keyword == "vn" || keyword == "vt") ++statements;
     if (keyword == "v") {
-        if (!numbers(rest, xyz, 3, 3)) return false;
+        if (!room(text, mesh.positions.size(), "vertices") || !numbers(rest, xyz, 3, 3))
+            return false;
         mesh.positions.emplace_back(xyz[0], xyz[1], xyz[2]);
     } else if (keyword == "vn") {
-        if (!numbers(rest, xyz, 3, 3)) return false;
+        if (!room(text, mesh.normals.size(), "normals") || !numbers(rest, xyz, 3, 3))
+            return false;
         mesh.normals.emplace_back(xyz[0], xyz[1], xyz[2]);
     } else if (keyword == "vt") {
-        if (!numbers(rest, xyz, 1, 2)) return false;
+        if (!room(text, mesh.uvs.size(), "texture coordinates") || !numbers(rest, xyz, 1, 2))
+            return false;
         mesh.uvs.emplace_back(xyz[0], xyz[1]);
     } else if (keyword == "f") {
         ++statements;
@@ -160,31 +190,41 @@ bool Parser::line(std::string_view text, size_t lineNumber) {
 
 } // namespace
 
-std::optional<MeshData> parseObj(std::string_view text, const std::string& nameForErrors,
-                                 std::string& error) {
+uint64_t MeshData::byteSize() const {
+    return sizeof(MeshData) + positions.capacity() * sizeof(glm::dvec3) +
+           normals.capacity() * sizeof(glm::dvec3) + uvs.capacity() * sizeof(glm::dvec2) +
+           triangles.capacity() * sizeof(Triangle);
+}
+
+std::string ObjError::describe(const std::string& name) const {
+    if (line == 0) return fmt::format("{}: {}", name, message);
+    return fmt::format("{}:{}: {}", name, line, message);
+}
+
+std::optional<MeshData> parseObj(std::string_view text, uint64_t maxSize, ObjError& error) {
     // Any file can be named as a mesh; one that is not text, or has no face, is not an OBJ
     // mesh, and saying so beats drawing nothing.
+    error = ObjError{};
     if (text.find('\0') != std::string_view::npos) {
-        error = fmt::format("{}: not a Wavefront OBJ mesh (it holds binary data)", nameForErrors);
+        error.message = "not a Wavefront OBJ mesh (it holds binary data)";
         return std::nullopt;
     }
-    Parser parser(nameForErrors, error);
-    size_t lineNumber = 0;
-    while (!text.empty()) {
-        size_t end = text.find('\n');
-        std::string_view line = text.substr(0, end);
-        text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
+    Parser parser(text, maxSize, error);
+    uint32_t lineNumber = 0;
+    for (std::string_view rest = text; !rest.empty();) {
+        size_t end = rest.find('\n');
+        std::string_view line = rest.substr(0, end);
+        rest = end == std::string_view::npos ? std::string_view{} : rest.substr(end + 1);
         if (!parser.line(line, ++lineNumber)) return std::nullopt;
     }
     if (parser.statements == 0 && parser.otherLines > 0) {
-        error = fmt::format("{}: not a Wavefront OBJ mesh (no line of it is an OBJ statement)",
-                            nameForErrors);
+        error.message = "not a Wavefront OBJ mesh (no line of it is an OBJ statement)";
         return std::nullopt;
     }
     return std::move(parser.mesh);
 }
 
-std::optional<MeshData> readObj(const std::string& path, std::string& error) {
+std::optional<MeshData> readObj(const std::string& path, uint64_t maxSize, std::string& error) {
     std::error_code ec;
     std::ifstream in;
     if (std::filesystem::is_regular_file(path, ec)) in.open(path, std::ios::binary);
@@ -194,7 +234,10 @@ std::optional<MeshData> readObj(const std::string& path, std::string& error) {
         error = fmt::format("cannot read '{}'", path);
         return std::nullopt;
     }
-    return parseObj(text, path, error);
+    ObjError problem;
+    std::optional<MeshData> mesh = parseObj(text, maxSize, problem);
+    if (!mesh) error = problem.describe(path);
+    return mesh;
 }
 
-} // namespace crt::tracer
+} // namespace crt::scene
