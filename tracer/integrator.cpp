@@ -87,6 +87,14 @@ Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t med
     return color;
 }
 
+glm::dvec4 Integrator::traceCamera(const Ray& ray, int depth, bool transparentBackground,
+                                   TraceContext& context) const {
+    if (!transparentBackground) return {trace(ray, depth, 0, -1, context), 1};
+    Hit hit;
+    if (!scene_.intersect(ray, kInfinity, hit, context.scratch, context.stats)) return glm::dvec4(0);
+    return {shade(ray, hit, depth, 0, -1, context), 1};
+}
+
 Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium,
                        TraceContext& context) const {
     ShadingPoint sp;

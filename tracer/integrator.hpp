@@ -41,6 +41,10 @@ public:
     /// `pathLength` is the distance travelled from the camera to the ray's origin (falloff),
     /// `medium` the material of the solid the ray travels in (-1: air).
     Vec3 trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context) const;
+    /// A camera ray's color and alpha: as trace() in air, alpha 1; with a transparent
+    /// background a ray that meets nothing is (0, 0, 0) with alpha 0 instead of the background.
+    glm::dvec4 traceCamera(const Ray& ray, int depth, bool transparentBackground,
+                           TraceContext& context) const;
 
     const SceneFeatures& features() const { return features_; }
 

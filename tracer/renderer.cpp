@@ -25,25 +25,31 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 /// Computes pixels; one per thread, sharing the read-only scene.
 class PixelSampler {
 public:
-    PixelSampler(const Integrator& integrator, const Camera& camera, const scene::SettingsDesc& settings)
+    /// RGB and alpha: samples are averaged in all four, so edges against a transparent
+    /// background get partial alpha.
+    using Color = glm::dvec4;
+
+    PixelSampler(const Integrator& integrator, const Camera& camera, const scene::SettingsDesc& settings,
+                 bool transparentBackground)
         : integrator_(integrator), camera_(camera), settings_(settings),
           dofSamples_(camera.usesLens() ? std::max(settings.dofSamples, 1) : 1),
-          bounces_(settings.bounceLimit()) {}
+          bounces_(settings.bounceLimit()), transparentBackground_(transparentBackground) {}
 
-    Vec3 pixel(int x, int y, TraceContext& context) const {
+    /// The pixel's color and alpha (coverage; the color is premultiplied by it).
+    Color pixel(int x, int y, TraceContext& context) const {
         uint64_t pixelIndex = static_cast<uint64_t>(y) * settings_.width + x;
         bool adaptive = settings_.antialias == scene::Antialias::Adaptive ||
                         settings_.antialias == scene::Antialias::ShowAdaptive;
         if (adaptive) {
             bool subdivides = false;
             uint32_t sampleIndex = 0;
-            Vec3 c = region(x + 0.5, y + 0.5, 1.0, 0, pixelIndex, sampleIndex, subdivides, context);
-            if (settings_.antialias == scene::Antialias::ShowAdaptive && subdivides) return {1, 0, 0};
+            Color c = region(x + 0.5, y + 0.5, 1.0, 0, pixelIndex, sampleIndex, subdivides, context);
+            if (settings_.antialias == scene::Antialias::ShowAdaptive && subdivides) return {1, 0, 0, 1};
             return c;
         }
         int n = std::max(settings_.supersampling, 1);
         bool jittered = settings_.antialias == scene::Antialias::Stratified;
-        Vec3 sum(0.0);
+        Color sum(0.0);
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
                 uint32_t k = static_cast<uint32_t>(j * n + i);
@@ -64,9 +70,9 @@ private:
 
     /// Spec §6 "adaptive": the four quadrant centres, a quadrant subdivided while its
     /// samples disagree by more than the threshold, up to aadepth levels; area-weighted mean.
-    Vec3 region(double cx, double cy, double size, int level, uint64_t pixelIndex, uint32_t& sampleIndex,
-                bool& subdivides, TraceContext& context) const {
-        Vec3 corners[4];
+    Color region(double cx, double cy, double size, int level, uint64_t pixelIndex, uint32_t& sampleIndex,
+                 bool& subdivides, TraceContext& context) const {
+        Color corners[4];
         double q = size / 4;
         const double offsets[4][2] = {{-q, -q}, {q, -q}, {-q, q}, {q, q}};
         for (int k = 0; k < 4; ++k)
@@ -75,8 +81,8 @@ private:
         for (int a = 0; a < 4; ++a)
             for (int b = a + 1; b < 4; ++b)
                 {
-                    Vec3 d = absolute(corners[a] - corners[b]);
-                    spread = std::max({spread, d.x, d.y, d.z});
+                    Color d = glm::abs(corners[a] - corners[b]);
+                    spread = std::max({spread, d.x, d.y, d.z, d.w});
                 }
         if (spread > settings_.aaThreshold && level < settings_.aaDepth) {
             subdivides = true;
@@ -88,19 +94,20 @@ private:
         return (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
     }
 
-    Vec3 sample(double u, double v, uint64_t pixelIndex, uint32_t sampleIndex, TraceContext& context) const {
+    Color sample(double u, double v, uint64_t pixelIndex, uint32_t sampleIndex, TraceContext& context) const {
         context.rng = SampleRng(settings_.seed, pixelIndex, sampleIndex);
         if (dofSamples_ <= 1) {
             ++context.stats.cameraRays;
-            return integrator_.trace(camera_.ray(u, v), bounces_, 0, -1, context);
+            return integrator_.traceCamera(camera_.ray(u, v), bounces_, transparentBackground_, context);
         }
         // Depth of field: a low-discrepancy set of lens points, shifted per pixel sample.
         Vec2 shift = context.rng.uniform2();
-        Vec3 sum(0.0);
+        Color sum(0.0);
         for (int k = 0; k < dofSamples_; ++k) {
             Vec2 lens = hammersley(static_cast<uint32_t>(k), static_cast<uint32_t>(dofSamples_), shift);
             ++context.stats.cameraRays;
-            sum += integrator_.trace(camera_.lensRay(u, v, lens), bounces_, 0, -1, context);
+            sum += integrator_.traceCamera(camera_.lensRay(u, v, lens), bounces_,
+                                           transparentBackground_, context);
         }
         return sum / static_cast<double>(dofSamples_);
     }
@@ -110,6 +117,7 @@ private:
     const scene::SettingsDesc& settings_;
     int dofSamples_;
     int bounces_; ///< reflections and refractions a camera ray's path may take in all
+    bool transparentBackground_;
 };
 
 /// The scene's settings with the job's sample budget applied.
@@ -149,17 +157,15 @@ bool prepare(const scene::SceneDesc& desc, PreparedScene& out, std::string& erro
     return true;
 }
 
-/// Traces one tile into `rgb` (row-major, 3 floats a pixel).
-void traceTile(const PixelSampler& sampler, const Tile& tile, std::vector<float>& rgb,
+/// Traces one tile into `pixels` (row-major, `channels` floats a pixel: RGB, then alpha).
+void traceTile(const PixelSampler& sampler, const Tile& tile, int channels, std::vector<float>& pixels,
                TraceContext& context) {
-    rgb.resize(static_cast<size_t>(tile.width()) * tile.height() * 3);
-    float* out = rgb.data();
+    pixels.resize(static_cast<size_t>(tile.width()) * tile.height() * channels);
+    float* out = pixels.data();
     for (int y = tile.y0; y < tile.y1; ++y) {
-        for (int x = tile.x0; x < tile.x1; ++x, out += 3) {
-            Vec3 c = sampler.pixel(x, y, context);
-            out[0] = static_cast<float>(c.r);
-            out[1] = static_cast<float>(c.g);
-            out[2] = static_cast<float>(c.b);
+        for (int x = tile.x0; x < tile.x1; ++x, out += channels) {
+            glm::dvec4 c = sampler.pixel(x, y, context);
+            for (int i = 0; i < channels; ++i) out[i] = static_cast<float>(c[i]);
         }
     }
 }
@@ -188,15 +194,16 @@ std::vector<Tile> regionTiles(const Tile& region, int size) {
 
 std::vector<Tile> imageTiles(int width, int height, int size) { return regionTiles({0, 0, width, height}, size); }
 
-PixelBuffer::PixelBuffer(int width, int height)
-    : width(width), height(height), rgb(static_cast<size_t>(width) * height * 3, 0.0f) {}
+PixelBuffer::PixelBuffer(int width, int height, int channels)
+    : width(width), height(height), channels(channels),
+      pixels(static_cast<size_t>(width) * height * channels, 0.0f) {}
 
 void PixelBuffer::place(const TileResult& result) {
     const Tile& t = result.tile;
-    const size_t rowValues = static_cast<size_t>(t.width()) * 3;
+    const size_t rowValues = static_cast<size_t>(t.width()) * channels;
     for (int y = t.y0; y < t.y1; ++y) {
-        std::copy_n(result.rgb.data() + static_cast<size_t>(y - t.y0) * rowValues, rowValues,
-                    rgb.data() + (static_cast<size_t>(y) * width + t.x0) * 3);
+        std::copy_n(result.pixels.data() + static_cast<size_t>(y - t.y0) * rowValues, rowValues,
+                    pixels.data() + (static_cast<size_t>(y) * width + t.x0) * channels);
     }
 }
 
@@ -207,7 +214,8 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     PreparedScene prepared;
     if (!prepare(desc, prepared, outcome.error)) return outcome;
     const scene::SettingsDesc settings = withBudget(desc.settings, job.samples);
-    PixelSampler sampler(*prepared.integrator, *prepared.camera, settings);
+    PixelSampler sampler(*prepared.integrator, *prepared.camera, settings, job.alpha);
+    const int channels = job.alpha ? 4 : 3;
     outcome.buildSeconds = secondsSince(buildStart);
     outcome.primitives = prepared.geometry->primitives.size();
     outcome.bvhNodes = prepared.geometry->bvh.nodeCount();
@@ -231,14 +239,14 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
 
     auto worker = [&](unsigned index) {
         TraceContext context;
-        std::vector<float> rgb;
+        std::vector<float> pixels;
         while (!(job.cancel && job.cancel->load(std::memory_order_relaxed))) {
             const int tile = job.nextTile ? job.nextTile() : nextTile.fetch_add(1);
             if (tile < 0 || tile >= tileCount) break;
-            traceTile(sampler, tiles[static_cast<size_t>(tile)], rgb, context);
+            traceTile(sampler, tiles[static_cast<size_t>(tile)], channels, pixels, context);
             if (job.onTileDone) {
                 std::lock_guard lock(callbackMutex);
-                job.onTileDone(TileResult{tiles[static_cast<size_t>(tile)], tile, rgb});
+                job.onTileDone(TileResult{tiles[static_cast<size_t>(tile)], tile, channels, pixels});
             }
             doneTiles.fetch_add(1);
         }

@@ -31,11 +31,13 @@ std::vector<Tile> regionTiles(const Tile& region, int size = kTileSize);
 /// A whole `width` × `height` image cut into tiles, as regionTiles.
 std::vector<Tile> imageTiles(int width, int height, int size = kTileSize);
 
-/// A finished tile: its linear RGB floats, row-major from its top row.
+/// A finished tile: its linear RGB floats (and premultiplied alpha with RenderJob::alpha),
+/// row-major from its top row.
 struct TileResult {
     Tile tile;
     int index = 0;                ///< its place in RenderJob::tiles
-    std::span<const float> rgb;   ///< tile.width() × tile.height() × 3 values
+    int channels = 3;             ///< 4 with RenderJob::alpha
+    std::span<const float> pixels; ///< tile.width() × tile.height() × channels values
 };
 
 /// The camera samples a pixel gets.
@@ -60,6 +62,10 @@ struct RenderJob {
     /// every tile once, in order. Lets the caller share the tiles out with other processes
     /// while the render goes on; it is called from the workers, concurrently, and may block.
     std::function<int()> nextTile;
+    /// A fourth channel, alpha: the share of a pixel's camera rays that meet the scene. The
+    /// background is then transparent (a ray that meets nothing counts as black), so the color
+    /// is premultiplied by alpha. Without it, the same RGB bits as before.
+    bool alpha = false;
 };
 
 struct RenderOutcome {
@@ -80,14 +86,16 @@ struct RenderOutcome {
 /// Renders the tiles of `job` of `scene` at its settings' width and height.
 RenderOutcome render(const scene::SceneDesc& scene, const RenderJob& job);
 
-/// Linear RGB floats of a whole image, row-major, top row first.
+/// Linear floats of a whole image, `channels` a pixel (RGB, or RGB and alpha), row-major, top
+/// row first.
 struct PixelBuffer {
     int width = 0;
     int height = 0;
-    std::vector<float> rgb;
+    int channels = 3;
+    std::vector<float> pixels;
 
     PixelBuffer() = default;
-    PixelBuffer(int width, int height);
+    PixelBuffer(int width, int height, int channels = 3);
     /// Copies a finished tile into its place.
     void place(const TileResult& tile);
 };

@@ -61,10 +61,10 @@ uint64_t frameHash(const lang::Compilation& c, const scene::SceneDesc& scene,
                       eval.frameCount, eval.firstFrame, eval.clockStart, eval.clockEnd,
                       scene.time));
     const scene::SettingsDesc& s = scene.settings;
-    h.add(fmt::format("size {}x{} region {}:{}:{}:{} samples {} {} {} {} {} aperture {}", s.width,
-                      s.height, region.x0, region.y0, region.x1, region.y1, s.supersampling,
-                      static_cast<int>(s.antialias), s.dofSamples, s.shadowSamples, s.glossySamples,
-                      scene.camera.aperture));
+    h.add(fmt::format("size {}x{} region {}:{}:{}:{} samples {} {} {} {} {} aperture {} alpha {}",
+                      s.width, s.height, region.x0, region.y0, region.x1, region.y1,
+                      s.supersampling, static_cast<int>(s.antialias), s.dofSamples,
+                      s.shadowSamples, s.glossySamples, scene.camera.aperture, options.alpha));
     addAssets(h, scene);
     return h.value();
 }

@@ -128,6 +128,9 @@ void addOutputOptions(CLI::App& app, Options& o) {
                 return "";
             },
             ""));
+    app.add_flag("--alpha", o.alpha,
+                 "write an alpha channel, the background transparent (.png, .tif, .exr)")
+        ->group(group);
     app.add_option("--png-compression", o.pngCompression,
                    "zlib level of PNG output, 0 (fastest) to 9 (smallest); default 2")
         ->check(numberIn(0, 9, "an integer from 0 to 9"))

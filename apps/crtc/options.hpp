@@ -49,6 +49,7 @@ struct Options {
     bool resume = false; ///< --continue: finish what an interrupted render of the same output began
     scene::QualityOverrides quality;
     std::optional<tracer::Tile> region; ///< --region: the part of the image rendered
+    bool alpha = false; ///< --alpha: a fourth channel, the background transparent
     // Preview
     int port = 0;        ///< --port; 0: a free port
     bool open = false;   ///< --open: show the preview in the desktop's browser

@@ -111,8 +111,8 @@ image_io::ImageBuffer toBuffer(tracer::PixelBuffer frame) {
     image_io::ImageBuffer b;
     b.width = frame.width;
     b.height = frame.height;
-    b.channels = 3;
-    b.pixels = std::move(frame.rgb);
+    b.channels = frame.channels;
+    b.pixels = std::move(frame.pixels);
     return b;
 }
 
@@ -143,6 +143,12 @@ bool planOutput(const Options& options, OutputPlan& plan) {
     if (!image_io::isSupportedOutput(plan.target(frames.begin()))) {
         std::cerr << fmt::format("crtc: cannot write '{}': unknown image format (use .png, .jpg, "
                                  ".tif, .exr, .hdr or .gif)\n",
+                                 plan.path);
+        return false;
+    }
+    if (options.alpha && (plan.gif || !image_io::storesAlpha(plan.target(frames.begin())))) {
+        std::cerr << fmt::format("crtc: --alpha: '{}' is of a format without an alpha channel "
+                                 "(use .png, .tif or .exr)\n",
                                  plan.path);
         return false;
     }
@@ -177,12 +183,13 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const Fra
                 RenderTotals& totals, const TileRenderer& renderTiles) {
     const tracer::Tile& region = job.region;
     const int width = region.width(), height = region.height();
+    const int channels = options.alpha ? 4 : 3;
     std::optional<StreamedOutput> streamed;
     std::optional<RowAssembler> rows;
     if (!job.keep) {
-        streamed.emplace(job.target, width, height, write, stopRendering);
-        rows.emplace(width, height, [&](int yBegin, int yEnd, std::span<const float> rgb) {
-            streamed->addRows(yBegin, yEnd, rgb);
+        streamed.emplace(job.target, width, height, channels, write, stopRendering);
+        rows.emplace(width, height, channels, [&](int yBegin, int yEnd, std::span<const float> pixels) {
+            streamed->addRows(yBegin, yEnd, pixels);
         });
     }
     const std::vector<tracer::Tile> tiles = tracer::regionTiles(region);
@@ -193,7 +200,8 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const Fra
         const tracer::TileResult placed{
             {t.x0 - region.x0, t.y0 - region.y0, t.x1 - region.x0, t.y1 - region.y0},
             result.index,
-            result.rgb};
+            result.channels,
+            result.pixels};
         if (job.keep)
             job.keep->place(placed);
         else
@@ -209,11 +217,11 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const Fra
         if (job.loggedTiles) {
             auto found = job.loggedTiles->find(i);
             if (found != job.loggedTiles->end() &&
-                found->second.size() == static_cast<size_t>(tile.width()) * tile.height() * 3)
+                found->second.size() == static_cast<size_t>(tile.width()) * tile.height() * channels)
                 logged = &found->second;
         }
         if (logged) {
-            deliver(tracer::TileResult{tile, i, *logged});
+            deliver(tracer::TileResult{tile, i, channels, *logged});
             continue;
         }
         render.tiles.push_back(tile);
@@ -227,9 +235,10 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const Fra
     }
     render.threads = options.threads;
     render.cancel = &stopRendering;
+    render.alpha = options.alpha;
     render.onTileDone = [&](const tracer::TileResult& result) {
         const tracer::TileResult indexed{result.tile, tileIndex[static_cast<size_t>(result.index)],
-                                         result.rgb};
+                                         result.channels, result.pixels};
         if (log) log->addTile(job.frame, indexed);
         deliver(indexed);
     };

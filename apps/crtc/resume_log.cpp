@@ -20,7 +20,7 @@ namespace {
 constexpr char kMagic[8] = {'C', 'R', 'T', 'R', 'S', 'M', '1', '\0'};
 enum RecordKind : uint8_t { kFrameBegun = 1, kTile = 2, kFrameDone = 3 };
 /// No tile holds more floats than this (a 4096 × 4096 tile): a larger count is a damaged log.
-constexpr uint64_t kMaxTileFloats = uint64_t{4096} * 4096 * 3;
+constexpr uint64_t kMaxTileFloats = uint64_t{4096} * 4096 * 4;
 
 struct RecordHeader {
     uint8_t kind;
@@ -130,7 +130,7 @@ void ResumeLog::beginFrame(int frame, uint64_t sceneHash) {
 }
 
 void ResumeLog::addTile(int frame, const tracer::TileResult& tile) {
-    record(kTile, frame, static_cast<uint64_t>(tile.index), tile.rgb.data(), tile.rgb.size());
+    record(kTile, frame, static_cast<uint64_t>(tile.index), tile.pixels.data(), tile.pixels.size());
     flushSoon();
 }
 

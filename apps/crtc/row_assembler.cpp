@@ -5,17 +5,19 @@
 
 namespace crt::crtc {
 
-RowAssembler::RowAssembler(int width, int height, Emit emit)
-    : width_(width), emit_(std::move(emit)), pixelsLeft_(static_cast<size_t>(height), width) {}
+RowAssembler::RowAssembler(int width, int height, int channels, Emit emit)
+    : width_(width), channels_(channels), emit_(std::move(emit)),
+      pixelsLeft_(static_cast<size_t>(height), width) {}
 
 void RowAssembler::add(const tracer::TileResult& result) {
     const tracer::Tile& tile = result.tile;
-    const size_t tileRowValues = static_cast<size_t>(tile.width()) * 3;
+    const size_t channels = static_cast<size_t>(channels_);
+    const size_t tileRowValues = static_cast<size_t>(tile.width()) * channels;
     for (int y = tile.y0; y < tile.y1; ++y) {
         std::vector<float>& row = pending_[y];
-        if (row.empty()) row.resize(static_cast<size_t>(width_) * 3);
-        std::copy_n(result.rgb.data() + static_cast<size_t>(y - tile.y0) * tileRowValues,
-                    tileRowValues, row.data() + static_cast<size_t>(tile.x0) * 3);
+        if (row.empty()) row.resize(static_cast<size_t>(width_) * channels);
+        std::copy_n(result.pixels.data() + static_cast<size_t>(y - tile.y0) * tileRowValues,
+                    tileRowValues, row.data() + static_cast<size_t>(tile.x0) * channels);
         pixelsLeft_[static_cast<size_t>(y)] -= tile.width();
     }
     emitFinished();

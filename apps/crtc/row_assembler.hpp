@@ -13,10 +13,12 @@ namespace crt::crtc {
 
 class RowAssembler {
 public:
-    /// Receives rows [yBegin, yEnd), RGB floats row-major, each row once, in order from the top.
-    using Emit = std::function<void(int yBegin, int yEnd, std::span<const float> rgb)>;
+    /// Receives rows [yBegin, yEnd), the tiles' floats row-major, each row once, in order from
+    /// the top.
+    using Emit = std::function<void(int yBegin, int yEnd, std::span<const float> pixels)>;
 
-    RowAssembler(int width, int height, Emit emit);
+    /// Tiles of `channels` floats a pixel.
+    RowAssembler(int width, int height, int channels, Emit emit);
 
     /// Takes a finished tile (tiles must not overlap); emits the rows it completes, with those
     /// below them that were waiting. Holds only the rows not yet emitted.
@@ -26,6 +28,7 @@ private:
     void emitFinished();
 
     int width_;
+    int channels_;
     Emit emit_;
     std::vector<int> pixelsLeft_;               ///< per row of the image
     std::map<int, std::vector<float>> pending_; ///< rows begun but not emitted

@@ -5,18 +5,19 @@ namespace crt::crtc {
 
 namespace image_io = tracer::image_io;
 
-StreamedOutput::StreamedOutput(std::string path, int width, int height, image_io::WriteOptions options,
-                               std::atomic<bool>& failed)
-    : path_(std::move(path)), width_(width), height_(height), options_(options), failed_(failed),
-      writer_([this] { write(); }) {}
+StreamedOutput::StreamedOutput(std::string path, int width, int height, int channels,
+                               image_io::WriteOptions options, std::atomic<bool>& failed)
+    : path_(std::move(path)), width_(width), height_(height), channels_(channels),
+      options_(options), failed_(failed), writer_([this] { write(); }) {}
 
 StreamedOutput::~StreamedOutput() {
     stopWriter();
     // stream_, if unfinished, removes its temporary file as it goes.
 }
 
-void StreamedOutput::addRows(int yBegin, int yEnd, std::span<const float> rgb) {
-    Band band{yBegin, yEnd, std::vector<float>(rgb.begin(), rgb.end())};
+void StreamedOutput::addRows(int yBegin, int yEnd, std::span<const float> pixels) {
+    Band band{yBegin, yEnd, std::vector<float>(pixels.begin(), pixels.end())};
+    if (channels_ == 4) image_io::straightenAlpha(band.pixels); // files take straight alpha
     {
         std::lock_guard<std::mutex> lock(mutex_);
         bands_.push_back(std::move(band));
@@ -42,11 +43,11 @@ void StreamedOutput::write() {
             // file behind.
             opened = true;
             error.clear();
-            stream = image_io::ImageStream::open(path_, width_, height_, 3, options_, error);
+            stream = image_io::ImageStream::open(path_, width_, height_, channels_, options_, error);
             if (!stream) failed_ = true;
         }
         // After a failure the remaining rows are only drained: the error is reported once.
-        if (stream && !stream->writeRows(band.yBegin, band.yEnd, band.rgb, error)) {
+        if (stream && !stream->writeRows(band.yBegin, band.yEnd, band.pixels, error)) {
             stream.reset();
             failed_ = true;
         }

@@ -21,30 +21,31 @@ class StreamedOutput {
 public:
     /// Starts the writer thread, which opens `path` when the first rows arrive. If opening or
     /// writing fails, `failed` is set, so that the render can stop: its image has nowhere to go.
-    StreamedOutput(std::string path, int width, int height, tracer::image_io::WriteOptions options,
-                   std::atomic<bool>& failed);
+    /// `channels`: 3 (RGB), or 4 (RGB and alpha, premultiplied as the renderer makes it).
+    StreamedOutput(std::string path, int width, int height, int channels,
+                   tracer::image_io::WriteOptions options, std::atomic<bool>& failed);
     /// Destroying an unfinished output (an interrupted or failed render) leaves no file.
     ~StreamedOutput();
     StreamedOutput(const StreamedOutput&) = delete;
     StreamedOutput& operator=(const StreamedOutput&) = delete;
 
-    /// Hands over rows [yBegin, yEnd) (RGB floats), the next ones from the top; a copy is
-    /// queued, so this returns at once (it runs on a render worker).
-    void addRows(int yBegin, int yEnd, std::span<const float> rgb);
+    /// Hands over rows [yBegin, yEnd) (`channels` floats a pixel), the next ones from the top;
+    /// a copy is queued, so this returns at once (it runs on a render worker).
+    void addRows(int yBegin, int yEnd, std::span<const float> pixels);
     /// After the last rows: waits for the writer, then completes and renames the file.
     bool finish(std::string& error);
 
 private:
     struct Band {
         int yBegin, yEnd;
-        std::vector<float> rgb;
+        std::vector<float> pixels;
     };
 
     void write();
     void stopWriter();
 
     std::string path_;
-    int width_, height_;
+    int width_, height_, channels_;
     tracer::image_io::WriteOptions options_;
     std::atomic<bool>& failed_;
     std::unique_ptr<tracer::image_io::ImageStream> stream_;

@@ -24,9 +24,9 @@ using test::TestRay;
 
 /// The 8-bit codes an output file would hold (gamma 1).
 inline std::vector<int> quantised(const PixelBuffer& image) {
-    std::vector<int> codes(image.rgb.size());
+    std::vector<int> codes(image.pixels.size());
     for (size_t i = 0; i < codes.size(); ++i) {
-        double v = std::clamp(static_cast<double>(image.rgb[i]), 0.0, 1.0);
+        double v = std::clamp(static_cast<double>(image.pixels[i]), 0.0, 1.0);
         codes[i] = static_cast<int>(std::floor(255 * v + 0.5));
     }
     return codes;

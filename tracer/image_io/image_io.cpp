@@ -23,19 +23,31 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// How a format stores a fourth channel.
+enum class AlphaStorage : std::uint8_t {
+    None,          ///< not at all
+    Straight,      ///< as given: PNG's and TIFF's unassociated alpha
+    Premultiplied, ///< the color multiplied by it: OpenEXR's convention
+};
+
 struct OutputFormat {
     const char* extension;
     const char* oiioName;
     bool eightBit;
     bool needsRgb; ///< the format stores no single-channel images
     bool builtin;  ///< written by builtinPngWriter, without the module
+    AlphaStorage alpha;
 };
 
 constexpr OutputFormat kOutputFormats[] = {
-    {".png", "png", true, false, true},    {".jpg", "jpeg", true, false, false},
-    {".jpeg", "jpeg", true, false, false}, {".tif", "tiff", true, false, false},
-    {".tiff", "tiff", true, false, false}, {".exr", "openexr", false, false, false},
-    {".hdr", "hdr", false, true, false},   {".gif", "gif", true, true, false},
+    {".png", "png", true, false, true, AlphaStorage::Straight},
+    {".jpg", "jpeg", true, false, false, AlphaStorage::None},
+    {".jpeg", "jpeg", true, false, false, AlphaStorage::None},
+    {".tif", "tiff", true, false, false, AlphaStorage::Straight},
+    {".tiff", "tiff", true, false, false, AlphaStorage::Straight},
+    {".exr", "openexr", false, false, false, AlphaStorage::Premultiplied},
+    {".hdr", "hdr", false, true, false, AlphaStorage::None},
+    {".gif", "gif", true, true, false, AlphaStorage::None},
 };
 
 std::string lowerExtension(const std::string& path) {
@@ -228,6 +240,19 @@ bool isSupportedOutput(const std::string& path) {
     return outputFormatOf(path) != nullptr;
 }
 
+bool storesAlpha(const std::string& path) {
+    const OutputFormat* format = outputFormatOf(path);
+    return format && format->alpha != AlphaStorage::None;
+}
+
+void straightenAlpha(std::span<float> rgba) {
+    for (std::size_t i = 0; i + 3 < rgba.size(); i += 4) {
+        const float alpha = rgba[i + 3];
+        if (alpha <= 0) continue; // nothing covers the pixel: its color is black, and stays so
+        for (std::size_t c = 0; c < 3; ++c) rgba[i + c] /= alpha;
+    }
+}
+
 std::optional<ImageBuffer> readImage(const std::string& path, std::string& error, bool* eightBit) {
     std::error_code ec;
     if (!fs::exists(path, ec)) {
@@ -262,6 +287,10 @@ std::unique_ptr<ImageStream> ImageStream::open(const std::string& path, int widt
         error = "cannot write " + quotedName(path) + ": " + problem;
         return nullptr;
     }
+    if (channels == 4 && format->alpha == AlphaStorage::None) {
+        error = "cannot write " + quotedName(path) + ": the format has no alpha channel";
+        return nullptr;
+    }
     if (!checkTarget(path, error)) return nullptr;
     const CrtImageIoModule* module = format->builtin
                                          ? &builtinPngWriter()
@@ -281,6 +310,7 @@ std::unique_ptr<ImageStream> ImageStream::open(const std::string& path, int widt
     stream->channels_ = channels;
     stream->expandGrey_ = format->needsRgb && channels == 1;
     stream->eightBit_ = format->eightBit;
+    stream->premultiply_ = channels == 4 && format->alpha == AlphaStorage::Premultiplied;
     stream->options_ = options;
     CallContext context;
     stream->handle_ = module->openImage(
@@ -306,8 +336,14 @@ bool ImageStream::writeRows(int yBegin, int yEnd, std::span<const float> values,
         return false;
     }
     const int fileChannels = expandGrey_ ? 3 : channels_;
-    std::vector<float> expanded = expandGrey_ ? expandGrey(values) : std::vector<float>{};
-    const std::span<const float> stored = expandGrey_ ? expanded : values;
+    std::vector<float> converted;
+    if (expandGrey_) converted = expandGrey(values);
+    if (premultiply_) {
+        converted.assign(values.begin(), values.end());
+        for (std::size_t i = 0; i + 3 < converted.size(); i += 4)
+            for (std::size_t c = 0; c < 3; ++c) converted[i + c] *= converted[i + 3];
+    }
+    const std::span<const float> stored = expandGrey_ || premultiply_ ? converted : values;
     std::vector<std::uint8_t> codes;
     if (eightBit_) codes = quantiseColor(stored, fileChannels, options_);
     const void* pixels = eightBit_ ? static_cast<const void*>(codes.data())

@@ -56,7 +56,8 @@ std::optional<ImageBuffer> readImage(const std::string& path, std::string& error
 /// 8-bit formats store ⌊255 · clamp(c, 0, 1)^(1/gamma) + ½⌋ per channel, or the sRGB encoding
 /// when `options.srgb`; EXR and HDR store the linear values unclamped. `image.channels` may be
 /// 1, 3 or 4 where the format allows it; a fourth channel is straight (not premultiplied) alpha,
-/// quantised without the gamma. The image goes to a temporary file in the same
+/// quantised without the gamma (OpenEXR, whose convention is premultiplied alpha, gets the
+/// color multiplied by it). The image goes to a temporary file in the same
 /// directory (temporary_file.hpp: a random name, created exclusively) that is renamed into
 /// place once it is complete: flushed to the disk, not empty, and, when OpenImageIO wrote it,
 /// read back with the expected size. So a failed or interrupted write never leaves a partial
@@ -94,6 +95,7 @@ class ImageStream {
     std::unique_ptr<TemporaryFile> temporary_;
     int width_ = 0, height_ = 0, channels_ = 3;
     bool expandGrey_ = false, eightBit_ = true;
+    bool premultiply_ = false; ///< OpenEXR: the color is stored multiplied by alpha
     WriteOptions options_;
     int nextRow_ = 0;
 };
@@ -138,6 +140,12 @@ bool copyImage(const std::string& from, const std::string& to, std::string& erro
 
 /// Whether the extension names a format writeImage supports.
 bool isSupportedOutput(const std::string& path);
+/// Whether that format keeps a fourth channel, alpha (PNG, TIFF, OpenEXR); writing four
+/// channels to another format is an error.
+bool storesAlpha(const std::string& path);
+/// Turns premultiplied RGBA (as a renderer's coverage makes it) into the straight alpha the
+/// writers take: the color divided by alpha where alpha is above 0.
+void straightenAlpha(std::span<float> rgba);
 
 /// What a file's header says, as OpenImageIO reads it.
 struct ImageInfo {

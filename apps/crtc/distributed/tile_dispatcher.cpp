@@ -42,7 +42,8 @@ void TileDispatcher::serveWorkers(const tracer::RenderJob& job,
                                   const std::atomic<bool>& localFinished) {
     const int workers = session_.size() - 1;
     int workersDone = 0;
-    std::vector<float> rgb;
+    std::vector<float> pixels;
+    const int channels = job.alpha ? 4 : 3;
     while (!localFinished.load() || workersDone < workers) {
         // Ctrl-C, or mpirun ending the job: no waiting for ranks that may be gone.
         if (job.cancel && job.cancel->load()) {
@@ -62,8 +63,9 @@ void TileDispatcher::serveWorkers(const tracer::RenderJob& job,
             session_.send(source, kTilesTag, tiles.data(), tiles.size() * sizeof(int));
         } else if (tag == kResultTag) {
             int index = 0;
-            if (decodeTile(message, job.tiles, rgb, index))
-                deliver(job, tracer::TileResult{job.tiles[static_cast<size_t>(index)], index, rgb});
+            if (decodeTile(message, job.tiles, channels, pixels, index))
+                deliver(job, tracer::TileResult{job.tiles[static_cast<size_t>(index)], index,
+                                                channels, pixels});
             else
                 fail(fmt::format("{} sent a tile that is not one of the frame's",
                                  session_.describe(source)));

@@ -1,4 +1,4 @@
-// A finished tile as a worker sends it to rank 0: its index in the job, then its RGB floats.
+// A finished tile as a worker sends it to rank 0: its index in the job, then its floats.
 #pragma once
 
 #include "tracer/renderer.hpp"
@@ -10,23 +10,24 @@
 namespace crt::crtc::distributed {
 
 inline std::vector<char> encodeTile(const tracer::TileResult& result) {
-    std::vector<char> message(sizeof(int) + result.rgb.size_bytes());
+    std::vector<char> message(sizeof(int) + result.pixels.size_bytes());
     std::memcpy(message.data(), &result.index, sizeof(int));
-    std::memcpy(message.data() + sizeof(int), result.rgb.data(), result.rgb.size_bytes());
+    std::memcpy(message.data() + sizeof(int), result.pixels.data(), result.pixels.size_bytes());
     return message;
 }
 
-/// The tile of `tiles` a message carries, or false for a message that is not one of them.
+/// The tile of `tiles` a message carries with `channels` floats a pixel, or false for a message
+/// that is not one of them.
 inline bool decodeTile(const std::vector<char>& message, const std::vector<tracer::Tile>& tiles,
-                       std::vector<float>& rgb, int& index) {
+                       int channels, std::vector<float>& pixels, int& index) {
     if (message.size() < sizeof(int)) return false;
     std::memcpy(&index, message.data(), sizeof(int));
     if (index < 0 || index >= static_cast<int>(tiles.size())) return false;
     const tracer::Tile& tile = tiles[static_cast<size_t>(index)];
-    const size_t values = static_cast<size_t>(tile.width()) * tile.height() * 3;
+    const size_t values = static_cast<size_t>(tile.width()) * tile.height() * channels;
     if (message.size() != sizeof(int) + values * sizeof(float)) return false;
-    rgb.resize(values);
-    std::memcpy(rgb.data(), message.data() + sizeof(int), values * sizeof(float));
+    pixels.resize(values);
+    std::memcpy(pixels.data(), message.data() + sizeof(int), values * sizeof(float));
     return true;
 }
 

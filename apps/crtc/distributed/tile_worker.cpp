@@ -150,6 +150,7 @@ void TileWorker::render(const scene::SceneDesc* scene, const std::vector<tracer:
         tracer::RenderJob job;
         job.tiles = tiles;
         job.threads = options_.threads;
+        job.alpha = options_.alpha;
         job.nextTile = [this] { return nextTile(); };
         job.onTileDone = [this](const tracer::TileResult& result) { finished(result); };
         try {

@@ -295,7 +295,7 @@ bool Session::renderPass(const scene::SceneDesc& base, const RenderPass& pass, i
     image->passes = count;
     image->final = final;
     image->png = encodePng(width, height,
-                           tracer::image_io::quantise8(pixels.rgb, scene.settings.gamma, scene.settings.srgb));
+                           tracer::image_io::quantise8(pixels.pixels, scene.settings.gamma, scene.settings.srgb));
     const double took = std::chrono::duration<double>(Clock::now() - start).count();
     if (seconds) *seconds = took;
     ViewQuality quality;

@@ -102,7 +102,7 @@ inline PixelBuffer renderOk(const scene::SceneDesc& desc, int threads = 0) {
 }
 
 inline DVec3 pixelAt(const PixelBuffer& image, int x, int y) {
-    const float* p = &image.rgb[3 * (static_cast<size_t>(y) * image.width + x)];
+    const float* p = &image.pixels[3 * (static_cast<size_t>(y) * image.width + x)];
     return {p[0], p[1], p[2]};
 }
 

@@ -69,18 +69,18 @@ TEST_CASE("Depth of field, area light and glossy reflection render bit-identical
         INFO("threads " << threads);
         PixelBuffer again = renderOk(desc, threads);
         // Float vectors compare element by element; a NaN would fail too, as it should.
-        CHECK(again.rgb == reference.rgb);
+        CHECK(again.pixels == reference.pixels);
     }
     // The stochastic features are really in play: a pinhole render of the same scene differs.
     desc.settings.dofSamples = 1;
-    CHECK(renderOk(desc, 2).rgb != reference.rgb);
+    CHECK(renderOk(desc, 2).pixels != reference.pixels);
 }
 
 TEST_CASE("Changing the seed changes the stochastic samples", "[render][determinism]") {
     scene::SceneDesc desc = stochasticScene();
     PixelBuffer a = renderOk(desc, 2);
     desc.settings.seed = 8;
-    CHECK(renderOk(desc, 2).rgb != a.rgb);
+    CHECK(renderOk(desc, 2).pixels != a.pixels);
 }
 
 TEST_CASE("Any set of tiles renders the same pixels as the whole image", "[render][determinism]") {
@@ -105,12 +105,12 @@ TEST_CASE("Any set of tiles renders the same pixels as the whole image", "[rende
         job.onTileDone = [&](const TileResult& r) {
             ++seen[static_cast<size_t>(r.index)];
             matches = matches && r.tile == region[static_cast<size_t>(r.index)] &&
-                      r.rgb.size() == static_cast<size_t>(r.tile.width() * r.tile.height() * 3);
+                      r.pixels.size() == static_cast<size_t>(r.tile.width() * r.tile.height() * 3);
             for (int y = r.tile.y0; y < r.tile.y1 && matches; ++y)
                 for (int x = r.tile.x0; x < r.tile.x1; ++x)
                     for (int c = 0; c < 3; ++c) {
                         const size_t at = static_cast<size_t>((y - r.tile.y0) * r.tile.width() + x - r.tile.x0) * 3 + c;
-                        matches = matches && r.rgb[at] == whole.rgb[(static_cast<size_t>(y) * 53 + x) * 3 + c];
+                        matches = matches && r.pixels[at] == whole.pixels[(static_cast<size_t>(y) * 53 + x) * 3 + c];
                     }
         };
         RenderOutcome outcome = render(desc, job);
@@ -128,7 +128,7 @@ TEST_CASE("A sample budget replaces the scene's anti-aliasing", "[render]") {
     const PixelBuffer fine = renderOk(desc, 2);
     desc.settings.supersampling = 1;
     const PixelBuffer single = renderOk(desc, 2);
-    REQUIRE(fine.rgb != single.rgb);
+    REQUIRE(fine.pixels != single.pixels);
     desc.settings.supersampling = 2;
     desc.settings.antialias = scene::Antialias::Adaptive;
     RenderJob job;
@@ -138,7 +138,7 @@ TEST_CASE("A sample budget replaces the scene's anti-aliasing", "[render]") {
     RenderOutcome outcome = render(desc, job);
     REQUIRE(outcome.ok);
     CHECK(outcome.samples == 1);
-    CHECK(budgeted.rgb == single.rgb);
+    CHECK(budgeted.pixels == single.pixels);
 }
 
 TEST_CASE("A cancelled render starts no further tile", "[render]") {

@@ -60,10 +60,10 @@ double blockError(const PixelBuffer& image, const PixelBuffer& reference, int bl
 TEST_CASE("stratified anti-aliasing is deterministic for any thread count", "[render][aa]") {
     scene::SceneDesc desc = withSampling(checkerFloor(), scene::Antialias::Stratified, 3);
     PixelBuffer one = renderOk(desc, 1);
-    CHECK(renderOk(desc, 4).rgb == one.rgb);
-    CHECK(renderOk(desc, 2).rgb == one.rgb);
+    CHECK(renderOk(desc, 4).pixels == one.pixels);
+    CHECK(renderOk(desc, 2).pixels == one.pixels);
     desc.settings.seed = 7; // another seed places the samples elsewhere
-    CHECK(renderOk(desc, 2).rgb != one.rgb);
+    CHECK(renderOk(desc, 2).pixels != one.pixels);
 }
 
 TEST_CASE("stratified anti-aliasing differs from the regular grid at edges only", "[render][aa]") {
@@ -71,7 +71,7 @@ TEST_CASE("stratified anti-aliasing differs from the regular grid at edges only"
     const PixelBuffer jittered =
         renderOk(withSampling(checkerFloor(), scene::Antialias::Stratified, 3));
     int differing = 0;
-    for (size_t i = 0; i < grid.rgb.size(); ++i) differing += grid.rgb[i] != jittered.rgb[i];
+    for (size_t i = 0; i < grid.pixels.size(); ++i) differing += grid.pixels[i] != jittered.pixels[i];
     CHECK(differing > 100);
     // Above the horizon every sample sees the flat background: the same mean exactly.
     for (int y = 0; y < 8; ++y)
@@ -93,7 +93,7 @@ TEST_CASE("stratified anti-aliasing of a flat emissive wall equals the grid's", 
         INFO("supersampling " << n);
         PixelBuffer grid = renderOk(withSampling(m.desc, scene::Antialias::Grid, n));
         PixelBuffer jittered = renderOk(withSampling(m.desc, scene::Antialias::Stratified, n));
-        CHECK(jittered.rgb == grid.rgb);
+        CHECK(jittered.pixels == grid.pixels);
     }
 }
 
