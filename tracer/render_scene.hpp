@@ -50,8 +50,11 @@ struct CsgRay {
     const BoxRay& boxRay;
     /// Crossings closer than this (in ray units) are one event: coincident faces of two
     /// operands, computed through different transforms, differ by rounding only, and treating
-    /// them apart would leave slivers ("speckles") of the face that should vanish.
-    double coincidence(double t) const { return 1e-9 * (std::abs(t) + lineScale); }
+    /// them apart would leave slivers ("speckles") of the face that should vanish. Rounding
+    /// grows with the line's scale (|t| and the origin's distance), a few ulps each; the
+    /// window is thousands of ulps of it, yet still far below any solid a scene means: a pane
+    /// 2e-4 thick a million units from the origin keeps both faces.
+    double coincidence(double t) const { return 1e-12 * (std::abs(t) + lineScale); }
     double lineScale; ///< max |origin component| / max |direction component|
 
     CsgRay(const Ray& r, const BoxRay& b);
