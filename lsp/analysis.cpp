@@ -31,6 +31,9 @@ std::string findInclude(const std::string& name, const std::string& folder,
 EvalOptions evalOptions(const AnalysisOptions& options) {
     EvalOptions eval;
     eval.limits = options.limits;
+    // The front end's stack holds at most this many nested calls: a larger setting, from the
+    // command line or the client, means "as deep as it goes" (crtc refuses it instead).
+    eval.limits.maxDepth = std::min(eval.limits.maxDepth, Limits::kMaxSupportedDepth);
     eval.includes = options.includes;
     eval.assetRoots = options.assetRoots;
     eval.access = options.access;

@@ -324,8 +324,6 @@ void Server::readInitializationOptions(const json& params) {
     readCount(init, "maxEntities", analysis.limits.maxEntities);
     readCount(init, "maxMeshSize", analysis.limits.maxMeshSize);
     readCount(init, "maxDepth", analysis.limits.maxDepth);
-    // The front end's stack holds at most this many nested calls (crtc's --max-depth limit).
-    analysis.limits.maxDepth = std::min<uint32_t>(analysis.limits.maxDepth, lang::Limits::kMaxSupportedDepth);
     int64_t milliseconds = 0;
     readCount(init, "timeBudgetMs", milliseconds);
     if (milliseconds > 0) analysis.timeBudget = std::chrono::milliseconds(milliseconds);

@@ -41,8 +41,7 @@ bool evaluationOption(const std::string& arg, const std::function<std::string()>
     else if (arg == "--max-steps") limits.maxSteps = count<uint64_t>(arg, value());
     else if (arg == "--max-entities") limits.maxEntities = count<uint64_t>(arg, value());
     else if (arg == "--max-mesh-size") limits.maxMeshSize = count<uint64_t>(arg, value());
-    else if (arg == "--max-depth")
-        limits.maxDepth = std::min(count<uint32_t>(arg, value()), crt::lang::Limits::kMaxSupportedDepth);
+    else if (arg == "--max-depth") limits.maxDepth = count<uint32_t>(arg, value());
     else return false;
     return true;
 }
