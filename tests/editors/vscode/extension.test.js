@@ -80,6 +80,12 @@ test("registers every command and the task type the manifest declares", async (t
   );
 });
 
+test("a workspace whose tasks.json runs a crt task activates the extension", () => {
+  // Languages and commands activate it by themselves; a task type needs its event.
+  for (const { type } of manifest.contributes.taskDefinitions)
+    assert.ok(manifest.activationEvents.includes(`onTaskType:${type}`), `onTaskType:${type}`);
+});
+
 test("every server setting in the manifest is passed, under its server name", (t) => {
   const stub = install({});
   t.after(stub.restore);
