@@ -211,8 +211,9 @@ private:
     void recordSettingsLinks(const ObjectBuilder& b);
     /// The image or mesh file an attribute names, found on disk (unless checkFiles is off).
     std::string findFile(const ObjectBuilder& b, std::string_view attribute, std::string_view what);
-    /// The mesh at `path` (found by findFile), read and checked once per evaluation (mesh_reading.cpp).
-    std::shared_ptr<const scene::MeshData> readMesh(const ObjectBuilder& b, const std::string& path);
+    /// Reads and checks the mesh at `path` (found by findFile) into the scene, once per
+    /// evaluation (mesh_reading.cpp).
+    void readMesh(const ObjectBuilder& b, const std::string& path);
     /// What the script may read, made from the options when first needed.
     const FileAccess& fileAccess();
     int32_t defaultMaterial();
@@ -276,7 +277,6 @@ private:
     std::vector<EntityInfo> entityInfo_;
     uint64_t drawnCount_ = 0;     ///< entities drawn so far, group members counted
     std::vector<bool> reachable_; ///< per entity: drawn, or part of something drawn
-    std::map<std::string, std::shared_ptr<const scene::MeshData>> meshes_; ///< by path
     std::set<std::tuple<WarningKind, uint32_t, uint32_t>> warnedOnce_;
     std::vector<scene::LightDesc> lights_;
     std::vector<LightInfo> lightInfo_;

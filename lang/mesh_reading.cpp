@@ -10,9 +10,8 @@
 
 namespace crt::lang {
 
-std::shared_ptr<const scene::MeshData> Interpreter::readMesh(const ObjectBuilder& b,
-                                                             const std::string& path) {
-    if (auto known = meshes_.find(path); known != meshes_.end()) return known->second;
+void Interpreter::readMesh(const ObjectBuilder& b, const std::string& path) {
+    if (scene_.meshes.contains(path)) return;
     const SourceRange where = b.where("file");
     std::error_code error;
     const uintmax_t fileSize = std::filesystem::file_size(path, error);
@@ -35,9 +34,7 @@ std::shared_ptr<const scene::MeshData> Interpreter::readMesh(const ObjectBuilder
         throw EvalError{};
     }
     charge(mesh->byteSize());
-    auto shared = std::make_shared<const scene::MeshData>(std::move(*mesh));
-    meshes_.emplace(path, shared);
-    return shared;
+    scene_.meshes.emplace(path, std::make_shared<const scene::MeshData>(std::move(*mesh)));
 }
 
 } // namespace crt::lang

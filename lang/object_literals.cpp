@@ -369,7 +369,7 @@ scene::Shape Interpreter::surfaceShape(ObjectBuilder& b) {
         scene::MeshShape s;
         s.resolvedFile = findFile(b, "file", "mesh");
         s.file = b.text("file", s.file);
-        if (!s.resolvedFile.empty()) s.data = readMesh(b, s.resolvedFile);
+        if (!s.resolvedFile.empty()) readMesh(b, s.resolvedFile);
         return s;
     }
     }

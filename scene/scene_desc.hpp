@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -106,9 +107,6 @@ struct TriangleShape { glm::dvec3 a{0.0}; glm::dvec3 b{0.0}; glm::dvec3 c{0.0}; 
 struct MeshShape {
     std::string file;         ///< as written in the script
     std::string resolvedFile; ///< the path found on disk, or "" if not found
-    /// The mesh as the front end read it (the renderer draws what was checked); null: the
-    /// renderer reads the file.
-    std::shared_ptr<const MeshData> data = nullptr;
 };
 
 enum class CsgOp : uint8_t { Union, Difference, Intersection };
@@ -242,6 +240,10 @@ struct SceneDesc {
     std::vector<TextureDesc> textures;
     std::vector<EntityDesc> entities;
     std::vector<int32_t> drawn; ///< roots: entities drawn by Scene blocks, in order
+    /// The meshes the front end read, by MeshShape::resolvedFile: the renderer draws what was
+    /// checked, and reads the file of a mesh not here (a description built otherwise). Kept
+    /// beside the entities, not in them, so that every entity stays as small as it was.
+    std::map<std::string, std::shared_ptr<const MeshData>> meshes;
     double time = 0;            ///< t of this evaluation
     int frame = 0;
     int frameCount = 1;

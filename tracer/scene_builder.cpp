@@ -83,17 +83,16 @@ private:
 
     bool addMesh(const scene::MeshShape& mesh, int32_t entity, const Transform& toWorld) {
         const scene::EntityDesc& e = desc_.entities[entity];
-        std::shared_ptr<const MeshData> data = mesh.data;
-        if (!data) {
-            const std::string& path = scene::fileToOpen(mesh.resolvedFile, mesh.file);
-            auto cached = meshes_.find(path);
-            if (cached == meshes_.end()) {
-                std::optional<MeshData> read = scene::readObj(path, scene::kDefaultMaxMeshSize, error_);
-                if (!read) return false;
-                cached = meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*read))).first;
-            }
-            data = cached->second;
+        // The front end read the script's meshes; a description built otherwise names files.
+        const std::string& path = scene::fileToOpen(mesh.resolvedFile, mesh.file);
+        const auto& known = desc_.meshes.contains(path) ? desc_.meshes : meshes_;
+        auto cached = known.find(path);
+        if (cached == known.end()) {
+            std::optional<MeshData> read = scene::readObj(path, scene::kDefaultMaxMeshSize, error_);
+            if (!read) return false;
+            cached = meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*read))).first;
         }
+        const std::shared_ptr<const MeshData>& data = cached->second;
         int32_t transform = addTransform(toWorld);
         for (size_t i = 0; i < data->triangles.size(); ++i) {
             scene_.primitives.push_back({MeshTriangleGeometry(data, i), transform, materialOf(e)});
