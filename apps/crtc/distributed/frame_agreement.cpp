@@ -13,28 +13,6 @@ namespace crt::crtc::distributed {
 
 namespace {
 
-/// Whether the tests asked this rank to fail (kTestFailRankVariable names it).
-bool failureRequested(const MpiSession& session) {
-    const char* rank = std::getenv(kTestFailRankVariable);
-    return rank && std::to_string(session.rank()) == rank;
-}
-
-/// Evaluates the frame on this rank; false, with the reason in `why`, if it fails.
-bool evaluateHere(const MpiSession& session, const CompileFrame& compileFrame, int frame,
-                  lang::Compilation& c, std::string& why) {
-    if (failureRequested(session)) {
-        why = fmt::format("crtc: evaluation failed on purpose ({}={})\n", kTestFailRankVariable,
-                          session.rank());
-        return false;
-    }
-    try {
-        if (compileFrame(frame, c) && c.scene) return true;
-    } catch (const std::exception& e) {
-        why = fmt::format("crtc: {}\n", e.what());
-    }
-    return false;
-}
-
 /// On rank 0: receives the messages of the `failures` other ranks that could not evaluate, and
 /// prints them if rank 0 evaluated the frame (else they repeat, as a rule, what it printed).
 void reportFailures(MpiSession& session, int frame, uint64_t failures, bool print) {
@@ -49,14 +27,28 @@ void reportFailures(MpiSession& session, int frame, uint64_t failures, bool prin
 
 } // namespace
 
+bool evaluateOnThisRank(int rank, const CompileFrame& compileFrame, int frame,
+                        lang::Compilation& c, std::string& why) {
+    const char* failing = std::getenv(kTestFailRankVariable);
+    if (failing && std::to_string(rank) == failing) {
+        why = fmt::format("crtc: evaluation failed on purpose ({}={})\n", kTestFailRankVariable, rank);
+        return false;
+    }
+    try {
+        if (compileFrame(frame, c) && c.scene) return true;
+    } catch (const std::exception& e) {
+        why = fmt::format("crtc: {}\n", e.what());
+    }
+    return false;
+}
+
 bool evaluateOnEveryRank(MpiSession& session, const Options& options,
                          const CompileFrame& compileFrame, int frame, lang::Compilation& c,
-                         std::ostringstream* captured) {
+                         CapturedErrors* captured) {
     std::string why;
-    const bool ok = evaluateHere(session, compileFrame, frame, c, why);
+    const bool ok = evaluateOnThisRank(session.rank(), compileFrame, frame, c, why);
     if (captured) {
-        why = captured->str() + why;
-        captured->str("");
+        why = captured->take() + why;
     } else if (!why.empty()) {
         std::cerr << why;
     }

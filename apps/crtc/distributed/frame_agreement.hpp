@@ -2,10 +2,10 @@
 // check that they built the same one before any of them renders it.
 #pragma once
 
+#include "captured_errors.hpp"
 #include "mpi_session.hpp"
 #include "render_command.hpp"
 
-#include <sstream>
 
 namespace crt::crtc::distributed {
 
@@ -16,7 +16,12 @@ namespace crt::crtc::distributed {
 /// that the ranks differ.
 bool evaluateOnEveryRank(MpiSession& session, const Options& options,
                          const CompileFrame& compileFrame, int frame, lang::Compilation& c,
-                         std::ostringstream* captured);
+                         CapturedErrors* captured);
+
+/// Evaluates `frame` into `c` on this process, rank `rank`; false, with the reason in `why` unless
+/// the diagnostics printed say it, if it fails (kTestFailRankVariable makes it fail).
+bool evaluateOnThisRank(int rank, const CompileFrame& compileFrame, int frame,
+                        lang::Compilation& c, std::string& why);
 
 /// The environment variable that makes one rank's evaluation fail, for crtc's tests.
 inline constexpr const char* kTestFailRankVariable = "CRT_TEST_FAIL_RANK";

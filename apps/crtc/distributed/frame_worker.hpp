@@ -1,0 +1,41 @@
+// A rank's side of an animation shared out by frames: it asks rank 0 for a frame, evaluates it,
+// tells rank 0 what it found, and traces it if rank 0 says so (frame_dispatcher.hpp has the
+// protocol). Every rank runs one, rank 0 on a thread beside its dispatcher.
+#pragma once
+
+#include "captured_errors.hpp"
+#include "frame_link.hpp"
+#include "render_command.hpp"
+
+
+namespace crt::crtc::distributed {
+
+class FrameWorker {
+  public:
+    /// `captured`: what this worker writes to standard error, sent to rank 0 with each frame's
+    /// facts, which prints it when the run reaches the frame.
+    FrameWorker(FrameLink& link, int rank, const Options& options, const CompileFrame& compileFrame,
+                CapturedErrors& captured)
+        : link_(link), rank_(rank), options_(options), compileFrame_(compileFrame),
+          captured_(captured) {}
+
+    /// Takes frames until rank 0 has no more.
+    void run();
+
+  private:
+    /// Waits for the dispatcher's message with `tag`; a cancel of a frame this worker has
+    /// finished meanwhile is dropped.
+    std::vector<char> await(Tag tag);
+    void work(int frame);
+    /// Traces `tiles` of the evaluated scene, sending each as it is finished, until done or
+    /// rank 0 cancels the frame.
+    void trace(int frame, const scene::SceneDesc& scene, const std::vector<tracer::Tile>& tiles);
+
+    FrameLink& link_;
+    const int rank_;
+    const Options& options_;
+    const CompileFrame& compileFrame_;
+    CapturedErrors& captured_;
+};
+
+} // namespace crt::crtc::distributed
