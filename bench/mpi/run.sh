@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # MPI benchmark: the speed-up of crtc under mpirun (2 processes of 1 thread) against crtc
 # alone with 1 thread, beside crtc alone with 2 threads, on the render benchmark's scenes
-# (bench/render/*.crt) and a 60-frame animation (demos/orbit.crt). Runs alternate the three
+# (bench/render/*.crt), a 60-frame animation (demos/orbit.crt) and a scene whose cost sits in one
+# corner, first or last in the tiles' order (bench/mpi/corner.crt). Runs alternate the three
 # ways, several times; prints median wall times and speed-ups as a Markdown table, and checks
 # that every image is the same bytes whichever way it was made. See bench/README.md.
 #
-# usage: bench/mpi/run.sh [--runs N] [--size WxH] [--frames N] [--args "OPTIONS"] [CRTC]
+# usage: bench/mpi/run.sh [--runs N] [--size WxH] [--frames N] [--args "OPTIONS"] [--only RE] [CRTC]
 #
 #   --runs N     timed runs of each way per workload; medians reported (default 3)
 #   --size WxH   the stills' size (default 1920x1080)
 #   --frames N   the animation's frames (default 60)
 #   --args OPTS  more crtc options for every render, e.g. "--supersampling 3" for longer ones
+#   --only RE    only the workloads whose name matches the extended regular expression RE
 #   CRTC         the crtc binary (default: $CRTC, else build/bin/crtc), built with MPI
 #
 # environment:
@@ -30,6 +32,7 @@ runs=3
 size=1920x1080
 frames=60
 extra=()
+only=
 crtc=
 while [[ $# -gt 0 ]]; do
     case $1 in
@@ -37,6 +40,7 @@ while [[ $# -gt 0 ]]; do
     --size) size=$2; shift 2 ;;
     --frames) frames=$2; shift 2 ;;
     --args) read -r -a extra <<<"$2"; shift 2 ;;
+    --only) only=$2; shift 2 ;;
     -h | --help) usage; exit 0 ;;
     -*) echo "$0: unknown option '$1'" >&2; usage >&2; exit 2 ;;
     *) crtc=$1; shift ;;
@@ -71,6 +75,7 @@ median() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 
 bench() {
     local name=$1 output=$2
     shift 2
+    [[ -z $only ]] || grep -qE -- "$only" <<<"$name" || return 0
     set -- "$@" "${extra[@]}"
     local alone=() ranks=() threads=() alone_r=() ranks_r=() threads_r=() t t_render
     for ((run = 1; run <= runs; run++)); do
@@ -103,5 +108,8 @@ for scene in "$root"/bench/render/*.crt; do
     bench "$name ${width}x${height}" "$name.png" "$scene" --width "$width" --height "$height"
 done
 bench "orbit, $frames frames" "orbit_%04d.png" "$root/demos/orbit.crt" --frames "$frames"
+# The same work either way: the costly corner's tiles handed out first, then last.
+bench "corner, costly tiles first" "corner_first.png" "$here/corner.crt" --time 0
+bench "corner, costly tiles last" "corner_last.png" "$here/corner.crt" --time 1
 echo
 echo "images and logs: $out$keep_hint"

@@ -224,21 +224,31 @@ failure() {
 #!/usr/bin/env bash
 mkdir -p "$work/rank\$OMPI_COMM_WORLD_RANK" && cd "$work/rank\$OMPI_COMM_WORLD_RANK"
 printf 'Settings { width -> 8 height -> 8 }\nScene { Sphere { center -> vec3(0, 0, 0) radius -> 0.%s } }\n' "\${OMPI_COMM_WORLD_RANK}5" >scene.crt
-exec "$crtc" scene.crt -o "$work/differ.png"
+exec "$crtc" scene.crt "\$@"
 SH
     chmod +x "$work/differ.sh"
-    expect_status 1 "different scenes" timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 "$work/differ.sh"
+    expect_status 1 "different scenes" timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 \
+        "$work/differ.sh" -o "$work/differ.png"
     expect_text "$work/err" "evaluated different scenes" "different scenes are reported"
     [ ! -e "$work/differ.png" ] || fail "an image was written from different scenes"
+    # An animation: the scripts are compared before any frame is handed out.
+    expect_status 1 "different scripts, an animation" timeout 120 mpirun --allow-run-as-root --oversubscribe \
+        -np 2 "$work/differ.sh" --frames 3 -o "$work/differ_%d.png"
+    expect_text "$work/err" "evaluated different scenes for the script" "different scripts are reported"
+    [ "$(grep -c "evaluated different scenes" "$work/err")" = 1 ] || fail "different scripts reported more than once"
+    ls "$work" | grep -q "^differ_" && fail "frames were written from different scripts: $(ls "$work")"
 }
 
-killed() {
-    # A render of a few seconds; once rank 0 reports progress, rank 1 is killed.
-    mpi 3 --threads 1 "$here/still.crt" --width 640 --height 480 --supersampling 4 \
-        -o "$work/out.png" >"$work/out" 2>"$work/err" &
+# kill_rank_1 OUTPUT crtc-arguments...: a render of a few seconds over 3 processes; once rank 0
+# reports progress, rank 1 is killed. The job must end with an error, without hanging,
+# leaving no image and no temporary file.
+kill_rank_1() {
+    local output=$1
+    shift
+    mpi 3 --threads 1 "$@" -o "$output" >"$work/out" 2>"$work/err" &
     local job=$! rank1=""
     for _ in $(seq 600); do
-        grep -q "crtc: [0-9]*%" "$work/err" 2>/dev/null && break
+        grep -q "crtc: .*[0-9]*%" "$work/err" 2>/dev/null && break
         sleep 0.1
     done
     for pid in $(pgrep -x crtc); do
@@ -254,8 +264,14 @@ killed() {
     [ "$status" != 0 ] || fail "the job succeeded although rank 1 was killed"
     [ "$status" != 124 ] || fail "the job hung after rank 1 was killed"
     expect_text "$work/err" "rank 1 .*exited on signal 9" "mpirun names the killed rank"
-    [ ! -e "$work/out.png" ] || fail "an image was written although rank 1 was killed"
+    [ ! -e "$output" ] || fail "an image was written although rank 1 was killed"
     ls -A "$work" | grep -q "\.tmp$" && fail "a temporary file was left: $(ls -A "$work")"
+}
+
+killed() {
+    kill_rank_1 "$work/out.png" "$here/still.crt" --width 640 --height 480 --supersampling 4
+    # An animation shared by frames, written as a GIF at the end.
+    kill_rank_1 "$work/out.gif" "$here/moving.crt" --frames 9 --width 320 --height 240 --supersampling 4
 }
 
 "$case_name"

@@ -54,6 +54,11 @@ int renderFramesOnRankZero(MpiSession& session, const Options& options,
                            const CompileFrame& compileFrame) {
     Command command{Command::ServeFrames, 0, 0, 0};
     session.broadcast(command);
+    if (!sameScriptOnEveryRank(session, options)) {
+        Command stop{Command::Stop, 0, 0, 1};
+        session.broadcast(stop);
+        return 1;
+    }
     stopWhenMpirunEndsTheJob();
     FrameDispatcher dispatcher(session, options);
     // The worker's diagnostics are printed with its frame, when the run reaches it: not those

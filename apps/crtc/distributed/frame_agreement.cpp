@@ -7,6 +7,8 @@
 
 #include <cstdlib>
 #include <exception>
+#include <fstream>
+#include <functional>
 #include <iostream>
 
 namespace crt::crtc::distributed {
@@ -25,7 +27,27 @@ void reportFailures(MpiSession& session, int frame, uint64_t failures, bool prin
     }
 }
 
+/// The message for ranks that evaluated different scenes: `what` is "frame 3", "the script".
+void reportDifferentScenes(const std::string& what) {
+    std::cerr << fmt::format(
+        "crtc: the processes of the MPI job evaluated different scenes for {}: the script, a "
+        "file it includes, an image or mesh it reads (compared by size and modification time) "
+        "or crtc itself differs between the machines; give each the same files (copied with "
+        "their times, e.g. rsync -a) and the same crtc\n",
+        what);
+}
+
 } // namespace
+
+bool sameScriptOnEveryRank(MpiSession& session, const Options& options) {
+    std::ifstream file(options.script, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const std::string identity = fmt::format("{}\n{}\n{}", CRT_VERSION, options.script, text);
+    const uint64_t hash = std::hash<std::string>{}(identity) ^ identity.size();
+    const auto [least, greatest] = session.rangeOverRanks(hash);
+    if (least != greatest && session.root()) reportDifferentScenes("the script");
+    return least == greatest;
+}
 
 bool evaluateOnThisRank(int rank, const CompileFrame& compileFrame, int frame,
                         lang::Compilation& c, std::string& why) {
@@ -60,13 +82,7 @@ bool evaluateOnEveryRank(MpiSession& session, const Options& options,
     if (session.root() && failures > 0)
         reportFailures(session, frame, ok ? failures : failures - 1, ok);
     if (failures > 0) return false;
-    if (least != greatest && session.root())
-        std::cerr << fmt::format(
-            "crtc: the processes of the MPI job evaluated different scenes for frame {}: the "
-            "script, a file it includes, an image or mesh it reads (compared by size and "
-            "modification time) or crtc itself differs between the machines; give each the "
-            "same files (copied with their times, e.g. rsync -a) and the same crtc\n",
-            frame);
+    if (least != greatest && session.root()) reportDifferentScenes(fmt::format("frame {}", frame));
     return least == greatest;
 }
 

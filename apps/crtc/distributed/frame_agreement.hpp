@@ -18,6 +18,10 @@ bool evaluateOnEveryRank(MpiSession& session, const Options& options,
                          const CompileFrame& compileFrame, int frame, lang::Compilation& c,
                          CapturedErrors* captured);
 
+/// Whether every rank has the same crtc and the same script (its path and text): the check an
+/// animation shared by frames can make before any rank evaluates one. Rank 0 says why not.
+bool sameScriptOnEveryRank(MpiSession& session, const Options& options);
+
 /// Evaluates `frame` into `c` on this process, rank `rank`; false, with the reason in `why` unless
 /// the diagnostics printed say it, if it fails (kTestFailRankVariable makes it fail).
 bool evaluateOnThisRank(int rank, const CompileFrame& compileFrame, int frame,

@@ -192,6 +192,7 @@ int serveRankZero(MpiSession& session, const Options& options, const CompileFram
             if (command.tileCount > 0)
                 worker.render(evaluated ? &*c.scene : nullptr, tilesOfCorners(corners));
         } else if (command.kind == Command::ServeFrames) {
+            if (!sameScriptOnEveryRank(session, options)) continue;
             MpiFrameLink link(session);
             FrameWorker(link, session.rank(), options, compileFrame, errors).run();
         }
