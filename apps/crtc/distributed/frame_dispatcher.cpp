@@ -15,7 +15,7 @@ namespace crt::crtc::distributed {
 namespace {
 
 /// How long the main thread sleeps when no message waits (as the tile dispatcher's).
-constexpr auto kPollInterval = std::chrono::microseconds(200);
+constexpr auto kPollInterval = std::chrono::microseconds(1000);
 /// Tiles handed to the run between two looks at the messages, so that workers asking for a
 /// frame are not kept waiting while a large frame is written.
 constexpr int kTilesBetweenServes = 256;
@@ -34,7 +34,7 @@ void FrameDispatcher::begin(std::function<bool(int frame, uint64_t hash)> finish
 bool FrameDispatcher::serveOnce() {
     bool any = false;
     int source = 0, tag = 0, bytes = 0;
-    if (session_.poll(source, tag, bytes)) {
+    while (session_.poll(source, tag, bytes)) { // all that waits: no worker waits to send
         handle(source, tag, session_.receive(source, tag));
         any = true;
     }

@@ -20,7 +20,12 @@ namespace crt::crtc::distributed {
 
 namespace {
 
-constexpr auto kPollInterval = std::chrono::microseconds(200);
+/// How long a worker sleeps when it waits for rank 0's answer.
+constexpr auto kPollInterval = std::chrono::microseconds(1000);
+/// How often a worker tracing a frame sends the tiles finished meanwhile and looks for rank 0
+/// cancelling it: rank 0 needs the tiles only once the frame is complete, so rarely, to keep
+/// the wake-ups few (the last tiles go at once, when the render ends).
+constexpr auto kSendInterval = std::chrono::milliseconds(5);
 
 /// unchangedFrameKey digested in 192 bits (two independent 64-bit hashes and the length), so
 /// that ranks compare frames without sending their scenes.
@@ -111,9 +116,8 @@ void FrameWorker::trace(int frame, const scene::SceneDesc& scene,
         job.cancel = &cancel;
         job.onTileDone = [&](const tracer::TileResult& result) {
             std::vector<char> message = encodeTile(result);
-            std::lock_guard lock(mutex);
+            std::lock_guard lock(mutex); // sent at the next poll: no wake-up per tile
             outbox.push_back(std::move(message));
-            changed.notify_all();
         };
         try {
             if (!tiles.empty()) outcome = tracer::render(scene, job);
@@ -145,7 +149,7 @@ void FrameWorker::trace(int frame, const scene::SceneDesc& scene,
             if (cancelled == frame) cancel.store(true);
         }
         lock.lock();
-        changed.wait_for(lock, kPollInterval);
+        changed.wait_for(lock, kSendInterval, [&] { return finished; });
     }
     renderer.join();
     if (!outcome.ok && !outcome.cancelled)

@@ -88,7 +88,16 @@ tracer::RayStats MpiSession::sumStats(const tracer::RayStats& stats) {
 }
 
 void MpiSession::send(int rank, Tag tag, const void* data, size_t bytes) {
-    MPI_Send(data, static_cast<int>(bytes), MPI_BYTE, rank, tag, MPI_COMM_WORLD);
+    // A small message leaves at once. When the receiver is behind (rank 0 writing a frame, or
+    // kept off its core by the load), wait asleep: MPI_Send would spin on a core the receiver
+    // may need.
+    MPI_Request request;
+    MPI_Isend(data, static_cast<int>(bytes), MPI_BYTE, rank, tag, MPI_COMM_WORLD, &request);
+    for (int done = 0;;) {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done) return;
+        std::this_thread::sleep_for(std::chrono::microseconds(50));
+    }
 }
 
 bool MpiSession::poll(int& source, int& tag, int& bytes) {
