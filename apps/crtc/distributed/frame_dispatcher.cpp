@@ -23,9 +23,10 @@ constexpr int kTilesBetweenServes = 256;
 } // namespace
 
 FrameDispatcher::FrameDispatcher(MpiSession& session, const Options& options)
-    : session_(session), options_(options), working_(static_cast<size_t>(session.size()), -1),
-      nextFrame_(options.frames.begin()), end_(options.frames.end()), consumed_(nextFrame_),
-      undecided_(nextFrame_), window_(2 * session.size()) {}
+    : session_(session), options_(options), nextFrame_(options.frames.begin()),
+      end_(options.frames.end()), consumed_(nextFrame_), undecided_(nextFrame_),
+      // Each worker holds two frames (one asked for ahead), and a few more can be done.
+      window_(3 * session.size()) {}
 
 void FrameDispatcher::begin(std::function<bool(int frame, uint64_t hash)> finishedBefore) {
     finishedBefore_ = std::move(finishedBefore);
@@ -51,35 +52,47 @@ void FrameDispatcher::serveUntil(const std::function<bool()>& done) {
         if (!serveOnce()) std::this_thread::sleep_for(kPollInterval);
 }
 
-void FrameDispatcher::answer(int rank, Tag tag, int value) {
+void FrameDispatcher::answer(int rank, Tag tag, const int* values, int count) {
+    const size_t bytes = sizeof(int) * static_cast<size_t>(count);
     if (rank == 0)
-        local_.sendToWorker(tag, &value, sizeof value);
+        local_.sendToWorker(tag, values, bytes);
     else
-        session_.send(rank, tag, &value, sizeof value);
+        session_.send(rank, tag, values, bytes);
+}
+
+FrameDispatcher::Frame* FrameDispatcher::wantedFrame(const std::vector<char>& message) {
+    int32_t frame = -1;
+    if (message.size() >= sizeof frame) std::memcpy(&frame, message.data(), sizeof frame);
+    const auto found = frames_.find(frame);
+    // Gone: passed by the run; not wanted: reused, finished before, or after a failure.
+    if (found == frames_.end() || !found->second.wanted) return nullptr;
+    return &found->second;
 }
 
 void FrameDispatcher::handle(int source, int tag, const std::vector<char>& message) {
     if (tag == kFrameRequestTag) return handOut(source);
     if (tag == kFactsTag) return takeFacts(source, message);
-    if (tag == kResultTag) return takeTile(source, message);
-    const auto found = frames_.find(working_[static_cast<size_t>(source)]);
-    if (found == frames_.end()) return; // a frame the run no longer needs
-    Frame& f = found->second;
-    if (tag == kErrorTag && f.error.empty()) {
-        f.error = fmt::format("{}: {}", session_.describe(source),
-                              std::string(message.begin(), message.end()));
+    if (tag == kFrameTileTag) return takeTile(source, message);
+    if (tag == kIdleTag) {
+        ++idleRanks_;
+        return;
+    }
+    Frame* f = wantedFrame(message);
+    if (!f) return;
+    if (tag == kFrameErrorTag && f->error.empty()) {
+        f->error = fmt::format("{}: {}", session_.describe(source),
+                               std::string(message.begin() + sizeof(int32_t), message.end()));
     } else if (tag == kFrameDoneTag) {
         FrameDone done;
-        if (splitText(message, done)) f.outcome = outcomeOf(done);
-        f.traced = true;
-        working_[static_cast<size_t>(source)] = -1;
+        if (splitText(message, done)) f->outcome = outcomeOf(done);
+        f->traced = true;
     }
 }
 
 void FrameDispatcher::handOut(int rank) {
     if (closed_ || nextFrame_ >= end_) {
-        answer(rank, kFrameTag, -1);
-        ++idleRanks_;
+        const int none = -1;
+        answer(rank, kFrameTag, &none, 1);
         return;
     }
     // The run writes frames in order: a slow frame holds those after it here, at most window_.
@@ -88,8 +101,8 @@ void FrameDispatcher::handOut(int rank) {
         return;
     }
     frames_[nextFrame_].rank = rank;
-    working_[static_cast<size_t>(rank)] = nextFrame_;
-    answer(rank, kFrameTag, nextFrame_++);
+    answer(rank, kFrameTag, &nextFrame_, 1);
+    ++nextFrame_;
 }
 
 void FrameDispatcher::takeFacts(int rank, const std::vector<char>& message) {
@@ -102,7 +115,10 @@ void FrameDispatcher::takeFacts(int rank, const std::vector<char>& message) {
     f.evaluated = true;
     f.facts = facts;
     f.messages = std::move(messages);
-    if (!facts.ok) working_[static_cast<size_t>(rank)] = -1;
+    const tracer::Tile region =
+        options_.region.value_or(tracer::Tile{0, 0, facts.width, facts.height});
+    if (facts.ok && region.x1 <= facts.width && region.y1 <= facts.height)
+        f.tileList = tracer::regionTiles(region);
     decide();
 }
 
@@ -121,35 +137,31 @@ void FrameDispatcher::decide() {
         // The run's own rule: a frame whose scene is the previous one's reuses its image.
         f.unchanged = undecided_ > options_.frames.begin() && previous_.ok && f.facts.sameScene(previous_);
         previous_ = f.facts;
-        bool trace = !closed_ && failedFrame_ < 0 && !f.unchanged;
-        if (trace && finishedBefore_ && finishedBefore_(undecided_, f.facts.hash)) trace = false;
-        if (trace) {
-            const tracer::Tile region = options_.region.value_or(
-                tracer::Tile{0, 0, f.facts.width, f.facts.height});
-            if (region.x1 <= f.facts.width && region.y1 <= f.facts.height)
-                f.tileList = tracer::regionTiles(region);
-        } else {
-            working_[static_cast<size_t>(f.rank)] = -1;
-        }
-        f.tracing = trace;
-        answer(f.rank, kVerdictTag, trace ? 1 : 0);
+        f.wanted = !closed_ && failedFrame_ < 0 && !f.unchanged &&
+                   !(finishedBefore_ && finishedBefore_(undecided_, f.facts.hash));
+        if (!f.wanted) f.tiles.clear();
+        const int verdict[2] = {undecided_, f.wanted ? 1 : 0};
+        answer(f.rank, kVerdictTag, verdict, 2);
     }
 }
 
 void FrameDispatcher::takeTile(int rank, const std::vector<char>& message) {
-    const auto found = frames_.find(working_[static_cast<size_t>(rank)]);
-    if (found == frames_.end() || !found->second.tracing) return;
-    Frame& f = found->second;
-    std::vector<float> rgb;
-    int index = 0;
-    if (!decodeTile(message, f.tileList, rgb, index)) {
-        if (f.error.empty())
-            f.error = fmt::format("{} sent a tile that is not one of frame {}'s",
-                                  session_.describe(rank), found->first);
-        return;
-    }
-    const tracer::Tile& tile = f.tileList[static_cast<size_t>(index)];
-    f.tiles[{tile.x0, tile.y0}] = std::move(rgb);
+    Frame* f = wantedFrame(message);
+    if (!f) return;
+    bool valid = true;
+    const bool whole = TileBatch::split(message, [&](const std::vector<char>& tile) {
+        std::vector<float> rgb;
+        int index = 0;
+        if (!decodeTile(tile, f->tileList, rgb, index)) {
+            valid = false;
+            return;
+        }
+        const tracer::Tile& t = f->tileList[static_cast<size_t>(index)];
+        f->tiles[{t.x0, t.y0}] = std::move(rgb);
+    });
+    if ((!whole || !valid) && f->error.empty())
+        f->error = fmt::format("{} sent a tile that is not one of frame {}'s",
+                               session_.describe(rank), f->facts.frame);
 }
 
 void FrameDispatcher::report(int frame, const Frame& f) const {
@@ -192,7 +204,7 @@ tracer::RenderOutcome FrameDispatcher::render(const tracer::RenderJob& job) {
         outcome.ok = true;
         return outcome;
     }
-    if (!f.tracing && !f.traced) {
+    if (!f.wanted) {
         outcome.error = fmt::format("frame {} was not traced: its file went while the job ran", consumed_);
         return outcome;
     }
@@ -233,8 +245,10 @@ void FrameDispatcher::finish() {
         handOut(waiting_.front());
         waiting_.pop_front();
     }
-    for (const auto& [frame, f] : frames_)
-        if (f.tracing && !f.traced) answer(f.rank, kCancelTag, frame);
+    for (auto& [frame, f] : frames_) {
+        if (f.decided && f.wanted && !f.traced) answer(f.rank, kCancelTag, &frame, 1);
+        if (f.decided) f.wanted = false;
+    }
     decide();
     serveUntil([&] { return idleRanks_ == session_.size(); });
 }

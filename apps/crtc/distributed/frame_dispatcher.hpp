@@ -4,12 +4,14 @@
 // writes the files (render_command.hpp's FrameFeed).
 //
 // The protocol, per frame: a worker asks (kFrameRequestTag) and gets a frame number (kFrameTag;
-// -1: no more); it evaluates the frame and sends what rank 0 needs to know of it (kFactsTag:
-// FrameFacts, then the diagnostics of its evaluation). Rank 0 decides, in frame order,
-// whether the frame is traced: not if its scene is the previous frame's (the run reuses that
-// image) nor if --continue finds it finished; it answers kVerdictTag. A frame traced comes back
-// tile by tile (kResultTag), then kErrorTag if the render failed, then kFrameDoneTag with its
-// ray counts. Rank 0 may cancel a frame being traced (kCancelTag) when the run stops.
+// -1: no more), and asks for its next frame as soon as it begins one. It evaluates the frame,
+// sends what rank 0 needs to know of it (kFactsTag: FrameFacts, then the diagnostics of its
+// evaluation) and traces it at once, sending its tiles (kFrameTileTag), kFrameErrorTag if the
+// render failed, and at last kFrameDoneTag with its ray counts. Rank 0 decides, in frame
+// order, whether the frame is wanted: not if its scene is the previous frame's (the run reuses
+// that image) nor if --continue finds it finished; it says so (kVerdictTag), and the worker
+// stops tracing a frame not wanted. Rank 0 cancels the frames being traced when the run stops
+// (kCancelTag). A worker told there are no more frames says when it is idle (kIdleTag).
 #pragma once
 
 #include "frame_link.hpp"
@@ -44,7 +46,8 @@ class FrameDispatcher final : public FrameFeed {
     struct Frame {
         int rank = -1;
         bool evaluated = false, decided = false, unchanged = false;
-        bool tracing = false, traced = false;
+        bool wanted = true; ///< until decided otherwise: the worker traces it meanwhile
+        bool traced = false;
         FrameFacts facts;
         std::string messages; ///< the evaluation's diagnostics
         std::map<std::pair<int, int>, std::vector<float>> tiles; ///< by top left corner
@@ -60,9 +63,11 @@ class FrameDispatcher final : public FrameFeed {
     void handOut(int rank);
     void takeFacts(int rank, const std::vector<char>& message);
     void takeTile(int rank, const std::vector<char>& message);
+    /// The frame a worker's message names, if the run may still need it.
+    Frame* wantedFrame(const std::vector<char>& message);
     /// Decides the frames evaluated so far, in order, and answers their workers.
     void decide();
-    void answer(int rank, Tag tag, int value);
+    void answer(int rank, Tag tag, const int* values, int count);
     /// Prints what the rank that evaluated `frame` said of it (its warnings, or why it failed).
     void report(int frame, const Frame& f) const;
 
@@ -71,7 +76,6 @@ class FrameDispatcher final : public FrameFeed {
     LocalFrameLink local_;
     std::function<bool(int, uint64_t)> finishedBefore_;
     std::map<int, Frame> frames_; ///< handed out and not yet passed by the run
-    std::vector<int> working_;    ///< each rank's frame, or -1
     std::deque<int> waiting_;     ///< ranks that asked while too many frames were ahead
     int nextFrame_ = 0, end_ = 0;
     int consumed_ = 0; ///< the frame the run takes next, or takes now
@@ -79,7 +83,7 @@ class FrameDispatcher final : public FrameFeed {
     int window_ = 0;   ///< frames handed out beyond consumed_, at most: bounds what waits here
     int failedFrame_ = -1;
     bool closed_ = false;
-    int idleRanks_ = 0; ///< ranks told there are no more frames
+    int idleRanks_ = 0; ///< workers that have finished their last frame
     FrameFacts previous_; ///< of frame undecided_ - 1
 };
 

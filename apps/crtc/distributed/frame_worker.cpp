@@ -15,6 +15,7 @@
 #include <iostream>
 #include <mutex>
 #include <thread>
+#include <algorithm>
 
 namespace crt::crtc::distributed {
 
@@ -48,26 +49,39 @@ bool regionOf(const Options& options, const scene::SceneDesc& scene, tracer::Til
 } // namespace
 
 void FrameWorker::run() {
+    link_.send(kFrameRequestTag, nullptr, 0);
     for (;;) {
+        const int frame = awaitFrame();
+        if (frame < 0) break;
+        // The next frame is asked for now, so that it is here when this one is done, whatever
+        // rank 0 is doing then (writing a frame, most often).
         link_.send(kFrameRequestTag, nullptr, 0);
-        const std::vector<char> answer = await(kFrameTag);
-        int frame = -1;
-        if (answer.size() == sizeof frame) std::memcpy(&frame, answer.data(), sizeof frame);
-        if (frame < 0) return;
         work(frame);
+    }
+    link_.send(kIdleTag, nullptr, 0);
+}
+
+int FrameWorker::awaitFrame() {
+    for (;;) {
+        if (!answers_.empty()) {
+            const int frame = answers_.front();
+            answers_.pop_front();
+            return frame;
+        }
+        int tag = 0;
+        std::vector<char> message;
+        if (link_.take(tag, message))
+            unwanted(-1, tag, message); // keeps a frame; the rest is about finished frames
+        else
+            std::this_thread::sleep_for(kPollInterval);
     }
 }
 
-std::vector<char> FrameWorker::await(Tag wanted) {
-    for (;;) {
-        int tag = 0;
-        std::vector<char> message;
-        if (!link_.take(tag, message)) {
-            std::this_thread::sleep_for(kPollInterval);
-            continue;
-        }
-        if (tag == wanted) return message;
-    }
+bool FrameWorker::unwanted(int frame, int tag, const std::vector<char>& message) {
+    int values[2] = {-1, 1};
+    if (!message.empty()) std::memcpy(values, message.data(), std::min(message.size(), sizeof values));
+    if (tag == kFrameTag) answers_.push_back(values[0]);
+    return values[0] == frame && ((tag == kVerdictTag && values[1] == 0) || tag == kCancelTag);
 }
 
 void FrameWorker::work(int frame) {
@@ -92,12 +106,10 @@ void FrameWorker::work(int frame) {
     }
     const std::vector<char> message = withText(facts, why);
     link_.send(kFactsTag, message.data(), message.size());
-    if (!facts.ok) return;
-    const std::vector<char> verdict = await(kVerdictTag);
-    int traceIt = 0;
-    if (verdict.size() == sizeof traceIt) std::memcpy(&traceIt, verdict.data(), sizeof traceIt);
-    if (!traceIt) return;
-    trace(frame, *c.scene, inside ? tracer::regionTiles(region) : std::vector<tracer::Tile>());
+    // Traced at once, without waiting for rank 0's verdict: most frames are wanted, and rank 0
+    // may be busy writing one. A frame reused or finished before is stopped when it says so.
+    if (facts.ok)
+        trace(frame, *c.scene, inside ? tracer::regionTiles(region) : std::vector<tracer::Tile>());
 }
 
 void FrameWorker::trace(int frame, const scene::SceneDesc& scene,
@@ -115,9 +127,9 @@ void FrameWorker::trace(int frame, const scene::SceneDesc& scene,
         job.threads = options_.threads;
         job.cancel = &cancel;
         job.onTileDone = [&](const tracer::TileResult& result) {
-            std::vector<char> message = encodeTile(result);
+            std::vector<char> tile = encodeTile(result);
             std::lock_guard lock(mutex); // sent at the next poll: no wake-up per tile
-            outbox.push_back(std::move(message));
+            outbox.push_back(std::move(tile));
         };
         try {
             if (!tiles.empty()) outcome = tracer::render(scene, job);
@@ -129,32 +141,30 @@ void FrameWorker::trace(int frame, const scene::SceneDesc& scene,
         finished = true;
         changed.notify_all();
     });
-    // This thread sends the tiles as they come (MPI from the main thread only) and listens
-    // for rank 0 cancelling the frame.
-    for (;;) {
-        std::unique_lock lock(mutex);
-        while (!outbox.empty()) {
-            const std::vector<char> message = std::move(outbox.front());
-            outbox.pop_front();
-            lock.unlock();
-            link_.send(kResultTag, message.data(), message.size());
-            lock.lock();
+    // This thread sends the tiles (MPI from the main thread only), a batch every few
+    // milliseconds, and listens to rank 0.
+    for (bool last = false; !last;) {
+        TileBatch batch(frame);
+        {
+            std::unique_lock lock(mutex);
+            changed.wait_for(lock, kSendInterval, [&] { return finished; });
+            for (; !outbox.empty(); outbox.pop_front()) batch.add(outbox.front());
+            last = finished;
         }
-        if (finished) break;
-        lock.unlock();
-        int tag = 0, cancelled = -1;
+        if (!batch.empty() && !cancel.load())
+            link_.send(kFrameTileTag, batch.bytes().data(), batch.bytes().size());
+        int tag = 0;
         std::vector<char> message;
-        if (link_.take(tag, message) && tag == kCancelTag && message.size() == sizeof cancelled) {
-            std::memcpy(&cancelled, message.data(), sizeof cancelled);
-            if (cancelled == frame) cancel.store(true);
-        }
-        lock.lock();
-        changed.wait_for(lock, kSendInterval, [&] { return finished; });
+        while (link_.take(tag, message))
+            if (unwanted(frame, tag, message)) cancel.store(true);
     }
     renderer.join();
-    if (!outcome.ok && !outcome.cancelled)
-        link_.send(kErrorTag, outcome.error.data(), outcome.error.size());
-    const FrameDone done = frameDoneOf(outcome);
+    if (!outcome.ok && !outcome.cancelled) {
+        const std::vector<char> error = withText(int32_t{frame}, outcome.error);
+        link_.send(kFrameErrorTag, error.data(), error.size());
+    }
+    FrameDone done = frameDoneOf(outcome);
+    done.frame = frame;
     link_.send(kFrameDoneTag, &done, sizeof done);
 }
 

@@ -1,12 +1,14 @@
 // A rank's side of an animation shared out by frames: it asks rank 0 for a frame, evaluates it,
-// tells rank 0 what it found, and traces it if rank 0 says so (frame_dispatcher.hpp has the
-// protocol). Every rank runs one, rank 0 on a thread beside its dispatcher.
+// tells rank 0 what it found and traces it, unless rank 0 says it is not wanted
+// (frame_dispatcher.hpp has the protocol). Every rank runs one, rank 0 on a thread beside its
+// dispatcher.
 #pragma once
 
 #include "captured_errors.hpp"
 #include "frame_link.hpp"
 #include "render_command.hpp"
 
+#include <deque>
 
 namespace crt::crtc::distributed {
 
@@ -23,12 +25,13 @@ class FrameWorker {
     void run();
 
   private:
-    /// Waits for the dispatcher's message with `tag`; a cancel of a frame this worker has
-    /// finished meanwhile is dropped.
-    std::vector<char> await(Tag tag);
+    /// The answer to this worker's oldest request for a frame: a frame, or -1.
+    int awaitFrame();
+    /// Handles a message of the dispatcher's; true if it says `frame` is not wanted.
+    bool unwanted(int frame, int tag, const std::vector<char>& message);
     void work(int frame);
-    /// Traces `tiles` of the evaluated scene, sending each as it is finished, until done or
-    /// rank 0 cancels the frame.
+    /// Traces `tiles` of the evaluated scene, sending them as they are finished, until done or
+    /// rank 0 says the frame is not wanted.
     void trace(int frame, const scene::SceneDesc& scene, const std::vector<tracer::Tile>& tiles);
 
     FrameLink& link_;
@@ -36,6 +39,7 @@ class FrameWorker {
     const Options& options_;
     const CompileFrame& compileFrame_;
     CapturedErrors& captured_;
+    std::deque<int> answers_; ///< frames rank 0 handed out while this worker was busy
 };
 
 } // namespace crt::crtc::distributed

@@ -22,9 +22,12 @@ enum Tag : int {
     kFrameRequestTag, ///< worker → 0: it can take a frame (no data)
     kFrameTag,        ///< 0 → worker: an int, the frame to evaluate; -1: no more
     kFactsTag,        ///< worker → 0: the frame evaluated (FrameFacts, then its messages)
-    kVerdictTag,      ///< 0 → worker: an int, 1 to trace the frame, 0 not (reused, done before)
-    kCancelTag,       ///< 0 → worker: an int, the frame to stop tracing
-    kFrameDoneTag,    ///< worker → 0: the frame traced (FrameDone) after its tiles (kResultTag)
+    kFrameTileTag,    ///< worker → 0: the frame's number, then a finished tile (TileMessage)
+    kFrameErrorTag,   ///< worker → 0: the frame's number, then why its render failed (text)
+    kFrameDoneTag,    ///< worker → 0: the frame traced (FrameDone) after its tiles
+    kVerdictTag,      ///< 0 → worker: two ints, the frame and 1 if it is wanted, 0 if not
+    kCancelTag,       ///< 0 → worker: an int, a frame no longer wanted
+    kIdleTag,         ///< worker → 0: it has finished its last frame (no data)
 };
 
 /// What rank 0 tells every rank to do next, broadcast.
