@@ -1,11 +1,11 @@
 // Every rank evaluates the frame itself (no scene is sent over the network), then the ranks
-// check that they built the same one before any of them renders it.
+// check that they built the same one before any of them renders it; an animation shared by
+// frames checks the script once instead.
 #pragma once
 
 #include "captured_errors.hpp"
 #include "mpi_session.hpp"
 #include "render_command.hpp"
-
 
 namespace crt::crtc::distributed {
 

@@ -135,7 +135,8 @@ void FrameDispatcher::decide() {
             continue;
         }
         // The run's own rule: a frame whose scene is the previous one's reuses its image.
-        f.unchanged = undecided_ > options_.frames.begin() && previous_.ok && f.facts.sameScene(previous_);
+        f.unchanged =
+            undecided_ > options_.frames.begin() && previous_.ok && f.facts.sameScene(previous_);
         previous_ = f.facts;
         f.wanted = !closed_ && failedFrame_ < 0 && !f.unchanged &&
                    !(finishedBefore_ && finishedBefore_(undecided_, f.facts.hash));
@@ -166,7 +167,8 @@ void FrameDispatcher::takeTile(int rank, const std::vector<char>& message) {
 
 void FrameDispatcher::report(int frame, const Frame& f) const {
     if (!f.facts.ok)
-        std::cerr << fmt::format("crtc: {} cannot evaluate frame {}:\n", session_.describe(f.rank), frame);
+        std::cerr << fmt::format("crtc: {} cannot evaluate frame {}:\n", session_.describe(f.rank),
+                                 frame);
     std::cerr << f.messages;
 }
 
@@ -205,7 +207,8 @@ tracer::RenderOutcome FrameDispatcher::render(const tracer::RenderJob& job) {
         return outcome;
     }
     if (!f.wanted) {
-        outcome.error = fmt::format("frame {} was not traced: its file went while the job ran", consumed_);
+        outcome.error =
+            fmt::format("frame {} was not traced: its file went while the job ran", consumed_);
         return outcome;
     }
     auto cancelled = [&] { return job.cancel && job.cancel->load(); };
@@ -229,7 +232,8 @@ tracer::RenderOutcome FrameDispatcher::render(const tracer::RenderJob& job) {
                                         session_.describe(f.rank), consumed_);
             return outcome;
         }
-        if (job.onTileDone) job.onTileDone(tracer::TileResult{tile, static_cast<int>(i), rgb->second});
+        if (job.onTileDone)
+            job.onTileDone(tracer::TileResult{tile, static_cast<int>(i), rgb->second});
         f.tiles.erase(rgb);
         ++outcome.tilesDone;
         if ((i + 1) % kTilesBetweenServes == 0) serveOnce();

@@ -49,7 +49,7 @@ class FrameDispatcher final : public FrameFeed {
         bool wanted = true; ///< until decided otherwise: the worker traces it meanwhile
         bool traced = false;
         FrameFacts facts;
-        std::string messages; ///< the evaluation's diagnostics
+        std::string messages;                                    ///< the evaluation's diagnostics
         std::map<std::pair<int, int>, std::vector<float>> tiles; ///< by top left corner
         std::vector<tracer::Tile> tileList;
         tracer::RenderOutcome outcome;
@@ -78,12 +78,12 @@ class FrameDispatcher final : public FrameFeed {
     std::map<int, Frame> frames_; ///< handed out and not yet passed by the run
     std::deque<int> waiting_;     ///< ranks that asked while too many frames were ahead
     int nextFrame_ = 0, end_ = 0;
-    int consumed_ = 0; ///< the frame the run takes next, or takes now
+    int consumed_ = 0;  ///< the frame the run takes next, or takes now
     int undecided_ = 0; ///< the first frame not yet decided
-    int window_ = 0;   ///< frames handed out beyond consumed_, at most: bounds what waits here
+    int window_ = 0;    ///< frames handed out beyond consumed_, at most: bounds what waits here
     int failedFrame_ = -1;
     bool closed_ = false;
-    int idleRanks_ = 0; ///< workers that have finished their last frame
+    int idleRanks_ = 0;   ///< workers that have finished their last frame
     FrameFacts previous_; ///< of frame undecided_ - 1
 };
 

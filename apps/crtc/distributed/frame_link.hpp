@@ -49,7 +49,9 @@ class LocalFrameLink final : public FrameLink {
         return pop(toWorker_, tag, message);
     }
     /// The dispatcher's side.
-    void sendToWorker(Tag tag, const void* data, size_t bytes) { push(toWorker_, tag, data, bytes); }
+    void sendToWorker(Tag tag, const void* data, size_t bytes) {
+        push(toWorker_, tag, data, bytes);
+    }
     bool takeFromWorker(int& tag, std::vector<char>& message) {
         return pop(toDispatcher_, tag, message);
     }
@@ -59,7 +61,8 @@ class LocalFrameLink final : public FrameLink {
     void push(Queue& queue, Tag tag, const void* data, size_t bytes) {
         const char* begin = static_cast<const char*>(data);
         std::lock_guard lock(mutex_);
-        queue.emplace_back(tag, bytes ? std::vector<char>(begin, begin + bytes) : std::vector<char>());
+        queue.emplace_back(tag,
+                           bytes ? std::vector<char>(begin, begin + bytes) : std::vector<char>());
     }
     bool pop(Queue& queue, int& tag, std::vector<char>& message) {
         std::lock_guard lock(mutex_);

@@ -6,6 +6,7 @@
 #include "frame_message.hpp"
 #include "tile_message.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -15,7 +16,6 @@
 #include <iostream>
 #include <mutex>
 #include <thread>
-#include <algorithm>
 
 namespace crt::crtc::distributed {
 
@@ -79,7 +79,8 @@ int FrameWorker::awaitFrame() {
 
 bool FrameWorker::unwanted(int frame, int tag, const std::vector<char>& message) {
     int values[2] = {-1, 1};
-    if (!message.empty()) std::memcpy(values, message.data(), std::min(message.size(), sizeof values));
+    if (!message.empty())
+        std::memcpy(values, message.data(), std::min(message.size(), sizeof values));
     if (tag == kFrameTag) answers_.push_back(values[0]);
     return values[0] == frame && ((tag == kVerdictTag && values[1] == 0) || tag == kCancelTag);
 }
