@@ -304,6 +304,8 @@ class RenderRun {
     }
 
     int run(const CompileFrame& compileFrame);
+    /// Takes the frames from `feed` rather than evaluating them (run's compileFrame unused).
+    void feedFrom(FrameFeed& feed) { feed_ = &feed; }
 
   private:
     int openLog();
@@ -311,6 +313,8 @@ class RenderRun {
     int reuseUnchanged(int frame);
     void updateStopNote();
     int failed(int status);
+    bool finishedBefore(int frame, uint64_t hash) const;
+    bool evaluate(int frame, Compilation& c, const CompileFrame& compileFrame, bool& unchanged);
 
     const Options& options_;
     const FrameSelection& frames_;
@@ -324,6 +328,8 @@ class RenderRun {
     std::string previousKey_;
     std::vector<int> written_; // frames whose files are complete
     bool continueRefused_ = false;
+    FrameFeed* feed_ = nullptr;
+    uint64_t fedHash_ = 0; // the frameHash of the frame the feed gave last
 };
 
 int RenderRun::openLog() {
@@ -414,7 +420,7 @@ int RenderRun::renderOne(int frame, const Compilation& c, scene::SceneDesc& scen
     totals_.width = job.region.width();
     totals_.height = job.region.height();
     if (log_) {
-        const uint64_t hash = frameHash(c, scene, options_, job.region);
+        const uint64_t hash = feed_ ? fedHash_ : frameHash(c, scene, options_, job.region);
         auto logged = log_->frames().find(frame);
         if (options_.resume && logged != log_->frames().end()) {
             if (logged->second.sceneHash != hash) {
@@ -445,18 +451,50 @@ int RenderRun::renderOne(int frame, const Compilation& c, scene::SceneDesc& scen
     return 0;
 }
 
+/// Evaluates `frame` into `c`, or takes it from the feed: then `c` has no script, and its scene
+/// only the settings the run reads (size, gamma).
+bool RenderRun::evaluate(int frame, Compilation& c, const CompileFrame& compileFrame,
+                         bool& unchanged) {
+    if (feed_) {
+        const FedFrame fed = feed_->next(frame);
+        if (!fed.ok) return false;
+        scene::SceneDesc& scene = c.scene.emplace();
+        scene.settings.width = fed.width;
+        scene.settings.height = fed.height;
+        scene.settings.gamma = fed.gamma;
+        scene.settings.srgb = fed.srgb;
+        unchanged = fed.unchanged;
+        fedHash_ = fed.hash;
+        return true;
+    }
+    if (!compileFrame(frame, c)) return false;
+    scene::SceneDesc& scene = *c.scene;
+    applyCommandLine(options_, scene);
+    std::string key = frames_.selected() > 1 ? sceneKey(scene) : std::string();
+    unchanged = frame > frames_.begin() && key == previousKey_;
+    previousKey_ = std::move(key);
+    return true;
+}
+
+/// Whether --continue finds `frame` finished by the interrupted run (renderOne's test, before
+/// the frame is traced).
+bool RenderRun::finishedBefore(int frame, uint64_t hash) const {
+    if (!log_ || !options_.resume) return false;
+    auto logged = log_->frames().find(frame);
+    return logged != log_->frames().end() && logged->second.sceneHash == hash &&
+           logged->second.done && fs::exists(plan_.target(frame));
+}
+
 int RenderRun::run(const CompileFrame& compileFrame) {
     if (int status = openLog()) return status;
+    if (feed_) feed_->begin([this](int frame, uint64_t hash) { return finishedBefore(frame, hash); });
     updateStopNote();
     const auto start = std::chrono::steady_clock::now();
     for (int frame = frames_.begin(); frame < frames_.end(); ++frame) {
         Compilation c;
-        if (!compileFrame(frame, c)) return failed(1);
+        bool unchanged = false;
+        if (!evaluate(frame, c, compileFrame, unchanged)) return failed(1);
         scene::SceneDesc& scene = *c.scene;
-        applyCommandLine(options_, scene);
-        std::string key = frames_.selected() > 1 ? sceneKey(scene) : std::string();
-        const bool unchanged = frame > frames_.begin() && key == previousKey_;
-        previousKey_ = std::move(key);
         progress_.startFrame(frameLabel(frames_, frame));
         const int status = unchanged ? reuseUnchanged(frame) : renderOne(frame, c, scene);
         if (status > 0) return failed(status);
@@ -486,6 +524,19 @@ int renderFrames(const Options& options, const CompileFrame& compileFrame,
     if (!planOutput(options, plan)) return 2;
     return RenderRun(options, std::move(plan), renderTiles).run(compileFrame);
 }
+
+int renderFedFrames(const Options& options, FrameFeed& feed) {
+    OutputPlan plan;
+    if (!planOutput(options, plan)) return 2;
+    const TileRenderer fromFeed = [&feed](const scene::SceneDesc&, const tracer::RenderJob& job) {
+        return feed.render(job);
+    };
+    RenderRun run(options, std::move(plan), fromFeed);
+    run.feedFrom(feed);
+    return run.run([](int, Compilation&) { return false; });
+}
+
+std::string unchangedFrameKey(const scene::SceneDesc& scene) { return sceneKey(scene); }
 
 int renderCommand(const Options& options, const CompileFrame& compileFrame) {
     if (distributed::underMpi()) return distributed::renderDistributed(options, compileFrame);

@@ -2,7 +2,9 @@
 #pragma once
 
 #include "options.hpp"
+#include "tracer/renderer.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -25,6 +27,35 @@ int renderFrames(const Options& options, const CompileFrame& compileFrame,
                  const TileRenderer& renderTiles);
 /// Applies the command line's size and quality to an evaluated scene.
 void applyCommandLine(const Options& options, scene::SceneDesc& scene);
+
+/// The scene without its time and frame number, as text: two frames with the same key render
+/// alike, so the second reuses the first's image.
+std::string unchangedFrameKey(const scene::SceneDesc& scene);
+
+/// An animation's frames evaluated and traced elsewhere (each on one process of an MPI job),
+/// fed to the run that writes them, in order. The run is crtc's own otherwise: output files,
+/// the resume log, progress, the summary and --stats.
+struct FedFrame {
+    bool ok = false;        ///< evaluated without errors (the feed has said why not)
+    bool unchanged = false; ///< the same scene as the frame before: its image is reused
+    int width = 0, height = 0;
+    double gamma = 1.0;
+    bool srgb = false;
+    uint64_t hash = 0; ///< frameHash for the resume log
+};
+class FrameFeed {
+  public:
+    virtual ~FrameFeed() = default;
+    /// Before the first frame: which frames an interrupted run finished, so that they are
+    /// not traced again (`frame`, its frameHash).
+    virtual void begin(std::function<bool(int frame, uint64_t hash)> finishedBefore) = 0;
+    /// The next frame of the run, once it is evaluated; frames come in order.
+    virtual FedFrame next(int frame) = 0;
+    /// The tiles of `job` of the frame next() returned last, once they are traced.
+    virtual tracer::RenderOutcome render(const tracer::RenderJob& job) = 0;
+};
+/// renderCommand with its frames from `feed`.
+int renderFedFrames(const Options& options, FrameFeed& feed);
 
 /// The default output path: the script's path with .png (.gif for an animation).
 std::string defaultOutput(const std::string& script, bool animation);

@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # MPI benchmark: the speed-up of crtc under mpirun (2 processes of 1 thread) against crtc
 # alone with 1 thread, beside crtc alone with 2 threads, on the render benchmark's scenes
-# (bench/render/*.crt) and a 60-frame animation (demos/orbit.crt). Runs alternate the three
+# (bench/render/*.crt), a 60-frame animation (demos/orbit.crt) and a scene whose cost sits in one
+# corner, first or last in the tiles' order (bench/mpi/corner.crt). Runs alternate the three
 # ways, several times; prints median wall times and speed-ups as a Markdown table, and checks
 # that every image is the same bytes whichever way it was made. See bench/README.md.
 #
-# usage: bench/mpi/run.sh [--runs N] [--size WxH] [--frames N] [--args "OPTIONS"] [CRTC]
+# usage: bench/mpi/run.sh [--runs N] [--size WxH] [--frames N] [--args "OPTIONS"] [--only RE] [CRTC]
 #
 #   --runs N     timed runs of each way per workload; medians reported (default 3)
 #   --size WxH   the stills' size (default 1920x1080)
 #   --frames N   the animation's frames (default 60)
 #   --args OPTS  more crtc options for every render, e.g. "--supersampling 3" for longer ones
+#   --only RE    only the workloads whose name matches the extended regular expression RE
 #   CRTC         the crtc binary (default: $CRTC, else build/bin/crtc), built with MPI
 #
 # environment:
@@ -30,6 +32,7 @@ runs=3
 size=1920x1080
 frames=60
 extra=()
+only=
 crtc=
 while [[ $# -gt 0 ]]; do
     case $1 in
@@ -37,6 +40,7 @@ while [[ $# -gt 0 ]]; do
     --size) size=$2; shift 2 ;;
     --frames) frames=$2; shift 2 ;;
     --args) read -r -a extra <<<"$2"; shift 2 ;;
+    --only) only=$2; shift 2 ;;
     -h | --help) usage; exit 0 ;;
     -*) echo "$0: unknown option '$1'" >&2; usage >&2; exit 2 ;;
     *) crtc=$1; shift ;;
@@ -52,16 +56,19 @@ height=${size#*x}
 # Shared memory between the processes; root may run MPI jobs in a container.
 read -r -a mpirun <<<"${MPIRUN:-mpirun --allow-run-as-root --oversubscribe --bind-to none --mca btl self,vader --mca btl_vader_single_copy_mechanism none}"
 
-# time_run VAR command...: the wall time of the command, in seconds, into VAR, and the time
-# crtc's summary line reports (from its first evaluation to the last file, so without the
-# start of the processes and MPI's initialisation) into VAR_render.
+# time_run VAR command...: the wall time of the command, in seconds, into VAR, the time crtc's
+# summary line reports (from its first evaluation to the last file, so without the start of
+# the processes and MPI's initialisation) into VAR_render, and the processor time of all its
+# processes (user and system, mpirun's included) into VAR_cpu.
 time_run() {
     local var=$1 start end
     shift
     stamp start
-    "$@" >"$logs/last.log" 2>&1 || { cat "$logs/last.log" >&2; echo "$0: failed: $*" >&2; exit 1; }
+    /usr/bin/time -f "cpu %U %S" -o "$logs/cpu" "$@" >"$logs/last.log" 2>&1 ||
+        { cat "$logs/last.log" >&2; echo "$0: failed: $*" >&2; exit 1; }
     stamp end
     cat "$logs/last.log" >>"$logs/run.log"
+    printf -v "${var}_cpu" '%s' "$(awk '/^cpu / { printf "%.3f", $2 + $3 }' "$logs/cpu")"
     printf -v "$var" '%s' "$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f", (b - a) / 1e9 }')"
     printf -v "${var}_render" '%s' "$(sed -n 's/^crtc: .*, \([0-9.]*\)s, [0-9.]* Mrays.*/\1/p' "$logs/last.log" | tail -1)"
 }
@@ -71,15 +78,17 @@ median() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 
 bench() {
     local name=$1 output=$2
     shift 2
+    [[ -z $only ]] || grep -qE -- "$only" <<<"$name" || return 0
     set -- "$@" "${extra[@]}"
-    local alone=() ranks=() threads=() alone_r=() ranks_r=() threads_r=() t t_render
+    local alone=() ranks=() threads=() alone_r=() ranks_r=() threads_r=() alone_c=() ranks_c=() threads_c=()
+    local t t_render t_cpu
     for ((run = 1; run <= runs; run++)); do
         time_run t "$crtc" --threads 1 "$@" -o "$out/alone.$output"
-        alone+=("$t") alone_r+=("$t_render")
+        alone+=("$t") alone_r+=("$t_render") alone_c+=("$t_cpu")
         time_run t "${mpirun[@]}" -np 2 "$crtc" --threads 1 "$@" -o "$out/ranks.$output"
-        ranks+=("$t") ranks_r+=("$t_render")
+        ranks+=("$t") ranks_r+=("$t_render") ranks_c+=("$t_cpu")
         time_run t "$crtc" --threads 2 "$@" -o "$out/threads.$output"
-        threads+=("$t") threads_r+=("$t_render")
+        threads+=("$t") threads_r+=("$t_render") threads_c+=("$t_cpu")
         for way in ranks threads; do
             for f in "$out"/alone.${output/\%04d/*}; do
                 cmp -s "$f" "${f/alone./$way.}" || { echo "$0: $name: $way made a different ${f##*/}" >&2; exit 1; }
@@ -88,13 +97,16 @@ bench() {
     done
     row "$name, wall" "$(median "${alone[@]}")" "$(median "${ranks[@]}")" "$(median "${threads[@]}")"
     row "$name, crtc's time" "$(median "${alone_r[@]}")" "$(median "${ranks_r[@]}")" "$(median "${threads_r[@]}")"
+    # Processor time: on a loaded machine the one figure the other builds do not change much.
+    # "speed-up" here is 1 process's processor time over the others', the work each way wastes.
+    row "$name, processor time" "$(median "${alone_c[@]}")" "$(median "${ranks_c[@]}")" "$(median "${threads_c[@]}")"
 }
 row() { # name alone ranks threads
     awk -v n="$1" -v a="$2" -v r="$3" -v h="$4" 'BEGIN {
         printf "| %s | %.2f | %.2f | %.2f | %.2fx | %.2fx | %+.1f %% |\n", n, a, r, h, a / r, a / h, (a / r - a / h) / (a / h) * 100 }'
 }
 
-echo "crtc: $crtc; $runs runs, medians; stills ${width}x${height}, animation $frames frames${extra:+; options ${extra[*]}}"
+echo "crtc: $crtc; $runs runs, medians; stills ${width}x${height}, animation $frames frames${extra:+; options ${extra[*]}}; load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo
 echo "| workload | 1 process x 1 thread (s) | 2 processes x 1 thread (s) | 1 process x 2 threads (s) | speed-up, 2 processes | speed-up, 2 threads | processes against threads |"
 echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: |"
@@ -103,5 +115,9 @@ for scene in "$root"/bench/render/*.crt; do
     bench "$name ${width}x${height}" "$name.png" "$scene" --width "$width" --height "$height"
 done
 bench "orbit, $frames frames" "orbit_%04d.png" "$root/demos/orbit.crt" --frames "$frames"
+# The same work either way: the costly corner's tiles handed out first, then last.
+bench "corner, costly tiles first" "corner_first.png" "$here/corner.crt" --time 0
+bench "corner, costly tiles last" "corner_last.png" "$here/corner.crt" --time 1
 echo
+echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "images and logs: $out$keep_hint"

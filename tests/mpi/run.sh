@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # crtc under a real mpirun (OpenMPI): renders shared over 1, 2 and 3 processes are the same
 # bits as crtc alone; a rank that fails or is killed ends the job with an error and no image.
-#   run.sh stills|animation|failure|killed CRTC
+#   run.sh stills|animation|frames|frame_failure|frame_continue|failure|killed CRTC
 set -u
 case_name=$1
-crtc=$2
+crtc=$(realpath "$2") # absolute: some checks run crtc from other folders
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -96,6 +96,119 @@ animation() {
     done
 }
 
+# Frames shared out whole: each evaluated once, on the rank that renders it; the files, the
+# GIF, the reuse of unchanged frames and --stats as crtc alone has them.
+frames() {
+    mkdir "$work/alone" "$work/shared"
+    "$crtc" --quiet --stats --frames 9 "$here/moving.crt" -o "$work/alone/f_%02d.png" \
+        >"$work/alone.out" 2>"$work/alone.err"
+    "$crtc" --quiet --frames 9 "$here/moving.crt" -o "$work/alone.gif" >/dev/null
+    for processes in 1 2 3; do
+        for threads in 1 2; do
+            rm -f "$work"/shared/*
+            expect_status 0 "9 frames, $processes processes x $threads threads" mpi "$processes" \
+                --quiet --stats --threads "$threads" --frames 9 "$here/moving.crt" -o "$work/shared/f_%02d.png"
+            for f in "$work"/alone/*.png; do
+                cmp -s "$f" "$work/shared/$(basename "$f")" ||
+                    fail "$(basename "$f") of $processes x $threads differs from crtc alone's"
+            done
+            [ "$(ls "$work/shared" | wc -l)" = 9 ] || fail "$processes x $threads wrote $(ls "$work/shared")"
+            [ "$(grep -c "evaluating frame" "$work/out")" = 9 ] ||
+                fail "$processes x $threads: frames evaluated $(grep -c "evaluating frame" "$work/out") times, not 9"
+            for frame in 0 1 2 3 4 5 6 7 8; do
+                grep -q "^evaluating frame $frame " "$work/out" || fail "frame $frame was not evaluated"
+            done
+            expect_text "$work/err" "moving.crt:.*warning" "the frames' warnings are shown"
+            diff <(grep "rays:" "$work/alone.err") <(grep "rays:" "$work/err") >/dev/null ||
+                fail "--stats of $processes x $threads: $(grep rays: "$work/err"), alone: $(grep rays: "$work/alone.err")"
+        done
+        expect_status 0 "GIF of 9 frames, $processes processes" mpi "$processes" --quiet --frames 9 \
+            "$here/moving.crt" -o "$work/shared.gif"
+        cmp -s "$work/alone.gif" "$work/shared.gif" || fail "the GIF of $processes processes differs"
+    done
+    # Unchanged frames (animation.crt stops moving at frame 3) are reused, not traced again.
+    "$crtc" --quiet --stats --frames 8 "$here/animation.crt" -o "$work/still.gif" 2>"$work/alone.err"
+    expect_status 0 "GIF with unchanged frames" mpi 3 --quiet --stats --frames 8 "$here/animation.crt" -o "$work/shared.gif"
+    expect_text "$work/err" "frames reused unchanged 4" "unchanged frames of the GIF reused"
+    diff <(grep "rays:" "$work/alone.err") <(grep "rays:" "$work/err") >/dev/null ||
+        fail "unchanged frames were traced: $(grep rays: "$work/err")"
+    cmp -s "$work/still.gif" "$work/shared.gif" || fail "the GIF with unchanged frames differs"
+    # A frame range: its frames only, the first of them reused as alone when unchanged.
+    rm -f "$work"/shared/*
+    expect_status 0 "--frame-range" mpi 3 --quiet --frames 9 --frame-range 3:7 \
+        "$here/moving.crt" -o "$work/shared/f_%02d.png"
+    [ "$(ls "$work/shared" | tr '\n' ' ')" = "f_03.png f_04.png f_05.png f_06.png f_07.png " ] ||
+        fail "--frame-range 3:7 wrote $(ls "$work/shared" | tr '\n' ' ')"
+    [ "$(grep -c "evaluating frame" "$work/out")" = 5 ] || fail "--frame-range 3:7 evaluated $(grep -c "evaluating" "$work/out") frames"
+    for f in "$work"/shared/*.png; do
+        cmp -s "$f" "$work/alone/$(basename "$f")" || fail "$(basename "$f") of --frame-range differs"
+    done
+}
+
+# A frame that fails stops the job with its error on rank 0: the frames before it written,
+# none after, no temporary file, no GIF.
+frame_failure() {
+    mkdir "$work/alone" "$work/shared"
+    "$crtc" --quiet --frames 9 "$here/moving.crt" -o "$work/alone/f_%02d.png" >/dev/null
+    for processes in 2 3; do
+        rm -f "$work"/shared/*
+        expect_status 1 "frame 9 fails, $processes processes" mpi "$processes" --quiet --frames 12 \
+            "$here/moving.crt" -o "$work/shared/f_%02d.png"
+        [ "$(grep -c "moving.crt:6:5: error: sqrt of a negative number" "$work/err")" = 1 ] ||
+            fail "frame 9's error was not printed once: $(cat "$work/err")"
+        expect_text "$work/err" "frame 9 has errors" "the failed frame is named"
+        [ "$(ls -A "$work/shared" | tr '\n' ' ')" = "$(ls "$work/alone" | tr '\n' ' ')" ] ||
+            fail "$processes processes left $(ls -A "$work/shared" | tr '\n' ' ')"
+        for f in "$work"/alone/*.png; do
+            cmp -s "$f" "$work/shared/$(basename "$f")" || fail "$(basename "$f") before the failed frame differs"
+        done
+        expect_status 1 "a GIF with a failed frame" mpi "$processes" --quiet --frames 12 "$here/moving.crt" -o "$work/failed.gif"
+        [ ! -e "$work/failed.gif" ] || fail "a GIF was written although frame 9 failed"
+        ls -A "$work" | grep -q "\.tmp$" && fail "a temporary file was left: $(ls -A "$work")"
+    done
+    # A rank that fails whatever frame it gets: named on rank 0 with its message.
+    rm -f "$work"/shared/*
+    CRT_TEST_FAIL_RANK=1 expect_status 1 "rank 1 fails its frames" mpi 3 --quiet --frames 9 \
+        "$here/moving.crt" -o "$work/shared/f_%02d.png"
+    expect_text "$work/err" "rank 1 on .* cannot evaluate frame [0-9]" "the failed rank is named"
+    expect_text "$work/err" "evaluation failed on purpose" "its message is shown"
+    [ "$(ls "$work/shared" | wc -l)" -lt 9 ] || fail "every frame was written although rank 1 failed"
+    ls -A "$work/shared" | grep -q "\.tmp$" && fail "a temporary file was left: $(ls -A "$work/shared")"
+}
+
+# An interrupted render of an animation, finished by --continue under mpirun: the frames
+# written before are not traced again, and the files are the same as one run's.
+frame_continue() {
+    mkdir "$work/alone" "$work/shared"
+    local size=(--width 320 --height 240 --supersampling 3)
+    "$crtc" --quiet --stats --frames 9 "${size[@]}" "$here/moving.crt" -o "$work/alone/f_%02d.png" \
+        >/dev/null 2>"$work/alone.err"
+    "$crtc" --quiet --threads 1 --frames 9 "${size[@]}" "$here/moving.crt" -o "$work/shared/f_%02d.png" \
+        >/dev/null 2>&1 &
+    local job=$!
+    for _ in $(seq 600); do
+        [ -e "$work/shared/f_02.png" ] && break
+        sleep 0.05
+    done
+    kill -INT "$job"
+    wait "$job"
+    local before
+    before=$(ls "$work/shared" | grep -c "png$")
+    [ -e "$work/shared/.f_%02d.png.crtc-resume" ] ||
+        fail "the interrupted run left no resume log: $(ls -A "$work/shared")"
+    expect_status 0 "--continue over 3 processes" mpi 3 --quiet --stats --continue --frames 9 "${size[@]}" \
+        "$here/moving.crt" -o "$work/shared/f_%02d.png"
+    for f in "$work"/alone/*.png; do
+        cmp -s "$f" "$work/shared/$(basename "$f")" || fail "$(basename "$f") continued differs from one run's"
+    done
+    [ "$(ls -A "$work/shared" | wc -l)" = 9 ] || fail "--continue left $(ls -A "$work/shared" | tr '\n' ' ')"
+    local all continued
+    all=$(sed -n 's/.*rays: camera \([0-9]*\),.*/\1/p' "$work/alone.err")
+    continued=$(sed -n 's/.*rays: camera \([0-9]*\),.*/\1/p' "$work/err")
+    [ -n "$continued" ] && [ "$continued" -lt "$all" ] ||
+        fail "--continue traced $continued camera rays after $before frames were written; a whole run traces $all"
+}
+
 failure() {
     # The rank that fails is named on rank 0, with its message; nothing is written.
     CRT_TEST_FAIL_RANK=1 expect_status 1 "rank 1 fails" mpi 3 "$here/still.crt" -o "$work/out.png"
@@ -111,21 +224,31 @@ failure() {
 #!/usr/bin/env bash
 mkdir -p "$work/rank\$OMPI_COMM_WORLD_RANK" && cd "$work/rank\$OMPI_COMM_WORLD_RANK"
 printf 'Settings { width -> 8 height -> 8 }\nScene { Sphere { center -> vec3(0, 0, 0) radius -> 0.%s } }\n' "\${OMPI_COMM_WORLD_RANK}5" >scene.crt
-exec "$crtc" scene.crt -o "$work/differ.png"
+exec "$crtc" scene.crt "\$@"
 SH
     chmod +x "$work/differ.sh"
-    expect_status 1 "different scenes" timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 "$work/differ.sh"
+    expect_status 1 "different scenes" timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 \
+        "$work/differ.sh" -o "$work/differ.png"
     expect_text "$work/err" "evaluated different scenes" "different scenes are reported"
     [ ! -e "$work/differ.png" ] || fail "an image was written from different scenes"
+    # An animation: the scripts are compared before any frame is handed out.
+    expect_status 1 "different scripts, an animation" timeout 120 mpirun --allow-run-as-root --oversubscribe \
+        -np 2 "$work/differ.sh" --frames 3 -o "$work/differ_%d.png"
+    expect_text "$work/err" "evaluated different scenes for the script" "different scripts are reported"
+    [ "$(grep -c "evaluated different scenes" "$work/err")" = 1 ] || fail "different scripts reported more than once"
+    ls "$work" | grep -q "^differ_" && fail "frames were written from different scripts: $(ls "$work")"
 }
 
-killed() {
-    # A render of a few seconds; once rank 0 reports progress, rank 1 is killed.
-    mpi 3 --threads 1 "$here/still.crt" --width 640 --height 480 --supersampling 4 \
-        -o "$work/out.png" >"$work/out" 2>"$work/err" &
+# kill_rank_1 OUTPUT crtc-arguments...: a render of a few seconds over 3 processes; once rank 0
+# reports progress, rank 1 is killed. The job must end with an error, without hanging,
+# leaving no image and no temporary file.
+kill_rank_1() {
+    local output=$1
+    shift
+    mpi 3 --threads 1 "$@" -o "$output" >"$work/out" 2>"$work/err" &
     local job=$! rank1=""
     for _ in $(seq 600); do
-        grep -q "crtc: [0-9]*%" "$work/err" 2>/dev/null && break
+        grep -q "crtc: .*[0-9]*%" "$work/err" 2>/dev/null && break
         sleep 0.1
     done
     for pid in $(pgrep -x crtc); do
@@ -141,8 +264,14 @@ killed() {
     [ "$status" != 0 ] || fail "the job succeeded although rank 1 was killed"
     [ "$status" != 124 ] || fail "the job hung after rank 1 was killed"
     expect_text "$work/err" "rank 1 .*exited on signal 9" "mpirun names the killed rank"
-    [ ! -e "$work/out.png" ] || fail "an image was written although rank 1 was killed"
+    [ ! -e "$output" ] || fail "an image was written although rank 1 was killed"
     ls -A "$work" | grep -q "\.tmp$" && fail "a temporary file was left: $(ls -A "$work")"
+}
+
+killed() {
+    kill_rank_1 "$work/out.png" "$here/still.crt" --width 640 --height 480 --supersampling 4
+    # An animation shared by frames, written as a GIF at the end.
+    kill_rank_1 "$work/out.gif" "$here/moving.crt" --frames 9 --width 320 --height 240 --supersampling 4
 }
 
 "$case_name"

@@ -1,12 +1,17 @@
 // crtc under mpirun, built with MPI.
 #include "distributed_render.hpp"
 
+#include "captured_errors.hpp"
 #include "frame_agreement.hpp"
+#include "frame_dispatcher.hpp"
+#include "frame_worker.hpp"
 #include "mpi_session.hpp"
+#include "stop_signals.hpp"
 #include "tile_dispatcher.hpp"
 #include "tile_worker.hpp"
 
 #include <csignal>
+#include <thread>
 
 namespace crt::crtc::distributed {
 
@@ -43,12 +48,50 @@ int renderOnRankZero(MpiSession& session, const Options& options,
     return status;
 }
 
+/// An animation: each frame evaluated and traced whole on one rank, rank 0 included (its
+/// worker runs on a thread beside the dispatcher, which writes every file).
+int renderFramesOnRankZero(MpiSession& session, const Options& options,
+                           const CompileFrame& compileFrame) {
+    Command command{Command::ServeFrames, 0, 0, 0};
+    session.broadcast(command);
+    if (!sameScriptOnEveryRank(session, options)) {
+        Command stop{Command::Stop, 0, 0, 1};
+        session.broadcast(stop);
+        return 1;
+    }
+    stopWhenMpirunEndsTheJob();
+    FrameDispatcher dispatcher(session, options);
+    // The worker's diagnostics are printed with its frame, when the run reaches it: not those
+    // of frames evaluated ahead of one that failed.
+    CapturedErrors workerErrors(std::this_thread::get_id());
+    std::thread worker(
+        [&] { FrameWorker(dispatcher.localLink(), 0, options, compileFrame, workerErrors).run(); });
+    const int status = renderFedFrames(options, dispatcher);
+    dispatcher.finish();
+    worker.join();
+    Command stop{Command::Stop, 0, 0, status};
+    session.broadcast(stop);
+    return status;
+}
+
 } // namespace
 
 int renderDistributed(const Options& options, const CompileFrame& compileFrame) {
     MpiSession session(nullptr, nullptr);
-    if (session.root()) return renderOnRankZero(session, options, compileFrame);
-    return serveRankZero(session, options, compileFrame);
+    int status = 0;
+    // A single frame is shared by tiles; the frames of an animation are shared out whole.
+    if (!session.root())
+        status = serveRankZero(session, options, compileFrame);
+    else if (options.frames.selected() > 1)
+        status = renderFramesOnRankZero(session, options, compileFrame);
+    else
+        status = renderOnRankZero(session, options, compileFrame);
+    // The job is over. Every rank returns its status, so mpirun, seeing the first rank that
+    // exits with a failure, ends the others as they finalise MPI: nothing is left to clean up
+    // or to say then.
+    setStopNote("");
+    std::signal(SIGCONT, SIG_DFL);
+    return status;
 }
 
 } // namespace crt::crtc::distributed

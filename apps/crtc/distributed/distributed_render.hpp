@@ -1,6 +1,8 @@
 // crtc under mpirun: one render shared out over the processes of an MPI job. Rank 0 runs the
-// render as crtc alone would (frames, output, progress, resume log), its tiles traced by every
-// rank; the other ranks evaluate the same frames and trace the tiles rank 0 hands them.
+// render as crtc alone would (frames, output, progress, resume log). A single frame is shared
+// by tiles: every rank evaluates it and traces the tiles rank 0 hands it (tile_dispatcher.hpp).
+// An animation is shared by frames: each evaluated and traced whole on the rank that asked for
+// it, rank 0 included (frame_dispatcher.hpp).
 #pragma once
 
 #include "render_command.hpp"

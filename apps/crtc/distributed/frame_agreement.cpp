@@ -7,33 +7,13 @@
 
 #include <cstdlib>
 #include <exception>
+#include <fstream>
+#include <functional>
 #include <iostream>
 
 namespace crt::crtc::distributed {
 
 namespace {
-
-/// Whether the tests asked this rank to fail (kTestFailRankVariable names it).
-bool failureRequested(const MpiSession& session) {
-    const char* rank = std::getenv(kTestFailRankVariable);
-    return rank && std::to_string(session.rank()) == rank;
-}
-
-/// Evaluates the frame on this rank; false, with the reason in `why`, if it fails.
-bool evaluateHere(const MpiSession& session, const CompileFrame& compileFrame, int frame,
-                  lang::Compilation& c, std::string& why) {
-    if (failureRequested(session)) {
-        why = fmt::format("crtc: evaluation failed on purpose ({}={})\n", kTestFailRankVariable,
-                          session.rank());
-        return false;
-    }
-    try {
-        if (compileFrame(frame, c) && c.scene) return true;
-    } catch (const std::exception& e) {
-        why = fmt::format("crtc: {}\n", e.what());
-    }
-    return false;
-}
 
 /// On rank 0: receives the messages of the `failures` other ranks that could not evaluate, and
 /// prints them if rank 0 evaluated the frame (else they repeat, as a rule, what it printed).
@@ -47,16 +27,50 @@ void reportFailures(MpiSession& session, int frame, uint64_t failures, bool prin
     }
 }
 
+/// The message for ranks that evaluated different scenes: `what` is "frame 3", "the script".
+void reportDifferentScenes(const std::string& what) {
+    std::cerr << fmt::format(
+        "crtc: the processes of the MPI job evaluated different scenes for {}: the script, a "
+        "file it includes, an image or mesh it reads (compared by size and modification time) "
+        "or crtc itself differs between the machines; give each the same files (copied with "
+        "their times, e.g. rsync -a) and the same crtc\n",
+        what);
+}
+
 } // namespace
+
+bool sameScriptOnEveryRank(MpiSession& session, const Options& options) {
+    std::ifstream file(options.script, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const std::string identity = fmt::format("{}\n{}\n{}", CRT_VERSION, options.script, text);
+    const uint64_t hash = std::hash<std::string>{}(identity) ^ identity.size();
+    const auto [least, greatest] = session.rangeOverRanks(hash);
+    if (least != greatest && session.root()) reportDifferentScenes("the script");
+    return least == greatest;
+}
+
+bool evaluateOnThisRank(int rank, const CompileFrame& compileFrame, int frame,
+                        lang::Compilation& c, std::string& why) {
+    const char* failing = std::getenv(kTestFailRankVariable);
+    if (failing && std::to_string(rank) == failing) {
+        why = fmt::format("crtc: evaluation failed on purpose ({}={})\n", kTestFailRankVariable, rank);
+        return false;
+    }
+    try {
+        if (compileFrame(frame, c) && c.scene) return true;
+    } catch (const std::exception& e) {
+        why = fmt::format("crtc: {}\n", e.what());
+    }
+    return false;
+}
 
 bool evaluateOnEveryRank(MpiSession& session, const Options& options,
                          const CompileFrame& compileFrame, int frame, lang::Compilation& c,
-                         std::ostringstream* captured) {
+                         CapturedErrors* captured) {
     std::string why;
-    const bool ok = evaluateHere(session, compileFrame, frame, c, why);
+    const bool ok = evaluateOnThisRank(session.rank(), compileFrame, frame, c, why);
     if (captured) {
-        why = captured->str() + why;
-        captured->str("");
+        why = captured->take() + why;
     } else if (!why.empty()) {
         std::cerr << why;
     }
@@ -68,13 +82,7 @@ bool evaluateOnEveryRank(MpiSession& session, const Options& options,
     if (session.root() && failures > 0)
         reportFailures(session, frame, ok ? failures : failures - 1, ok);
     if (failures > 0) return false;
-    if (least != greatest && session.root())
-        std::cerr << fmt::format(
-            "crtc: the processes of the MPI job evaluated different scenes for frame {}: the "
-            "script, a file it includes, an image or mesh it reads (compared by size and "
-            "modification time) or crtc itself differs between the machines; give each the "
-            "same files (copied with their times, e.g. rsync -a) and the same crtc\n",
-            frame);
+    if (least != greatest && session.root()) reportDifferentScenes(fmt::format("frame {}", frame));
     return least == greatest;
 }
 

@@ -20,6 +20,15 @@ std::array<uint64_t, kStatCount> statArray(const tracer::RayStats& s) {
             s.nodesVisited, s.intersectionTests, s.cachedFrames};
 }
 
+/// Waits for a request to complete, testing it every 50 us rather than spinning as MPI_Wait does.
+void waitAsleep(MPI_Request& request) {
+    for (int done = 0;;) {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done) return;
+        std::this_thread::sleep_for(std::chrono::microseconds(50));
+    }
+}
+
 } // namespace
 
 MpiSession::MpiSession(int* argc, char*** argv) {
@@ -88,7 +97,12 @@ tracer::RayStats MpiSession::sumStats(const tracer::RayStats& stats) {
 }
 
 void MpiSession::send(int rank, Tag tag, const void* data, size_t bytes) {
-    MPI_Send(data, static_cast<int>(bytes), MPI_BYTE, rank, tag, MPI_COMM_WORLD);
+    // A small message leaves at once. When the receiver is behind (rank 0 writing a frame, or
+    // kept off its core by the load), wait asleep: MPI_Send would spin on a core the receiver
+    // may need.
+    MPI_Request request;
+    MPI_Isend(data, static_cast<int>(bytes), MPI_BYTE, rank, tag, MPI_COMM_WORLD, &request);
+    waitAsleep(request);
 }
 
 bool MpiSession::poll(int& source, int& tag, int& bytes) {
@@ -119,7 +133,10 @@ std::vector<char> MpiSession::receiveMatching(int& source, int tag) {
     MPI_Get_count(&status, MPI_BYTE, &bytes);
     std::vector<char> data(static_cast<size_t>(bytes));
     source = status.MPI_SOURCE;
-    MPI_Recv(data.data(), bytes, MPI_BYTE, source, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    // A large message comes in pieces as fast as its sender hands them over: wait asleep.
+    MPI_Request request;
+    MPI_Irecv(data.data(), bytes, MPI_BYTE, source, tag, MPI_COMM_WORLD, &request);
+    waitAsleep(request);
     return data;
 }
 

@@ -18,11 +18,21 @@ enum Tag : int {
     kErrorTag,         ///< worker → 0: why its render failed (text)
     kDoneTag,          ///< worker → 0: it has sent its last result of the frame
     kEvaluationTag,    ///< worker → 0: why it could not evaluate a frame (text)
+    // An animation's frames shared out whole (frame_dispatcher.hpp):
+    kFrameRequestTag, ///< worker → 0: it can take a frame (no data)
+    kFrameTag,        ///< 0 → worker: an int, the frame to evaluate; -1: no more
+    kFactsTag,        ///< worker → 0: the frame evaluated (FrameFacts, then its messages)
+    kFrameTileTag,    ///< worker → 0: the frame's number, then a finished tile (TileMessage)
+    kFrameErrorTag,   ///< worker → 0: the frame's number, then why its render failed (text)
+    kFrameDoneTag,    ///< worker → 0: the frame traced (FrameDone) after its tiles
+    kVerdictTag,      ///< 0 → worker: two ints, the frame and 1 if it is wanted, 0 if not
+    kCancelTag,       ///< 0 → worker: an int, a frame no longer wanted
+    kIdleTag,         ///< worker → 0: it has finished its last frame (no data)
 };
 
 /// What rank 0 tells every rank to do next, broadcast.
 struct Command {
-    enum Kind : int { Evaluate, Render, Stop };
+    enum Kind : int { Evaluate, Render, ServeFrames, Stop };
     int kind = Stop;
     int frame = 0;     ///< Evaluate: the frame
     int tileCount = 0; ///< Render: how many tiles the job has (their list follows)

@@ -1,7 +1,10 @@
 // The side of a shared render on the ranks other than 0.
 #include "tile_worker.hpp"
 
+#include "captured_errors.hpp"
 #include "frame_agreement.hpp"
+#include "frame_link.hpp"
+#include "frame_worker.hpp"
 #include "tile_message.hpp"
 
 #include <algorithm>
@@ -12,7 +15,6 @@
 #include <exception>
 #include <iostream>
 #include <mutex>
-#include <sstream>
 #include <thread>
 
 namespace crt::crtc::distributed {
@@ -170,20 +172,6 @@ void TileWorker::render(const scene::SceneDesc* scene, const std::vector<tracer:
     session_.sumStats(outcome.stats);
 }
 
-/// Keeps this rank's standard error (diagnostics, warnings) for rank 0 while it lives.
-class CapturedErrors {
-  public:
-    CapturedErrors() : previous_(std::cerr.rdbuf(text_.rdbuf())) {}
-    ~CapturedErrors() { std::cerr.rdbuf(previous_); }
-    CapturedErrors(const CapturedErrors&) = delete;
-    CapturedErrors& operator=(const CapturedErrors&) = delete;
-    std::ostringstream& text() { return text_; }
-
-  private:
-    std::ostringstream text_;
-    std::streambuf* previous_;
-};
-
 } // namespace
 
 int serveRankZero(MpiSession& session, const Options& options, const CompileFrame& compileFrame) {
@@ -197,13 +185,17 @@ int serveRankZero(MpiSession& session, const Options& options, const CompileFram
         if (command.kind == Command::Stop) return command.status;
         if (command.kind == Command::Evaluate) {
             evaluated = evaluateOnEveryRank(session, options, compileFrame, command.frame, c,
-                                            &errors.text());
+                                            &errors);
             if (evaluated) applyCommandLine(options, *c.scene);
         } else if (command.kind == Command::Render) {
             std::vector<int> corners;
             session.broadcast(corners, 4 * command.tileCount);
             if (command.tileCount > 0)
                 worker.render(evaluated ? &*c.scene : nullptr, tilesOfCorners(corners));
+        } else if (command.kind == Command::ServeFrames) {
+            if (!sameScriptOnEveryRank(session, options)) continue;
+            MpiFrameLink link(session);
+            FrameWorker(link, session.rank(), options, compileFrame, errors).run();
         }
     }
 }

@@ -1,5 +1,6 @@
-// The side of a shared render on the ranks other than 0: they evaluate every frame rank 0
-// evaluates, and trace the tiles it hands them (tile_dispatcher.hpp has the protocol).
+// The side of a shared render on the ranks other than 0: they evaluate the frame rank 0
+// evaluates and trace the tiles it hands them (tile_dispatcher.hpp has the protocol), or take
+// whole frames of an animation (frame_worker.hpp).
 #pragma once
 
 #include "mpi_session.hpp"

@@ -1,0 +1,98 @@
+// The messages of an animation shared out by frames (frame_dispatcher.hpp has the protocol):
+// what a rank tells rank 0 of a frame it evaluated, and of one it traced.
+#pragma once
+
+#include "tracer/renderer.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace crt::crtc::distributed {
+
+/// A frame evaluated on some rank: what rank 0 needs to decide whether it is traced, and to
+/// write it. Sent as raw bytes between processes of the same crtc.
+struct FrameFacts {
+    int32_t frame = 0;
+    int32_t ok = 0;
+    int32_t width = 0, height = 0;
+    double gamma = 1.0;
+    int32_t srgb = 0;
+    int32_t padding = 0;
+    uint64_t hash = 0;       ///< frameHash, for the resume log
+    uint64_t keyDigest[3]{}; ///< unchangedFrameKey digested: equal keys, equal digests
+    bool sameScene(const FrameFacts& other) const {
+        return std::memcmp(keyDigest, other.keyDigest, sizeof keyDigest) == 0;
+    }
+};
+
+/// A frame traced: its ray counts and timings, for the summary and --stats.
+struct FrameDone {
+    int32_t frame = 0;
+    uint64_t rays[7]{}; ///< camera, reflection, refraction, shadow, nodes, tests, cached
+    double buildSeconds = 0, renderSeconds = 0;
+    uint64_t primitives = 0, bvhNodes = 0;
+    int32_t bvhDepth = 0;
+    int32_t ok = 0;
+};
+
+FrameDone frameDoneOf(const tracer::RenderOutcome& outcome);
+/// The outcome a FrameDone describes (ok, stats, timings, BVH size).
+tracer::RenderOutcome outcomeOf(const FrameDone& done);
+
+/// Tiles of one frame sent together: the frame's number, then each tile (tile_message.hpp)
+/// after its size. One message for the tiles a worker finished in a few milliseconds, rather
+/// than one each: a small message waits for the receiver to take the one before it.
+class TileBatch {
+  public:
+    explicit TileBatch(int32_t frame) { append(&frame, sizeof frame); }
+    void add(const std::vector<char>& tile) {
+        const uint32_t size = static_cast<uint32_t>(tile.size());
+        append(&size, sizeof size);
+        append(tile.data(), tile.size());
+    }
+    bool empty() const { return bytes_.size() == sizeof(int32_t); }
+    const std::vector<char>& bytes() const { return bytes_; }
+
+    /// Calls `take` with each tile of a batch's bytes; false for bytes that are not a batch.
+    template <class Take> static bool split(const std::vector<char>& bytes, Take&& take) {
+        size_t at = sizeof(int32_t);
+        while (at < bytes.size()) {
+            uint32_t size = 0;
+            if (bytes.size() - at < sizeof size) return false;
+            std::memcpy(&size, bytes.data() + at, sizeof size);
+            at += sizeof size;
+            if (bytes.size() - at < size) return false;
+            take(std::vector<char>(bytes.begin() + static_cast<std::ptrdiff_t>(at),
+                                   bytes.begin() + static_cast<std::ptrdiff_t>(at + size)));
+            at += size;
+        }
+        return at == bytes.size();
+    }
+
+  private:
+    void append(const void* data, size_t size) {
+        const char* begin = static_cast<const char*>(data);
+        bytes_.insert(bytes_.end(), begin, begin + size);
+    }
+    std::vector<char> bytes_;
+};
+
+/// A fixed-size struct, then free text (a frame's diagnostics), as one message.
+template <class Fixed> std::vector<char> withText(const Fixed& fixed, const std::string& text) {
+    std::vector<char> message(sizeof fixed + text.size());
+    std::memcpy(message.data(), &fixed, sizeof fixed);
+    if (!text.empty()) std::memcpy(message.data() + sizeof fixed, text.data(), text.size());
+    return message;
+}
+/// The struct and text of withText's message; false for a message too short to be one.
+template <class Fixed>
+bool splitText(const std::vector<char>& message, Fixed& fixed, std::string* text = nullptr) {
+    if (message.size() < sizeof fixed) return false;
+    std::memcpy(&fixed, message.data(), sizeof fixed);
+    if (text) text->assign(message.begin() + sizeof fixed, message.end());
+    return true;
+}
+
+} // namespace crt::crtc::distributed
