@@ -67,6 +67,10 @@ stills() {
         <(grep -E "rays:|samples/pixel" "$work/err" | sed 's/[0-9.]*s,.*//') >/dev/null ||
         fail "--stats over 3 processes differs from crtc alone: $(grep rays: "$work/err")"
     [ "$(grep -c 'crtc: stats: rays' "$work/err")" = 1 ] || fail "--stats printed by more than rank 0"
+    # --alpha: tiles of four channels.
+    "$crtc" --quiet --alpha "$here/still.crt" -o "$work/alpha_alone.png"
+    expect_status 0 "--alpha" mpi 3 --quiet --alpha "$here/still.crt" -o "$work/alpha_shared.png"
+    cmp -s "$work/alpha_alone.png" "$work/alpha_shared.png" || fail "--alpha over 3 processes differs"
 }
 
 animation() {
@@ -133,6 +137,15 @@ frames() {
     diff <(grep "rays:" "$work/alone.err") <(grep "rays:" "$work/err") >/dev/null ||
         fail "unchanged frames were traced: $(grep rays: "$work/err")"
     cmp -s "$work/still.gif" "$work/shared.gif" || fail "the GIF with unchanged frames differs"
+    # Frames with --alpha: the frames' tiles carry four channels.
+    mkdir "$work/alpha_alone" "$work/alpha_shared"
+    "$crtc" --quiet --alpha --frames 3 "$here/moving.crt" -o "$work/alpha_alone/a_%d.png" >/dev/null
+    expect_status 0 "3 frames with --alpha" mpi 2 --quiet --alpha --frames 3 "$here/moving.crt" \
+        -o "$work/alpha_shared/a_%d.png"
+    for f in "$work"/alpha_alone/*.png; do
+        cmp -s "$f" "$work/alpha_shared/$(basename "$f")" ||
+            fail "$(basename "$f") with --alpha differs from crtc alone's"
+    done
     # A frame range: its frames only, the first of them reused as alone when unchanged.
     rm -f "$work"/shared/*
     expect_status 0 "--frame-range" mpi 3 --quiet --frames 9 --frame-range 3:7 \

@@ -151,14 +151,14 @@ void FrameDispatcher::takeTile(int rank, const std::vector<char>& message) {
     if (!f) return;
     bool valid = true;
     const bool whole = TileBatch::split(message, [&](const std::vector<char>& tile) {
-        std::vector<float> rgb;
+        std::vector<float> pixels;
         int index = 0;
-        if (!decodeTile(tile, f->tileList, rgb, index)) {
+        if (!decodeTile(tile, f->tileList, channels(), pixels, index)) {
             valid = false;
             return;
         }
         const tracer::Tile& t = f->tileList[static_cast<size_t>(index)];
-        f->tiles[{t.x0, t.y0}] = std::move(rgb);
+        f->tiles[{t.x0, t.y0}] = std::move(pixels);
     });
     if ((!whole || !valid) && f->error.empty())
         f->error = fmt::format("{} sent a tile that is not one of frame {}'s",
@@ -226,15 +226,15 @@ tracer::RenderOutcome FrameDispatcher::render(const tracer::RenderJob& job) {
             return outcome;
         }
         const tracer::Tile& tile = job.tiles[i];
-        const auto rgb = f.tiles.find({tile.x0, tile.y0});
-        if (rgb == f.tiles.end()) {
+        const auto pixels = f.tiles.find({tile.x0, tile.y0});
+        if (pixels == f.tiles.end()) {
             outcome.error = fmt::format("{} did not send every tile of frame {}",
                                         session_.describe(f.rank), consumed_);
             return outcome;
         }
         if (job.onTileDone)
-            job.onTileDone(tracer::TileResult{tile, static_cast<int>(i), rgb->second});
-        f.tiles.erase(rgb);
+            job.onTileDone(tracer::TileResult{tile, static_cast<int>(i), channels(), pixels->second});
+        f.tiles.erase(pixels);
         ++outcome.tilesDone;
         if ((i + 1) % kTilesBetweenServes == 0) serveOnce();
     }

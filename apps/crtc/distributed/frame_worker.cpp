@@ -126,6 +126,7 @@ void FrameWorker::trace(int frame, const scene::SceneDesc& scene,
         tracer::RenderJob job;
         job.tiles = tiles;
         job.threads = options_.threads;
+        job.alpha = options_.alpha;
         job.cancel = &cancel;
         job.onTileDone = [&](const tracer::TileResult& result) {
             std::vector<char> tile = encodeTile(result);
