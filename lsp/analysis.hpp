@@ -22,8 +22,9 @@ struct AnalysisOptions {
     /// What a script may read beyond its roots (crtc's --allow-read); the workspace folders
     /// are added to allowRead.
     lang::ReadPermissions access{{}, false, "the setting allowRead (or allowReadAll)"};
-    /// Tighter than crtc's defaults: an editor wants an answer, not a finished render.
-    lang::Limits limits{5'000'000, 1'000, 1'000'000, 16'384, uint64_t{512} << 20};
+    /// Tighter than crtc's defaults: an editor wants an answer, not a finished render. The
+    /// primitive count costs no expansion, so that limit stays crtc's.
+    lang::Limits limits{5'000'000, 1'000, 1'000'000, 16'384, uint64_t{512} << 20, {}};
     std::chrono::milliseconds timeBudget{1500}; ///< wall-clock limit of one evaluation
 };
 

@@ -322,6 +322,7 @@ void Server::readInitializationOptions(const json& params) {
         analysis.access.allowAll = init["allowReadAll"].get<bool>();
     readCount(init, "maxSteps", analysis.limits.maxSteps);
     readCount(init, "maxEntities", analysis.limits.maxEntities);
+    readCount(init, "maxPrimitives", analysis.limits.render.maxPrimitives);
     readCount(init, "maxDepth", analysis.limits.maxDepth);
     // The front end's stack holds at most this many nested calls (crtc's --max-depth limit).
     analysis.limits.maxDepth = std::min<uint32_t>(analysis.limits.maxDepth, lang::Limits::kMaxSupportedDepth);

@@ -3,6 +3,10 @@
 #include "tracer/geometry/obj_reader.hpp"
 #include "tracer/render_scene.hpp"
 
+#include "scene/primitive_count.hpp"
+
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <map>
 
@@ -20,6 +24,15 @@ public:
         }
         defaultMaterial_ = static_cast<int32_t>(scene_.materials.size());
         scene_.materials.emplace_back(); // the default material
+        // Counted before anything is expanded: a shared entity doubled in a loop would
+        // otherwise fill memory here. Evaluation refuses such a scene already; this is for
+        // descriptions made otherwise.
+        if (scene::drawnPrimitives(desc_) > desc_.limits.maxPrimitives) {
+            error_ = fmt::format("the scene expands to more than {} primitives; raise the limit "
+                                 "with --max-primitives",
+                                 desc_.limits.maxPrimitives);
+            return false;
+        }
         for (int32_t root : desc_.drawn)
             if (!addDrawn(root, Transform())) return false;
         finishAcceleration();
@@ -91,8 +104,18 @@ private:
             if (!data) return false;
             cached = meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*data))).first;
         }
+        // Until a mesh is read its triangles count as one primitive.
+        const size_t triangles = cached->second->triangles.size();
+        if (triangles > desc_.limits.maxPrimitives - std::min<uint64_t>(scene_.primitives.size(), desc_.limits.maxPrimitives)) {
+            const std::string where = scene::spanLocation(desc_, e.source);
+            error_ = fmt::format("{}{}the scene expands to more than {} primitives with the {} "
+                                 "triangles of {}; raise the limit with --max-primitives",
+                                 where, where.empty() ? "" : ": error: ", desc_.limits.maxPrimitives,
+                                 triangles, path);
+            return false;
+        }
         int32_t transform = addTransform(toWorld);
-        for (size_t i = 0; i < cached->second->triangles.size(); ++i) {
+        for (size_t i = 0; i < triangles; ++i) {
             scene_.primitives.push_back({MeshTriangleGeometry(cached->second, i), transform, materialOf(e)});
             scene_.primitiveEntities.push_back(entity);
             scene_.objects.push_back(static_cast<int32_t>(scene_.primitives.size() - 1));

@@ -14,8 +14,8 @@ namespace {
 
 void usage(std::FILE* out) {
     std::fputs("usage: crt-lsp [-I DIR]... [--stdlib DIR] [--assets DIR]... [--allow-read DIR]...\n"
-               "               [--allow-read-all] [--max-steps N] [--max-entities N] [--max-depth N]\n"
-               "               [--max-memory MIB] [--max-message-mib MIB] [--debounce-ms N] [--time-budget-ms N]\n"
+               "               [--allow-read-all] [--max-steps N] [--max-entities N] [--max-primitives N]\n"
+               "               [--max-depth N] [--max-memory MIB] [--max-message-mib MIB] [--debounce-ms N] [--time-budget-ms N]\n"
                "The CRT language server; an editor starts it and talks LSP over stdin/stdout.\n",
                out);
 }
@@ -40,6 +40,7 @@ bool evaluationOption(const std::string& arg, const std::function<std::string()>
     else if (arg == "--allow-read-all") analysis.access.allowAll = true;
     else if (arg == "--max-steps") limits.maxSteps = count<uint64_t>(arg, value());
     else if (arg == "--max-entities") limits.maxEntities = count<uint64_t>(arg, value());
+    else if (arg == "--max-primitives") limits.render.maxPrimitives = count<uint64_t>(arg, value());
     else if (arg == "--max-depth")
         limits.maxDepth = std::min(count<uint32_t>(arg, value()), crt::lang::Limits::kMaxSupportedDepth);
     else return false;
