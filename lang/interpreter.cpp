@@ -334,10 +334,11 @@ void Interpreter::draw(const Value& value, const Node* where) {
     case ValueKind::Entity:
         primitivesDrawn_ = scene::saturatingAdd(primitivesDrawn_, primitiveCounts_[value.index]);
         if (primitivesDrawn_ > options_.limits.render.maxPrimitives) {
-            fail(where->range, fmt::format("the scene draws more than {} primitives (CSG operands and "
-                                           "group members count each time they are used); raise "
-                                           "the limit with --max-primitives",
-                                           options_.limits.render.maxPrimitives));
+            fail(where->range,
+                 fmt::format("the scene draws more than {} primitives (CSG operands and group "
+                             "members count each time they are used); raise the limit with "
+                             "--max-primitives",
+                             options_.limits.render.maxPrimitives));
         }
         scene_.drawn.push_back(static_cast<int32_t>(value.index));
         return;

@@ -16,7 +16,8 @@ namespace crt::scene {
 
 /// a + b, or the largest uint64_t when the sum would not fit.
 inline uint64_t saturatingAdd(uint64_t a, uint64_t b) {
-    return a > std::numeric_limits<uint64_t>::max() - b ? std::numeric_limits<uint64_t>::max() : a + b;
+    constexpr uint64_t kMax = std::numeric_limits<uint64_t>::max();
+    return a > kMax - b ? kMax : a + b;
 }
 
 /// The primitives `entity` expands to, given those of the entities made before it

@@ -106,12 +106,12 @@ private:
         }
         // Until a mesh is read its triangles count as one primitive.
         const size_t triangles = cached->second->triangles.size();
-        if (triangles > desc_.limits.maxPrimitives - std::min<uint64_t>(scene_.primitives.size(), desc_.limits.maxPrimitives)) {
+        const uint64_t limit = desc_.limits.maxPrimitives;
+        if (triangles > limit - std::min<uint64_t>(scene_.primitives.size(), limit)) {
             const std::string where = scene::spanLocation(desc_, e.source);
             error_ = fmt::format("{}{}the scene expands to more than {} primitives with the {} "
                                  "triangles of {}; raise the limit with --max-primitives",
-                                 where, where.empty() ? "" : ": error: ", desc_.limits.maxPrimitives,
-                                 triangles, path);
+                                 where, where.empty() ? "" : ": error: ", limit, triangles, path);
             return false;
         }
         int32_t transform = addTransform(toWorld);

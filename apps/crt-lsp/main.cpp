@@ -15,7 +15,8 @@ namespace {
 void usage(std::FILE* out) {
     std::fputs("usage: crt-lsp [-I DIR]... [--stdlib DIR] [--assets DIR]... [--allow-read DIR]...\n"
                "               [--allow-read-all] [--max-steps N] [--max-entities N] [--max-primitives N]\n"
-               "               [--max-depth N] [--max-memory MIB] [--max-message-mib MIB] [--debounce-ms N] [--time-budget-ms N]\n"
+               "               [--max-depth N] [--max-memory MIB] [--max-message-mib MIB]\n"
+               "               [--debounce-ms N] [--time-budget-ms N]\n"
                "The CRT language server; an editor starts it and talks LSP over stdin/stdout.\n",
                out);
 }

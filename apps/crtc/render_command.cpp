@@ -41,7 +41,8 @@ void printError(const std::string& message) {
     // One located in the script is printed as the front end's diagnostics are, for editors'
     // problem matchers; any other names crtc.
     static const std::regex located("^[^\n]+?:[0-9]+:[0-9]+: error: ");
-    std::cerr << (std::regex_search(message, located) ? "" : "crtc: ") << lang::terminalSafe(message) << "\n";
+    std::cerr << (std::regex_search(message, located) ? "" : "crtc: ")
+              << lang::terminalSafe(message) << "\n";
 }
 
 const std::regex& framePattern() {
