@@ -269,7 +269,9 @@ void Interpreter::reserveLike(size_t entitiesBefore, size_t materialsBefore, uin
         return items.capacity();
     };
     try {
-        entityInfo_.reserve(reserveFor(scene_.entities, entitiesBefore));
+        const size_t entities = reserveFor(scene_.entities, entitiesBefore);
+        entityInfo_.reserve(entities);
+        primitiveCounts_.reserve(entities);
         reserveFor(scene_.materials, materialsBefore);
     } catch (const std::bad_alloc&) {
         // The vectors grow as they go instead.
@@ -306,23 +308,6 @@ void Interpreter::emit(const Value& value, const Node* where) {
     }
 }
 
-uint64_t Interpreter::countMembers(int32_t entity) const {
-    // Without recursion: groups of groups nest as deep as a loop makes them.
-    uint64_t count = 0;
-    std::vector<int32_t> pending{entity};
-    while (!pending.empty()) {
-        const int32_t next = pending.back();
-        pending.pop_back();
-        const auto* group = std::get_if<scene::GroupNode>(&scene_.entities[static_cast<size_t>(next)].shape);
-        if (!group) {
-            ++count;
-            continue;
-        }
-        pending.insert(pending.end(), group->members.begin(), group->members.end());
-    }
-    return count;
-}
-
 const Value* Interpreter::flattenEntities(const Value& list, std::vector<Value>& out) {
     // Depth-first in source order, without recursion: lists can nest deeply.
     std::vector<std::pair<const std::vector<Value>*, size_t>> stack{{list.list, 0}};
@@ -347,11 +332,13 @@ const Value* Interpreter::flattenEntities(const Value& list, std::vector<Value>&
 void Interpreter::draw(const Value& value, const Node* where) {
     switch (value.kind) {
     case ValueKind::Entity:
-        drawnCount_ += countMembers(static_cast<int32_t>(value.index));
-        if (drawnCount_ > options_.limits.maxEntities) {
-            fail(where->range, fmt::format("the scene draws more than {} entities; raise the "
-                                           "limit with --max-entities",
-                                           options_.limits.maxEntities));
+        primitivesDrawn_ = scene::saturatingAdd(primitivesDrawn_, primitiveCounts_[value.index]);
+        if (primitivesDrawn_ > options_.limits.render.maxPrimitives) {
+            fail(where->range,
+                 fmt::format("the scene draws more than {} primitives (CSG operands and group "
+                             "members count each time they are used); raise the limit with "
+                             "--max-primitives",
+                             options_.limits.render.maxPrimitives));
         }
         scene_.drawn.push_back(static_cast<int32_t>(value.index));
         return;

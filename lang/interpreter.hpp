@@ -26,7 +26,9 @@ namespace crt::lang {
 struct Limits {
     uint64_t maxSteps = 50'000'000; ///< loop iterations plus macro calls
     uint32_t maxDepth = 1'000;      ///< nested macro calls
-    uint64_t maxEntities = 10'000'000; ///< drawn entities, and the length of any list
+    /// Entities built (literals, CSG, moved entities, macro groups), drawn or not, and the
+    /// length of any list.
+    uint64_t maxEntities = 10'000'000;
     uint32_t maxSize = 16'384;      ///< image width and height
     /// Vertices, normals, texture coordinates or triangles of one mesh file (each on its own).
     uint64_t maxMeshSize = scene::kDefaultMaxMeshSize;
@@ -34,6 +36,9 @@ struct Limits {
     static constexpr uint32_t kMaxSupportedDepth = 200'000;
     /// Approximate bytes of the strings, lists and entities evaluation makes (--max-memory).
     uint64_t maxMemory = uint64_t{4} << 30;
+    /// What rendering may load (primitives, image pixels): the scene carries it to the
+    /// renderer; evaluation already refuses an entity or a scene past maxPrimitives.
+    scene::RenderLimits render;
 };
 
 struct EvalOptions {

@@ -4,6 +4,8 @@
 #include "builtins.hpp"
 #include "interpreter.hpp"
 
+#include "scene/primitive_count.hpp"
+
 #include <fmt/format.h>
 
 #include <array>
@@ -110,8 +112,6 @@ private:
     /// Appends the entities of a (nested) list in order; returns the first item that is
     /// neither an entity nor a list, or null.
     static const Value* flattenEntities(const Value& list, std::vector<Value>& out);
-    /// How many entities drawing `entity` draws: a group draws its members.
-    uint64_t countMembers(int32_t entity) const;
 
     // expressions
     Value eval(const Expr* node);
@@ -275,7 +275,9 @@ private:
     // scene under construction
     scene::SceneDesc scene_;
     std::vector<EntityInfo> entityInfo_;
-    uint64_t drawnCount_ = 0;     ///< entities drawn so far, group members counted
+    /// Per entity: the primitives it expands to (scene/primitive_count.hpp).
+    std::vector<uint64_t> primitiveCounts_;
+    uint64_t primitivesDrawn_ = 0; ///< by the entities drawn so far, saturating
     std::vector<bool> reachable_; ///< per entity: drawn, or part of something drawn
     std::set<std::tuple<WarningKind, uint32_t, uint32_t>> warnedOnce_;
     std::vector<scene::LightDesc> lights_;

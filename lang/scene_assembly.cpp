@@ -59,6 +59,7 @@ void Interpreter::assembleScene() {
     scene_.time = prelude_[preludeSlotOfT()].asDouble();
     scene_.frame = options_.frame;
     scene_.frameCount = options_.frameCount;
+    scene_.limits = options_.limits.render;
 }
 
 void Interpreter::linkSettings() {

@@ -16,14 +16,23 @@
 namespace crt::lsp {
 
 /// How the server runs the front end; set from the command line and initializationOptions.
+/// Tighter than crtc's defaults: an editor wants an answer, not a finished render. The
+/// primitive count costs no expansion, so that limit stays crtc's, as do the others.
+inline lang::Limits editorLimits() {
+    lang::Limits limits;
+    limits.maxSteps = 5'000'000;
+    limits.maxEntities = 1'000'000;
+    limits.maxMemory = uint64_t{512} << 20;
+    return limits;
+}
+
 struct AnalysisOptions {
     lang::IncludeSearch includes; ///< as crtc's -I and standard library
     std::vector<std::string> assetRoots; ///< as crtc's --assets
     /// What a script may read beyond its roots (crtc's --allow-read); the workspace folders
     /// are added to allowRead.
     lang::ReadPermissions access{{}, false, "the setting allowRead (or allowReadAll)"};
-    /// Tighter than crtc's defaults: an editor wants an answer, not a finished render.
-    lang::Limits limits{5'000'000, 1'000, 1'000'000, 16'384, uint64_t{512} << 20};
+    lang::Limits limits = editorLimits();
     std::chrono::milliseconds timeBudget{1500}; ///< wall-clock limit of one evaluation
 };
 

@@ -34,6 +34,7 @@ struct LimitSetting {
 constexpr LimitSetting kLimitSettings[] = {
     {"--max-steps", "the language server's maxSteps setting (crt.maxSteps in VS Code)"},
     {"--max-entities", "the language server's maxEntities setting (crt.maxEntities in VS Code)"},
+    {"--max-primitives", "the language server's maxPrimitives setting (crt.maxPrimitives in VS Code)"},
     {"--max-depth", "the language server's maxDepth setting"},
     {"--max-mesh-size", "the language server's maxMeshSize setting"},
     {"--max-memory", "the language server's maxMemory setting"},

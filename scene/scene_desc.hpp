@@ -226,6 +226,18 @@ inline const std::string& fileToOpen(const std::string& resolved, const std::str
     return resolved.empty() ? written : resolved;
 }
 
+/// How much rendering a scene may load: chosen outside the script (crtc's --max-primitives,
+/// --max-image-pixels), carried with the description so that every renderer of it sees them.
+struct RenderLimits {
+    /// Primitives after CSG, groups and shared entities are expanded (primitive_count.hpp),
+    /// and a mesh's triangles. A render peaks at about 650 bytes a primitive (1,000,000
+    /// spheres: 650 MB), so the default, ~3 GB, fits in the default evaluation budget
+    /// (Limits::maxMemory, 4 GiB) and is far above a hand-made scene.
+    uint64_t maxPrimitives = 5'000'000;
+    /// Pixels of one image a texture or background reads (width × height from its header).
+    uint64_t maxImagePixels = 100'000'000;
+};
+
 /// The evaluated scene.
 struct SceneDesc {
     static constexpr int kSchemaVersion = 1;
@@ -247,6 +259,7 @@ struct SceneDesc {
     double time = 0;            ///< t of this evaluation
     int frame = 0;
     int frameCount = 1;
+    RenderLimits limits; ///< not part of the script: from the evaluation's options
 
     /// The finish of `material`.
     const FinishDesc& finishOf(const MaterialDesc& material) const {
@@ -261,5 +274,11 @@ struct SceneDesc {
         return static_cast<int32_t>(finishes.size() - 1);
     }
 };
+
+/// "file:line:col" of a source span of `scene` ("" when the span is unknown).
+inline std::string spanLocation(const SceneDesc& scene, const SourceSpan& span) {
+    if (span.line == 0 || span.file >= scene.files.size()) return "";
+    return scene.files[span.file] + ":" + std::to_string(span.line) + ":" + std::to_string(span.column);
+}
 
 } // namespace crt::scene

@@ -2,6 +2,10 @@
 // unions into primitives, rebalances CSG chains, reads meshes, and builds the BVH.
 #include "tracer/render_scene.hpp"
 
+#include "scene/primitive_count.hpp"
+
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <map>
 
@@ -19,6 +23,15 @@ public:
         }
         defaultMaterial_ = static_cast<int32_t>(scene_.materials.size());
         scene_.materials.emplace_back(); // the default material
+        // Counted before anything is expanded: a shared entity doubled in a loop would
+        // otherwise fill memory here. Evaluation refuses such a scene already; this is for
+        // descriptions made otherwise.
+        if (scene::drawnPrimitives(desc_) > desc_.limits.maxPrimitives) {
+            error_ = fmt::format("the scene expands to more than {} primitives; raise the limit "
+                                 "with --max-primitives",
+                                 desc_.limits.maxPrimitives);
+            return false;
+        }
         for (int32_t root : desc_.drawn)
             if (!addDrawn(root, Transform())) return false;
         finishAcceleration();
@@ -93,8 +106,18 @@ private:
             cached = meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*read))).first;
         }
         const std::shared_ptr<const MeshData>& data = cached->second;
+        // The description counts a mesh as one primitive; here its triangles are known.
+        const size_t triangles = data->triangles.size();
+        const uint64_t limit = desc_.limits.maxPrimitives;
+        if (triangles > limit - std::min<uint64_t>(scene_.primitives.size(), limit)) {
+            const std::string where = scene::spanLocation(desc_, e.source);
+            error_ = fmt::format("{}{}the scene expands to more than {} primitives with the {} "
+                                 "triangles of {}; raise the limit with --max-primitives",
+                                 where, where.empty() ? "" : ": error: ", limit, triangles, path);
+            return false;
+        }
         int32_t transform = addTransform(toWorld);
-        for (size_t i = 0; i < data->triangles.size(); ++i) {
+        for (size_t i = 0; i < triangles; ++i) {
             scene_.primitives.push_back({MeshTriangleGeometry(data, i), transform, materialOf(e)});
             scene_.primitiveEntities.push_back(entity);
             scene_.objects.push_back(static_cast<int32_t>(scene_.primitives.size() - 1));

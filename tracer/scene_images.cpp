@@ -8,11 +8,18 @@ namespace crt::tracer {
 
 namespace {
 
-bool load(const std::string& path, bool decodeSrgb, SceneImages& images, std::string& error) {
+/// Reads `path` unless read already; a failure names where the script asked for the image.
+bool load(const scene::SceneDesc& desc, const std::string& path, const scene::SourceSpan& usedAt,
+          bool decodeSrgb, SceneImages& images, std::string& error) {
     if (path.empty() || images.byPath.count(path)) return true;
     bool eightBit = false;
-    std::optional<image_io::ImageBuffer> buffer = image_io::readImage(path, error, &eightBit);
-    if (!buffer) return false;
+    std::optional<image_io::ImageBuffer> buffer =
+        image_io::readImage(path, error, &eightBit, desc.limits.maxImagePixels);
+    if (!buffer) {
+        const std::string where = scene::spanLocation(desc, usedAt);
+        if (!where.empty()) error = where + ": error: " + error;
+        return false;
+    }
     Image image;
     image.width = buffer->width;
     image.height = buffer->height;
@@ -28,11 +35,13 @@ bool load(const std::string& path, bool decodeSrgb, SceneImages& images, std::st
 bool loadSceneImages(const scene::SceneDesc& desc, SceneImages& images, std::string& error) {
     bool decodeSrgb = desc.settings.gamma != 1.0 || desc.settings.srgb;
     if (desc.background.kind == scene::BackgroundKind::Image &&
-        !load(scene::fileToOpen(desc.background.resolvedImage, desc.background.image), decodeSrgb, images, error))
+        !load(desc, scene::fileToOpen(desc.background.resolvedImage, desc.background.image),
+              desc.background.source, decodeSrgb, images, error))
         return false;
     for (const scene::TextureDesc& t : desc.textures) {
         if ((t.kind == scene::TextureKind::Image || t.kind == scene::TextureKind::ImageBump) &&
-            !load(scene::fileToOpen(t.resolvedFile, t.file), decodeSrgb && t.kind == scene::TextureKind::Image, images, error))
+            !load(desc, scene::fileToOpen(t.resolvedFile, t.file), t.source,
+                  decodeSrgb && t.kind == scene::TextureKind::Image, images, error))
             return false;
     }
     return true;

@@ -20,7 +20,8 @@ struct SceneImages {
 
 /// Reads every image the scene refers to; 8-bit images are decoded from sRGB unless the
 /// scene's gamma is 1.0, when raw/255 is used (as the original). False with `error` set
-/// ("<file>: <cause>") when one cannot be read.
+/// ("<script>:<line>:<col>: error: cannot read <file>: <cause>") when one cannot be read, or is
+/// larger than the scene's limits allow (RenderLimits::maxImagePixels).
 bool loadSceneImages(const scene::SceneDesc& desc, SceneImages& images, std::string& error);
 
 } // namespace crt::tracer

@@ -14,8 +14,9 @@ namespace {
 
 void usage(std::FILE* out) {
     std::fputs("usage: crt-lsp [-I DIR]... [--stdlib DIR] [--assets DIR]... [--allow-read DIR]...\n"
-               "               [--allow-read-all] [--max-steps N] [--max-entities N] [--max-depth N]\n"
-               "               [--max-memory MIB] [--max-message-mib MIB] [--debounce-ms N] [--time-budget-ms N]\n"
+               "               [--allow-read-all] [--max-steps N] [--max-entities N] [--max-primitives N]\n"
+               "               [--max-depth N] [--max-memory MIB] [--max-message-mib MIB]\n"
+               "               [--debounce-ms N] [--time-budget-ms N]\n"
                "The CRT language server; an editor starts it and talks LSP over stdin/stdout.\n",
                out);
 }
@@ -41,6 +42,7 @@ bool evaluationOption(const std::string& arg, const std::function<std::string()>
     else if (arg == "--max-steps") limits.maxSteps = count<uint64_t>(arg, value());
     else if (arg == "--max-entities") limits.maxEntities = count<uint64_t>(arg, value());
     else if (arg == "--max-mesh-size") limits.maxMeshSize = count<uint64_t>(arg, value());
+    else if (arg == "--max-primitives") limits.render.maxPrimitives = count<uint64_t>(arg, value());
     else if (arg == "--max-depth") limits.maxDepth = count<uint32_t>(arg, value());
     else return false;
     return true;

@@ -271,7 +271,18 @@ void addEvaluationOptions(CLI::App& app, Options& o) {
         ->type_name("N")
         ->group(group);
     app.add_option("--max-entities", limits.maxEntities,
-                   fmt::format("drawn entities and list length (default {})", limits.maxEntities))
+                   fmt::format("entities built and list length (default {})", limits.maxEntities))
+        ->check(anyNumber<uint64_t>("a non-negative integer"))
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--max-primitives", limits.render.maxPrimitives,
+                   fmt::format("primitives after CSG and group expansion (default {})",
+                               limits.render.maxPrimitives))
+        ->check(anyNumber<uint64_t>("a non-negative integer"))
+        ->type_name("N")
+        ->group(group);
+    app.add_option("--max-image-pixels", limits.render.maxImagePixels,
+                   fmt::format("pixels of an image read (default {})", limits.render.maxImagePixels))
         ->check(anyNumber<uint64_t>("a non-negative integer"))
         ->type_name("N")
         ->group(group);

@@ -38,7 +38,11 @@ std::atomic<bool> stopRendering{false};
 /// Prints "crtc: " and the message, which can quote a script's bytes (an OBJ file's token, a
 /// file name), escaped for the terminal.
 void printError(const std::string& message) {
-    std::cerr << "crtc: " << lang::terminalSafe(message) << "\n";
+    // One located in the script is printed as the front end's diagnostics are, for editors'
+    // problem matchers; any other names crtc.
+    static const std::regex located("^[^\n]+?:[0-9]+:[0-9]+: error: ");
+    std::cerr << (std::regex_search(message, located) ? "" : "crtc: ")
+              << lang::terminalSafe(message) << "\n";
 }
 
 const std::regex& framePattern() {

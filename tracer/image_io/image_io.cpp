@@ -79,6 +79,8 @@ std::string quotedName(const std::string& path) {
 struct CallContext {
     std::string error;
     ImageBuffer* image = nullptr;
+    uint64_t maxPixels = std::numeric_limits<uint64_t>::max(); ///< readImage's limit
+    std::string refusal; ///< why allocatePixels refused the image, when it did
 };
 
 void storeError(void* context, const char* message) {
@@ -86,7 +88,16 @@ void storeError(void* context, const char* message) {
 }
 
 float* allocatePixels(void* context, int width, int height) {
-    ImageBuffer& image = *static_cast<CallContext*>(context)->image;
+    CallContext& call = *static_cast<CallContext*>(context);
+    ImageBuffer& image = *call.image;
+    // The module asks with the header's size before it reads (or makes room for) any pixel.
+    const uint64_t pixels = uint64_t(width) * uint64_t(height);
+    if (pixels > call.maxPixels) {
+        call.refusal = "it is " + std::to_string(width) + " x " + std::to_string(height) +
+                       " pixels, more than the " + std::to_string(call.maxPixels) +
+                       " allowed; raise the limit with --max-image-pixels";
+        return nullptr;
+    }
     try {
         image.width = width;
         image.height = height;
@@ -253,7 +264,8 @@ void straightenAlpha(std::span<float> rgba) {
     }
 }
 
-std::optional<ImageBuffer> readImage(const std::string& path, std::string& error, bool* eightBit) {
+std::optional<ImageBuffer> readImage(const std::string& path, std::string& error, bool* eightBit,
+                                     uint64_t maxPixels) {
     std::error_code ec;
     if (!fs::exists(path, ec)) {
         error = "cannot read " + quotedName(path) + ": no such file";
@@ -264,9 +276,11 @@ std::optional<ImageBuffer> readImage(const std::string& path, std::string& error
     ImageBuffer image;
     CallContext context;
     context.image = &image;
+    context.maxPixels = maxPixels;
     int isInteger = 0;
     if (!module->readImage(path.c_str(), &isInteger, allocatePixels, storeError, &context)) {
-        error = "cannot read " + quotedName(path) + ": " + context.error;
+        error = "cannot read " + quotedName(path) + ": " +
+                (context.refusal.empty() ? context.error : context.refusal);
         return std::nullopt;
     }
     if (eightBit) *eightBit = isInteger != 0;

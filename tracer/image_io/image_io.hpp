@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -48,8 +49,11 @@ bool ensureLoaded(std::string& error);
 /// back as raw value / max (the caller decides about sRGB decoding), float formats as stored.
 /// Always returns 3 channels (grey replicated, alpha dropped). `eightBit` (optional) tells
 /// whether the source was an integer format. On failure, `error` names the path and the cause.
+/// An image of more than `maxPixels` pixels (width × height as its header says) is refused
+/// before any of its pixels is read or room is made for them.
 std::optional<ImageBuffer> readImage(const std::string& path, std::string& error,
-                                     bool* eightBit = nullptr);
+                                     bool* eightBit = nullptr,
+                                     uint64_t maxPixels = std::numeric_limits<uint64_t>::max());
 
 /// Writes by extension (case-insensitive): .png, .jpg/.jpeg, .tif/.tiff, .gif (one frame) in
 /// 8 bits, .exr and .hdr in floats; any other extension is an error that lists these.

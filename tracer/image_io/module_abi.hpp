@@ -11,12 +11,13 @@
 extern "C" {
 
 /// Raised whenever a function's signature or meaning changes; the host refuses other versions.
-inline constexpr int kCrtImageIoAbiVersion = 3;
+inline constexpr int kCrtImageIoAbiVersion = 4;
 
 /// The name of the module's one exported function.
 inline constexpr const char* kCrtImageIoEntryName = "crt_image_io_module";
 
-/// Returns room for width × height × 3 floats, or null (reported as out of memory).
+/// Returns room for width × height × 3 floats, or null: out of memory, or an image larger than
+/// the host accepts. readImage calls it with the header's size before reading any pixel.
 using CrtImageAllocFn = float* (*)(void* context, int width, int height);
 
 /// Receives the message of a failed call.

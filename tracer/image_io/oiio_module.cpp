@@ -77,14 +77,16 @@ int readImage(const char* path, int* isInteger, CrtImageAllocFn alloc, CrtImageE
         const int width = spec.width, height = spec.height, channels = spec.nchannels;
         if (width < 1 || height < 1 || channels < 1) return sink.fail("the image is empty");
 
+        // Asked first, with the header's size: the host may refuse the image before its
+        // pixels are read or decoded (a small file can claim a huge image).
+        float* out = alloc(context, width, height);
+        if (!out) return sink.fail("out of memory");
         std::vector<float> stored(std::size_t(width) * height * channels);
         const bool ok = spec.format == OIIO::TypeUInt8    ? readScaled<std::uint8_t>(*in, stored)
                         : spec.format == OIIO::TypeUInt16 ? readScaled<std::uint16_t>(*in, stored)
                                                           : readFloats(*in, stored);
         if (!ok) return sink.fail(oiioError(in->geterror()));
 
-        float* out = alloc(context, width, height);
-        if (!out) return sink.fail("out of memory");
         // One or two channels are grey (and alpha): replicate the grey. Otherwise the first
         // three are RGB and any further (alpha, depth …) are dropped.
         const bool grey = channels < 3;

@@ -22,11 +22,6 @@ std::string entityKind(const scene::EntityDesc& entity) {
     return kNames[entity.shape.index()];
 }
 
-std::string spanLocation(const scene::SceneDesc& scene, const scene::SourceSpan& span) {
-    if (span.line == 0 || span.file >= scene.files.size()) return "";
-    return scene.files[span.file] + ":" + std::to_string(span.line) + ":" + std::to_string(span.column);
-}
-
 int32_t drawnRootOf(const scene::SceneDesc& scene, int32_t entity) {
     // Entities are shared, so the graph is a DAG: remember what was searched already.
     std::vector<bool> seen(scene.entities.size(), false);

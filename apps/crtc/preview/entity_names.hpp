@@ -10,9 +10,6 @@ namespace crt::crtc::preview {
 /// The entity's kind as a script spells it: "Sphere", "Box", … "union", "group".
 std::string entityKind(const scene::EntityDesc& entity);
 
-/// "file:line:col" of a source span of `scene` ("" when the span is unknown).
-std::string spanLocation(const scene::SceneDesc& scene, const scene::SourceSpan& span);
-
 /// The drawn root (an index of scene.drawn's entities) whose graph holds `entity`; -1 if none.
 int32_t drawnRootOf(const scene::SceneDesc& scene, int32_t entity);
 

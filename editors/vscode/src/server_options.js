@@ -11,6 +11,7 @@ const INITIALIZATION_OPTIONS = {
   allowRead: "allowRead",
   maxSteps: "maxSteps",
   maxEntities: "maxEntities",
+  maxPrimitives: "maxPrimitives",
   timeBudgetMs: "timeBudgetMs",
 };
 

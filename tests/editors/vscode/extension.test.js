@@ -95,7 +95,7 @@ test("every server setting in the manifest is passed, under its server name", (t
     .filter((key) => !key.endsWith(".path"));
   assert.deepEqual(settings.sort(), Object.keys(INITIALIZATION_OPTIONS).sort());
   assert.deepEqual(Object.values(INITIALIZATION_OPTIONS).sort(), [
-    "allowRead", "assetRoots", "includeDirs", "maxEntities", "maxSteps", "timeBudgetMs",
+    "allowRead", "assetRoots", "includeDirs", "maxEntities", "maxPrimitives", "maxSteps", "timeBudgetMs",
   ]);
 });
 

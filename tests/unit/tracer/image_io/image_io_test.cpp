@@ -407,6 +407,22 @@ TEST_CASE("reading a missing or broken file is an error naming it", "[image_io]"
     CHECK_THAT(error, Catch::Contains(missing));
 }
 
+TEST_CASE("an image of more pixels than allowed is refused from its header", "[image_io]") {
+    std::string error;
+    const std::string path = scratchFile("four_by_four.png");
+    REQUIRE(writeImage(path, codeGradient(4, 4), {}, error));
+    CHECK(readImage(path, error, nullptr, 16));
+    CHECK_FALSE(readImage(path, error, nullptr, 15));
+    CHECK(error == "cannot read \"" + path + "\": it is 4 x 4 pixels, more than the 15 allowed; raise "
+                   "the limit with --max-image-pixels");
+
+    // A header claiming 30000 x 30000 with no pixel data after it: 13.5 GB once decoded.
+    const std::string claim = scratchFile("claims_30000.ppm");
+    std::ofstream(claim) << "P6\n30000 30000\n255\n";
+    CHECK_FALSE(readImage(claim, error, nullptr, 100'000'000));
+    CHECK_THAT(error, Catch::Contains("it is 30000 x 30000 pixels"));
+}
+
 TEST_CASE("concurrent writes and reads of different files", "[image_io]") {
     constexpr int kThreads = 6;
     std::vector<int> failures(kThreads, 0);

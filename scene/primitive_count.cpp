@@ -1,0 +1,39 @@
+#include "scene/primitive_count.hpp"
+
+#include "scene/entity_parts.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace crt::scene {
+
+uint64_t primitivesOf(const EntityDesc& entity, std::span<const uint64_t> earlier,
+                      const SceneDesc& scene) {
+    if (const auto* mesh = std::get_if<MeshShape>(&entity.shape)) {
+        auto read = scene.meshes.find(fileToOpen(mesh->resolvedFile, mesh->file));
+        return read == scene.meshes.end() ? 1 : std::max<uint64_t>(read->second->triangles.size(), 1);
+    }
+    const bool combines = std::holds_alternative<CsgNode>(entity.shape) ||
+                          std::holds_alternative<TransformNode>(entity.shape) ||
+                          std::holds_alternative<GroupNode>(entity.shape);
+    if (!combines) return 1;
+    uint64_t count = 0;
+    forEachPart(entity, [&](int32_t part) {
+        // Parts come before the entities made of them; a description that breaks this
+        // (not one the front end built) counts such a part as one.
+        const size_t index = static_cast<size_t>(part);
+        count = saturatingAdd(count, index < earlier.size() ? earlier[index] : 1);
+    });
+    return count;
+}
+
+uint64_t drawnPrimitives(const SceneDesc& scene) {
+    std::vector<uint64_t> counts;
+    counts.reserve(scene.entities.size());
+    for (const EntityDesc& entity : scene.entities) counts.push_back(primitivesOf(entity, counts, scene));
+    uint64_t total = 0;
+    for (int32_t root : scene.drawn) total = saturatingAdd(total, counts[static_cast<size_t>(root)]);
+    return total;
+}
+
+} // namespace crt::scene

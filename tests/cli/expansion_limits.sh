@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# What a small script or file can make the renderer hold ends in an error before it is held:
+# entities built (drawn or not), primitives after CSG and group expansion (counted before the
+# expansion, by --check too), and images whose header claims more pixels than allowed.
+set -u
+crtc=$1
+sanitized=${2:-0} # 1 for an AddressSanitizer build: its shadow memory needs all the address space
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+source "$(dirname "$0")/expect.sh"
+
+# Under an address-space limit where the machine has prlimit, so that a regression fails
+# with out of memory instead of taking the machine's memory.
+limited=()
+if [ "$sanitized" = 1 ]; then
+    echo "note: a sanitizer build; the runs are not under an address-space limit"
+elif command -v prlimit >/dev/null; then
+    limited=(prlimit --as=3000000000)
+else
+    echo "note: prlimit not found; the runs are not under an address-space limit"
+fi
+camera='Settings { width -> 8 height -> 8 }'
+
+# CSG doubling: 26 entities, 2^25 primitives. Stopped where the count passes the limit.
+printf '%s\ng = Sphere { center -> vec3(0, 0, 0) radius -> 1 }\nfor i in range(25) { g = g + g }\nScene { g }\n' \
+    "$camera" >"$work/csg.crt"
+for command in --check --dump-scene ""; do
+    expect_status 1 "CSG doubled 25 times (${command:-render})" "${limited[@]}" "$crtc" $command -o "$work/csg.png" "$work/csg.crt"
+    expect_text "$work/err" "^$work/csg.crt:3:26: error: this entity expands to more than 5000000 primitives \(CSG operands and group members count each time they are used\); raise the limit with --max-primitives$" \
+        "CSG doubled (${command:-render}): the primitive error at the union"
+done
+[ -e "$work/csg.png" ] && fail "CSG doubled: an image was written"
+expect_status 0 "CSG doubled 25 times, --max-primitives 2^25" "$crtc" --check --max-primitives 33554432 "$work/csg.crt"
+
+# A macro group doubled 20 times: 21 entities, 2^20 primitives.
+printf '%s\ntwice = Macro (x) {\n    x\n    x\n}\ng = Sphere { center -> vec3(0, 0, 0) radius -> 1 }\nfor i in range(20) { g = twice(g) }\nScene { g }\n' \
+    "$camera" >"$work/group.crt"
+expect_status 1 "a group doubled 20 times, --max-primitives 1000" "$crtc" --check --max-entities 1000 --max-primitives 1000 "$work/group.crt"
+expect_text "$work/err" "^$work/group.crt:7:26: error: this entity expands to more than 1000 primitives" \
+    "the doubled group: the error at the macro call"
+
+# The drawn total: each entity within the limit, the scene over it.
+printf '%s\ng = Sphere { center -> vec3(0, 0, 0) radius -> 1 }\nfor i in range(6) { g = g + g }\nScene {\n    for i in range(20) { g }\n}\n' \
+    "$camera" >"$work/drawn.crt"
+expect_status 1 "20 draws of 64 primitives, --max-primitives 1000" "$crtc" --check --max-primitives 1000 "$work/drawn.crt"
+expect_text "$work/err" "^$work/drawn.crt:5:26: error: the scene draws more than 1000 primitives" "the drawn total: the error at the draw"
+expect_status 0 "20 draws of 64 primitives, --max-primitives 1280" "$crtc" --check --max-primitives 1280 "$work/drawn.crt"
+
+# Entities built and never drawn count: a loop making spheres it throws away.
+printf '%s\nmake = Macro (i) { Sphere { center -> vec3(i, 0, 0) radius -> 1 } }\ni = 0\nwhile (i < 24000000) {\n    s = make(i)\n    i = i + 1\n}\nScene { s }\n' \
+    "$camera" >"$work/undrawn.crt"
+expect_status 1 "24,000,000 spheres never drawn, --max-entities 100000" "${limited[@]}" "$crtc" --check --max-entities 100000 "$work/undrawn.crt"
+expect_text "$work/err" "^$work/undrawn.crt:2:20: error: the script builds more than 100000 entities \(drawn or not\); raise the limit with --max-entities$" \
+    "undrawn spheres: the entity error at the literal"
+
+# A mesh counts its triangles (the script reads it): three uses of a 4-triangle mesh are 12,
+# for --check as for a render.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n' >"$work/tetra.obj"
+printf '%s\nm = Mesh { file -> "tetra.obj" }\nScene { m m m }\n' "$camera" >"$work/mesh.crt"
+for mode in --check "-o $work/mesh.png"; do
+    # shellcheck disable=SC2086 # the mode is two words
+    expect_status 1 "three meshes of 4 triangles, --max-primitives 10, $mode" "$crtc" $mode --max-primitives 10 "$work/mesh.crt"
+    expect_text "$work/err" "^$work/mesh.crt:3:13: error: the scene draws more than 10 primitives" \
+        "the mesh's triangles counted by $mode"
+done
+expect_status 0 "three meshes of 4 triangles, --max-primitives 12" "$crtc" --max-primitives 12 -o "$work/mesh.png" "$work/mesh.crt"
+
+# Images: the size in the header is refused before any pixel is decoded. A 30000 x 30000
+# PNG (one bit a pixel, all zero: a few hundred KB) would decode to 13.5 GB of floats; so
+# would a truncated one of a few hundred bytes.
+python3 - "$work" <<'PY'
+import struct, sys, zlib
+def chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+def png(path, width, height, truncate):
+    header = struct.pack(">IIBBBBB", width, height, 1, 0, 0, 0, 0)  # 1-bit grey
+    row = bytes(1 + (width + 7) // 8)
+    compressor = zlib.compressobj(9)
+    data = b"".join(compressor.compress(row) for _ in range(height)) + compressor.flush()
+    if truncate:
+        data = data[:200]
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", data))
+        if not truncate:
+            f.write(chunk(b"IEND", b""))
+png(sys.argv[1] + "/huge.png", 30000, 30000, False)
+png(sys.argv[1] + "/truncated.png", 30000, 30000, True)
+png(sys.argv[1] + "/small.png", 4, 4, False)
+PY
+# The script asks for the image on line 2.
+with_background() { # image
+    printf 'Settings { width -> 8 height -> 8\n    background -> Background { image -> "%s" } }\nScene { Sphere { center -> vec3(0, 0, 0) radius -> 1 } }\n' "$1"
+}
+for image in huge truncated; do
+    with_background "$image.png" >"$work/$image.crt"
+    expect_status 1 "a $image 30000 x 30000 PNG" "${limited[@]}" "$crtc" -o "$work/$image-out.png" "$work/$image.crt"
+    expect_text "$work/err" "^$work/$image.crt:2:19: error: cannot read \"$work/$image.png\": it is 30000 x 30000 pixels, more than the 100000000 allowed; raise the limit with --max-image-pixels" \
+        "the $image PNG: the image error"
+    [ -e "$work/$image-out.png" ] && fail "the $image PNG: an image was written"
+done
+with_background small.png >"$work/small.crt"
+expect_status 1 "a 4 x 4 PNG, --max-image-pixels 15" "$crtc" --max-image-pixels 15 -o "$work/small-out.png" "$work/small.crt"
+expect_text "$work/err" "it is 4 x 4 pixels, more than the 15 allowed" "the small PNG over its limit"
+expect_status 0 "a 4 x 4 PNG, --max-image-pixels 16" "$crtc" --max-image-pixels 16 -o "$work/small-out.png" "$work/small.crt"
+
+finish
