@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets everything up, builds, and runs every test: the Release build, then the whole suite
-# again under AddressSanitizer and UndefinedBehaviorSanitizer.
-#   scripts/test.sh            both
+# again under AddressSanitizer and UndefinedBehaviorSanitizer, then each libFuzzer target for
+# a minute on its corpus (tests/fuzz/).
+#   scripts/test.sh            all three
 #   scripts/test.sh --quick    the Release build only
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,5 +18,6 @@ if [ "${1:-}" != "--quick" ]; then
     cmake --build build-asan
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
         ctest --output-on-failure -j "$jobs")
+    scripts/fuzz.sh 60
 fi
 echo "all tests passed"
