@@ -8,6 +8,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <limits>
@@ -39,7 +40,25 @@ std::string oiioError(const std::string& objectError) {
     return message.empty() ? "unknown OpenImageIO error" : message;
 }
 
+// Formats whose OpenImageIO 2.4 readers crash where they should fail (found by
+// tests/fuzz/fuzz_image) are refused: the ICO reader writes past its row buffer, even on the
+// icons oiiotool writes; the IFF reader aborts the process on a failed assertion in its
+// header reader, so an IFF file (Maya's: "FOR4" or "FOR8") is told by its first bytes, before
+// OpenImageIO opens it.
+bool startsLikeIff(const char* path) {
+    char magic[4] = {};
+    std::FILE* file = std::fopen(path, "rb");
+    if (!file) return false;
+    const bool read = std::fread(magic, 1, sizeof magic, file) == sizeof magic;
+    std::fclose(file);
+    return read && (std::memcmp(magic, "FOR4", 4) == 0 || std::memcmp(magic, "FOR8", 4) == 0);
+}
+
 std::unique_ptr<ImageInput> openInput(const char* path, const ErrorSink& sink) {
+    if (startsLikeIff(path)) {
+        sink.fail("IFF images are not supported");
+        return nullptr;
+    }
     // Color channels of a PNG with alpha must come back as stored, not premultiplied:
     // the alpha is dropped, so premultiplying would darken every transparent pixel.
     ImageSpec config;
@@ -49,8 +68,6 @@ std::unique_ptr<ImageInput> openInput(const char* path, const ErrorSink& sink) {
         sink.fail(oiioError(""));
         return nullptr;
     }
-    // OpenImageIO 2.4's ICO reader writes past its row buffer, even on the icons oiiotool
-    // writes (found by tests/fuzz/fuzz_image): an icon is refused before it is decoded.
     if (std::string_view(in->format_name()) == "ico") {
         sink.fail("ICO images are not supported");
         return nullptr;
