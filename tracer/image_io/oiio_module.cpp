@@ -40,23 +40,38 @@ std::string oiioError(const std::string& objectError) {
     return message.empty() ? "unknown OpenImageIO error" : message;
 }
 
-// Formats whose OpenImageIO 2.4 readers crash where they should fail (found by
-// tests/fuzz/fuzz_image) are refused: the ICO reader writes past its row buffer, even on the
-// icons oiiotool writes; the IFF reader aborts the process on a failed assertion in its
-// header reader, so an IFF file (Maya's: "FOR4" or "FOR8") is told by its first bytes, before
-// OpenImageIO opens it.
-bool startsLikeIff(const char* path) {
-    char magic[4] = {};
-    std::FILE* file = std::fopen(path, "rb");
-    if (!file) return false;
-    const bool read = std::fread(magic, 1, sizeof magic, file) == sizeof magic;
-    std::fclose(file);
-    return read && (std::memcmp(magic, "FOR4", 4) == 0 || std::memcmp(magic, "FOR8", 4) == 0);
+// Files OpenImageIO 2.4 cannot be trusted with, told by their bytes before it opens them
+// (found by tests/fuzz/fuzz_image); the reason to refuse `path`, or empty.
+// - Maya IFF ("FOR4", "FOR8"): the reader aborts the process on a failed assertion while it
+//   reads a damaged header, even when OpenImageIO only tries it on a file of unknown format.
+// - PNG: libpng reserves the length a chunk announces (up to 2 GiB) before reading it, and
+//   OpenImageIO sets no smaller limit, so a chunk longer than the file is refused first.
+std::string refusedBeforeOpen(const char* path) {
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path, "rb"), std::fclose);
+    if (!file) return {}; // OpenImageIO says why
+    unsigned char head[8] = {};
+    if (std::fread(head, 1, sizeof head, file.get()) != sizeof head) return {};
+    if (std::memcmp(head, "FOR4", 4) == 0 || std::memcmp(head, "FOR8", 4) == 0)
+        return "IFF images are not supported";
+    if (std::memcmp(head, "\x89PNG\r\n\x1a\n", 8) != 0) return {};
+    std::fseek(file.get(), 0, SEEK_END);
+    const long size = std::ftell(file.get());
+    // Each chunk: 4-byte big-endian length, 4-byte type, the data, a 4-byte CRC.
+    for (long at = 8; at + 8 <= size;) {
+        unsigned char header[8];
+        if (std::fseek(file.get(), at, SEEK_SET) != 0 ||
+            std::fread(header, 1, sizeof header, file.get()) != sizeof header)
+            break;
+        const long length = long(header[0]) << 24 | long(header[1]) << 16 | long(header[2]) << 8 | header[3];
+        if (length > size - at - 12) return "damaged PNG file: a chunk is longer than the file";
+        at += 12 + length;
+    }
+    return {};
 }
 
 std::unique_ptr<ImageInput> openInput(const char* path, const ErrorSink& sink) {
-    if (startsLikeIff(path)) {
-        sink.fail("IFF images are not supported");
+    if (const std::string refused = refusedBeforeOpen(path); !refused.empty()) {
+        sink.fail(refused);
         return nullptr;
     }
     // Color channels of a PNG with alpha must come back as stored, not premultiplied:
