@@ -26,7 +26,9 @@ Server::Server(Transport& transport, ServerOptions options) : transport_(transpo
     bindHandlers();
 }
 
-Server::~Server() = default;
+Server::~Server() {
+    if (reader_.joinable()) reader_.join();
+}
 
 // ---------------------------------------------------------------- messages
 
@@ -85,8 +87,8 @@ void Server::readerLoop() {
 }
 
 int Server::run() {
-    std::thread reader([this] { readerLoop(); });
-    reader.detach(); // it may sit in a blocking read when `exit` arrives
+    // After `exit` the reader may still sit in a blocking read: run() returns without it.
+    reader_ = std::thread([this] { readerLoop(); });
     while (true) {
         std::optional<json> message;
         {

@@ -14,6 +14,7 @@
 #include <mutex>
 #include <optional>
 #include <set>
+#include <thread>
 #include <string>
 #include <variant>
 
@@ -29,6 +30,8 @@ struct ServerOptions {
 class Server {
 public:
     Server(Transport& transport, ServerOptions options);
+    /// Waits for the reader thread to see the end of the input: a server over a stream that
+    /// may never end (standard input) is left to the process's exit, not destroyed.
     ~Server();
     /// Serves until `exit` or the end of input. Returns the process exit code: 0 after a
     /// shutdown request, 1 otherwise (as LSP specifies).
@@ -159,6 +162,7 @@ private:
     std::condition_variable queueReady_;
     std::deque<std::optional<json>> queue_; ///< nullopt: end of input
     std::set<std::string> cancelled_;       ///< ids (as JSON text) of cancelled requests
+    std::thread reader_; ///< runs readerLoop() until the end of input, even after `exit`
 };
 
 } // namespace crt::lsp

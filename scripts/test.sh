@@ -3,6 +3,8 @@
 # again under AddressSanitizer and UndefinedBehaviorSanitizer.
 #   scripts/test.sh            both
 #   scripts/test.sh --quick    the Release build only
+#   scripts/test.sh --fuzz     both, then each libFuzzer target for a minute on its corpus
+#                              (scripts/fuzz.sh: a clang build of the targets, then 2 minutes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -17,5 +19,8 @@ if [ "${1:-}" != "--quick" ]; then
     cmake --build build-asan
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
         ctest --output-on-failure -j "$jobs")
+    if [ "${1:-}" = "--fuzz" ]; then
+        scripts/fuzz.sh 60
+    fi
 fi
 echo "all tests passed"

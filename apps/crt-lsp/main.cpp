@@ -101,12 +101,10 @@ int main(int argc, char** argv) {
     }
     std::signal(SIGPIPE, SIG_IGN); // a client that went away must not kill us mid-write
     crt::lsp::Transport transport(stdin, stdout, maxMessageBytes);
-    int code;
-    {
-        crt::lsp::Server server(transport, options);
-        code = server.run();
-    }
+    crt::lsp::Server server(transport, options);
+    const int code = server.run();
     std::fflush(stdout);
-    // The reader thread may still be blocked reading standard input: leave without joining it.
+    // The reader thread may still be blocked reading standard input: leave without destroying
+    // the server, whose destructor would wait for it.
     std::_Exit(code);
 }

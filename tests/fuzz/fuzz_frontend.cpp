@@ -2,7 +2,7 @@
 // printing and the scene JSON dump, on arbitrary bytes as a script.
 #include "lang/diagnostic_printer.hpp"
 #include "lang/interpreter.hpp"
-#include "lang/scene_json.hpp"
+#include "scene/scene_json.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -8,6 +8,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <limits>
@@ -39,13 +40,69 @@ std::string oiioError(const std::string& objectError) {
     return message.empty() ? "unknown OpenImageIO error" : message;
 }
 
+// Whether a PNG's chunks (a 4-byte big-endian length, a 4-byte type, the data and a 4-byte
+// CRC each) all end within the file's `size` bytes.
+bool pngChunksFit(std::FILE* file, long size) {
+    for (long at = 8; at + 8 <= size;) {
+        unsigned char header[8];
+        if (std::fseek(file, at, SEEK_SET) != 0 || std::fread(header, 1, sizeof header, file) != sizeof header)
+            return true; // OpenImageIO reports a read error itself
+        const long length = long(header[0]) << 24 | long(header[1]) << 16 | long(header[2]) << 8 | header[3];
+        if (length > size - at - 12) return false;
+        at += 12 + length;
+    }
+    return true;
+}
+
+// Files OpenImageIO 2.4 cannot be trusted with, told by their bytes before it opens them
+// (found by tests/fuzz/fuzz_image); the reason to refuse `path`, or empty.
+// - Maya IFF ("FOR4", "FOR8"): the reader aborts the process on a failed assertion while it
+//   reads a damaged header, even when OpenImageIO only tries it on a file of unknown format.
+// - PNG and DPX: libpng reserves the length a chunk announces (up to 2 GiB), the DPX reader
+//   the user data length the header announces, before reading them; nothing limits either,
+//   so such a length beyond the end of the file is refused first.
+std::string refusedBeforeOpen(const char* path) {
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path, "rb"), std::fclose);
+    if (!file) return {}; // OpenImageIO says why
+    unsigned char head[36] = {};
+    const std::size_t got = std::fread(head, 1, sizeof head, file.get());
+    if (got < 8) return {};
+    if (std::memcmp(head, "FOR4", 4) == 0 || std::memcmp(head, "FOR8", 4) == 0)
+        return "IFF images are not supported";
+    std::fseek(file.get(), 0, SEEK_END);
+    const long size = std::ftell(file.get());
+    if (std::memcmp(head, "\x89PNG\r\n\x1a\n", 8) == 0 && !pngChunksFit(file.get(), size))
+        return "damaged PNG file: a chunk is longer than the file";
+    const bool dpxBigEndian = std::memcmp(head, "SDPX", 4) == 0;
+    if ((dpxBigEndian || std::memcmp(head, "XPDS", 4) == 0) && got == sizeof head) {
+        const unsigned char* field = head + 32; // the user data length
+        const unsigned long length =
+            dpxBigEndian ? (unsigned long)field[0] << 24 | field[1] << 16 | field[2] << 8 | field[3]
+                         : (unsigned long)field[3] << 24 | field[2] << 16 | field[1] << 8 | field[0];
+        if (length != 0xffffffffUL && length > (unsigned long)size)
+            return "damaged DPX file: its user data is longer than the file";
+    }
+    return {};
+}
+
 std::unique_ptr<ImageInput> openInput(const char* path, const ErrorSink& sink) {
+    if (const std::string refused = refusedBeforeOpen(path); !refused.empty()) {
+        sink.fail(refused);
+        return nullptr;
+    }
     // Color channels of a PNG with alpha must come back as stored, not premultiplied:
     // the alpha is dropped, so premultiplying would darken every transparent pixel.
     ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
     auto in = ImageInput::open(path, &config);
-    if (!in) sink.fail(oiioError(""));
+    if (!in) {
+        sink.fail(oiioError(""));
+        return nullptr;
+    }
+    if (std::string_view(in->format_name()) == "ico") {
+        sink.fail("ICO images are not supported");
+        return nullptr;
+    }
     return in;
 }
 
