@@ -2,6 +2,8 @@
 # (CrtPackage.cmake):
 #   bin/crtc, bin/crt-lsp
 #   lib/crt/crt_image_io_oiio.so        the image module (tracer/image_io/module_loader.cpp)
+#   lib/crt/crt_mpi.so                  the MPI module, when built with MPI
+#                                       (apps/crtc/distributed/mpi_module_loader.cpp)
 #   share/crt/stdlib/                   the standard library (lang/include_search.cpp)
 #   share/crt/editors/                  editor integrations, as editors/ holds them
 #   share/man/man1/crtc.1.gz, crt-lsp.1.gz
@@ -19,6 +21,9 @@ set(CRT_INSTALL_DATA_DIR share/crt)
 
 install(TARGETS crtc crt-lsp RUNTIME DESTINATION bin)
 install(TARGETS crt_image_io_oiio LIBRARY DESTINATION ${CRT_INSTALL_MODULE_DIR})
+if(TARGET crt_mpi)
+  install(TARGETS crt_mpi LIBRARY DESTINATION ${CRT_INSTALL_MODULE_DIR})
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/stdlib/ DESTINATION ${CRT_INSTALL_DATA_DIR}/stdlib)
 # The editors' folders are installed as they are, less what a local npm install or a VS Code
 # packaging run leaves behind.

@@ -30,7 +30,7 @@ renders scripts to PNG, JPEG, TIFF, OpenEXR, HDR or animated GIF, reporting
 errors as compilers do. crt-lsp is a language server that gives editors
 diagnostics, completion, hover, navigation, rename and formatting; Neovim and
 VS Code files are in /usr/share/crt/editors.")
-# Depends: from the shared libraries the programs and the image module link
+# Depends: from the shared libraries the programs and the modules (image, MPI) link
 # (dpkg-shlibdeps, from dpkg-dev).
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # Man pages are installed gzipped already (CrtManPages.cmake); control files 0644/0755.

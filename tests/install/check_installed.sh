@@ -44,6 +44,21 @@ run_installed "$prefix/bin/crtc" "$work/examples/piano_foot.crt" "${size[@]}" -o
     fail "the installed crtc could not render piano_foot.crt to JPEG (the image module)"
 [ "$(head -c 3 "$work/installed.jpg" | od -An -tx1 | tr -d ' ')" = ffd8ff ] ||
     fail "installed.jpg is not a JPEG file"
+# Under mpirun, MPI goes through the MPI module (when crtc was built with it): the one in
+# lib/crt/. The image is the one crtc alone made.
+if [ -f "$(dirname "$build_crtc")/crt_mpi.so" ]; then
+    [ -f "$prefix/lib/crt/crt_mpi.so" ] || fail "$prefix/lib/crt/crt_mpi.so was not installed"
+    if command -v mpirun >/dev/null 2>&1; then
+        # (A container's shared memory only; under the sanitizers, what OpenMPI keeps is not ours.)
+        OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none \
+            LSAN_OPTIONS="suppressions=$source_dir/tests/mpi/lsan_mpi.supp:print_suppressions=0:fast_unwind_on_malloc=0" \
+            run_installed timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 \
+            "$prefix/bin/crtc" "$work/examples/piano_foot.crt" "${size[@]}" -o "$work/mpi.png" ||
+            fail "the installed crtc could not render piano_foot.crt over 2 processes of mpirun"
+        cmp -s "$work/installed.png" "$work/mpi.png" ||
+            fail "the installed crtc's image over mpirun differs from crtc alone's"
+    fi
+fi
 
 [ "$(run_installed "$prefix/bin/crtc" --version)" = "$(run_installed "$build_crtc" --version)" ] ||
     fail "crtc --version differs between the installed and the built crtc"

@@ -10,4 +10,4 @@ finish() { # what passed
     echo "$*: ok"
 }
 # An installed program must need nothing from the environment or the source tree.
-run_installed() { env -u CRT_PATH -u CRT_IMAGE_IO_MODULE "$@"; }
+run_installed() { env -u CRT_PATH -u CRT_IMAGE_IO_MODULE -u CRT_MPI_MODULE "$@"; }

@@ -53,11 +53,16 @@ field() { dpkg-deb -f "$deb" "$1"; }
 [ "$deb" = "$work/crt_$(field Version)_amd64.deb" ] || fail "file name $deb for version $(field Version)"
 [ "$(field Section)" = graphics ] || fail "Section: $(field Section)"
 [ -n "$(field Maintainer)" ] || fail "no Maintainer"
-# Depends comes from the shared libraries the programs and the image module link.
+# Depends comes from the shared libraries the programs and the modules link.
 for library in libc6 libstdc++6 libopenimageio libpng16; do
     field Depends | grep -q "$library" || fail "Depends lacks $library: $(field Depends)"
 done
 dpkg-deb -c "$deb" | grep -q ' ./usr/share/man/man1/crtc.1.gz$' || fail "no gzipped crtc.1 in the package"
+# The MPI module (when built) and, from the libraries it links, OpenMPI.
+if [ -f "$build/bin/crt_mpi.so" ]; then
+    dpkg-deb -c "$deb" | grep -q ' ./usr/lib/crt/crt_mpi.so$' || fail "no crt_mpi.so in the package"
+    field Depends | grep -q libopenmpi || fail "Depends lacks libopenmpi: $(field Depends)"
+fi
 
 if ! DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "$deb" \
     >"$work/apt.log" 2>&1; then

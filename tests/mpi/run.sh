@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # crtc under a real mpirun (OpenMPI): renders shared over 1, 2 and 3 processes are the same
 # bits as crtc alone; a rank that fails or is killed ends the job with an error and no image.
-#   run.sh stills|animation|frames|frame_failure|frame_continue|failure|killed CRTC
+# crtc alone loads no MPI library; under mpirun, a missing MPI module is a clear error.
+#   run.sh alone|stills|animation|frames|frame_failure|frame_continue|failure|killed|missing_module CRTC
 set -u
 case_name=$1
 crtc=$(realpath "$2") # absolute: some checks run crtc from other folders
@@ -10,6 +11,23 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 source "$here/../cli/expect.sh"
+
+# crtc alone (no mpirun needed): MPI's libraries, linked or dlopened, would be named by the
+# dynamic loader's trace of every library it loads.
+alone() {
+    for run in "--version" "--check $here/still.crt" "--quiet $here/still.crt --width 8 --height 8 -o $work/alone.png"; do
+        # shellcheck disable=SC2086 # the arguments are split on purpose
+        LD_DEBUG=libs expect_status 0 "crtc $run" "$crtc" $run
+        local loaded
+        loaded=$(grep "calling init:" "$work/err" | grep -oE "[^ ]*(libmpi|libopen-pal|crt_mpi)[^ ]*" | sort -u)
+        [ -z "$loaded" ] || fail "crtc $run loads MPI: $(echo $loaded)"
+    done
+}
+if [ "$case_name" = alone ]; then
+    alone
+    finish
+    exit
+fi
 
 if ! command -v mpirun >/dev/null 2>&1; then
     echo "SKIP: mpirun is not installed (scripts/setup.sh installs openmpi-bin)"
@@ -285,6 +303,16 @@ killed() {
     kill_rank_1 "$work/out.png" "$here/still.crt" --width 640 --height 480 --supersampling 4
     # An animation shared by frames, written as a GIF at the end.
     kill_rank_1 "$work/out.gif" "$here/moving.crt" --frames 9 --width 320 --height 240 --supersampling 4
+}
+
+missing_module() {
+    # Every rank fails to load it; rank 0 alone says why, naming the file, and nothing is written.
+    CRT_MPI_MODULE=$work/missing/crt_mpi.so expect_status 2 "a missing MPI module" \
+        mpi 2 --quiet "$here/still.crt" -o "$work/out.png"
+    expect_text "$work/err" "crtc: cannot share the render over the processes of mpirun: the MPI module $work/missing/crt_mpi.so named by CRT_MPI_MODULE does not exist" \
+        "the missing module is named"
+    [ "$(grep -c "the MPI module" "$work/err")" = 1 ] || fail "the missing module was not reported once: $(cat "$work/err")"
+    [ ! -e "$work/out.png" ] || fail "an image was written without the MPI module"
 }
 
 "$case_name"

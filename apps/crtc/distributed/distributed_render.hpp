@@ -13,6 +13,8 @@ namespace crt::crtc::distributed {
 bool underMpi();
 /// The number of processes mpirun started, from the environment; 1 without mpirun.
 int launchedWorldSize();
+/// This process's rank in the job mpirun started, from the environment; 0 without mpirun.
+int launchedRank();
 
 /// renderCommand for a process of an MPI job: every rank calls it with the same options.
 /// Returns crtc's exit status (rank 0's is the job's).

@@ -1,5 +1,7 @@
-// How crtc finds out that mpirun started it, without initialising MPI (so that plain crtc
-// starts as fast as ever), and what a crtc built without MPI says under mpirun.
+// How crtc finds out that mpirun started it, without MPI: crtc does not link MPI, whose
+// libraries would otherwise load (and take time and memory) in every run. Under mpirun the
+// session loads them with the module crt_mpi.so (mpi_module_loader.hpp). A crtc built without
+// MPI has no module, and says so under mpirun.
 #include "distributed_render.hpp"
 
 #include <cstdlib>
@@ -26,12 +28,15 @@ int launchedWorldSize() {
     return environmentInt("OMPI_COMM_WORLD_SIZE", environmentInt("PMIX_SIZE", 1));
 }
 
+int launchedRank() {
+    return environmentInt("OMPI_COMM_WORLD_RANK", environmentInt("PMIX_RANK", 0));
+}
+
 #ifndef CRT_WITH_MPI
 int renderDistributed(const Options& options, const CompileFrame& compileFrame) {
     // One process under mpirun renders as crtc alone does; several would each write the image.
     if (launchedWorldSize() <= 1) return renderFrames(options, compileFrame, renderTilesHere);
-    const int rank = environmentInt("OMPI_COMM_WORLD_RANK", environmentInt("PMIX_RANK", 0));
-    if (rank == 0)
+    if (launchedRank() == 0)
         std::cerr << "crtc: this crtc was built without MPI, so it cannot share a render over "
                      "the processes of mpirun; run it alone, or build crtc with OpenMPI "
                      "installed (libopenmpi-dev)\n";

@@ -1,5 +1,6 @@
 // The MPI job crtc runs in: initialised for the main thread's calls only (the render threads
-// never call MPI), the commands rank 0 broadcasts, and the messages of a shared render.
+// never call MPI), the commands rank 0 broadcasts, and the messages of a shared render. MPI is
+// called through the module crt_mpi.so (mpi_module_abi.hpp), loaded when a session starts.
 #pragma once
 
 #include "tracer/stats.hpp"
@@ -7,6 +8,8 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+
+struct CrtMpiModule;
 
 namespace crt::crtc::distributed {
 
@@ -41,6 +44,8 @@ struct Command {
 
 class MpiSession {
   public:
+    /// Loads the MPI module and initialises MPI. Without the module, the job cannot go on:
+    /// rank 0 says why (naming where the module was looked for) and every rank exits with 2.
     MpiSession(int* argc, char*** argv);
     /// Finalises MPI, unless abort() ended the job.
     ~MpiSession();
@@ -80,6 +85,7 @@ class MpiSession {
   private:
     std::vector<char> receiveMatching(int& source, int tag);
 
+    const CrtMpiModule* mpi_ = nullptr;
     int rank_ = 0;
     int size_ = 1;
     std::vector<std::string> hosts_; ///< rank 0 only: each rank's host name

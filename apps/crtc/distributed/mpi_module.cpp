@@ -1,0 +1,124 @@
+// The MPI module (crt_mpi.so): the only source that includes MPI.
+//
+// crtc dlopens it when mpirun started it (mpi_module_loader.cpp), so that OpenMPI's libraries
+// load only then. Built with hidden visibility: it exports one C function.
+#include "mpi_module_abi.hpp"
+
+#include <mpi.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <thread>
+
+namespace {
+
+/// Waits for a request to complete, testing it every `pause` rather than spinning as MPI_Wait
+/// does on a core that another process or rank 0's threads could use.
+void waitAsleep(MPI_Request& request, std::chrono::microseconds pause) {
+    for (int done = 0;;) {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done) return;
+        std::this_thread::sleep_for(pause);
+    }
+}
+
+void init(int* argc, char*** argv, int* rank, int* size) {
+    int provided = 0;
+    // Only the main thread calls MPI: the render threads hand tiles and results to it.
+    MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+    MPI_Comm_rank(MPI_COMM_WORLD, rank);
+    MPI_Comm_size(MPI_COMM_WORLD, size);
+}
+
+void gatherProcessorNames(char* names) {
+    char name[MPI_MAX_PROCESSOR_NAME] = {};
+    int length = 0;
+    MPI_Get_processor_name(name, &length);
+    MPI_Gather(name, MPI_MAX_PROCESSOR_NAME, MPI_CHAR, names, MPI_MAX_PROCESSOR_NAME, MPI_CHAR, 0,
+               MPI_COMM_WORLD);
+}
+
+void broadcastInts(int* values, int count, int asleep) {
+    if (count <= 0) return;
+    if (!asleep) {
+        MPI_Bcast(values, count, MPI_INT, 0, MPI_COMM_WORLD);
+        return;
+    }
+    MPI_Request request;
+    MPI_Ibcast(values, count, MPI_INT, 0, MPI_COMM_WORLD, &request);
+    waitAsleep(request, std::chrono::microseconds(200));
+}
+
+void allReduceSum(const std::uint64_t* values, std::uint64_t* out, int count) {
+    MPI_Allreduce(values, out, count, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
+}
+
+void allReduceMax(const std::uint64_t* values, std::uint64_t* out, int count) {
+    MPI_Allreduce(values, out, count, MPI_UINT64_T, MPI_MAX, MPI_COMM_WORLD);
+}
+
+void reduceSumToRoot(const std::uint64_t* values, std::uint64_t* out, int count) {
+    MPI_Reduce(values, out, count, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
+}
+
+void send(int rank, int tag, const void* data, std::size_t bytes) {
+    // A small message leaves at once. When the receiver is behind (rank 0 writing a frame, or
+    // kept off its core by the load), wait asleep: MPI_Send would spin on a core the receiver
+    // may need.
+    MPI_Request request;
+    MPI_Isend(data, static_cast<int>(bytes), MPI_BYTE, rank, tag, MPI_COMM_WORLD, &request);
+    waitAsleep(request, std::chrono::microseconds(50));
+}
+
+int poll(int* source, int* tag, int* bytes) {
+    int flag = 0;
+    MPI_Status status;
+    MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+    if (!flag) return 0;
+    *source = status.MPI_SOURCE;
+    *tag = status.MPI_TAG;
+    MPI_Get_count(&status, MPI_BYTE, bytes);
+    return 1;
+}
+
+void probe(int source, int tag, int* from, int* bytes) {
+    MPI_Status status;
+    MPI_Probe(source == kCrtMpiAnySource ? MPI_ANY_SOURCE : source, tag, MPI_COMM_WORLD, &status);
+    MPI_Get_count(&status, MPI_BYTE, bytes);
+    *from = status.MPI_SOURCE;
+}
+
+void receive(int source, int tag, void* data, int bytes) {
+    // A large message comes in pieces as fast as its sender hands them over: wait asleep.
+    MPI_Request request;
+    MPI_Irecv(data, bytes, MPI_BYTE, source, tag, MPI_COMM_WORLD, &request);
+    waitAsleep(request, std::chrono::microseconds(50));
+}
+
+void abortJob(int status) {
+    MPI_Abort(MPI_COMM_WORLD, status);
+    std::_Exit(status); // MPI_Abort does not return; this makes sure of it
+}
+
+void finalize() { MPI_Finalize(); }
+
+constexpr CrtMpiModule kModule{kCrtMpiAbiVersion,
+                               MPI_MAX_PROCESSOR_NAME,
+                               init,
+                               gatherProcessorNames,
+                               broadcastInts,
+                               allReduceSum,
+                               allReduceMax,
+                               reduceSumToRoot,
+                               send,
+                               poll,
+                               probe,
+                               receive,
+                               abortJob,
+                               finalize};
+
+} // namespace
+
+extern "C" __attribute__((visibility("default"))) const CrtMpiModule* crt_mpi_module() {
+    return &kModule;
+}
