@@ -4,13 +4,15 @@
 #   lib/crt/crt_image_io_oiio.so        the image module (tracer/image_io/module_loader.cpp)
 #   lib/crt/crt_mpi.so                  the MPI module, when built with MPI
 #                                       (apps/crtc/distributed/mpi_module_loader.cpp)
+#   lib/crt/crtc-preview                the program behind crtc --preview
+#                                       (apps/crtc/preview_launch.cpp)
 #   share/crt/stdlib/                   the standard library (lang/include_search.cpp)
 #   share/crt/editors/                  editor integrations, as editors/ holds them
 #   share/man/man1/crtc.1.gz, crt-lsp.1.gz
 #   share/bash-completion/completions/crtc
 #   share/doc/crt/                      README, docs, the licence (as Debian's copyright),
 #                                       the demos as examples
-# The programs find the module and the standard library relative to their own folder, so
+# The programs find the modules and the standard library relative to their own folder, so
 # those three paths are fixed here rather than taken from GNUInstallDirs (whose LIBDIR is
 # lib/x86_64-linux-gnu on Debian).
 include(GNUInstallDirs)
@@ -21,6 +23,7 @@ set(CRT_INSTALL_DATA_DIR share/crt)
 
 install(TARGETS crtc crt-lsp RUNTIME DESTINATION bin)
 install(TARGETS crt_image_io_oiio LIBRARY DESTINATION ${CRT_INSTALL_MODULE_DIR})
+install(TARGETS crtc-preview RUNTIME DESTINATION ${CRT_INSTALL_MODULE_DIR})
 if(TARGET crt_mpi)
   install(TARGETS crt_mpi LIBRARY DESTINATION ${CRT_INSTALL_MODULE_DIR})
 endif()

@@ -46,7 +46,10 @@ std::string defaultStdlibDir() {
     if (error) return CRT_SOURCE_STDLIB_DIR;
     fs::path programDir = program.parent_path();
     if (fs::equivalent(programDir, CRT_BUILD_PROGRAM_DIR, error)) return CRT_SOURCE_STDLIB_DIR;
-    return (programDir.parent_path() / "share" / "crt" / "stdlib").string();
+    // Installed, a program is in <prefix>/bin and a helper program in <prefix>/lib/crt.
+    fs::path prefix = programDir.parent_path();
+    if (programDir.filename() == "crt" && prefix.filename() == "lib") prefix = prefix.parent_path();
+    return (prefix / "share" / "crt" / "stdlib").string();
 }
 
 } // namespace crt::lang

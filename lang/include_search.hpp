@@ -33,7 +33,8 @@ struct IncludeSearch {
 };
 
 /// The standard library that came with the running program: the source tree's `stdlib/` for
-/// a program in the build tree's `bin/`, else `share/crt/stdlib` beside its `bin` folder.
+/// a program in the build tree's `bin/`, else `<prefix>/share/crt/stdlib` for a program in
+/// `<prefix>/bin` or a helper program in `<prefix>/lib/crt`.
 std::string defaultStdlibDir();
 
 } // namespace crt::lang

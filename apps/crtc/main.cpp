@@ -5,7 +5,7 @@
 #include "interpreter.hpp"
 #include "large_stack.hpp"
 #include "options.hpp"
-#include "preview/preview_command.hpp"
+#include "preview_launch.hpp"
 #include "render_command.hpp"
 #include "render_cost.hpp"
 #include "scene/quality_overrides.hpp"
@@ -138,7 +138,7 @@ int run(int argc, char** argv) {
     }
 
     if (options.mode == crtc::Mode::Format) return formatCommand(options, std::move(*text));
-    if (options.mode == crtc::Mode::Preview) return crtc::previewCommand(options);
+    if (options.mode == crtc::Mode::Preview) return crtc::launchPreview(argv);
 
     // The dumps own standard output: print() goes to standard error beside them.
     if (options.mode == crtc::Mode::DumpAst || options.mode == crtc::Mode::DumpScene) {

@@ -13,7 +13,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-for file in bin/crtc bin/crt-lsp lib/crt/crt_image_io_oiio.so share/crt/stdlib/colors.crt \
+for file in bin/crtc bin/crt-lsp lib/crt/crt_image_io_oiio.so lib/crt/crtc-preview share/crt/stdlib/colors.crt \
     share/man/man1/crtc.1.gz share/man/man1/crt-lsp.1.gz \
     share/bash-completion/completions/crtc share/doc/crt/copyright share/doc/crt/README.md \
     share/doc/crt/docs/crtc.md share/doc/crt/examples/piano_foot.crt; do
@@ -59,6 +59,10 @@ if [ -f "$(dirname "$build_crtc")/crt_mpi.so" ]; then
             fail "the installed crtc's image over mpirun differs from crtc alone's"
     fi
 fi
+
+# The preview runs lib/crt/crtc-preview, which finds the same standard library.
+run_installed "$python" "$here/check_preview.py" "$prefix/bin/crtc" "$work/examples/piano_foot.crt" ||
+    fail "the installed crtc --preview did not show piano_foot.crt"
 
 [ "$(run_installed "$prefix/bin/crtc" --version)" = "$(run_installed "$build_crtc" --version)" ] ||
     fail "crtc --version differs between the installed and the built crtc"

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # crtc under a real mpirun (OpenMPI): renders shared over 1, 2 and 3 processes are the same
 # bits as crtc alone; a rank that fails or is killed ends the job with an error and no image.
-# crtc alone loads no MPI library; under mpirun, a missing MPI module is a clear error.
-#   run.sh alone|stills|animation|frames|frame_failure|frame_continue|failure|killed|missing_module CRTC
+# Under mpirun, a missing MPI module is a clear error (tests/cli/loaded_libraries.sh checks
+# that crtc alone loads no MPI library).
+#   run.sh stills|animation|frames|frame_failure|frame_continue|failure|killed|missing_module CRTC
 set -u
 case_name=$1
 crtc=$(realpath "$2") # absolute: some checks run crtc from other folders
@@ -11,23 +12,6 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 source "$here/../cli/expect.sh"
-
-# crtc alone (no mpirun needed): MPI's libraries, linked or dlopened, would be named by the
-# dynamic loader's trace of every library it loads.
-alone() {
-    for run in "--version" "--check $here/still.crt" "--quiet $here/still.crt --width 8 --height 8 -o $work/alone.png"; do
-        # shellcheck disable=SC2086 # the arguments are split on purpose
-        LD_DEBUG=libs expect_status 0 "crtc $run" "$crtc" $run
-        local loaded
-        loaded=$(grep "calling init:" "$work/err" | grep -oE "[^ ]*(libmpi|libopen-pal|crt_mpi)[^ ]*" | sort -u)
-        [ -z "$loaded" ] || fail "crtc $run loads MPI: $(echo $loaded)"
-    done
-}
-if [ "$case_name" = alone ]; then
-    alone
-    finish
-    exit
-fi
 
 if ! command -v mpirun >/dev/null 2>&1; then
     echo "SKIP: mpirun is not installed (scripts/setup.sh installs openmpi-bin)"

@@ -1,6 +1,8 @@
 // Finds and loads the MPI module crt_mpi.so.
 #include "mpi_module_loader.hpp"
 
+#include "companion_files.hpp"
+
 #include <dlfcn.h>
 
 #include <cstdlib>
@@ -15,17 +17,6 @@ namespace fs = std::filesystem;
 
 constexpr const char* kModuleFileName = "crt_mpi.so";
 constexpr const char* kModuleVariable = "CRT_MPI_MODULE";
-
-// Where crtc keeps the module: beside its executable (the build tree puts it there), or in
-// ../lib/crt/ (an installed layout).
-std::vector<fs::path> candidatePaths() {
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (ec) return {};
-    const fs::path dir = exe.parent_path();
-    return {dir / kModuleFileName,
-            (dir / ".." / "lib" / "crt" / kModuleFileName).lexically_normal()};
-}
 
 const CrtMpiModule* openModule(const fs::path& path, std::string& error) {
     // The handle is never closed: MPI keeps threads and state alive until the process exits.
@@ -62,14 +53,11 @@ const CrtMpiModule* loadMpiModule(std::string& error) {
                 " does not exist";
         return nullptr;
     }
-    const std::vector<fs::path> candidates = candidatePaths();
+    const std::vector<fs::path> candidates = companionCandidates(kModuleFileName);
     for (const fs::path& path : candidates)
         if (fs::exists(path, ec)) return openModule(path, error);
-    error = std::string("the MPI module ") + kModuleFileName + " was not found; looked for ";
-    for (std::size_t i = 0; i < candidates.size(); ++i)
-        error += (i ? " and " : "") + candidates[i].string();
-    if (candidates.empty()) error += "the executable's folder, which is unknown";
-    error += std::string("; ") + kModuleVariable + " can name it";
+    error = std::string("the MPI module ") + kModuleFileName + " was not found; looked for " +
+            describeCandidates(candidates) + "; " + kModuleVariable + " can name it";
     return nullptr;
 }
 
