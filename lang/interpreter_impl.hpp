@@ -163,7 +163,9 @@ private:
     /// Evaluates a call's arguments, left to right, into `args` (one slot per argument).
     void evalArguments(const CallExpr* node, std::span<Value> args) {
         for (size_t i = 0; i < node->args.size(); ++i) {
-            args[i] = eval(node->args[i]);
+            // Constructed in place from eval's result, not assigned from a temporary: each
+            // value is written once, where the call reads it.
+            ::new (static_cast<void*>(&args[i])) Value(eval(node->args[i]));
             if (args[i].kind == ValueKind::None) fail(node->args[i]->range, "this argument has no value (none)");
         }
     }

@@ -43,12 +43,16 @@ void ObjectBuilder::evaluate(std::span<const Attribute> attributes) {
         Value v = in.eval(a.value);
         if (a.slot < 0) continue; // reported by the resolver
         check(a, v);
-        new (&values[static_cast<size_t>(a.slot)].value) Value(v);
-        if (!given[static_cast<size_t>(a.slot)]) givenSlots.push_back(static_cast<uint8_t>(a.slot));
-        given[static_cast<size_t>(a.slot)] = &a;
+        const auto slot = static_cast<size_t>(a.slot);
+        new (&values[slot].value) Value(v);
+        if (!isGiven(slot)) {
+            givenSlots.push_back(static_cast<uint8_t>(slot));
+            givenMask |= 1u << slot;
+        }
+        given[slot] = &a;
     }
     for (size_t i = 0; i < info.attributes.size(); ++i) {
-        if (info.attributes[i].required && !given[i]) missing(info.attributes[i]);
+        if (info.attributes[i].required && !isGiven(i)) missing(info.attributes[i]);
     }
 }
 

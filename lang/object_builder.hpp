@@ -37,15 +37,20 @@ struct ObjectBuilder {
     const ObjectInfo& info;
     SourceRange range;     ///< the whole literal
     SourceRange typeRange; ///< its type name (for Settings, the keyword)
-    /// Storage for the given attributes' values; a slot is valid where `given` is set.
-    /// Left uninitialised: building an object must not pay for clearing every slot.
+    /// Storage for the given attributes' values and where each is written; a slot is valid
+    /// where `givenMask` has its bit. Left uninitialised: building an object must not pay for
+    /// clearing every slot.
     union RawValue {
         Value value;
         RawValue() {}
     };
     std::array<RawValue, kMaxAttributes> values;
-    std::array<const Attribute*, kMaxAttributes> given{};
-    SmallSlots givenSlots; ///< the slots in `given` that are set
+    std::array<const Attribute*, kMaxAttributes> given;
+    static_assert(kMaxAttributes <= 32, "givenMask has a bit a slot");
+    uint32_t givenMask = 0;
+    SmallSlots givenSlots; ///< the slots that are given, in the order first given
+
+    bool isGiven(size_t slot) const { return (givenMask >> slot) & 1u; }
 
     /// Evaluates and checks every attribute, then reports the first required one missing.
     void evaluate(std::span<const Attribute> attributes);
