@@ -26,7 +26,14 @@ for run in "--version" "--check $scene" "--quiet $scene --width 8 --height 8 -o 
 done
 
 # The preview does load the HTTP server's libraries: the trace above would have shown them.
-LD_DEBUG=libs timeout 5 "$crtc" --preview "$scene" >"$work/out" 2>"$work/err"
+LD_DEBUG=libs "$crtc" --preview "$scene" >"$work/out" 2>"$work/err" &
+preview=$!
+for _ in $(seq 100); do # up to 10 s for its URL, which it prints once it serves
+    grep -q "^preview: " "$work/out" && break
+    sleep 0.1
+done
+kill "$preview"
+wait "$preview"
 expect_text "$work/out" "^preview: http://127.0.0.1:" "crtc --preview prints its URL"
 case " $(initialised) " in
 *" libcpp-httplib.so"*) ;;
