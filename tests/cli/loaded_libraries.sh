@@ -43,7 +43,7 @@ esac
 # Without crtc-preview beside it (or in ../lib/crt/), --preview says where it looked.
 mkdir "$work/alone"
 cp "$crtc" "$work/alone/crtc"
-expect_status 2 "--preview without crtc-preview" "$work/alone/crtc" --preview "$scene"
+expect_status 2 "--preview without crtc-preview" timeout 10 "$work/alone/crtc" --preview "$scene"
 expect_text "$work/err" "^crtc: the preview program crtc-preview was not found; looked for $work/alone/crtc-preview and $work/lib/crt/crtc-preview$" \
     "the missing preview program's message"
 finish
