@@ -26,7 +26,9 @@ bool apart(const CsgRay& q, const ConvexSpan& a, const ConvexSpan& b) {
     const double first = std::min(a.enter.t, b.enter.t), last = std::max(a.exit.t, b.exit.t);
     const double laterEntry = std::max(a.enter.t, b.enter.t), earlierExit = std::min(a.exit.t, b.exit.t);
     const double second = std::min(laterEntry, earlierExit), third = std::max(laterEntry, earlierExit);
-    return apart(q, first, second) & apart(q, second, third) & apart(q, third, last);
+    const bool firstApart = apart(q, first, second), middleApart = apart(q, second, third),
+               lastApart = apart(q, third, last);
+    return firstApart & middleApart & lastApart;
 }
 
 /// A crossing of a subtracted solid bounds the difference from the other side.
