@@ -201,11 +201,19 @@ std::unique_ptr<ImageInput> openInput(const char* path, const ErrorSink& sink) {
     return in;
 }
 
+// The type to ask read_image for, to get the pixels as `wanted`: "no conversion" when every
+// channel is stored as `wanted` already. OpenImageIO 2.4 reads straight into the caller's
+// buffer only then; asked for a type, even the stored one, it converts through a buffer of
+// 64 MiB that it allocates for every image, however small (tests/fuzz/README.md).
+TypeDesc readType(const ImageSpec& spec, TypeDesc wanted) {
+    return spec.format == wanted && spec.channelformats.empty() ? OIIO::TypeUnknown : wanted;
+}
+
 // OIIO converts integers to float by multiplying with 1/max, which is off by an ulp for many
 // codes; dividing here makes an 8-bit code k read as exactly k / 255.0f, as the spec says.
 template <class Int> bool readScaled(ImageInput& in, std::vector<float>& out) {
     std::vector<Int> raw(out.size());
-    if (!in.read_image(0, 0, 0, in.spec().nchannels, OIIO::BaseTypeFromC<Int>::value, raw.data()))
+    if (!in.read_image(0, 0, 0, in.spec().nchannels, readType(in.spec(), OIIO::BaseTypeFromC<Int>::value), raw.data()))
         return false;
     constexpr float max = float(std::numeric_limits<Int>::max());
     for (std::size_t i = 0; i < raw.size(); ++i) out[i] = float(raw[i]) / max;
@@ -213,8 +221,22 @@ template <class Int> bool readScaled(ImageInput& in, std::vector<float>& out) {
 }
 
 // Other formats (half, float, 32-bit integers …) convert as OIIO does: floats stay as stored.
+// Those read as stored and are converted here, by the conversion OpenImageIO would use, to
+// keep clear of its 64 MiB buffer (readType).
 bool readFloats(ImageInput& in, std::vector<float>& out) {
-    return in.read_image(0, 0, 0, in.spec().nchannels, OIIO::TypeFloat, out.data());
+    const ImageSpec& spec = in.spec();
+    const std::size_t valueBytes = spec.format.size();
+    if (spec.format == OIIO::TypeFloat || !spec.channelformats.empty() || valueBytes == 0)
+        return in.read_image(0, 0, 0, spec.nchannels, readType(spec, OIIO::TypeFloat), out.data());
+    std::vector<unsigned char> raw(out.size() * valueBytes);
+    if (!in.read_image(0, 0, 0, spec.nchannels, OIIO::TypeUnknown, raw.data())) return false;
+    constexpr std::size_t kBatch = std::size_t{1} << 24; // convert_pixel_values counts in int
+    for (std::size_t at = 0; at < out.size(); at += kBatch) {
+        const int count = int(std::min(kBatch, out.size() - at));
+        if (!OIIO::convert_pixel_values(spec.format, raw.data() + at * valueBytes, OIIO::TypeFloat, out.data() + at, count))
+            return false;
+    }
+    return true;
 }
 
 int readImage(const char* path, int* isInteger, CrtImageAllocFn alloc, CrtImageErrorFn error,
