@@ -40,6 +40,42 @@ SourceFile::SourceFile(std::string path, std::string text)
     ascii_ = std::all_of(begin, end, [](char c) { return static_cast<unsigned char>(c) < 0x80; });
     // A byte-order mark is not text: columns of the first line count from after it.
     if (std::string_view(begin, static_cast<size_t>(end - begin)).starts_with("\xEF\xBB\xBF")) lineStarts_[0] = 3;
+    if (ascii_) return;
+    for (uint32_t index = 0; index < lineStarts_.size(); ++index) {
+        const uint32_t lineEnd = index + 1 < lineStarts_.size() ? lineStarts_[index + 1] : size();
+        if (lineEnd - std::min(lineStarts_[index], lineEnd) <= kCheckpointSpacing) continue;
+        Columns columns;
+        uint32_t mark = lineStarts_[index] + kCheckpointSpacing;
+        for (uint32_t at = lineStarts_[index]; at < lineEnd;) {
+            if (at >= mark) {
+                checkpoints_.push_back({at, columns});
+                mark = at + kCheckpointSpacing;
+            }
+            const uint32_t length = sequenceLength(static_cast<unsigned char>(data_[at]));
+            ++columns.codePoints;
+            columns.utf16Units += length == 4 ? 2 : 1; // past U+FFFF: a surrogate pair
+            at += length;
+        }
+    }
+}
+
+SourceFile::Columns SourceFile::columnsBefore(uint32_t index, uint32_t offset) const {
+    uint32_t at = lineStarts_[index];
+    Columns columns;
+    auto after = std::upper_bound(checkpoints_.begin(), checkpoints_.end(), offset,
+                                  [](uint32_t value, const Checkpoint& c) { return value < c.offset; });
+    if (after != checkpoints_.begin() && std::prev(after)->offset >= at) {
+        at = std::prev(after)->offset;
+        columns = std::prev(after)->columns;
+    }
+    // Every code point that starts before `offset` counts, one that straddles it included.
+    while (at < offset) {
+        const uint32_t length = sequenceLength(static_cast<unsigned char>(data_[at]));
+        ++columns.codePoints;
+        columns.utf16Units += length == 4 ? 2 : 1;
+        at += length;
+    }
+    return columns;
 }
 
 uint32_t SourceFile::lineStart(uint32_t line) const {
@@ -74,7 +110,7 @@ LineColumn SourceFile::lineColumn(uint32_t offset) const {
     uint32_t index = lineIndexOf(offset);
     uint32_t bytes = offset - lineStarts_[index];
     if (ascii_) return {index + 1, bytes + 1};
-    return {index + 1, codePointCount(text().substr(lineStarts_[index], bytes)) + 1};
+    return {index + 1, columnsBefore(index, offset).codePoints + 1};
 }
 
 uint32_t SourceFile::offsetOf(LineColumn position) const {
@@ -91,13 +127,8 @@ uint32_t SourceFile::offsetOf(LineColumn position) const {
 Utf16Position SourceFile::utf16(uint32_t offset) const {
     offset = std::clamp(offset, lineStarts_[0], size());
     uint32_t index = lineIndexOf(offset);
-    uint32_t units = 0;
-    for (uint32_t i = lineStarts_[index]; i < offset;) {
-        uint32_t length = sequenceLength(static_cast<unsigned char>(data_[i]));
-        units += length == 4 ? 2 : 1; // code points past U+FFFF take a surrogate pair
-        i += length;
-    }
-    return {index, units};
+    if (ascii_) return {index, offset - lineStarts_[index]};
+    return {index, columnsBefore(index, offset).utf16Units};
 }
 
 uint32_t SourceFile::offsetOf(Utf16Position position) const {

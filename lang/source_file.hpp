@@ -58,11 +58,28 @@ public:
 
 private:
     uint32_t lineIndexOf(uint32_t offset) const;
+    /// Code points and UTF-16 code units from the start of line `index` (0-based) to `offset`.
+    struct Columns {
+        uint32_t codePoints = 0;
+        uint32_t utf16Units = 0;
+    };
+    Columns columnsBefore(uint32_t index, uint32_t offset) const;
+
+    /// Where counting the columns of a long line of non-ASCII text may resume: one every
+    /// kCheckpointSpacing bytes of such lines, so a column costs that much at most, not the
+    /// line's length (a one-line file with an error every few bytes would otherwise take
+    /// time quadratic in its size to print them).
+    struct Checkpoint {
+        uint32_t offset;  ///< the start of a code point (as counted from its line's start)
+        Columns columns;  ///< before it on its line
+    };
+    static constexpr uint32_t kCheckpointSpacing = 256;
 
     std::string path_;
     std::string data_;
     std::vector<uint32_t> lineStarts_;
     bool ascii_ = true;                 ///< columns are then byte offsets
+    std::vector<Checkpoint> checkpoints_; ///< by offset; only in non-ASCII text
     mutable uint32_t lastLineIndex_ = 0; ///< lookups tend to move forward through the file
 };
 

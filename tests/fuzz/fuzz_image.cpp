@@ -15,9 +15,11 @@ namespace {
 namespace fs = std::filesystem;
 namespace image_io = crt::tracer::image_io;
 
-/// Images are decoded in full only up to this many pixels: one input stays fast, and memory
-/// stays far below libFuzzer's limit (a 4-byte header may claim 2^31 × 2^31 pixels).
-constexpr uint64_t kMaxPixels = uint64_t{1} << 20;
+/// Images are decoded in full only up to this many pixels (256 × 256): one input stays fast,
+/// and memory stays far below libFuzzer's limit (a 4-byte header may claim 2^31 × 2^31
+/// pixels). A decoder runs the same code for every row and tile, so a larger image only
+/// multiplies the time of one input; larger ones still go through describeImage.
+constexpr uint64_t kMaxPixels = uint64_t{1} << 16;
 
 /// The file every input is written to: one per process (a campaign may run several), in the
 /// system's temporary directory, removed at exit. Never destroyed, so the exit handler can use it.

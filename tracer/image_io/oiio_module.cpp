@@ -8,6 +8,9 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -54,13 +57,51 @@ bool pngChunksFit(std::FILE* file, long size) {
     return true;
 }
 
+// Reads bytes up to a NUL into `text` (at most 255 of them); false at the end of the file or
+// past that length.
+bool readName(std::FILE* file, std::string& text) {
+    text.clear();
+    for (int c; (c = std::fgetc(file)) != EOF;) {
+        if (c == 0) return true;
+        if (text.size() == 255) return false;
+        text += char(c);
+    }
+    return false;
+}
+
+// Whether every attribute of an OpenEXR file's headers (a name and a type name, each ending
+// with a NUL byte, a 4-byte little-endian size, then the value; an empty name ends a header,
+// and an empty header ends a multi-part file's) ends within the file's `size` bytes. Stops
+// without a verdict where the header is cut short: OpenEXR reports that itself.
+bool exrAttributesFit(std::FILE* file, long size, bool multipart) {
+    if (std::fseek(file, 8, SEEK_SET) != 0) return true;
+    std::string name, type;
+    while (true) {
+        bool emptyHeader = true;
+        while (true) {
+            if (!readName(file, name)) return true;
+            if (name.empty()) break;
+            emptyHeader = false;
+            unsigned char field[4];
+            if (!readName(file, type) || std::fread(field, 1, sizeof field, file) != sizeof field) return true;
+            const long length = long(std::int32_t(std::uint32_t(field[0]) | std::uint32_t(field[1]) << 8 |
+                                                  std::uint32_t(field[2]) << 16 | std::uint32_t(field[3]) << 24));
+            const long at = std::ftell(file);
+            if (length < 0 || at < 0 || length > size - at) return false;
+            if (std::fseek(file, at + length, SEEK_SET) != 0) return true;
+        }
+        if (!multipart || emptyHeader) return true;
+    }
+}
+
 // Files OpenImageIO 2.4 cannot be trusted with, told by their bytes before it opens them
 // (found by tests/fuzz/fuzz_image); the reason to refuse `path`, or empty.
 // - Maya IFF ("FOR4", "FOR8"): the reader aborts the process on a failed assertion while it
 //   reads a damaged header, even when OpenImageIO only tries it on a file of unknown format.
-// - PNG and DPX: libpng reserves the length a chunk announces (up to 2 GiB), the DPX reader
-//   the user data length the header announces, before reading them; nothing limits either,
-//   so such a length beyond the end of the file is refused first.
+// - PNG, DPX and OpenEXR: libpng reserves the length a chunk announces (up to 2 GiB), the DPX
+//   reader the user data length the header announces, OpenEXR the size a header attribute
+//   announces, before reading them; nothing limits any of them, so such a length beyond the
+//   end of the file is refused first.
 std::string refusedBeforeOpen(const char* path) {
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path, "rb"), std::fclose);
     if (!file) return {}; // OpenImageIO says why
@@ -73,6 +114,9 @@ std::string refusedBeforeOpen(const char* path) {
     const long size = std::ftell(file.get());
     if (std::memcmp(head, "\x89PNG\r\n\x1a\n", 8) == 0 && !pngChunksFit(file.get(), size))
         return "damaged PNG file: a chunk is longer than the file";
+    // OpenEXR: the magic number, then a version byte and flags, 0x1000 for a multi-part file.
+    if (std::memcmp(head, "\x76\x2f\x31\x01", 4) == 0 && !exrAttributesFit(file.get(), size, (head[5] & 0x10) != 0))
+        return "damaged OpenEXR file: a header attribute is longer than the file";
     const bool dpxBigEndian = std::memcmp(head, "SDPX", 4) == 0;
     if ((dpxBigEndian || std::memcmp(head, "XPDS", 4) == 0) && got == sizeof head) {
         const unsigned char* field = head + 32; // the user data length
@@ -85,6 +129,39 @@ std::string refusedBeforeOpen(const char* path) {
     return {};
 }
 
+// Whether OpenImageIO 2.4's RLA reader would abort the process on `path`: it accepts the
+// 740-byte big-endian header (revision 0 or 0xFFFE, bit depths 0 to 32, channel types 0 to 4,
+// the scanline offset table after it within the file) and then fails an assertion ("Invalid
+// colour channel type") on type 3, of the color channels or of matte or auxiliary channels
+// there are some of. RLA has no magic number: this asks exactly what the reader's own checks
+// before that assertion ask.
+bool rlaReaderWouldAbort(const char* path) {
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path, "rb"), std::fclose);
+    unsigned char header[740];
+    if (!file || std::fread(header, 1, sizeof header, file.get()) != sizeof header) return false;
+    auto field = [&](int at) { return int(std::int16_t(std::uint16_t(header[at] << 8 | header[at + 1]))); };
+    const int revision = field(26);
+    if (revision != -2 && revision != 0) return false;
+    for (int bits : {field(658), field(662), field(666)})
+        if (bits < 0 || bits > 32) return false;
+    const int colorType = field(18), matteType = field(660), auxType = field(664);
+    for (int type : {colorType, matteType, auxType})
+        if (type < 0 || type > 4) return false;
+    const long scanlines = std::abs(field(12) - field(14)) + 1;
+    if (std::fseek(file.get(), 0, SEEK_END) != 0 || std::ftell(file.get()) < long(sizeof header) + 4 * scanlines)
+        return false;
+    return colorType == 3 || (field(22) != 0 && matteType == 3) || (field(24) != 0 && auxType == 3);
+}
+
+std::string lowerExtension(std::string_view path) {
+    const std::size_t slash = path.find_last_of('/');
+    const std::size_t dot = path.find_last_of('.');
+    if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) return {};
+    std::string extension(path.substr(dot + 1));
+    for (char& c : extension) c = char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+    return extension;
+}
+
 std::unique_ptr<ImageInput> openInput(const char* path, const ErrorSink& sink) {
     if (const std::string refused = refusedBeforeOpen(path); !refused.empty()) {
         sink.fail(refused);
@@ -94,7 +171,25 @@ std::unique_ptr<ImageInput> openInput(const char* path, const ErrorSink& sink) {
     // the alpha is dropped, so premultiplying would darken every transparent pixel.
     ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = ImageInput::open(path, &config);
+    // First the reader of the file's extension alone, as OpenImageIO would. Only where that
+    // one fails (or there is none) does OpenImageIO try every reader on the file, the RLA
+    // reader among them, so only there are files refused that would make it abort: a valid
+    // file of another format, named for it, is never taken for a damaged RLA file.
+    std::unique_ptr<ImageInput> in;
+    const std::string extension = lowerExtension(path);
+    if (!extension.empty() && extension != "rla") {
+        in = ImageInput::create(extension, false, &config);
+        ImageSpec spec;
+        if (in && !in->open(path, spec, config)) in.reset();
+        (void)OIIO::geterror(); // the fallback below reports its own error
+    }
+    if (!in) {
+        if (rlaReaderWouldAbort(path)) {
+            sink.fail("damaged RLA file: invalid channel type");
+            return nullptr;
+        }
+        in = ImageInput::open(path, &config);
+    }
     if (!in) {
         sink.fail(oiioError(""));
         return nullptr;
@@ -106,11 +201,19 @@ std::unique_ptr<ImageInput> openInput(const char* path, const ErrorSink& sink) {
     return in;
 }
 
+// The type to ask read_image for, to get the pixels as `wanted`: "no conversion" when every
+// channel is stored as `wanted` already. OpenImageIO 2.4 reads straight into the caller's
+// buffer only then; asked for a type, even the stored one, it converts through a buffer of
+// 64 MiB that it allocates for every image, however small (tests/fuzz/README.md).
+TypeDesc readType(const ImageSpec& spec, TypeDesc wanted) {
+    return spec.format == wanted && spec.channelformats.empty() ? OIIO::TypeUnknown : wanted;
+}
+
 // OIIO converts integers to float by multiplying with 1/max, which is off by an ulp for many
 // codes; dividing here makes an 8-bit code k read as exactly k / 255.0f, as the spec says.
 template <class Int> bool readScaled(ImageInput& in, std::vector<float>& out) {
     std::vector<Int> raw(out.size());
-    if (!in.read_image(0, 0, 0, in.spec().nchannels, OIIO::BaseTypeFromC<Int>::value, raw.data()))
+    if (!in.read_image(0, 0, 0, in.spec().nchannels, readType(in.spec(), OIIO::BaseTypeFromC<Int>::value), raw.data()))
         return false;
     constexpr float max = float(std::numeric_limits<Int>::max());
     for (std::size_t i = 0; i < raw.size(); ++i) out[i] = float(raw[i]) / max;
@@ -118,8 +221,22 @@ template <class Int> bool readScaled(ImageInput& in, std::vector<float>& out) {
 }
 
 // Other formats (half, float, 32-bit integers …) convert as OIIO does: floats stay as stored.
+// Those read as stored and are converted here, by the conversion OpenImageIO would use, to
+// keep clear of its 64 MiB buffer (readType).
 bool readFloats(ImageInput& in, std::vector<float>& out) {
-    return in.read_image(0, 0, 0, in.spec().nchannels, OIIO::TypeFloat, out.data());
+    const ImageSpec& spec = in.spec();
+    const std::size_t valueBytes = spec.format.size();
+    if (spec.format == OIIO::TypeFloat || !spec.channelformats.empty() || valueBytes == 0)
+        return in.read_image(0, 0, 0, spec.nchannels, readType(spec, OIIO::TypeFloat), out.data());
+    std::vector<unsigned char> raw(out.size() * valueBytes);
+    if (!in.read_image(0, 0, 0, spec.nchannels, OIIO::TypeUnknown, raw.data())) return false;
+    constexpr std::size_t kBatch = std::size_t{1} << 24; // convert_pixel_values counts in int
+    for (std::size_t at = 0; at < out.size(); at += kBatch) {
+        const int count = int(std::min(kBatch, out.size() - at));
+        if (!OIIO::convert_pixel_values(spec.format, raw.data() + at * valueBytes, OIIO::TypeFloat, out.data() + at, count))
+            return false;
+    }
+    return true;
 }
 
 int readImage(const char* path, int* isInteger, CrtImageAllocFn alloc, CrtImageErrorFn error,

@@ -56,3 +56,31 @@ TEST_CASE("the buffer ends with a NUL the lexer can stop on") {
     CHECK(file.lineCount() == 1);
     CHECK(file.lineColumn(0) == LineColumn{1, 1});
 }
+
+TEST_CASE("columns of long non-ASCII lines match counting from the line start") {
+    // Long lines are counted from checkpoints: every offset must still get the column and
+    // UTF-16 position of a walk from its line's start, invalid bytes, sequences cut short at
+    // a line break and a byte-order mark included.
+    std::string text = "\xEF\xBB\xBF";
+    for (int i = 0; i < 300; ++i) text += i % 7 == 0 ? "\xC3\xA9" : i % 11 == 0 ? "\xF0\x9D\x84\x9E" : i % 13 == 0 ? "\xFF" : "ab";
+    text += "\xE2\x82\n"; // cut short by the line break
+    text += "short \xC3\xA9\n";
+    for (int i = 0; i < 700; ++i) text += i % 5 == 0 ? "\xE2\x82\xAC" : "c";
+    SourceFile file("long.crt", text);
+    for (uint32_t offset = 0; offset <= file.size(); ++offset) {
+        const LineColumn at = file.lineColumn(offset);
+        const uint32_t start = file.lineStart(at.line);
+        const uint32_t clamped = std::max(offset, start);
+        uint32_t points = 0, units = 0;
+        for (uint32_t i = start; i < clamped;) {
+            const unsigned char lead = static_cast<unsigned char>(file.text()[i]);
+            const uint32_t length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 1;
+            ++points;
+            units += length == 4 ? 2 : 1;
+            i += length;
+        }
+        INFO("offset " << offset);
+        REQUIRE(at.column == points + 1);
+        REQUIRE(file.utf16(offset) == Utf16Position{at.line - 1, units});
+    }
+}

@@ -526,3 +526,45 @@ TEST_CASE("a stream refuses rows out of order and an early finish, and leaves no
     CHECK_FALSE(ImageStream::open(scratchFile("x.png"), 0, 6, 3, {}, error));
     CHECK_THAT(error, Catch::Contains("empty"));
 }
+
+TEST_CASE("files OpenImageIO's readers would abort on or reserve gigabytes for are refused", "[image_io]") {
+    auto writeBytes = [](const std::string& path, const std::string& bytes) {
+        std::ofstream(path, std::ios::binary) << bytes;
+    };
+    std::string error;
+
+    // OpenEXR: a header attribute announcing 1.8 GB in a file of a few bytes (the reader
+    // reserves it before reading).
+    std::string exr("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
+    exr += std::string("comments\0string\0", 16) + std::string("\x00\x00\x00\x70", 4) + "text";
+    const std::string hugeAttribute = scratchFile("huge_attribute.exr");
+    writeBytes(hugeAttribute, exr);
+    CHECK_FALSE(readImage(hugeAttribute, error));
+    CHECK_THAT(error, Catch::Contains("damaged OpenEXR file: a header attribute is longer than the file"));
+    error.clear();
+    CHECK_FALSE(describeImage(hugeAttribute, error));
+    CHECK_THAT(error, Catch::Contains("damaged OpenEXR file"));
+    // A valid OpenEXR file passes the check, named for its format or not.
+    const ImageBuffer image{2, 2, 3, std::vector<float>(12, 0.5f)};
+    const std::string valid = scratchFile("valid.exr");
+    writeOrFail(valid, image, {});
+    const std::string unnamed = scratchFile("valid_exr_without_extension");
+    fs::copy_file(valid, unnamed, fs::copy_options::overwrite_existing);
+    CHECK(readOrFail(unnamed).pixels == image.pixels);
+
+    // RLA (no magic number): a header the RLA reader accepts, with color channel type 3, on
+    // which it fails an assertion. Refused whatever its name, since OpenImageIO tries every
+    // reader on a file its extension's reader does not open.
+    std::string rla(744, '\0');
+    rla[19] = 3;                                     // ColorChannelType
+    rla[21] = 3;                                     // NumOfColorChannels
+    rla[26] = '\xff', rla[27] = '\xfe';              // Revision
+    rla[659] = 8;                                    // NumOfChannelBits
+    for (const char* name : {"channel_type_3.rla", "channel_type_3.png", "channel_type_3"}) {
+        const std::string path = scratchFile(name);
+        writeBytes(path, rla);
+        error.clear();
+        CHECK_FALSE(readImage(path, error));
+        CHECK_THAT(error, Catch::Contains("damaged RLA file: invalid channel type"));
+    }
+}
