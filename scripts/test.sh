@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
-# Sets everything up, builds, and runs every test: the Release build, then the whole suite
-# again under AddressSanitizer and UndefinedBehaviorSanitizer.
-#   scripts/test.sh            both
+# Sets everything up, builds, and runs every test: the Release build, the whole suite again
+# under AddressSanitizer and UndefinedBehaviorSanitizer, then each libFuzzer target for a
+# minute on its corpus (scripts/fuzz.sh: a clang build of the targets, then 2 minutes).
+#   scripts/test.sh            all three
 #   scripts/test.sh --quick    the Release build only
-#   scripts/test.sh --fuzz     both, then each libFuzzer target for a minute on its corpus
-#                              (scripts/fuzz.sh: a clang build of the targets, then 2 minutes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -19,8 +18,6 @@ if [ "${1:-}" != "--quick" ]; then
     cmake --build build-asan
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
         ctest --output-on-failure -j "$jobs")
-    if [ "${1:-}" = "--fuzz" ]; then
-        scripts/fuzz.sh 60
-    fi
+    scripts/fuzz.sh 60
 fi
 echo "all tests passed"
