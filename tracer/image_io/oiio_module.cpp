@@ -57,40 +57,49 @@ bool pngChunksFit(std::FILE* file, long size) {
     return true;
 }
 
-// Reads bytes up to a NUL into `text` (at most 255 of them); false at the end of the file or
-// past that length.
-bool readName(std::FILE* file, std::string& text) {
+enum class NameRead { Read, End, TooLong };
+
+// Reads bytes up to a NUL into `text`, as OpenEXR reads an attribute's name or type name: at
+// most `maxLength` bytes and the NUL. End: the file ends first; TooLong: no NUL within them.
+NameRead readName(std::FILE* file, std::size_t maxLength, std::string& text) {
     text.clear();
     for (int c; (c = std::fgetc(file)) != EOF;) {
-        if (c == 0) return true;
-        if (text.size() == 255) return false;
+        if (c == 0) return NameRead::Read;
+        if (text.size() == maxLength) return NameRead::TooLong;
         text += char(c);
     }
-    return false;
+    return NameRead::End;
 }
 
-// Whether every attribute of an OpenEXR file's headers (a name and a type name, each ending
-// with a NUL byte, a 4-byte little-endian size, then the value; an empty name ends a header,
-// and an empty header ends a multi-part file's) ends within the file's `size` bytes. Stops
-// without a verdict where the header is cut short: OpenEXR reports that itself.
-bool exrAttributesFit(std::FILE* file, long size, bool multipart) {
-    if (std::fseek(file, 8, SEEK_SET) != 0) return true;
+// Why an OpenEXR file's headers cannot be trusted, or empty. Each attribute is a name and a
+// type name, each ending with a NUL byte, a 4-byte little-endian size, then the value; an
+// empty name ends a header, and an empty header ends a multi-part file's. OpenEXR reserves
+// the size before reading the value, and it reads a name longer than its limit (31 bytes, or
+// 255 with the long-names flag) only up to that limit, going on from there as if the rest
+// were the type name and the size. Where the header is cut short, OpenEXR reports that itself.
+std::string exrHeaderRefusal(std::FILE* file, long size, const unsigned char* head) {
+    const bool longNames = (head[5] & 0x04) != 0, multipart = (head[5] & 0x10) != 0;
+    const std::size_t maxLength = longNames ? 255 : 31;
+    if (std::fseek(file, 8, SEEK_SET) != 0) return {};
     std::string name, type;
     while (true) {
         bool emptyHeader = true;
         while (true) {
-            if (!readName(file, name)) return true;
-            if (name.empty()) break;
+            NameRead read = readName(file, maxLength, name);
+            if (read == NameRead::Read && name.empty()) break;
+            if (read == NameRead::Read) read = readName(file, maxLength, type);
+            if (read == NameRead::TooLong) return "damaged OpenEXR file: an attribute's name is too long";
             emptyHeader = false;
             unsigned char field[4];
-            if (!readName(file, type) || std::fread(field, 1, sizeof field, file) != sizeof field) return true;
+            if (read == NameRead::End || std::fread(field, 1, sizeof field, file) != sizeof field) return {};
             const long length = long(std::int32_t(std::uint32_t(field[0]) | std::uint32_t(field[1]) << 8 |
                                                   std::uint32_t(field[2]) << 16 | std::uint32_t(field[3]) << 24));
             const long at = std::ftell(file);
-            if (length < 0 || at < 0 || length > size - at) return false;
-            if (std::fseek(file, at + length, SEEK_SET) != 0) return true;
+            if (length < 0 || at < 0 || length > size - at)
+                return "damaged OpenEXR file: a header attribute is longer than the file";
+            if (std::fseek(file, at + length, SEEK_SET) != 0) return {};
         }
-        if (!multipart || emptyHeader) return true;
+        if (!multipart || emptyHeader) return {};
     }
 }
 
@@ -115,8 +124,9 @@ std::string refusedBeforeOpen(const char* path) {
     if (std::memcmp(head, "\x89PNG\r\n\x1a\n", 8) == 0 && !pngChunksFit(file.get(), size))
         return "damaged PNG file: a chunk is longer than the file";
     // OpenEXR: the magic number, then a version byte and flags, 0x1000 for a multi-part file.
-    if (std::memcmp(head, "\x76\x2f\x31\x01", 4) == 0 && !exrAttributesFit(file.get(), size, (head[5] & 0x10) != 0))
-        return "damaged OpenEXR file: a header attribute is longer than the file";
+    if (std::memcmp(head, "\x76\x2f\x31\x01", 4) == 0) {
+        if (std::string refusal = exrHeaderRefusal(file.get(), size, head); !refusal.empty()) return refusal;
+    }
     const bool dpxBigEndian = std::memcmp(head, "SDPX", 4) == 0;
     if ((dpxBigEndian || std::memcmp(head, "XPDS", 4) == 0) && got == sizeof head) {
         const unsigned char* field = head + 32; // the user data length

@@ -544,6 +544,20 @@ TEST_CASE("files OpenImageIO's readers would abort on or reserve gigabytes for a
     error.clear();
     CHECK_FALSE(describeImage(hugeAttribute, error));
     CHECK_THAT(error, Catch::Contains("damaged OpenEXR file"));
+    // A name longer than OpenEXR reads (31 bytes without the long-names flag): OpenEXR would
+    // go on reading the rest of it as the type name and the size. With the flag, 255.
+    std::string longName("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
+    longName += std::string(32, 'n') + std::string("\0string\0", 8) + std::string("\x04\x00\x00\x00", 4) + "text";
+    const std::string tooLong = scratchFile("long_attribute_name.exr");
+    writeBytes(tooLong, longName);
+    error.clear();
+    CHECK_FALSE(readImage(tooLong, error));
+    CHECK_THAT(error, Catch::Contains("damaged OpenEXR file: an attribute's name is too long"));
+    longName[5] = '\x04'; // long names: the same attribute is read to its end
+    writeBytes(tooLong, longName);
+    error.clear();
+    CHECK_FALSE(readImage(tooLong, error));
+    CHECK_THAT(error, !Catch::Contains("name is too long"));
     // A valid OpenEXR file passes the check, named for its format or not.
     const ImageBuffer image{2, 2, 3, std::vector<float>(12, 0.5f)};
     const std::string valid = scratchFile("valid.exr");
