@@ -2,14 +2,17 @@
 # Builds the libFuzzer targets with clang in build-fuzz/ and runs each for SECONDS on a copy
 # of its corpus, two at a time (tests/fuzz/README.md). Any finding fails the run, and the
 # finding's input is left in build-fuzz/fuzz/<target>/findings/.
-#   scripts/fuzz.sh [SECONDS]    default 60
+#   scripts/fuzz.sh [SECONDS [TARGET...]]    default 60 seconds, every target
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
+[ $# -gt 0 ] && shift
 scripts/setup.sh --fuzz
 
-targets=()
-for corpus in tests/fuzz/corpus/*/; do targets+=("$(basename "$corpus")"); done
+targets=("$@")
+if [ ${#targets[@]} -eq 0 ]; then
+    for corpus in tests/fuzz/corpus/*/; do targets+=("$(basename "$corpus")"); done
+fi
 CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCRT_FUZZ=ON >/dev/null
 # Only the fuzz targets and the libraries they link, not the whole project.
 cmake --build build-fuzz --target "${targets[@]/#/fuzz_}"
