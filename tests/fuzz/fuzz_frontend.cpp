@@ -13,16 +13,12 @@ namespace {
 
 // Small limits keep one input fast; each is still reached by a short script (a loop, a
 // recursive macro, a range), so their errors are explored too. A higher limit only repeats
-// the same code more times per input: at 100,000 steps `while (true) {}` took 20 to 30 ms,
-// and a loop building 5,000 spheres 220 ms, two thirds of it in sceneToJson (30 µs a
-// sphere; 100,000 were allowed).
+// the same code more times per input (tests/fuzz/README.md, Speed, has the costs).
 constexpr uint64_t kMaxSteps = 10'000;
 constexpr uint64_t kMaxEntities = 1'000;
 // Diagnostics formatted per input, as many as crtc prints by default (--max-errors), and the
-// last one: a megabyte of random bytes makes about 470,000 of them, and formatting them all
-// three ways took 21 s; on the corpus of a one-minute run formatting still took half the
-// time with 256. The rest would go through the same formatting code; they only multiply the
-// time.
+// last one: a megabyte of random bytes makes hundreds of thousands of them, and the rest
+// would only go through the same formatting code again.
 constexpr size_t kMaxFormatted = 50;
 
 } // namespace

@@ -17,7 +17,7 @@ crt::lsp::ServerOptions fuzzOptions() {
     // Small limits keep one input fast; the front end's own target explores deep evaluations.
     // They are those of fuzz_frontend: each is still reached by a short script, and a higher
     // one only repeats the same code more times per input, on the evaluation thread beside
-    // the main one (100,000 steps of `while (true) {}` took 20 to 30 ms).
+    // the main one.
     crt::lang::Limits& limits = options.analysis.limits;
     limits.maxSteps = 10'000;
     limits.maxDepth = 100;
