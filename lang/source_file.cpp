@@ -51,10 +51,7 @@ SourceFile::SourceFile(std::string path, std::string text)
                 checkpoints_.push_back({at, columns});
                 mark = at + kCheckpointSpacing;
             }
-            const uint32_t length = sequenceLength(static_cast<unsigned char>(data_[at]));
-            ++columns.codePoints;
-            columns.utf16Units += length == 4 ? 2 : 1; // past U+FFFF: a surrogate pair
-            at += length;
+            at += columns.count(static_cast<unsigned char>(data_[at]));
         }
     }
 }
@@ -69,13 +66,15 @@ SourceFile::Columns SourceFile::columnsBefore(uint32_t index, uint32_t offset) c
         columns = std::prev(after)->columns;
     }
     // Every code point that starts before `offset` counts, one that straddles it included.
-    while (at < offset) {
-        const uint32_t length = sequenceLength(static_cast<unsigned char>(data_[at]));
-        ++columns.codePoints;
-        columns.utf16Units += length == 4 ? 2 : 1;
-        at += length;
-    }
+    while (at < offset) at += columns.count(static_cast<unsigned char>(data_[at]));
     return columns;
+}
+
+uint32_t SourceFile::Columns::count(unsigned char lead) {
+    const uint32_t length = sequenceLength(lead);
+    ++codePoints;
+    utf16Units += length == 4 ? 2 : 1; // past U+FFFF: a surrogate pair
+    return length;
 }
 
 uint32_t SourceFile::lineStart(uint32_t line) const {

@@ -62,6 +62,8 @@ private:
     struct Columns {
         uint32_t codePoints = 0;
         uint32_t utf16Units = 0;
+        /// Counts the code point whose first byte is `lead`; returns its length in bytes.
+        uint32_t count(unsigned char lead);
     };
     Columns columnsBefore(uint32_t index, uint32_t offset) const;
 
