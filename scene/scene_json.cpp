@@ -289,7 +289,8 @@ std::string sceneToJson(const SceneDesc& scene, int indent) {
     Json& entities = root["entities"] = Json::array();
     for (size_t i = 0; i < scene.entities.size(); ++i) entities.push_back(entityJson(scene.entities[i], i));
     root["drawn"] = scene.drawn;
-    return compactNumberArrays(root.dump(indent)) + "\n";
+    // JSON holds only UTF-8, and a script's strings (titles, file names) may hold any bytes.
+    return compactNumberArrays(root.dump(indent, ' ', false, Json::error_handler_t::replace)) + "\n";
 }
 
 } // namespace crt::scene

@@ -31,7 +31,7 @@ void openInBrowser(const std::string& url) {
 int previewCommand(const Options& options) {
     preview::EventHub events;
     preview::Session session(options, [&](const std::string& name, const nlohmann::json& data) {
-        events.publish(name, data.dump());
+        events.publish(name, preview::pageJson(data));
     });
     preview::Server server(session, events, preview::newToken(), [] { stopRequested.store(true); });
     std::string error;

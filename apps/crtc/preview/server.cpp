@@ -25,7 +25,7 @@ constexpr auto kEventPoll = std::chrono::milliseconds(1000);
 void replyJson(httplib::Response& res, const json& body, int status = 200) {
     res.status = status;
     res.set_header("Cache-Control", "no-store");
-    res.set_content(body.dump(), "application/json");
+    res.set_content(pageJson(body), "application/json");
 }
 
 void replyError(httplib::Response& res, const std::string& message, int status = 400) {
@@ -67,6 +67,10 @@ bool sameSecret(const std::string& a, const std::string& b) {
 }
 
 } // namespace
+
+std::string pageJson(const json& value) {
+    return value.dump(-1, ' ', false, json::error_handler_t::replace);
+}
 
 std::string newToken() {
     std::random_device device;

@@ -5,6 +5,8 @@
 #include "preview/event_hub.hpp"
 #include "preview/session.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -46,6 +48,10 @@ private:
     std::unique_ptr<httplib::Server> http_;
     int port_ = 0;
 };
+
+/// `value` as JSON text for the page. A script's strings and paths may hold bytes that are not
+/// UTF-8, which JSON cannot carry: each becomes U+FFFD.
+std::string pageJson(const nlohmann::json& value);
 
 /// A new random token: 128 bits from the system's random source, in hex.
 std::string newToken();

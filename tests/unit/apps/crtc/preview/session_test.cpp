@@ -1,6 +1,7 @@
 // The preview session's render loop: passes, and the cancelling of a render that an edit
 // made useless.
 #include "preview/session.hpp"
+#include "preview/server.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -64,10 +65,13 @@ std::string sceneText(int width, int height, int supersampling, const char* colo
 
 /// A script in a folder of its own: test cases run in parallel processes.
 struct ScriptFile {
-    fs::path folder = fs::temp_directory_path() / ("crtc_preview_session_test_" + std::to_string(::getpid()));
-    std::string path = (folder / "scene.crt").string();
+    fs::path folder;
+    std::string path;
 
-    explicit ScriptFile(const std::string& text) {
+    /// `name`: the folder's name before the process id.
+    explicit ScriptFile(const std::string& text, const std::string& name = "crtc_preview_session_test_")
+        : folder(fs::temp_directory_path() / (name + std::to_string(::getpid()))),
+          path((folder / "scene.crt").string()) {
         fs::remove_all(folder);
         fs::create_directories(folder);
         write(text);
@@ -132,4 +136,17 @@ TEST_CASE("a script with errors keeps the last good scene and reports file:line:
     CHECK(report["diagnostics"][0].get<std::string>().find("scene.crt:3:1: error:") != std::string::npos);
     CHECK(session.state()["width"] == 32); // the last good scene
     CHECK(session.pick(0.5, 0.5)["kind"] == "Sphere");
+}
+
+TEST_CASE("the page gets JSON when the script's path is not UTF-8", "[preview]") {
+    // Linux paths are bytes; "\xE9" is Latin-1's "é".
+    ScriptFile script(sceneText(32, 24, 1, "rgb(0.2, 0.3, 0.4)"), "crtc_preview_caf\xE9_");
+    Recorder recorder;
+    Session session(optionsFor(script.path), recorder.publisher());
+    session.start();
+    recorder.waitFor("frame", [](const nlohmann::json& f) { return f["pass"] == f["passes"]; });
+    const nlohmann::json state = nlohmann::json::parse(pageJson(session.state()));
+    CHECK(state["script"].get<std::string>().find("crtc_preview_caf\xEF\xBF\xBD_") != std::string::npos);
+    const nlohmann::json picked = nlohmann::json::parse(pageJson(session.pick(0.5, 0.5)));
+    CHECK(picked["location"].get<std::string>().find("caf\xEF\xBF\xBD_") != std::string::npos);
 }
