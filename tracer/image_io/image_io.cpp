@@ -75,29 +75,32 @@ std::string quotedName(const std::string& path) {
     return "\"" + path + "\"";
 }
 
-// One context for both callbacks of a module call: the error text and, when reading, the image.
+// One context for the callbacks of a module call: the error text and, when reading, the image.
 struct CallContext {
     std::string error;
     ImageBuffer* image = nullptr;
-    uint64_t maxPixels = std::numeric_limits<uint64_t>::max(); ///< readImage's limit
-    std::string refusal; ///< why allocatePixels refused the image, when it did
+    uint64_t maxPixels = std::numeric_limits<uint64_t>::max(); ///< the largest image taken
+    std::string refusal; ///< why acceptsSize refused the image, when it did
 };
 
 void storeError(void* context, const char* message) {
     static_cast<CallContext*>(context)->error = message ? message : "unknown error";
 }
 
-float* allocatePixels(void* context, int width, int height) {
+int acceptsSize(void* context, long long width, long long height) {
     CallContext& call = *static_cast<CallContext*>(context);
-    ImageBuffer& image = *call.image;
-    // The module asks with the header's size before it reads (or makes room for) any pixel.
-    const uint64_t pixels = uint64_t(width) * uint64_t(height);
-    if (pixels > call.maxPixels) {
+    // Counted in floating point: a header may claim 2^32 x 2^32.
+    if (width > 0 && height > 0 && double(width) * double(height) > double(call.maxPixels)) {
         call.refusal = "it is " + std::to_string(width) + " x " + std::to_string(height) +
                        " pixels, more than the " + std::to_string(call.maxPixels) +
                        " allowed; raise the limit with --max-image-pixels";
-        return nullptr;
+        return 0;
     }
+    return 1;
+}
+
+float* allocatePixels(void* context, int width, int height) {
+    ImageBuffer& image = *static_cast<CallContext*>(context)->image;
     try {
         image.width = width;
         image.height = height;
@@ -107,6 +110,11 @@ float* allocatePixels(void* context, int width, int height) {
     } catch (const std::bad_alloc&) {
         return nullptr; // reported by the module as out of memory; no exception crosses C
     }
+}
+
+/// What a failed module call says: the host's refusal of the size, else the module's error.
+const std::string& callFailure(const CallContext& call) {
+    return call.refusal.empty() ? call.error : call.refusal;
 }
 
 bool checkSize(int width, int height, int channels, std::string& problem) {
@@ -221,7 +229,7 @@ bool readsBack(const CrtImageIoModule& module, const std::string& file, int widt
                int images, std::string& problem) {
     CrtImageInfo info{};
     CallContext context;
-    if (!module.describeImage || !module.describeImage(file.c_str(), &info, storeError, &context)) {
+    if (!module.describeImage || !module.describeImage(file.c_str(), &info, acceptsSize, storeError, &context)) {
         // The reader's own words ("no format reader …") would only confuse.
         problem = "the written file does not read back (is the disk full?)";
         return false;
@@ -278,9 +286,8 @@ std::optional<ImageBuffer> readImage(const std::string& path, std::string& error
     context.image = &image;
     context.maxPixels = maxPixels;
     int isInteger = 0;
-    if (!module->readImage(path.c_str(), &isInteger, allocatePixels, storeError, &context)) {
-        error = "cannot read " + quotedName(path) + ": " +
-                (context.refusal.empty() ? context.error : context.refusal);
+    if (!module->readImage(path.c_str(), &isInteger, acceptsSize, allocatePixels, storeError, &context)) {
+        error = "cannot read " + quotedName(path) + ": " + callFailure(context);
         return std::nullopt;
     }
     if (eightBit) *eightBit = isInteger != 0;
@@ -505,7 +512,7 @@ bool writeAnimatedGif(const std::string& path, const std::vector<ImageBuffer>& f
     return writeAnimatedGif(path, codes, fps, error);
 }
 
-std::optional<ImageInfo> describeImage(const std::string& path, std::string& error) {
+std::optional<ImageInfo> describeImage(const std::string& path, std::string& error, uint64_t maxPixels) {
     std::error_code ec;
     if (!fs::exists(path, ec)) {
         error = "cannot read " + quotedName(path) + ": no such file";
@@ -515,8 +522,9 @@ std::optional<ImageInfo> describeImage(const std::string& path, std::string& err
     if (!module) return std::nullopt;
     CrtImageInfo raw{};
     CallContext context;
-    if (!module->describeImage(path.c_str(), &raw, storeError, &context)) {
-        error = "cannot read " + quotedName(path) + ": " + context.error;
+    context.maxPixels = maxPixels;
+    if (!module->describeImage(path.c_str(), &raw, acceptsSize, storeError, &context)) {
+        error = "cannot read " + quotedName(path) + ": " + callFailure(context);
         return std::nullopt;
     }
     ImageInfo info;

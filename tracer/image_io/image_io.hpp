@@ -50,7 +50,8 @@ bool ensureLoaded(std::string& error);
 /// Always returns 3 channels (grey replicated, alpha dropped). `eightBit` (optional) tells
 /// whether the source was an integer format. On failure, `error` names the path and the cause.
 /// An image of more than `maxPixels` pixels (width × height as its header says) is refused
-/// before any of its pixels is read or room is made for them.
+/// before any of its pixels is read or room is made for them, and for some formats before
+/// OpenImageIO opens the file (their readers reserve memory for the claimed size there).
 std::optional<ImageBuffer> readImage(const std::string& path, std::string& error,
                                      bool* eightBit = nullptr,
                                      uint64_t maxPixels = std::numeric_limits<uint64_t>::max());
@@ -163,7 +164,9 @@ struct ImageInfo {
     std::string format;   ///< OpenImageIO's format name, e.g. "png", "openexr"
 };
 
-/// Reads the header of an image file (subimage count, frame rate …), for tests and tools.
-std::optional<ImageInfo> describeImage(const std::string& path, std::string& error);
+/// Reads the header of an image file (subimage count, frame rate …), for tests and tools;
+/// an image of more than `maxPixels` pixels is refused as readImage refuses it.
+std::optional<ImageInfo> describeImage(const std::string& path, std::string& error,
+                                       uint64_t maxPixels = std::numeric_limits<uint64_t>::max());
 
 } // namespace crt::tracer::image_io

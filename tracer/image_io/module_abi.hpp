@@ -11,13 +11,18 @@
 extern "C" {
 
 /// Raised whenever a function's signature or meaning changes; the host refuses other versions.
-inline constexpr int kCrtImageIoAbiVersion = 4;
+inline constexpr int kCrtImageIoAbiVersion = 5;
 
 /// The name of the module's one exported function.
 inline constexpr const char* kCrtImageIoEntryName = "crt_image_io_module";
 
-/// Returns room for width × height × 3 floats, or null: out of memory, or an image larger than
-/// the host accepts. readImage calls it with the header's size before reading any pixel.
+/// Whether the host takes an image of width × height pixels; when not, the host keeps the
+/// reason and the call fails. The module asks it with the size a file's header claims, before
+/// any pixel is read or room is made for one: where a reader would reserve memory for a size
+/// while it opens the file, before OpenImageIO sees the file.
+using CrtImageSizeFn = int (*)(void* context, long long width, long long height);
+
+/// Returns room for width × height × 3 floats, or null when out of memory.
 using CrtImageAllocFn = float* (*)(void* context, int width, int height);
 
 /// Receives the message of a failed call.
@@ -39,9 +44,10 @@ struct CrtImageInfo {
 /// The module's functions; each returns 1 on success, 0 after calling `error` once.
 struct CrtImageIoModule {
     int abiVersion;
-    /// Reads subimage 0 into 3 channels of floats (integer formats as value / max).
-    int (*readImage)(const char* path, int* isInteger, CrtImageAllocFn alloc, CrtImageErrorFn error,
-                     void* context);
+    /// Reads subimage 0 into 3 channels of floats (integer formats as value / max), once
+    /// `accepts` took its size.
+    int (*readImage)(const char* path, int* isInteger, CrtImageSizeFn accepts, CrtImageAllocFn alloc,
+                     CrtImageErrorFn error, void* context);
     /// Opens `path` for one image in the OpenImageIO format `format` ("png", "openexr" …),
     /// whatever the file name, to be written in bands of rows from the top; pixels will be
     /// `channels` uint8 values each, or floats when `isFloat`. `pngCompression` (0–9) is the
@@ -58,9 +64,9 @@ struct CrtImageIoModule {
     int (*writeAnimatedGif)(const char* path, int width, int height, int channels, int frameCount,
                             const std::uint8_t* const* frames, int fpsNumerator, int fpsDenominator,
                             CrtImageErrorFn error, void* context);
-    /// Fills `info` from the file's header.
-    int (*describeImage)(const char* path, CrtImageInfo* info, CrtImageErrorFn error,
-                         void* context);
+    /// Fills `info` from the file's header, once `accepts` took its size.
+    int (*describeImage)(const char* path, CrtImageInfo* info, CrtImageSizeFn accepts,
+                         CrtImageErrorFn error, void* context);
 };
 
 /// The type of the module's exported entry point.

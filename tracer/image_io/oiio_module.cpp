@@ -57,6 +57,16 @@ bool pngChunksFit(std::FILE* file, long size) {
     return true;
 }
 
+// The host's limit on the size of an image, asked before anything is reserved for one.
+struct SizeCheck {
+    CrtImageSizeFn accepts;
+    void* context;
+    bool operator()(long long width, long long height) const { return accepts(context, width, height) != 0; }
+};
+
+// What the module fails with when the host refused a size: the host reports its own reason.
+constexpr const char* kSizeRefused = "the image is larger than allowed";
+
 enum class NameRead { Read, End, TooLong };
 
 // Reads bytes up to a NUL into `text`, as OpenEXR reads an attribute's name or type name: at
@@ -71,61 +81,168 @@ NameRead readName(std::FILE* file, std::size_t maxLength, std::string& text) {
     return NameRead::End;
 }
 
+// Reads a little-endian 32-bit integer, signed or not; false at the end of the file.
+bool readInt32(std::FILE* file, long long& value, bool isSigned = true) {
+    unsigned char bytes[4];
+    if (std::fread(bytes, 1, sizeof bytes, file) != sizeof bytes) return false;
+    const std::uint32_t bits = std::uint32_t(bytes[0]) | std::uint32_t(bytes[1]) << 8 |
+                               std::uint32_t(bytes[2]) << 16 | std::uint32_t(bytes[3]) << 24;
+    value = isSigned ? (long long)std::int32_t(bits) : (long long)bits;
+    return true;
+}
+
+// The number of bytes OpenEXR reads for a value of `type` whatever size the file declares for
+// it, or 0 for a type whose values it reads by their declared size (string, opaque …) or by
+// their own layout (chlist, preview: checked apart).
+long exrFixedSize(const std::string& type) {
+    static const std::pair<const char*, long> sizes[] = {
+        {"box2i", 16},   {"box2f", 16},          {"chromaticities", 32}, {"compression", 1},
+        {"double", 8},   {"envmap", 1},          {"float", 4},           {"int", 4},
+        {"keycode", 28}, {"lineOrder", 1},       {"m33f", 36},           {"m33d", 72},
+        {"m44f", 64},    {"m44d", 128},          {"rational", 8},        {"tiledesc", 9},
+        {"timecode", 8}, {"v2i", 8},             {"v2f", 8},             {"v2d", 16},
+        {"v3i", 12},     {"v3f", 12},            {"v3d", 24},            {"deepImageState", 1}};
+    for (const auto& [name, size] : sizes)
+        if (type == name) return size;
+    return 0;
+}
+
+// The sizes one OpenEXR header gives, as far as the checks need them.
+struct ExrSizes {
+    long long width = 0, height = 0;         // of the data window
+    long long tileWidth = 0, tileHeight = 0; // of a tiled part's tiles
+    int compression = 0;
+};
+
+// How many bytes of a channel list OpenEXR reads: entries of a name, its NUL and 16 bytes,
+// up to an empty name. -1 when a name is longer than OpenEXR reads or the file ends first.
+long exrChannelListLength(std::FILE* file, std::size_t maxLength) {
+    long length = 0;
+    std::string name;
+    while (true) {
+        if (readName(file, maxLength, name) != NameRead::Read) return -1;
+        length += long(name.size()) + 1;
+        if (name.empty()) return length;
+        if (std::fseek(file, 16, SEEK_CUR) != 0) return -1;
+        length += 16;
+    }
+}
+
+// Why the value of one attribute (at the file's position, `length` bytes declared) cannot be
+// trusted, or empty; learns the header's sizes on the way. OpenEXR reads a value of a known
+// type by the type's own layout: were that not the declared size, it would go on reading the
+// next attribute from somewhere else than the check does.
+std::string exrValueRefusal(std::FILE* file, const std::string& name, const std::string& type, long length,
+                            std::size_t maxLength, ExrSizes& sizes) {
+    const std::string damaged = "damaged OpenEXR file: attribute '" + name + "' of type " + type;
+    if (const long fixed = exrFixedSize(type); fixed != 0 && fixed != length)
+        return damaged + " declares " + std::to_string(length) + " bytes, not " + std::to_string(fixed);
+    long long a = 0, b = 0, c = 0, d = 0;
+    if (type == "chlist") {
+        if (exrChannelListLength(file, maxLength) != length) return damaged + " does not end where it says";
+    } else if (type == "preview") {
+        // Its width and height, then 4 bytes a pixel: OpenEXR reserves them before it reads.
+        if (!readInt32(file, a, false) || !readInt32(file, b, false)) return {};
+        const unsigned long long pixels = (unsigned long long)a * (unsigned long long)b; // < 2^64
+        if (length < 8 || (length - 8) % 4 != 0 || pixels != (unsigned long long)(length - 8) / 4)
+            return damaged + " does not end where it says";
+    } else if (type == "box2i" && name == "dataWindow") {
+        if (!readInt32(file, a) || !readInt32(file, b) || !readInt32(file, c) || !readInt32(file, d)) return {};
+        sizes.width = c - a + 1;
+        sizes.height = d - b + 1;
+    } else if (type == "tiledesc" && name == "tiles") {
+        if (!readInt32(file, a, false) || !readInt32(file, b, false)) return {};
+        sizes.tileWidth = a;
+        sizes.tileHeight = b;
+    } else if (type == "compression" && name == "compression") {
+        sizes.compression = std::fgetc(file);
+    }
+    return {};
+}
+
+// The lines of pixels OpenEXR decompresses at once with `compression` (NONE, RLE, ZIPS: 1;
+// ZIP, PXR24: 16; PIZ, B44, B44A, DWAA: 32; DWAB: 256), whatever the image's height.
+long long exrLinesAtOnce(int compression) {
+    static constexpr long long lines[] = {1, 1, 1, 16, 32, 16, 32, 32, 32, 256};
+    return compression >= 0 && compression < 10 ? lines[compression] : 1;
+}
+
 // Why an OpenEXR file's headers cannot be trusted, or empty. Each attribute is a name and a
 // type name, each ending with a NUL byte, a 4-byte little-endian size, then the value; an
 // empty name ends a header, and an empty header ends a multi-part file's. OpenEXR reserves
 // the size before reading the value, and it reads a name longer than its limit (31 bytes, or
 // 255 with the long-names flag) only up to that limit, going on from there as if the rest
-// were the type name and the size. Where the header is cut short, OpenEXR reports that itself.
-std::string exrHeaderRefusal(std::FILE* file, long size, const unsigned char* head) {
+// were the type name and the size. When it opens a file it reserves a line buffer as wide as
+// the data window (and tiles as large as they say): those sizes go to the host's limit.
+// Where the header is cut short, OpenEXR reports that itself.
+std::string exrHeaderRefusal(std::FILE* file, long size, const unsigned char* head, const SizeCheck& accepts) {
     const bool longNames = (head[5] & 0x04) != 0, multipart = (head[5] & 0x10) != 0;
     const std::size_t maxLength = longNames ? 255 : 31;
     if (std::fseek(file, 8, SEEK_SET) != 0) return {};
     std::string name, type;
     while (true) {
         bool emptyHeader = true;
+        ExrSizes sizes;
         while (true) {
             NameRead read = readName(file, maxLength, name);
             if (read == NameRead::Read && name.empty()) break;
             if (read == NameRead::Read) read = readName(file, maxLength, type);
             if (read == NameRead::TooLong) return "damaged OpenEXR file: an attribute's name is too long";
             emptyHeader = false;
-            unsigned char field[4];
-            if (read == NameRead::End || std::fread(field, 1, sizeof field, file) != sizeof field) return {};
-            const long length = long(std::int32_t(std::uint32_t(field[0]) | std::uint32_t(field[1]) << 8 |
-                                                  std::uint32_t(field[2]) << 16 | std::uint32_t(field[3]) << 24));
+            long long length = 0;
+            if (read == NameRead::End || !readInt32(file, length)) return {};
             const long at = std::ftell(file);
             if (length < 0 || at < 0 || length > size - at)
                 return "damaged OpenEXR file: a header attribute is longer than the file";
-            if (std::fseek(file, at + length, SEEK_SET) != 0) return {};
+            if (std::string refusal = exrValueRefusal(file, name, type, long(length), maxLength, sizes);
+                !refusal.empty())
+                return refusal;
+            if (std::fseek(file, at + long(length), SEEK_SET) != 0) return {};
         }
+        if (!accepts(sizes.width, std::max(sizes.height, exrLinesAtOnce(sizes.compression))) ||
+            !accepts(sizes.tileWidth, sizes.tileHeight))
+            return kSizeRefused;
         if (!multipart || emptyHeader) return {};
     }
 }
 
+// OpenImageIO 2.4's readers of these formats cannot be trusted with a damaged file (found by
+// tests/fuzz/fuzz_image): IFF's aborts the process on a failed assertion in the header, ICO's
+// writes past its buffer, FITS' reserves gigabytes while it reads a header, RLA's aborts on a
+// channel type and decodes some run-length data forever. None of them is asked to open a
+// file, not even to guess its format.
+constexpr std::string_view kRefusedFormats[] = {"fits", "ico", "iff", "rla"};
+
+bool refusedFormat(std::string_view format) {
+    return std::find(std::begin(kRefusedFormats), std::end(kRefusedFormats), format) != std::end(kRefusedFormats);
+}
+
 // Files OpenImageIO 2.4 cannot be trusted with, told by their bytes before it opens them
 // (found by tests/fuzz/fuzz_image); the reason to refuse `path`, or empty.
-// - Maya IFF ("FOR4", "FOR8"): the reader aborts the process on a failed assertion while it
-//   reads a damaged header, even when OpenImageIO only tries it on a file of unknown format.
 // - PNG, DPX and OpenEXR: libpng reserves the length a chunk announces (up to 2 GiB), the DPX
 //   reader the user data length the header announces, OpenEXR the size a header attribute
 //   announces, before reading them; nothing limits any of them, so such a length beyond the
 //   end of the file is refused first.
-std::string refusedBeforeOpen(const char* path) {
+// - GIF and OpenEXR: their readers reserve memory for the size the header claims while they
+//   open the file (GIF's the logical screen, OpenEXR's its line buffers), so the host's limit
+//   on that size is asked first.
+std::string refusedBeforeOpen(const char* path, const SizeCheck& accepts) {
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path, "rb"), std::fclose);
     if (!file) return {}; // OpenImageIO says why
     unsigned char head[36] = {};
     const std::size_t got = std::fread(head, 1, sizeof head, file.get());
-    if (got < 8) return {};
-    if (std::memcmp(head, "FOR4", 4) == 0 || std::memcmp(head, "FOR8", 4) == 0)
-        return "IFF images are not supported";
+    if (got < 10) return {};
     std::fseek(file.get(), 0, SEEK_END);
     const long size = std::ftell(file.get());
     if (std::memcmp(head, "\x89PNG\r\n\x1a\n", 8) == 0 && !pngChunksFit(file.get(), size))
         return "damaged PNG file: a chunk is longer than the file";
+    // giflib takes a file for a GIF by its first 3 bytes, whatever version the next 3 say.
+    if (std::memcmp(head, "GIF", 3) == 0 && !accepts(head[6] | head[7] << 8, head[8] | head[9] << 8))
+        return kSizeRefused;
     // OpenEXR: the magic number, then a version byte and flags, 0x1000 for a multi-part file.
     if (std::memcmp(head, "\x76\x2f\x31\x01", 4) == 0) {
-        if (std::string refusal = exrHeaderRefusal(file.get(), size, head); !refusal.empty()) return refusal;
+        if (std::string refusal = exrHeaderRefusal(file.get(), size, head, accepts); !refusal.empty())
+            return refusal;
     }
     const bool dpxBigEndian = std::memcmp(head, "SDPX", 4) == 0;
     if ((dpxBigEndian || std::memcmp(head, "XPDS", 4) == 0) && got == sizeof head) {
@@ -139,30 +256,6 @@ std::string refusedBeforeOpen(const char* path) {
     return {};
 }
 
-// Whether OpenImageIO 2.4's RLA reader would abort the process on `path`: it accepts the
-// 740-byte big-endian header (revision 0 or 0xFFFE, bit depths 0 to 32, channel types 0 to 4,
-// the scanline offset table after it within the file) and then fails an assertion ("Invalid
-// colour channel type") on type 3, of the color channels or of matte or auxiliary channels
-// there are some of. RLA has no magic number: this asks exactly what the reader's own checks
-// before that assertion ask.
-bool rlaReaderWouldAbort(const char* path) {
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path, "rb"), std::fclose);
-    unsigned char header[740];
-    if (!file || std::fread(header, 1, sizeof header, file.get()) != sizeof header) return false;
-    auto field = [&](int at) { return int(std::int16_t(std::uint16_t(header[at] << 8 | header[at + 1]))); };
-    const int revision = field(26);
-    if (revision != -2 && revision != 0) return false;
-    for (int bits : {field(658), field(662), field(666)})
-        if (bits < 0 || bits > 32) return false;
-    const int colorType = field(18), matteType = field(660), auxType = field(664);
-    for (int type : {colorType, matteType, auxType})
-        if (type < 0 || type > 4) return false;
-    const long scanlines = std::abs(field(12) - field(14)) + 1;
-    if (std::fseek(file.get(), 0, SEEK_END) != 0 || std::ftell(file.get()) < long(sizeof header) + 4 * scanlines)
-        return false;
-    return colorType == 3 || (field(22) != 0 && matteType == 3) || (field(24) != 0 && auxType == 3);
-}
-
 std::string lowerExtension(std::string_view path) {
     const std::size_t slash = path.find_last_of('/');
     const std::size_t dot = path.find_last_of('.');
@@ -172,8 +265,15 @@ std::string lowerExtension(std::string_view path) {
     return extension;
 }
 
-std::unique_ptr<ImageInput> openInput(const char* path, const ErrorSink& sink) {
-    if (const std::string refused = refusedBeforeOpen(path); !refused.empty()) {
+// "fits" → "FITS"
+std::string upperCase(std::string_view text) {
+    std::string upper(text);
+    for (char& c : upper) c = char(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+    return upper;
+}
+
+std::unique_ptr<ImageInput> openInput(const char* path, const SizeCheck& accepts, const ErrorSink& sink) {
+    if (const std::string refused = refusedBeforeOpen(path, accepts); !refused.empty()) {
         sink.fail(refused);
         return nullptr;
     }
@@ -181,34 +281,36 @@ std::unique_ptr<ImageInput> openInput(const char* path, const ErrorSink& sink) {
     // the alpha is dropped, so premultiplying would darken every transparent pixel.
     ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
-    // First the reader of the file's extension alone, as OpenImageIO would. Only where that
-    // one fails (or there is none) does OpenImageIO try every reader on the file, the RLA
-    // reader among them, so only there are files refused that would make it abort: a valid
-    // file of another format, named for it, is never taken for a damaged RLA file.
-    std::unique_ptr<ImageInput> in;
-    const std::string extension = lowerExtension(path);
-    if (!extension.empty() && extension != "rla") {
-        in = ImageInput::create(extension, false, &config);
-        ImageSpec spec;
-        if (in && !in->open(path, spec, config)) in.reset();
-        (void)OIIO::geterror(); // the fallback below reports its own error
-    }
-    if (!in) {
-        if (rlaReaderWouldAbort(path)) {
-            sink.fail("damaged RLA file: invalid channel type");
-            return nullptr;
+    // First the reader of the file's extension, as OpenImageIO would; where that one fails or
+    // there is none, every other reader OpenImageIO has, in its order, but those refused.
+    std::string tried, firstError;
+    if (const std::string extension = lowerExtension(path); !extension.empty()) {
+        if (auto in = ImageInput::create(extension, false, &config)) {
+            tried = in->format_name();
+            if (refusedFormat(tried)) {
+                sink.fail(upperCase(tried) + " images are not supported");
+                return nullptr;
+            }
+            ImageSpec spec;
+            if (in->open(path, spec, config)) return in;
+            firstError = oiioError(in->geterror());
         }
-        in = ImageInput::open(path, &config);
+        (void)OIIO::geterror();
     }
-    if (!in) {
-        sink.fail(oiioError(""));
-        return nullptr;
+    const std::string formats = OIIO::get_string_attribute("input_format_list");
+    for (std::size_t at = 0; at < formats.size();) {
+        const std::size_t comma = std::min(formats.find(',', at), formats.size());
+        const std::string format = formats.substr(at, comma - at);
+        at = comma + 1;
+        if (format == tried || refusedFormat(format)) continue;
+        auto in = ImageInput::create(format, false, &config);
+        ImageSpec spec;
+        if (in && in->open(path, spec, config)) return in;
+        if (in) (void)in->geterror();
+        (void)OIIO::geterror();
     }
-    if (std::string_view(in->format_name()) == "ico") {
-        sink.fail("ICO images are not supported");
-        return nullptr;
-    }
-    return in;
+    sink.fail(firstError.empty() ? "not an image file OpenImageIO reads" : firstError);
+    return nullptr;
 }
 
 // The type to ask read_image for, to get the pixels as `wanted`: "no conversion" when every
@@ -249,11 +351,12 @@ bool readFloats(ImageInput& in, std::vector<float>& out) {
     return true;
 }
 
-int readImage(const char* path, int* isInteger, CrtImageAllocFn alloc, CrtImageErrorFn error,
-              void* context) {
+int readImage(const char* path, int* isInteger, CrtImageSizeFn acceptsSize, CrtImageAllocFn alloc,
+              CrtImageErrorFn error, void* context) {
     const ErrorSink sink{error, context};
+    const SizeCheck accepts{acceptsSize, context};
     try {
-        auto in = openInput(path, sink);
+        auto in = openInput(path, accepts, sink);
         if (!in) return 0;
         const ImageSpec& spec = in->spec();
         if (spec.deep) return sink.fail("deep images are not supported");
@@ -261,8 +364,9 @@ int readImage(const char* path, int* isInteger, CrtImageAllocFn alloc, CrtImageE
         const int width = spec.width, height = spec.height, channels = spec.nchannels;
         if (width < 1 || height < 1 || channels < 1) return sink.fail("the image is empty");
 
-        // Asked first, with the header's size: the host may refuse the image before its
-        // pixels are read or decoded (a small file can claim a huge image).
+        // The host may refuse the image before its pixels are read or decoded (a small file
+        // can claim a huge image).
+        if (!accepts(width, height)) return sink.fail(kSizeRefused);
         float* out = alloc(context, width, height);
         if (!out) return sink.fail("out of memory");
         std::vector<float> stored(std::size_t(width) * height * channels);
@@ -386,12 +490,15 @@ int writeAnimatedGif(const char* path, int width, int height, int channels, int 
     }
 }
 
-int describeImage(const char* path, CrtImageInfo* info, CrtImageErrorFn error, void* context) {
+int describeImage(const char* path, CrtImageInfo* info, CrtImageSizeFn acceptsSize, CrtImageErrorFn error,
+                  void* context) {
     const ErrorSink sink{error, context};
+    const SizeCheck accepts{acceptsSize, context};
     try {
-        auto in = openInput(path, sink);
+        auto in = openInput(path, accepts, sink);
         if (!in) return 0;
         const ImageSpec spec = in->spec(); // a copy: seek_subimage replaces in->spec()
+        if (!accepts(spec.width, spec.height)) return sink.fail(kSizeRefused);
         *info = CrtImageInfo{};
         info->width = spec.width;
         info->height = spec.height;

@@ -567,8 +567,8 @@ TEST_CASE("files OpenImageIO's readers would abort on or reserve gigabytes for a
     CHECK(readOrFail(unnamed).pixels == image.pixels);
 
     // RLA (no magic number): a header the RLA reader accepts, with color channel type 3, on
-    // which it fails an assertion. Refused whatever its name, since OpenImageIO tries every
-    // reader on a file its extension's reader does not open.
+    // which it fails an assertion. The RLA reader is never asked: refused by name, and not
+    // among the readers tried on a file its extension's reader does not open.
     std::string rla(744, '\0');
     rla[19] = 3;                                     // ColorChannelType
     rla[21] = 3;                                     // NumOfColorChannels
@@ -579,6 +579,81 @@ TEST_CASE("files OpenImageIO's readers would abort on or reserve gigabytes for a
         writeBytes(path, rla);
         error.clear();
         CHECK_FALSE(readImage(path, error));
-        CHECK_THAT(error, Catch::Contains("damaged RLA file: invalid channel type"));
+        CHECK_FALSE(error.empty());
     }
+    CHECK_THAT(error, Catch::Contains("not an image file OpenImageIO reads"));
+    error.clear();
+    CHECK_FALSE(readImage(scratchFile("channel_type_3.rla"), error));
+    CHECK_THAT(error, Catch::Contains("RLA images are not supported"));
+
+    // FITS: its reader reserved 8 GB for a damaged header. Never used either, even on a
+    // valid header.
+    std::string fits = "SIMPLE  =                    T";
+    fits.resize(80, ' ');
+    for (const char* card : {"BITPIX  =                    8", "NAXIS   =                    2",
+                             "NAXIS1  =                    1", "NAXIS2  =                    1", "END"}) {
+        std::string line = card;
+        line.resize(80, ' ');
+        fits += line;
+    }
+    fits.resize(2880, ' ');
+    fits += std::string(2880, '\x80');
+    for (const char* name : {"one_pixel.fits", "one_pixel"}) {
+        const std::string path = scratchFile(name);
+        writeBytes(path, fits);
+        error.clear();
+        CHECK_FALSE(readImage(path, error));
+        CHECK_THAT(error, Catch::Contains(name == std::string("one_pixel") ? "not an image file OpenImageIO reads"
+                                                                          : "FITS images are not supported"));
+    }
+}
+
+TEST_CASE("sizes an image's header claims are limited before OpenImageIO opens it", "[image_io]") {
+    auto writeBytes = [](const std::string& path, const std::string& bytes) {
+        std::ofstream(path, std::ios::binary) << bytes;
+    };
+    std::string error;
+    // A GIF whose logical screen is 50,000 x 50,000: OpenImageIO's reader reserves the canvas
+    // when it opens the file, so the limit applies to the screen before any frame is read.
+    std::string gif("GIF89a\x50\xc3\x50\xc3\x00\x00\x00", 13);
+    gif += ";";
+    const std::string hugeScreen = scratchFile("huge_screen.gif");
+    writeBytes(hugeScreen, gif);
+    CHECK_FALSE(readImage(hugeScreen, error, nullptr, 100'000'000));
+    CHECK_THAT(error, Catch::Contains("it is 50000 x 50000 pixels, more than the 100000000 allowed"));
+    error.clear();
+    CHECK_FALSE(describeImage(hugeScreen, error, 100'000'000));
+    CHECK_THAT(error, Catch::Contains("50000 x 50000 pixels"));
+
+    // OpenEXR reserves a buffer for the lines it decompresses at once when it opens a file,
+    // as wide as the data window and, with ZIP (crtc's default), 16 lines high: a 4 x 4 image
+    // counts as 4 x 16.
+    const ImageBuffer image{4, 4, 3, std::vector<float>(48, 0.25f)};
+    const std::string valid = scratchFile("window.exr");
+    writeOrFail(valid, image, {});
+    CHECK(readImage(valid, error, nullptr, 64));
+    CHECK_FALSE(readImage(valid, error, nullptr, 63));
+    CHECK_THAT(error, Catch::Contains("it is 4 x 16 pixels"));
+    // Its data window made 2^24 pixels wide.
+    std::ifstream in(valid, std::ios::binary);
+    std::string exr((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t window = exr.find(std::string("dataWindow\0box2i\0", 17));
+    REQUIRE(window != std::string::npos);
+    const size_t xMax = window + 17 + 4 + 8;
+    exr.replace(xMax, 4, std::string("\xff\xff\xff\x00", 4));
+    const std::string wide = scratchFile("wide_window.exr");
+    writeBytes(wide, exr);
+    error.clear();
+    CHECK_FALSE(readImage(wide, error, nullptr, 100'000'000));
+    CHECK_THAT(error, Catch::Contains("it is 16777216 x"));
+    CHECK_THAT(error, Catch::Contains("--max-image-pixels"));
+
+    // A typed attribute whose declared size is not its type's: OpenEXR would read the next
+    // attribute from elsewhere than the declared size says.
+    exr.replace(window + 17, 4, std::string("\x14\x00\x00\x00", 4));
+    const std::string shifted = scratchFile("shifted_window.exr");
+    writeBytes(shifted, exr);
+    error.clear();
+    CHECK_FALSE(readImage(shifted, error));
+    CHECK_THAT(error, Catch::Contains("damaged OpenEXR file: attribute 'dataWindow' of type box2i declares 20 bytes, not 16"));
 }
