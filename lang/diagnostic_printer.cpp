@@ -60,18 +60,18 @@ void appendSnippet(std::string& out, const SourceFile& file, SourceRange range,
                    const PrintOptions& options, const std::string* replacement) {
     LineColumn start = file.lineColumn(range.begin);
     std::string_view line = file.lineText(start.line);
-    uint32_t lineEnd = file.lineStart(start.line) + static_cast<uint32_t>(line.size());
-    uint32_t width = range.end > range.begin
-                         ? displayWidth(file.text().substr(range.begin,
-                                                           std::min(range.end, lineEnd) -
-                                                               std::min(range.begin, lineEnd)))
-                         : 0;
-    // A very long line (generated code) is shown as a window around the caret.
     uint32_t lineBegin = file.lineStart(start.line);
+    uint32_t lineEnd = lineBegin + static_cast<uint32_t>(line.size());
+    // Within the line: a range at the start of a file may begin inside its byte-order mark,
+    // before the first line's text.
+    const uint32_t begin = std::clamp(range.begin, lineBegin, lineEnd);
+    uint32_t width = range.end > begin ? displayWidth(file.text().substr(begin, std::min(range.end, lineEnd) - begin))
+                                       : 0;
+    // A very long line (generated code) is shown as a window around the caret.
     constexpr uint32_t kWindow = 120;
     std::string_view shown = line;
     std::string_view lead, trail;
-    uint32_t caretByte = std::min<uint32_t>(range.begin, lineEnd) - lineBegin;
+    uint32_t caretByte = begin - lineBegin;
     if (line.size() > 2 * kWindow) {
         uint32_t from = caretByte > kWindow / 2 ? caretByte - kWindow / 2 : 0;
         while (from > 0 && (static_cast<unsigned char>(line[from]) & 0xC0) == 0x80) --from;
