@@ -502,10 +502,12 @@ int RenderRun::run(const CompileFrame& compileFrame) {
         progress_.startFrame(frameLabel(frames_, frame));
         const int status = unchanged ? reuseUnchanged(frame) : renderOne(frame, c, scene);
         if (status > 0) return failed(status);
-        progress_.finishFrame();
+        // The file is in place: a signal from now on must name it, also while the log is
+        // synced to disk (which can take a while on a busy one).
         written_.push_back(frame);
-        if (log_) log_->frameDone(frame);
         updateStopNote();
+        progress_.finishFrame();
+        if (log_) log_->frameDone(frame);
     }
     std::string error;
     if (plan_.gif && !image_io::writeAnimatedGif(plan_.path, gifFrames_, options_.fps, error)) {
