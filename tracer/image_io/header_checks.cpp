@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -41,14 +42,26 @@ NameRead readName(std::FILE* file, std::size_t maxLength, std::string& text) {
     return NameRead::End;
 }
 
+// The little-endian 32-bit integer at `bytes`, signed or not.
+long long littleEndian32(const unsigned char* bytes, bool isSigned = true) {
+    const std::uint32_t bits = std::uint32_t(bytes[0]) | std::uint32_t(bytes[1]) << 8 |
+                               std::uint32_t(bytes[2]) << 16 | std::uint32_t(bytes[3]) << 24;
+    return isSigned ? (long long)std::int32_t(bits) : (long long)bits;
+}
+
 // Reads a little-endian 32-bit integer, signed or not; false at the end of the file.
 bool readInt32(std::FILE* file, long long& value, bool isSigned = true) {
     unsigned char bytes[4];
     if (std::fread(bytes, 1, sizeof bytes, file) != sizeof bytes) return false;
-    const std::uint32_t bits = std::uint32_t(bytes[0]) | std::uint32_t(bytes[1]) << 8 |
-                               std::uint32_t(bytes[2]) << 16 | std::uint32_t(bytes[3]) << 24;
-    value = isSigned ? (long long)std::int32_t(bits) : (long long)bits;
+    value = littleEndian32(bytes, isSigned);
     return true;
+}
+
+// The width and height a BMP's header gives: 16-bit in the oldest header (12 bytes), 32-bit
+// in the others, where a negative height means rows from the top.
+std::pair<long long, long long> bmpSize(const unsigned char* head) {
+    if (littleEndian32(head + 14) == 12) return {head[18] | head[19] << 8, head[20] | head[21] << 8};
+    return {littleEndian32(head + 18), std::llabs(littleEndian32(head + 22))};
 }
 
 // The number of bytes OpenEXR reads for a value of `type` whatever size the file declares for
@@ -174,9 +187,9 @@ std::string exrHeaderRefusal(std::FILE* file, long size, const unsigned char* he
 //   reader the user data length the header announces, OpenEXR the size a header attribute
 //   announces, before reading them; nothing limits any of them, so such a length beyond the
 //   end of the file is refused first.
-// - GIF and OpenEXR: their readers reserve memory for the size the header claims while they
-//   open the file (GIF's the logical screen, OpenEXR's its line buffers), so the host's limit
-//   on that size is asked first.
+// - GIF, OpenEXR and BMP: their readers reserve memory for the size the header claims while
+//   they open the file (GIF's the logical screen, OpenEXR's its line buffers, BMP's a
+//   run-length image, decoded whole), so the host's limit on that size is asked first.
 std::string refusedBeforeOpen(const char* path, const SizeCheck& accepts) {
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path, "rb"), std::fclose);
     if (!file) return {}; // OpenImageIO says why
@@ -190,6 +203,10 @@ std::string refusedBeforeOpen(const char* path, const SizeCheck& accepts) {
     // giflib takes a file for a GIF by its first 3 bytes, whatever version the next 3 say.
     if (std::memcmp(head, "GIF", 3) == 0 && !accepts(head[6] | head[7] << 8, head[8] | head[9] << 8))
         return kSizeRefused;
+    if (std::memcmp(head, "BM", 2) == 0 && got >= 26) {
+        const auto [width, height] = bmpSize(head);
+        if (!accepts(width, height)) return kSizeRefused;
+    }
     // OpenEXR: the magic number, then a version byte and flags, 0x1000 for a multi-part file.
     if (std::memcmp(head, "\x76\x2f\x31\x01", 4) == 0) {
         if (std::string refusal = exrHeaderRefusal(file.get(), size, head, accepts); !refusal.empty())

@@ -625,6 +625,22 @@ TEST_CASE("sizes an image's header claims are limited before OpenImageIO opens i
     CHECK_FALSE(describeImage(hugeScreen, error, 100'000'000));
     CHECK_THAT(error, Catch::Contains("50000 x 50000 pixels"));
 
+    // A BMP whose header claims 50,000 x 50,000 (rows from the top: a negative height), run-length
+    // coded: OpenImageIO's reader decodes such an image whole while it opens the file.
+    auto little32 = [](int32_t value) {
+        std::string bytes(4, '\0');
+        for (int i = 0; i < 4; ++i) bytes[size_t(i)] = char(uint32_t(value) >> (8 * i) & 0xff);
+        return bytes;
+    };
+    std::string bmp = "BM" + little32(70) + little32(0) + little32(54);
+    bmp += little32(40) + little32(50000) + little32(-50000) + std::string("\x01\x00\x08\x00", 4) + little32(1);
+    bmp.resize(70, '\0');
+    const std::string hugeBmp = scratchFile("huge.bmp");
+    writeBytes(hugeBmp, bmp);
+    error.clear();
+    CHECK_FALSE(readImage(hugeBmp, error, nullptr, 100'000'000));
+    CHECK_THAT(error, Catch::Contains("it is 50000 x 50000 pixels, more than the 100000000 allowed"));
+
     // OpenEXR reserves a buffer for the lines it decompresses at once when it opens a file,
     // as wide as the data window and, with ZIP (crtc's default), 16 lines high: a 4 x 4 image
     // counts as 4 x 16.
