@@ -203,9 +203,17 @@ std::string refusedBeforeOpen(const char* path, const SizeCheck& accepts) {
     // giflib takes a file for a GIF by its first 3 bytes, whatever version the next 3 say.
     if (std::memcmp(head, "GIF", 3) == 0 && !accepts(head[6] | head[7] << 8, head[8] | head[9] << 8))
         return kSizeRefused;
-    if (std::memcmp(head, "BM", 2) == 0 && got >= 26) {
+    if (std::memcmp(head, "BM", 2) == 0 && got >= 34) {
         const auto [width, height] = bmpSize(head);
         if (!accepts(width, height)) return kSizeRefused;
+        // Run-length coding is of 8 or of 4 bits a pixel: OpenImageIO's reader decodes the
+        // codes of either into rows of the bit count the header states, and read past their
+        // end (a SIGSEGV) for RLE8 codes in a 24-bit image.
+        const int bits = head[28] | head[29] << 8;
+        const long long compression = littleEndian32(head + 30);
+        if (littleEndian32(head + 14) >= 40 && ((compression == 1 && bits != 8) || (compression == 2 && bits != 4)))
+            return "damaged BMP file: run-length coding of " + std::to_string(compression == 1 ? 8 : 4) +
+                   "-bit pixels in an image of " + std::to_string(bits) + "-bit pixels";
     }
     // OpenEXR: the magic number, then a version byte and flags, 0x1000 for a multi-part file.
     if (std::memcmp(head, "\x76\x2f\x31\x01", 4) == 0) {

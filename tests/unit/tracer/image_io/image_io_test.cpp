@@ -640,6 +640,15 @@ TEST_CASE("sizes an image's header claims are limited before OpenImageIO opens i
     error.clear();
     CHECK_FALSE(readImage(hugeBmp, error, nullptr, 100'000'000));
     CHECK_THAT(error, Catch::Contains("it is 50000 x 50000 pixels, more than the 100000000 allowed"));
+    // RLE8 codes in a 24-bit image: OpenImageIO's reader read past the rows it decoded them into.
+    std::string mixed = "BM" + little32(70) + little32(0) + little32(54);
+    mixed += little32(40) + little32(4) + little32(4) + std::string("\x01\x00\x18\x00", 4) + little32(1);
+    mixed.resize(70, '\0');
+    const std::string mixedBmp = scratchFile("rle8_24_bits.bmp");
+    writeBytes(mixedBmp, mixed);
+    error.clear();
+    CHECK_FALSE(readImage(mixedBmp, error));
+    CHECK_THAT(error, Catch::Contains("damaged BMP file: run-length coding of 8-bit pixels in an image of 24-bit pixels"));
 
     // OpenEXR reserves a buffer for the lines it decompresses at once when it opens a file,
     // as wide as the data window and, with ZIP (crtc's default), 16 lines high: a 4 x 4 image
