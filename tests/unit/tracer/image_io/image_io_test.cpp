@@ -586,6 +586,13 @@ TEST_CASE("files OpenImageIO's readers would abort on or reserve gigabytes for a
     CHECK_FALSE(readImage(scratchFile("channel_type_3.rla"), error));
     CHECK_THAT(error, Catch::Contains("RLA images are not supported"));
 
+    // SGI: its reader read through a null pointer, or took 4 GB, on damaged files.
+    const std::string sgi = scratchFile("one_pixel.sgi");
+    writeBytes(sgi, std::string("\x01\xda\x00\x01\x00\x01\x00\x01\x00\x01\x00\x01", 12) + std::string(500, '\0'));
+    error.clear();
+    CHECK_FALSE(readImage(sgi, error));
+    CHECK_THAT(error, Catch::Contains("SGI images are not supported"));
+
     // FITS: its reader reserved 8 GB for a damaged header. Never used either, even on a
     // valid header.
     std::string fits = "SIMPLE  =                    T";
