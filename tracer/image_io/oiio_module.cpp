@@ -51,9 +51,10 @@ std::string oiioError(const std::string& objectError) {
 // tests/fuzz/fuzz_image): IFF's aborts the process on a failed assertion in the header, ICO's
 // writes past its buffer, FITS' reserves gigabytes while it reads a header, RLA's aborts on a
 // channel type and decodes some run-length data forever, SGI's reads through a null pointer
-// or takes 4 GB and 6 s for a 109-byte file. None of them is asked to open a file, not even
+// or takes 4 GB and 6 s for a 109-byte file, HEIF's copies rows of the size the header
+// announces out of a smaller decoded image. None of them is asked to open a file, not even
 // to guess its format.
-constexpr std::string_view kRefusedFormats[] = {"fits", "ico", "iff", "rla", "sgi"};
+constexpr std::string_view kRefusedFormats[] = {"fits", "heif", "ico", "iff", "rla", "sgi"};
 
 bool refusedFormat(std::string_view format) {
     return std::find(std::begin(kRefusedFormats), std::end(kRefusedFormats), format) != std::end(kRefusedFormats);

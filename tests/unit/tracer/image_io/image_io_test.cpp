@@ -593,6 +593,17 @@ TEST_CASE("files OpenImageIO's readers would abort on or reserve gigabytes for a
     CHECK_FALSE(readImage(sgi, error));
     CHECK_THAT(error, Catch::Contains("SGI images are not supported"));
 
+    // HEIF: its reader copied rows of the width the header announces out of a smaller
+    // decoded image (tests/fuzz/regressions/image/heif-grid-smaller-than-header). Refused by
+    // each extension OpenImageIO gives it, whatever the contents.
+    for (const char* name : {"picture.heic", "picture.HEIF", "picture.avif"}) {
+        const std::string path = scratchFile(name);
+        writeBytes(path, std::string("\0\0\0\x1c" "ftypheic", 12) + std::string(500, '\0'));
+        error.clear();
+        CHECK_FALSE(readImage(path, error));
+        CHECK_THAT(error, Catch::Contains("HEIF images are not supported"));
+    }
+
     // FITS: its reader reserved 8 GB for a damaged header. Never used either, even on a
     // valid header.
     std::string fits = "SIMPLE  =                    T";
