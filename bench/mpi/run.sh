@@ -53,8 +53,9 @@ command -v mpirun >/dev/null || { echo "$0: mpirun not found (apt-get install op
 bench_output_folder mpi
 width=${size%x*}
 height=${size#*x}
-# Shared memory between the processes; root may run MPI jobs in a container.
-read -r -a mpirun <<<"${MPIRUN:-mpirun --allow-run-as-root --oversubscribe --bind-to none --mca btl self,vader --mca btl_vader_single_copy_mechanism none}"
+# Shared memory between the processes, no UCX (docs/distributed.md); root may run MPI jobs in a
+# container.
+read -r -a mpirun <<<"${MPIRUN:-mpirun --allow-run-as-root --oversubscribe --bind-to none --mca btl self,vader --mca btl_vader_single_copy_mechanism none --mca pml ob1}"
 
 # time_run VAR command...: the wall time of the command, in seconds, into VAR, the time crtc's
 # summary line reports (from its first evaluation to the last file, so without the start of

@@ -41,44 +41,6 @@ FrameDone frameDoneOf(const tracer::RenderOutcome& outcome);
 /// The outcome a FrameDone describes (ok, stats, timings, BVH size).
 tracer::RenderOutcome outcomeOf(const FrameDone& done);
 
-/// Tiles of one frame sent together: the frame's number, then each tile (tile_message.hpp)
-/// after its size. One message for the tiles a worker finished in a few milliseconds, rather
-/// than one each: a small message waits for the receiver to take the one before it.
-class TileBatch {
-  public:
-    explicit TileBatch(int32_t frame) { append(&frame, sizeof frame); }
-    void add(const std::vector<char>& tile) {
-        const uint32_t size = static_cast<uint32_t>(tile.size());
-        append(&size, sizeof size);
-        append(tile.data(), tile.size());
-    }
-    bool empty() const { return bytes_.size() == sizeof(int32_t); }
-    const std::vector<char>& bytes() const { return bytes_; }
-
-    /// Calls `take` with each tile of a batch's bytes; false for bytes that are not a batch.
-    template <class Take> static bool split(const std::vector<char>& bytes, Take&& take) {
-        size_t at = sizeof(int32_t);
-        while (at < bytes.size()) {
-            uint32_t size = 0;
-            if (bytes.size() - at < sizeof size) return false;
-            std::memcpy(&size, bytes.data() + at, sizeof size);
-            at += sizeof size;
-            if (bytes.size() - at < size) return false;
-            take(std::vector<char>(bytes.begin() + static_cast<std::ptrdiff_t>(at),
-                                   bytes.begin() + static_cast<std::ptrdiff_t>(at + size)));
-            at += size;
-        }
-        return at == bytes.size();
-    }
-
-  private:
-    void append(const void* data, size_t size) {
-        const char* begin = static_cast<const char*>(data);
-        bytes_.insert(bytes_.end(), begin, begin + size);
-    }
-    std::vector<char> bytes_;
-};
-
 /// A fixed-size struct, then free text (a frame's diagnostics), as one message.
 template <class Fixed> std::vector<char> withText(const Fixed& fixed, const std::string& text) {
     std::vector<char> message(sizeof fixed + text.size());

@@ -17,7 +17,7 @@ namespace crt::crtc::distributed {
 enum Tag : int {
     kRequestTag = 1,   ///< worker → 0: an int, how many more tiles it can take
     kTilesTag,         ///< 0 → worker: tile indices; none: there are no more
-    kResultTag,        ///< worker → 0: a finished tile (see TileMessage)
+    kResultTag,        ///< worker → 0: tiles it finished since it last sent (a TileBatch)
     kErrorTag,         ///< worker → 0: why its render failed (text)
     kDoneTag,          ///< worker → 0: it has sent its last result of the frame
     kEvaluationTag,    ///< worker → 0: why it could not evaluate a frame (text)
@@ -25,7 +25,7 @@ enum Tag : int {
     kFrameRequestTag, ///< worker → 0: it can take a frame (no data)
     kFrameTag,        ///< 0 → worker: an int, the frame to evaluate; -1: no more
     kFactsTag,        ///< worker → 0: the frame evaluated (FrameFacts, then its messages)
-    kFrameTileTag,    ///< worker → 0: the frame's number, then a finished tile (TileMessage)
+    kFrameTileTag,    ///< worker → 0: the frame's tiles it finished since it last sent (a TileBatch)
     kFrameErrorTag,   ///< worker → 0: the frame's number, then why its render failed (text)
     kFrameDoneTag,    ///< worker → 0: the frame traced (FrameDone) after its tiles
     kVerdictTag,      ///< 0 → worker: two ints, the frame and 1 if it is wanted, 0 if not

@@ -62,11 +62,15 @@ void TileDispatcher::serveWorkers(const tracer::RenderJob& job,
             const std::vector<int> tiles = claim(count);
             session_.send(source, kTilesTag, tiles.data(), tiles.size() * sizeof(int));
         } else if (tag == kResultTag) {
-            int index = 0;
-            if (decodeTile(message, job.tiles, channels, pixels, index))
-                deliver(job, tracer::TileResult{job.tiles[static_cast<size_t>(index)], index,
-                                                channels, pixels});
-            else
+            bool valid = true;
+            const bool whole = TileBatch::split(message, [&](const std::vector<char>& tile) {
+                int index = 0;
+                valid = valid && decodeTile(tile, job.tiles, channels, pixels, index);
+                if (valid)
+                    deliver(job, tracer::TileResult{job.tiles[static_cast<size_t>(index)], index,
+                                                    channels, pixels});
+            });
+            if (!whole || !valid)
                 fail(fmt::format("{} sent a tile that is not one of the frame's",
                                  session_.describe(source)));
         } else if (tag == kErrorTag) {

@@ -4,8 +4,8 @@
 //
 // The protocol, per frame: rank 0 broadcasts the Render command and the tiles; a worker asks
 // (kRequestTag) for as many tiles as it can queue, gets their indices (kTilesTag; none: the
-// job is handed out), sends each tile as it finishes (kResultTag), a failure (kErrorTag) and
-// at last kDoneTag; then the ranks sum their ray counts on rank 0.
+// job is handed out), sends the tiles it finished since it last sent (kResultTag), a failure
+// (kErrorTag) and at last kDoneTag; then the ranks sum their ray counts on rank 0.
 #pragma once
 
 #include "mpi_session.hpp"

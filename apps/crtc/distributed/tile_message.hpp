@@ -1,8 +1,10 @@
-// A finished tile as a worker sends it to rank 0: its index in the job, then its floats.
+// Finished tiles as a worker sends them to rank 0: each its index in the job, then its floats;
+// several in one batch.
 #pragma once
 
 #include "tracer/renderer.hpp"
 
+#include <cstdint>
 #include <cstring>
 #include <span>
 #include <vector>
@@ -30,6 +32,45 @@ inline bool decodeTile(const std::vector<char>& message, const std::vector<trace
     std::memcpy(pixels.data(), message.data() + sizeof(int), values * sizeof(float));
     return true;
 }
+
+/// Tiles of one frame sent together: the frame's number, then each tile (encodeTile) after
+/// its size. One message for the tiles a worker finished since it last sent, rather than one
+/// each: a message waits for the receiver to take the one before it, and a worker whose tiles
+/// take less than that wait would spend its main thread sending instead of asking for work.
+class TileBatch {
+  public:
+    explicit TileBatch(int32_t frame) { append(&frame, sizeof frame); }
+    void add(const std::vector<char>& tile) {
+        const uint32_t size = static_cast<uint32_t>(tile.size());
+        append(&size, sizeof size);
+        append(tile.data(), tile.size());
+    }
+    bool empty() const { return bytes_.size() == sizeof(int32_t); }
+    const std::vector<char>& bytes() const { return bytes_; }
+
+    /// Calls `take` with each tile of a batch's bytes; false for bytes that are not a batch.
+    template <class Take> static bool split(const std::vector<char>& bytes, Take&& take) {
+        size_t at = sizeof(int32_t);
+        while (at < bytes.size()) {
+            uint32_t size = 0;
+            if (bytes.size() - at < sizeof size) return false;
+            std::memcpy(&size, bytes.data() + at, sizeof size);
+            at += sizeof size;
+            if (bytes.size() - at < size) return false;
+            take(std::vector<char>(bytes.begin() + static_cast<std::ptrdiff_t>(at),
+                                   bytes.begin() + static_cast<std::ptrdiff_t>(at + size)));
+            at += size;
+        }
+        return at == bytes.size();
+    }
+
+  private:
+    void append(const void* data, size_t size) {
+        const char* begin = static_cast<const char*>(data);
+        bytes_.insert(bytes_.end(), begin, begin + size);
+    }
+    std::vector<char> bytes_;
+};
 
 /// Tiles as the ints broadcast to the ranks: x0, y0, x1, y1 of each.
 inline std::vector<int> tileCorners(const std::vector<tracer::Tile>& tiles) {

@@ -27,7 +27,7 @@ constexpr auto kPollInterval = std::chrono::microseconds(200);
 /// on a loaded machine), little enough that the last tiles of a frame are shared evenly.
 constexpr double kQueuedSeconds = 0.005;
 /// The tiles a worker keeps queued per thread, at least and at most, whatever tiles cost.
-constexpr int kQueuedMin = 2, kQueuedMax = 64;
+constexpr int kQueuedMin = 2, kQueuedMax = 256;
 
 /// One frame's tiles on a worker: the render threads trace what the main thread got from rank 0
 /// and queue what they finish for the main thread to send.
@@ -62,19 +62,24 @@ class TileWorker {
     bool asked_ = false, noMore_ = false, renderDone_ = false;
     std::chrono::steady_clock::time_point start_;
     int tilesDone_ = 0;
+    double secondsWaited_ = 0; ///< by the render threads, for tiles, all added up
 };
 
 int TileWorker::queueTarget() const {
     if (tilesDone_ == 0) return kQueuedMin * threads_;
+    // The pace of tracing alone: counting the time threads waited for tiles would make a
+    // starved worker ask for less, and starve it more.
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const double secondsPerTile = elapsed * threads_ / tilesDone_; // of one thread
+    const double secondsPerTile = std::max(elapsed * threads_ - secondsWaited_, 0.0) / tilesDone_;
     const double perThread = std::ceil(kQueuedSeconds / std::max(secondsPerTile, 1e-6));
     return threads_ * static_cast<int>(std::clamp(perThread, double(kQueuedMin), double(kQueuedMax)));
 }
 
 int TileWorker::nextTile() {
     std::unique_lock lock(mutex_);
+    const auto waitStart = std::chrono::steady_clock::now();
     changed_.wait(lock, [&] { return !queue_.empty() || noMore_; });
+    secondsWaited_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart).count();
     if (queue_.empty()) return -1;
     const int tile = queue_.front();
     queue_.pop_front();
@@ -109,15 +114,12 @@ bool TileWorker::askIfLow() {
 void TileWorker::exchange() {
     for (;;) {
         std::unique_lock lock(mutex_);
-        while (!outbox_.empty()) {
-            const std::vector<char> message = std::move(outbox_.front());
-            outbox_.pop_front();
-            lock.unlock();
-            session_.send(0, kResultTag, message.data(), message.size());
-            lock.lock();
-        }
-        if (renderDone_ && !asked_) return;
+        TileBatch batch(0); // a still: its frame number is not needed
+        for (; !outbox_.empty(); outbox_.pop_front()) batch.add(outbox_.front());
+        const bool over = renderDone_ && !asked_;
         lock.unlock();
+        if (!batch.empty()) session_.send(0, kResultTag, batch.bytes().data(), batch.bytes().size());
+        if (over) return;
         askIfLow();
         int source = 0, tag = 0, bytes = 0;
         if (session_.poll(source, tag, bytes) && tag == kTilesTag) {
@@ -141,6 +143,7 @@ void TileWorker::render(const scene::SceneDesc* scene, const std::vector<tracer:
     outbox_.clear();
     asked_ = noMore_ = renderDone_ = false;
     tilesDone_ = 0;
+    secondsWaited_ = 0;
     start_ = std::chrono::steady_clock::now();
     tracer::RenderOutcome outcome;
     if (!scene) {
