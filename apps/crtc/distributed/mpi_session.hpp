@@ -20,6 +20,9 @@ enum Tag : int {
     kResultTag,        ///< worker → 0: tiles it finished since it last sent (a TileBatch)
     kErrorTag,         ///< worker → 0: why its render failed (text)
     kDoneTag,          ///< worker → 0: it has sent its last result of the frame
+    kGiveBackTag,      ///< 0 → worker: give back half the tiles you have not begun (no data)
+    kGivenBackTag,     ///< worker → 0: tile indices it will not trace; none: it began them all
+    kReleaseTag,       ///< 0 → worker: every question answered, the frame is over for you
     kEvaluationTag,    ///< worker → 0: why it could not evaluate a frame (text)
     // An animation's frames shared out whole (frame_dispatcher.hpp):
     kFrameRequestTag, ///< worker → 0: it can take a frame (no data)

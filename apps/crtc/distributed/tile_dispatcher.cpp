@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <thread>
@@ -13,18 +14,54 @@ namespace crt::crtc::distributed {
 
 namespace {
 
-/// How long the main thread sleeps when no message waits: short beside a tile's tracing, long
-/// enough that the polling takes no core from the render threads.
-constexpr auto kPollInterval = std::chrono::microseconds(200);
+/// How long the main thread sleeps when no message waits: short while rank 0's threads wait
+/// for tiles given back, else long enough that the polling takes little from the render
+/// threads (workers keep enough tiles queued not to wait for it).
+constexpr auto kAnswerPoll = std::chrono::microseconds(200);
+constexpr auto kIdlePoll = std::chrono::milliseconds(1);
+
+std::vector<int> intsOf(const std::vector<char>& message) {
+    std::vector<int> values(message.size() / sizeof(int));
+    if (!values.empty()) std::memcpy(values.data(), message.data(), values.size() * sizeof(int));
+    return values;
+}
 
 } // namespace
 
+bool TileDispatcher::stopped() const { return !error_.empty() || (cancel_ && cancel_->load()); }
+
 std::vector<int> TileDispatcher::claim(int count) {
-    std::lock_guard lock(mutex_);
     std::vector<int> tiles;
-    if (!error_.empty() || (cancel_ && cancel_->load())) return tiles;
-    while (count-- > 0 && next_ < tileCount_) tiles.push_back(next_++);
+    if (stopped()) return tiles;
+    while (count > 0 && next_ < tileCount_) tiles.push_back(next_++), --count;
+    // At the end, half of what another rank gave back: an idle worker shares it with rank 0's
+    // threads rather than leave it all to them.
+    for (count = std::min(count, static_cast<int>(returned_.size() + 1) / 2); count > 0; --count) {
+        tiles.push_back(returned_.back());
+        returned_.pop_back();
+    }
     return tiles;
+}
+
+int TileDispatcher::claimLocal() {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+        if (stopped()) return -1;
+        if (!returned_.empty()) {
+            const int tile = returned_.back();
+            returned_.pop_back();
+            return tile;
+        }
+        if (next_ < tileCount_) return next_++;
+        const bool mayGiveBack = std::any_of(workers_.begin(), workers_.end(), [](const Worker& w) {
+            return w.held > 0 && !w.allBegun;
+        });
+        if (!mayGiveBack) return -1;
+        // The main thread asks the workers; the wait is bounded so that a Ctrl-C is seen.
+        ++localWaiting_;
+        givenBack_.wait_for(lock, kAnswerPoll);
+        --localWaiting_;
+    }
 }
 
 void TileDispatcher::fail(std::string why) {
@@ -38,47 +75,107 @@ void TileDispatcher::deliver(const tracer::RenderJob& job, const tracer::TileRes
     ++delivered_;
 }
 
+bool TileDispatcher::askForTilesBack() {
+    std::vector<int> ask;
+    {
+        std::lock_guard lock(mutex_);
+        if (localWaiting_ <= static_cast<int>(returned_.size())) return false;
+        for (size_t rank = 1; rank < workers_.size(); ++rank) {
+            Worker& w = workers_[rank];
+            if (w.held > 0 && !w.allBegun && !w.askedBack && !w.doneSent) {
+                w.askedBack = true;
+                ask.push_back(static_cast<int>(rank));
+            }
+        }
+    }
+    for (const int rank : ask) session_.send(rank, kGiveBackTag, nullptr, 0);
+    return true;
+}
+
+int TileDispatcher::releaseIfDone(int source) {
+    Worker& w = workers_[static_cast<size_t>(source)];
+    if (!w.doneSent || w.askedBack || w.released) return 0;
+    w.released = true;
+    session_.send(source, kReleaseTag, nullptr, 0);
+    return 1;
+}
+
+int TileDispatcher::handle(const tracer::RenderJob& job, int source, int tag,
+                           const std::vector<char>& message) {
+    const int channels = job.alpha ? 4 : 3;
+    Worker& w = workers_[static_cast<size_t>(source)];
+    if (tag == kRequestTag && message.size() == sizeof(int)) {
+        std::vector<int> tiles;
+        {
+            std::lock_guard lock(mutex_);
+            tiles = claim(intsOf(message).front());
+            w.held += static_cast<int>(tiles.size());
+            if (!tiles.empty()) w.allBegun = false;
+        }
+        session_.send(source, kTilesTag, tiles.data(), tiles.size() * sizeof(int));
+    } else if (tag == kResultTag) {
+        bool valid = true;
+        int count = 0;
+        std::vector<float> pixels;
+        const bool whole = TileBatch::split(message, [&](const std::vector<char>& tile) {
+            int index = 0;
+            valid = valid && decodeTile(tile, job.tiles, channels, pixels, index);
+            if (!valid) return;
+            ++count;
+            deliver(job, tracer::TileResult{job.tiles[static_cast<size_t>(index)], index, channels,
+                                            pixels});
+        });
+        {
+            std::lock_guard lock(mutex_);
+            w.held -= count;
+        }
+        if (!whole || !valid)
+            fail(fmt::format("{} sent a tile that is not one of the frame's", session_.describe(source)));
+    } else if (tag == kGivenBackTag) {
+        const std::vector<int> tiles = intsOf(message);
+        {
+            std::lock_guard lock(mutex_);
+            for (const int tile : tiles)
+                if (tile >= 0 && tile < tileCount_) returned_.push_back(tile);
+            w.held -= static_cast<int>(tiles.size());
+            w.allBegun = tiles.empty();
+            w.askedBack = false;
+        }
+        givenBack_.notify_all();
+        return releaseIfDone(source);
+    } else if (tag == kErrorTag) {
+        fail(fmt::format("{}: {}", session_.describe(source),
+                         std::string(message.begin(), message.end())));
+    } else if (tag == kDoneTag) {
+        {
+            std::lock_guard lock(mutex_);
+            w.doneSent = true;
+            w.held = 0;
+        }
+        givenBack_.notify_all();
+        return releaseIfDone(source);
+    }
+    return 0;
+}
+
 void TileDispatcher::serveWorkers(const tracer::RenderJob& job,
                                   const std::atomic<bool>& localFinished) {
     const int workers = session_.size() - 1;
-    int workersDone = 0;
-    std::vector<float> pixels;
-    const int channels = job.alpha ? 4 : 3;
-    while (!localFinished.load() || workersDone < workers) {
+    int released = 0;
+    while (!localFinished.load() || released < workers) {
         // Ctrl-C, or mpirun ending the job: no waiting for ranks that may be gone.
         if (job.cancel && job.cancel->load()) {
             drained_ = false;
             return;
         }
+        const bool threadsWait = askForTilesBack();
         int source = 0, tag = 0, bytes = 0;
         if (!session_.poll(source, tag, bytes)) {
-            std::this_thread::sleep_for(kPollInterval);
+            std::this_thread::sleep_for(threadsWait ? kAnswerPoll : kIdlePoll);
             continue;
         }
         const std::vector<char> message = session_.receive(source, tag);
-        if (tag == kRequestTag && message.size() == sizeof(int)) {
-            int count = 0;
-            std::memcpy(&count, message.data(), sizeof count);
-            const std::vector<int> tiles = claim(count);
-            session_.send(source, kTilesTag, tiles.data(), tiles.size() * sizeof(int));
-        } else if (tag == kResultTag) {
-            bool valid = true;
-            const bool whole = TileBatch::split(message, [&](const std::vector<char>& tile) {
-                int index = 0;
-                valid = valid && decodeTile(tile, job.tiles, channels, pixels, index);
-                if (valid)
-                    deliver(job, tracer::TileResult{job.tiles[static_cast<size_t>(index)], index,
-                                                    channels, pixels});
-            });
-            if (!whole || !valid)
-                fail(fmt::format("{} sent a tile that is not one of the frame's",
-                                 session_.describe(source)));
-        } else if (tag == kErrorTag) {
-            fail(fmt::format("{}: {}", session_.describe(source),
-                             std::string(message.begin(), message.end())));
-        } else if (tag == kDoneTag) {
-            ++workersDone;
-        }
+        released += handle(job, source, tag, message);
     }
 }
 
@@ -92,16 +189,15 @@ tracer::RenderOutcome TileDispatcher::render(const scene::SceneDesc& scene,
     outcome.ok = true;
     if (job.tiles.empty()) return outcome; // every tile came from the resume log
     cancel_ = job.cancel;
-    next_ = delivered_ = 0;
+    next_ = delivered_ = localWaiting_ = 0;
     tileCount_ = static_cast<int>(job.tiles.size());
+    returned_.clear();
+    workers_.assign(static_cast<size_t>(session_.size()), Worker{});
     error_.clear();
 
     // Rank 0's threads take their tiles from the queue the other ranks are served from.
     tracer::RenderJob local = job;
-    local.nextTile = [this] {
-        const std::vector<int> tile = claim(1);
-        return tile.empty() ? -1 : tile.front();
-    };
+    local.nextTile = [this] { return claimLocal(); };
     local.onTileDone = [&](const tracer::TileResult& result) { deliver(job, result); };
     std::atomic<bool> localFinished{false};
     std::thread renderer([&] {

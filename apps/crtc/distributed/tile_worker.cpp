@@ -21,11 +21,16 @@ namespace crt::crtc::distributed {
 
 namespace {
 
-constexpr auto kPollInterval = std::chrono::microseconds(200);
+/// How often the main thread looks for rank 0's messages: often while it waits for tiles it
+/// asked for, seldom otherwise (it is woken when the queue runs low), so that a worker's
+/// polling takes little from its render threads.
+constexpr auto kAnswerPoll = std::chrono::microseconds(200);
+constexpr auto kIdlePoll = std::chrono::milliseconds(1);
 /// The work a worker keeps queued per render thread, in seconds of tracing: enough that its
 /// threads do not wait for rank 0's answer (a round trip of a few polling intervals, longer
-/// on a loaded machine), little enough that the last tiles of a frame are shared evenly.
-constexpr double kQueuedSeconds = 0.005;
+/// on a loaded machine). The last tiles of a frame are still shared evenly: rank 0 takes back
+/// what a worker has not begun when its own threads run out.
+constexpr double kQueuedSeconds = 0.02;
 /// The tiles a worker keeps queued per thread, at least and at most, whatever tiles cost.
 constexpr int kQueuedMin = 2, kQueuedMax = 256;
 
@@ -49,6 +54,10 @@ class TileWorker {
     /// Asks rank 0 for more tiles once fewer than half the queue's target wait, so that no
     /// thread waits for the network; false once there is nothing more to ask.
     bool askIfLow();
+    /// Rank 0's threads have run out: the last half of the tiles not begun go back to it.
+    void giveBack();
+    /// After kDoneTag: answers what rank 0 asked before it saw it, until it releases this rank.
+    void awaitRelease();
     /// The tiles to keep queued: kQueuedSeconds of work at the pace tiles have been finished.
     int queueTarget() const;
 
@@ -62,6 +71,7 @@ class TileWorker {
     bool asked_ = false, noMore_ = false, renderDone_ = false;
     std::chrono::steady_clock::time_point start_;
     int tilesDone_ = 0;
+    int lowMark_ = 0; ///< fewer tiles queued than this: time to ask for more
     double secondsWaited_ = 0; ///< by the render threads, for tiles, all added up
 };
 
@@ -83,16 +93,15 @@ int TileWorker::nextTile() {
     if (queue_.empty()) return -1;
     const int tile = queue_.front();
     queue_.pop_front();
-    changed_.notify_all();
+    if (static_cast<int>(queue_.size()) < lowMark_ && !asked_) changed_.notify_all(); // time to ask
     return tile;
 }
 
 void TileWorker::finished(const tracer::TileResult& result) {
     std::vector<char> message = encodeTile(result);
     std::lock_guard lock(mutex_);
-    outbox_.push_back(std::move(message));
+    outbox_.push_back(std::move(message)); // sent at the main thread's next poll
     ++tilesDone_;
-    changed_.notify_all();
 }
 
 bool TileWorker::askIfLow() {
@@ -101,7 +110,8 @@ bool TileWorker::askIfLow() {
         std::lock_guard lock(mutex_);
         if (asked_ || noMore_ || renderDone_) return asked_;
         const int target = queueTarget();
-        if (static_cast<int>(queue_.size()) >= target / 2) return true;
+        lowMark_ = target / 2;
+        if (static_cast<int>(queue_.size()) >= lowMark_) return true;
         want = target - static_cast<int>(queue_.size());
         asked_ = true;
     }
@@ -122,7 +132,8 @@ void TileWorker::exchange() {
         if (over) return;
         askIfLow();
         int source = 0, tag = 0, bytes = 0;
-        if (session_.poll(source, tag, bytes) && tag == kTilesTag) {
+        if (!session_.poll(source, tag, bytes)) tag = 0;
+        if (tag == kTilesTag) {
             const std::vector<char> message = session_.receive(0, kTilesTag);
             std::vector<int> tiles(message.size() / sizeof(int));
             if (!tiles.empty()) std::memcpy(tiles.data(), message.data(), tiles.size() * sizeof(int));
@@ -133,8 +144,38 @@ void TileWorker::exchange() {
             changed_.notify_all();
             continue;
         }
+        if (tag == kGiveBackTag) {
+            giveBack();
+            continue;
+        }
         lock.lock();
-        changed_.wait_for(lock, kPollInterval);
+        changed_.wait_for(lock, asked_ ? kAnswerPoll : kIdlePoll);
+    }
+}
+
+void TileWorker::giveBack() {
+    session_.receive(0, kGiveBackTag);
+    std::vector<int> back;
+    {
+        std::lock_guard lock(mutex_);
+        const auto count = static_cast<std::ptrdiff_t>(queue_.size() + 1) / 2;
+        back.assign(queue_.end() - count, queue_.end());
+        queue_.erase(queue_.end() - count, queue_.end());
+    }
+    session_.send(0, kGivenBackTag, back.data(), back.size() * sizeof(int));
+}
+
+void TileWorker::awaitRelease() {
+    for (;;) {
+        int source = 0, tag = 0, bytes = 0;
+        if (!session_.poll(source, tag, bytes)) {
+            std::this_thread::sleep_for(kAnswerPoll);
+        } else if (tag == kGiveBackTag) {
+            giveBack(); // its queue is empty now: the answer says it began every tile
+        } else {
+            session_.receive(source, tag);
+            if (tag == kReleaseTag) return;
+        }
     }
 }
 
@@ -142,7 +183,7 @@ void TileWorker::render(const scene::SceneDesc* scene, const std::vector<tracer:
     queue_.clear();
     outbox_.clear();
     asked_ = noMore_ = renderDone_ = false;
-    tilesDone_ = 0;
+    tilesDone_ = lowMark_ = 0;
     secondsWaited_ = 0;
     start_ = std::chrono::steady_clock::now();
     tracer::RenderOutcome outcome;
@@ -172,6 +213,7 @@ void TileWorker::render(const scene::SceneDesc* scene, const std::vector<tracer:
     renderer.join();
     if (!outcome.ok) session_.send(0, kErrorTag, outcome.error.data(), outcome.error.size());
     session_.send(0, kDoneTag, nullptr, 0);
+    awaitRelease();
     session_.sumStats(outcome.stats);
 }
 
