@@ -6,16 +6,23 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <thread>
 
 namespace {
 
-/// Waits for a request to complete, testing it every `pause` rather than spinning as MPI_Wait
-/// does on a core that another process or rank 0's threads could use.
-void waitAsleep(MPI_Request& request, std::chrono::microseconds pause) {
-    for (int done = 0;;) {
+/// Waits for a request to complete, testing it after pauses rather than spinning as MPI_Wait
+/// does on a core that another process or rank 0's threads could use. The pauses start at
+/// `first` and double up to 250 µs: a message larger than OpenMPI sends at once waits for the
+/// receiver to take it, which a rank polling every millisecond may take that long to do, and
+/// waking every 50 µs meanwhile cost a worker a tenth of a core; longer pauses delayed the
+/// messages of animations.
+void waitAsleep(MPI_Request& request, std::chrono::microseconds first) {
+    constexpr std::chrono::microseconds kLongest(250);
+    for (auto pause = first;; pause = std::min(pause * 2, kLongest)) {
+        int done = 0;
         MPI_Test(&request, &done, MPI_STATUS_IGNORE);
         if (done) return;
         std::this_thread::sleep_for(pause);
