@@ -14,6 +14,19 @@ namespace crt::tracer::image_io {
 
 namespace {
 
+// The little-endian 32-bit integer at `bytes`, signed or not.
+long long littleEndian32(const unsigned char* bytes, bool isSigned = true) {
+    const std::uint32_t bits = std::uint32_t(bytes[0]) | std::uint32_t(bytes[1]) << 8 |
+                               std::uint32_t(bytes[2]) << 16 | std::uint32_t(bytes[3]) << 24;
+    return isSigned ? (long long)std::int32_t(bits) : (long long)bits;
+}
+
+// The big-endian unsigned 32-bit integer at `bytes`.
+long long bigEndian32(const unsigned char* bytes) {
+    const unsigned char swapped[4] = {bytes[3], bytes[2], bytes[1], bytes[0]};
+    return littleEndian32(swapped, false);
+}
+
 // Whether a PNG's chunks (a 4-byte big-endian length, a 4-byte type, the data and a 4-byte
 // CRC each) all end within the file's `size` bytes.
 bool pngChunksFit(std::FILE* file, long size) {
@@ -21,7 +34,7 @@ bool pngChunksFit(std::FILE* file, long size) {
         unsigned char header[8];
         if (std::fseek(file, at, SEEK_SET) != 0 || std::fread(header, 1, sizeof header, file) != sizeof header)
             return true; // OpenImageIO reports a read error itself
-        const long length = long(header[0]) << 24 | long(header[1]) << 16 | long(header[2]) << 8 | header[3];
+        const long long length = bigEndian32(header);
         if (length > size - at - 12) return false;
         at += 12 + length;
     }
@@ -40,13 +53,6 @@ NameRead readName(std::FILE* file, std::size_t maxLength, std::string& text) {
         text += char(c);
     }
     return NameRead::End;
-}
-
-// The little-endian 32-bit integer at `bytes`, signed or not.
-long long littleEndian32(const unsigned char* bytes, bool isSigned = true) {
-    const std::uint32_t bits = std::uint32_t(bytes[0]) | std::uint32_t(bytes[1]) << 8 |
-                               std::uint32_t(bytes[2]) << 16 | std::uint32_t(bytes[3]) << 24;
-    return isSigned ? (long long)std::int32_t(bits) : (long long)bits;
 }
 
 // Reads a little-endian 32-bit integer, signed or not; false at the end of the file.
@@ -223,10 +229,8 @@ std::string refusedBeforeOpen(const char* path, const SizeCheck& accepts) {
     const bool dpxBigEndian = std::memcmp(head, "SDPX", 4) == 0;
     if ((dpxBigEndian || std::memcmp(head, "XPDS", 4) == 0) && got == sizeof head) {
         const unsigned char* field = head + 32; // the user data length
-        const unsigned long length =
-            dpxBigEndian ? (unsigned long)field[0] << 24 | field[1] << 16 | field[2] << 8 | field[3]
-                         : (unsigned long)field[3] << 24 | field[2] << 16 | field[1] << 8 | field[0];
-        if (length != 0xffffffffUL && length > (unsigned long)size)
+        const long long length = dpxBigEndian ? bigEndian32(field) : littleEndian32(field, false);
+        if (length != 0xffffffffLL && length > size)
             return "damaged DPX file: its user data is longer than the file";
     }
     return {};

@@ -7,7 +7,9 @@
 #include "tracer/image_io/header_checks.hpp"
 #include "tracer/image_io/module_abi.hpp"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -27,6 +29,7 @@ using OIIO::ImageInput;
 using OIIO::ImageOutput;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
+namespace Strutil = OIIO::Strutil;
 using crt::tracer::image_io::kSizeRefused;
 using crt::tracer::image_io::refusedBeforeOpen;
 using crt::tracer::image_io::SizeCheck;
@@ -60,22 +63,6 @@ bool refusedFormat(std::string_view format) {
     return std::find(std::begin(kRefusedFormats), std::end(kRefusedFormats), format) != std::end(kRefusedFormats);
 }
 
-std::string lowerExtension(std::string_view path) {
-    const std::size_t slash = path.find_last_of('/');
-    const std::size_t dot = path.find_last_of('.');
-    if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) return {};
-    std::string extension(path.substr(dot + 1));
-    for (char& c : extension) c = char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-    return extension;
-}
-
-// "fits" → "FITS"
-std::string upperCase(std::string_view text) {
-    std::string upper(text);
-    for (char& c : upper) c = char(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
-    return upper;
-}
-
 std::unique_ptr<ImageInput> openInput(const char* path, const SizeCheck& accepts, const ErrorSink& sink) {
     if (const std::string refused = refusedBeforeOpen(path, accepts); !refused.empty()) {
         sink.fail(refused);
@@ -88,11 +75,12 @@ std::unique_ptr<ImageInput> openInput(const char* path, const SizeCheck& accepts
     // First the reader of the file's extension, as OpenImageIO would; where that one fails or
     // there is none, every other reader OpenImageIO has, in its order, but those refused.
     std::string tried, firstError;
-    if (const std::string extension = lowerExtension(path); !extension.empty()) {
+    if (const std::string extension = Strutil::lower(OIIO::Filesystem::extension(path, false));
+        !extension.empty()) {
         if (auto in = ImageInput::create(extension, false, &config)) {
             tried = in->format_name();
             if (refusedFormat(tried)) {
-                sink.fail(upperCase(tried) + " images are not supported");
+                sink.fail(Strutil::upper(tried) + " images are not supported");
                 return nullptr;
             }
             ImageSpec spec;
@@ -102,10 +90,8 @@ std::unique_ptr<ImageInput> openInput(const char* path, const SizeCheck& accepts
         (void)OIIO::geterror();
     }
     const std::string formats = OIIO::get_string_attribute("input_format_list");
-    for (std::size_t at = 0; at < formats.size();) {
-        const std::size_t comma = std::min(formats.find(',', at), formats.size());
-        const std::string format = formats.substr(at, comma - at);
-        at = comma + 1;
+    for (const std::string_view formatName : Strutil::splitsv(formats, ",")) {
+        const std::string format(formatName);
         if (format == tried || refusedFormat(format)) continue;
         auto in = ImageInput::create(format, false, &config);
         ImageSpec spec;
