@@ -60,6 +60,13 @@ stills() {
     "$crtc" --quiet "$here/costly_tile.crt" -o "$work/costly_alone.png"
     same_as_alone "one costly tile" "$work/costly_alone.png" "$work/costly.png" \
         "$here/costly_tile.crt" -o "$work/costly.png"
+    # Workers that take every tile at once: rank 0's threads find none left at the start and
+    # take back half of what a worker has not begun, again and again, and a worker that runs
+    # out gets half of those; no tile may be lost or traced twice.
+    # (320 x 240: 300 tiles, so that the workers ask before rank 0 has traced them all.)
+    "$crtc" --quiet "$here/still.crt" --width 320 --height 240 -o "$work/back_alone.png"
+    CRT_TEST_QUEUED_TILES=1000 same_as_alone "tiles given back" "$work/back_alone.png" \
+        "$work/back.png" "$here/still.crt" --width 320 --height 240 -o "$work/back.png"
     # --region and a Radiance HDR (floats: no rounding to 8 bits to hide a wrong pixel).
     "$crtc" --quiet "$here/still.crt" --region 5:3:77:41 -o "$work/alone.hdr"
     expect_status 0 "region as HDR" mpi 3 --quiet "$here/still.crt" --region 5:3:77:41 -o "$work/shared.hdr"

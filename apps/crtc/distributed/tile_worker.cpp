@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <cstdlib>
 #include <deque>
 #include <exception>
 #include <iostream>
@@ -42,7 +43,9 @@ class TileWorker {
         : session_(session),
           threads_(options.threads > 0 ? options.threads
                                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
-          options_(options) {}
+          options_(options) {
+        if (const char* queued = std::getenv(kTestQueuedTilesVariable)) queuedForTests_ = std::atoi(queued);
+    }
 
     /// Renders the tiles rank 0 hands out of `tiles` of `scene` (none if it was not evaluated).
     void render(const scene::SceneDesc* scene, const std::vector<tracer::Tile>& tiles);
@@ -73,9 +76,11 @@ class TileWorker {
     int tilesDone_ = 0;
     int lowMark_ = 0; ///< fewer tiles queued than this: time to ask for more
     double secondsWaited_ = 0; ///< by the render threads, for tiles, all added up
+    int queuedForTests_ = 0;   ///< kTestQueuedTilesVariable
 };
 
 int TileWorker::queueTarget() const {
+    if (queuedForTests_ > 0) return queuedForTests_ * threads_;
     if (tilesDone_ == 0) return kQueuedMin * threads_;
     // The pace of tracing alone: counting the time threads waited for tiles would make a
     // starved worker ask for less, and starve it more.
