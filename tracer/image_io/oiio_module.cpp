@@ -80,7 +80,8 @@ std::unique_ptr<ImageInput> openInput(const char* path, const SizeCheck& accepts
         if (auto in = ImageInput::create(extension, false, &config)) {
             tried = in->format_name();
             if (refusedFormat(tried)) {
-                sink.fail(Strutil::upper(tried) + " images are not supported");
+                sink.fail(Strutil::upper(tried) +
+                          " images are not supported (convert the file to PNG, TIFF or OpenEXR)");
                 return nullptr;
             }
             ImageSpec spec;
