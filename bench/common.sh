@@ -3,6 +3,44 @@
 #   bench_check_crtc            sets have_crtc (0: measure POV-Ray only); exits 2 if unusable
 #   bench_check_base            sets have_base (1 if $base names a second crtc); exits 2 if unusable
 #   bench_output_folder NAME    sets out, logs, povhome and keep_hint
+#   bench_parse_options SPEC... -- ARGS...
+#                               the script's options (see below); sets crtc from CRTC
+#   bench_usage                 prints the script's header comment
+
+# The header comment of the script that sourced this file, up to the first line that is not
+# a comment.
+bench_usage() { awk 'NR == 1 { next } !/^#/ { exit } { sub(/^# ?/, ""); print }' "$0"; }
+
+# Options `--NAME VALUE` or `--NAME=VALUE`, each SPEC being NAME (which sets the variable
+# NAME) or NAME=VARIABLE; -h or --help prints the usage; one argument that is not an option
+# names the crtc to measure (else $CRTC, else build/bin/crtc) and sets `crtc`. Anything else
+# exits with status 2.
+bench_parse_options() {
+    local -A variable=()
+    while [[ $1 != -- ]]; do
+        if [[ $1 == *=* ]]; then variable[${1%%=*}]=${1#*=}; else variable[$1]=$1; fi
+        shift
+    done
+    shift
+    local crtc_arg= name value
+    while [[ $# -gt 0 ]]; do
+        case $1 in
+        -h | --help) bench_usage; exit 0 ;;
+        --*=*) name=${1%%=*} value=${1#*=}; shift ;;
+        --*)
+            [[ $# -ge 2 ]] || { echo "$0: '$1' needs a value" >&2; bench_usage >&2; exit 2; }
+            name=$1 value=$2; shift 2 ;;
+        -*) echo "$0: unknown option '$1'" >&2; bench_usage >&2; exit 2 ;;
+        *)
+            [[ -z $crtc_arg ]] || { echo "$0: more than one CRTC given" >&2; exit 2; }
+            crtc_arg=$1; shift; continue ;;
+        esac
+        name=${name#--}
+        [[ -n ${variable[$name]:-} ]] || { echo "$0: unknown option '--$name'" >&2; bench_usage >&2; exit 2; }
+        printf -v "${variable[$name]}" '%s' "$value"
+    done
+    crtc=${crtc_arg:-${CRTC:-$root/build/bin/crtc}}
+}
 
 bench_check_crtc() {
     have_crtc=1

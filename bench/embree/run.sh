@@ -30,28 +30,10 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$here/../common.sh"
 root=$(cd "$here/../.." && pwd)
 
-usage() { awk 'NR == 1 { next } !/^#/ { exit } { sub(/^# ?/, ""); print }' "${BASH_SOURCE[0]}"; }
-
 runs=${RUNS:-3}
 grids=100,1000
 thread_counts=1,2
-crtc_arg=
-while [[ $# -gt 0 ]]; do
-    case $1 in
-        -h | --help) usage; exit 0 ;;
-        --runs) runs=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
-        --runs=*) runs=${1#--runs=}; shift ;;
-        --grids) grids=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
-        --grids=*) grids=${1#--grids=}; shift ;;
-        --threads) thread_counts=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
-        --threads=*) thread_counts=${1#--threads=}; shift ;;
-        -*) echo "$0: unknown option '$1'" >&2; usage >&2; exit 2 ;;
-        *)
-            if [[ -n $crtc_arg ]]; then echo "$0: more than one CRTC given" >&2; exit 2; fi
-            crtc_arg=$1; shift ;;
-    esac
-done
-crtc=${crtc_arg:-${CRTC:-$root/build/bin/crtc}}
+bench_parse_options runs grids threads=thread_counts -- "$@"
 
 positive_list() { [[ $1 =~ ^[1-9][0-9]*(,[1-9][0-9]*)*$ ]]; }
 [[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "$0: --runs must be a positive integer, got '$runs'" >&2; exit 2; }

@@ -26,27 +26,14 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 # shellcheck source=../common.sh
 source "$here/../common.sh"
 root=$(cd "$here/../.." && pwd)
-usage() { awk 'NR == 1 { next } !/^#/ { exit } { sub(/^# ?/, ""); print }' "${BASH_SOURCE[0]}"; }
 
 runs=3
 size=1920x1080
 frames=60
-extra=()
+args=
 only=
-crtc=
-while [[ $# -gt 0 ]]; do
-    case $1 in
-    --runs) runs=$2; shift 2 ;;
-    --size) size=$2; shift 2 ;;
-    --frames) frames=$2; shift 2 ;;
-    --args) read -r -a extra <<<"$2"; shift 2 ;;
-    --only) only=$2; shift 2 ;;
-    -h | --help) usage; exit 0 ;;
-    -*) echo "$0: unknown option '$1'" >&2; usage >&2; exit 2 ;;
-    *) crtc=$1; shift ;;
-    esac
-done
-crtc=${crtc:-${CRTC:-$root/build/bin/crtc}}
+bench_parse_options runs size frames args only -- "$@"
+read -r -a extra <<<"$args"
 bench_check_crtc
 [[ $have_crtc == 1 ]] || exit 2
 command -v mpirun >/dev/null || { echo "$0: mpirun not found (apt-get install openmpi-bin)" >&2; exit 2; }

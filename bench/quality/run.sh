@@ -38,35 +38,12 @@ source "$here/../common.sh"
 root=$(cd "$here/../.." && pwd)
 scenes_dir=$root/bench/render
 
-usage() { sed -n '2,32p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
-
 size=400x300
 runs=3
 scenes=sphere_grid,csg,dof
 svg=
 replot=
-crtc_arg=
-while [[ $# -gt 0 ]]; do
-    case $1 in
-        -h | --help) usage; exit 0 ;;
-        --size) size=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
-        --size=*) size=${1#--size=}; shift ;;
-        --runs) runs=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
-        --runs=*) runs=${1#--runs=}; shift ;;
-        --scenes) scenes=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
-        --scenes=*) scenes=${1#--scenes=}; shift ;;
-        --svg) svg=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
-        --svg=*) svg=${1#--svg=}; shift ;;
-        --replot) replot=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
-        --replot=*) replot=${1#--replot=}; shift ;;
-        -*) echo "$0: unknown option '$1'" >&2; usage >&2; exit 2 ;;
-        *)
-            if [[ -n $crtc_arg ]]; then echo "$0: more than one CRTC given" >&2; exit 2; fi
-            crtc_arg=$1; shift ;;
-    esac
-done
-
-crtc=${crtc_arg:-${CRTC:-$root/build/bin/crtc}}
+bench_parse_options size runs scenes svg replot -- "$@"
 povray=${POVRAY:-/usr/bin/povray}
 threads=${THREADS:-2}
 reference=${REFERENCE:-16}

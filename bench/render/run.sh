@@ -31,33 +31,11 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$here/../common.sh"
 root=$(cd "$here/../.." && pwd)
 
-# the header comment, up to the first line that is not a comment
-usage() { awk 'NR == 1 { next } !/^#/ { exit } { sub(/^# ?/, ""); print }' "${BASH_SOURCE[0]}"; }
-
 runs=3
 sizes=800x600,1920x1080
 scenes=mirror_room,sphere_grid,csg
-crtc_arg=
 base=${CRTC_BASE:-}
-while [[ $# -gt 0 ]]; do
-    case $1 in
-        -h | --help) usage; exit 0 ;;
-        --runs) runs=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
-        --runs=*) runs=${1#--runs=}; shift ;;
-        --sizes) sizes=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
-        --sizes=*) sizes=${1#--sizes=}; shift ;;
-        --scenes) scenes=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
-        --scenes=*) scenes=${1#--scenes=}; shift ;;
-        --base) base=${2:-}; shift 2 || { usage >&2; exit 2; } ;;
-        --base=*) base=${1#--base=}; shift ;;
-        -*) echo "$0: unknown option '$1'" >&2; usage >&2; exit 2 ;;
-        *)
-            if [[ -n $crtc_arg ]]; then echo "$0: more than one CRTC given" >&2; exit 2; fi
-            crtc_arg=$1; shift ;;
-    esac
-done
-
-crtc=${crtc_arg:-${CRTC:-$root/build/bin/crtc}}
+bench_parse_options runs sizes scenes base -- "$@"
 povray=${POVRAY:-/usr/bin/povray}
 threads=${THREADS:-2}
 
