@@ -1,5 +1,5 @@
-# Shared by the benchmark scripts against POV-Ray (sourced, not run): the crtc check,
-# the output folder with a private POV-Ray HOME, and timing helpers.
+# Shared by the benchmark scripts (sourced, not run): their options and usage, the crtc
+# check, the output folder with a private POV-Ray HOME, and timing helpers.
 #   bench_check_crtc            sets have_crtc (0: measure POV-Ray only); exits 2 if unusable
 #   bench_check_base            sets have_base (1 if $base names a second crtc); exits 2 if unusable
 #   bench_output_folder NAME    sets out, logs, povhome and keep_hint
