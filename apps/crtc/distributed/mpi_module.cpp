@@ -17,8 +17,8 @@ namespace {
 /// does on a core that another process or rank 0's threads could use. The pauses start at
 /// `first` and double up to 250 µs: a message larger than OpenMPI sends at once waits for the
 /// receiver to take it, which a rank polling every millisecond may take that long to do, and
-/// waking every 50 µs meanwhile cost a worker a tenth of a core; longer pauses delayed the
-/// messages of animations.
+/// waking often meanwhile takes time from the render threads; much longer pauses delay the
+/// messages of animations (bench/README.md, "MPI speed-up").
 void waitAsleep(MPI_Request& request, std::chrono::microseconds first) {
     constexpr std::chrono::microseconds kLongest(250);
     for (auto pause = first;; pause = std::min(pause * 2, kLongest)) {

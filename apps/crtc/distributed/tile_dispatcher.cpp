@@ -20,12 +20,6 @@ namespace {
 constexpr auto kAnswerPoll = std::chrono::microseconds(200);
 constexpr auto kIdlePoll = std::chrono::milliseconds(1);
 
-std::vector<int> intsOf(const std::vector<char>& message) {
-    std::vector<int> values(message.size() / sizeof(int));
-    if (!values.empty()) std::memcpy(values.data(), message.data(), values.size() * sizeof(int));
-    return values;
-}
-
 } // namespace
 
 bool TileDispatcher::stopped() const { return !error_.empty() || (cancel_ && cancel_->load()); }

@@ -72,6 +72,13 @@ class TileBatch {
     std::vector<char> bytes_;
 };
 
+/// The ints a message of tile indices (or of one count) carries.
+inline std::vector<int> intsOf(const std::vector<char>& message) {
+    std::vector<int> values(message.size() / sizeof(int));
+    if (!values.empty()) std::memcpy(values.data(), message.data(), values.size() * sizeof(int));
+    return values;
+}
+
 /// Tiles as the ints broadcast to the ranks: x0, y0, x1, y1 of each.
 inline std::vector<int> tileCorners(const std::vector<tracer::Tile>& tiles) {
     std::vector<int> corners;

@@ -140,8 +140,7 @@ void TileWorker::exchange() {
         if (!session_.poll(source, tag, bytes)) tag = 0;
         if (tag == kTilesTag) {
             const std::vector<char> message = session_.receive(0, kTilesTag);
-            std::vector<int> tiles(message.size() / sizeof(int));
-            if (!tiles.empty()) std::memcpy(tiles.data(), message.data(), tiles.size() * sizeof(int));
+            const std::vector<int> tiles = intsOf(message);
             lock.lock();
             asked_ = false;
             noMore_ = tiles.empty();
