@@ -77,6 +77,25 @@ void send(int rank, int tag, const void* data, std::size_t bytes) {
     waitAsleep(request, std::chrono::microseconds(50));
 }
 
+/// The send startSend began, while it is not over.
+MPI_Request startedSend = MPI_REQUEST_NULL;
+
+void startSend(int rank, int tag, const void* data, std::size_t bytes) {
+    MPI_Isend(data, static_cast<int>(bytes), MPI_BYTE, rank, tag, MPI_COMM_WORLD, &startedSend);
+}
+
+int sendFinished(int wait) {
+    if (startedSend == MPI_REQUEST_NULL) return 1;
+    if (wait) {
+        waitAsleep(startedSend, std::chrono::microseconds(50));
+        startedSend = MPI_REQUEST_NULL;
+        return 1;
+    }
+    int done = 0;
+    MPI_Test(&startedSend, &done, MPI_STATUS_IGNORE); // sets it to MPI_REQUEST_NULL when done
+    return done;
+}
+
 int poll(int* source, int* tag, int* bytes) {
     int flag = 0;
     MPI_Status status;
@@ -118,6 +137,8 @@ constexpr CrtMpiModule kModule{kCrtMpiAbiVersion,
                                allReduceMax,
                                reduceSumToRoot,
                                send,
+                               startSend,
+                               sendFinished,
                                poll,
                                probe,
                                receive,

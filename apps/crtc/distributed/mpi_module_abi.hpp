@@ -11,7 +11,7 @@
 extern "C" {
 
 /// Raised whenever a function's signature or meaning changes; crtc refuses other versions.
-inline constexpr int kCrtMpiAbiVersion = 1;
+inline constexpr int kCrtMpiAbiVersion = 2;
 
 /// The name of the module's one exported function.
 inline constexpr const char* kCrtMpiEntryName = "crt_mpi_module";
@@ -40,6 +40,12 @@ struct CrtMpiModule {
     void (*reduceSumToRoot)(const std::uint64_t* values, std::uint64_t* out, int count);
     /// Sends `bytes` bytes to `rank`; returns, having waited asleep, once they may be reused.
     void (*send)(int rank, int tag, const void* data, std::size_t bytes);
+    /// Starts sending `bytes` bytes to `rank` and returns at once: the data must stay unchanged
+    /// until sendFinished says the send is over. One such send at a time.
+    void (*startSend)(int rank, int tag, const void* data, std::size_t bytes);
+    /// 1 once the send startSend began is over (or none was begun), else 0; with `wait`, waits
+    /// asleep until it is over.
+    int (*sendFinished)(int wait);
     /// 1 and the source, tag and size in bytes of a message waiting, or 0 when there is none.
     int (*poll)(int* source, int* tag, int* bytes);
     /// Waits for a message from `source` (or kCrtMpiAnySource) with `tag`; sets its source and

@@ -90,6 +90,12 @@ void MpiSession::send(int rank, Tag tag, const void* data, size_t bytes) {
     mpi_->send(rank, tag, data, bytes);
 }
 
+void MpiSession::startSend(int rank, Tag tag, const void* data, size_t bytes) {
+    mpi_->startSend(rank, tag, data, bytes);
+}
+
+bool MpiSession::sendFinished(bool wait) { return mpi_->sendFinished(wait ? 1 : 0) != 0; }
+
 bool MpiSession::poll(int& source, int& tag, int& bytes) {
     return mpi_->poll(&source, &tag, &bytes) != 0;
 }

@@ -75,6 +75,12 @@ class MpiSession {
 
     /// Sends bytes to `rank`; returns once they may be reused.
     void send(int rank, Tag tag, const void* data, size_t bytes);
+    /// Starts sending bytes to `rank` and returns at once: they must stay as they are until
+    /// sendFinished says the send is over. One such send at a time.
+    void startSend(int rank, Tag tag, const void* data, size_t bytes);
+    /// Whether the send startSend began is over (true when none was begun); with `wait`, waits
+    /// for it to be.
+    bool sendFinished(bool wait);
     /// Whether a message is waiting; if so, its source, tag and size in bytes.
     bool poll(int& source, int& tag, int& bytes);
     /// Receives the message poll() announced, or waits for one from `source` with `tag`.

@@ -34,6 +34,9 @@ constexpr auto kIdlePoll = std::chrono::milliseconds(1);
 constexpr double kQueuedSeconds = 0.02;
 /// The tiles a worker keeps queued per thread, at least and at most, whatever tiles cost.
 constexpr int kQueuedMin = 2, kQueuedMax = 256;
+/// How long finished tiles may wait before they are sent: batches of a few, not one message a
+/// tile (tile_message.hpp says why).
+constexpr auto kSendInterval = std::chrono::milliseconds(10);
 
 /// One frame's tiles on a worker: the render threads trace what the main thread got from rank 0
 /// and queue what they finish for the main thread to send.
@@ -54,6 +57,10 @@ class TileWorker {
     int nextTile();
     void finished(const tracer::TileResult& result);
     void exchange();
+    /// Starts sending the finished tiles when they are due and the batch before has gone: a
+    /// batch larger than OpenMPI sends at once waits for rank 0 to take it, and the main thread
+    /// goes on meanwhile rather than wake every few hundred microseconds to see if it has.
+    void sendResults();
     /// Asks rank 0 for more tiles once fewer than half the queue's target wait, so that no
     /// thread waits for the network; false once there is nothing more to ask.
     bool askIfLow();
@@ -71,8 +78,9 @@ class TileWorker {
     std::condition_variable changed_;
     std::deque<int> queue_;                ///< tiles handed to this rank, not yet begun
     std::deque<std::vector<char>> outbox_; ///< finished tiles not yet sent
+    std::vector<char> sending_;            ///< the batch on its way
     bool asked_ = false, noMore_ = false, renderDone_ = false;
-    std::chrono::steady_clock::time_point start_;
+    std::chrono::steady_clock::time_point start_, lastSend_;
     int tilesDone_ = 0;
     int lowMark_ = 0; ///< fewer tiles queued than this: time to ask for more
     double secondsWaited_ = 0; ///< by the render threads, for tiles, all added up
@@ -124,17 +132,35 @@ bool TileWorker::askIfLow() {
     return true;
 }
 
+void TileWorker::sendResults() {
+    std::unique_lock lock(mutex_);
+    const bool last = renderDone_;
+    const auto now = std::chrono::steady_clock::now();
+    if (!last && now - lastSend_ < kSendInterval) return;
+    lock.unlock();
+    if (!session_.sendFinished(last)) return; // the batch before is still on its way
+    lock.lock();
+    TileBatch batch(0); // a still: its frame number is not needed
+    for (; !outbox_.empty(); outbox_.pop_front()) batch.add(outbox_.front());
+    lastSend_ = now;
+    lock.unlock();
+    if (batch.empty()) return;
+    sending_ = batch.bytes();
+    session_.startSend(0, kResultTag, sending_.data(), sending_.size());
+}
+
 /// The main thread's loop: sends finished tiles, asks for more and takes rank 0's answers,
 /// until the render threads are done and no question is left unanswered.
 void TileWorker::exchange() {
     for (;;) {
         std::unique_lock lock(mutex_);
-        TileBatch batch(0); // a still: its frame number is not needed
-        for (; !outbox_.empty(); outbox_.pop_front()) batch.add(outbox_.front());
         const bool over = renderDone_ && !asked_;
         lock.unlock();
-        if (!batch.empty()) session_.send(0, kResultTag, batch.bytes().data(), batch.bytes().size());
-        if (over) return;
+        sendResults();
+        if (over) {
+            session_.sendFinished(true);
+            return;
+        }
         askIfLow();
         int source = 0, tag = 0, bytes = 0;
         if (!session_.poll(source, tag, bytes)) tag = 0;
@@ -189,7 +215,7 @@ void TileWorker::render(const scene::SceneDesc* scene, const std::vector<tracer:
     asked_ = noMore_ = renderDone_ = false;
     tilesDone_ = lowMark_ = 0;
     secondsWaited_ = 0;
-    start_ = std::chrono::steady_clock::now();
+    start_ = lastSend_ = std::chrono::steady_clock::now();
     tracer::RenderOutcome outcome;
     if (!scene) {
         outcome.error = "the frame was not evaluated";
