@@ -30,9 +30,12 @@ extern "C" void onStopSignal(int signal) {
     ssize_t ignored = terminal ? ::write(STDERR_FILENO, "\n", 1) : 0;
     ignored = ::write(STDERR_FILENO, note, std::strlen(note));
     (void)ignored;
-    // Ended by the signal itself, as if there were no handler.
-    std::signal(signal, SIG_DFL);
-    std::raise(signal);
+    // Ended by the signal itself, as if there were no handler; a SIGCONT handled as a stop
+    // (its default would let the process go on, to print this note again at the next signal)
+    // as by SIGTERM.
+    const int ending = signal == SIGCONT ? SIGTERM : signal;
+    std::signal(ending, SIG_DFL);
+    std::raise(ending);
 }
 
 extern "C" void onExit() {

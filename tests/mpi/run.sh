@@ -3,7 +3,7 @@
 # bits as crtc alone; a rank that fails or is killed ends the job with an error and no image.
 # Under mpirun, a missing MPI module is a clear error (tests/cli/loaded_libraries.sh checks
 # that crtc alone loads no MPI library).
-#   run.sh stills|animation|frames|frame_failure|frame_continue|failure|killed|missing_module CRTC
+#   run.sh stills|animation|frames|frame_failure|frame_continue|failure|killed|interrupted|missing_module CRTC
 set -u
 case_name=$1
 crtc=$(realpath "$2") # absolute: some checks run crtc from other folders
@@ -263,6 +263,14 @@ SH
     ls "$work" | grep -q "^differ_" && fail "frames were written from different scripts: $(ls "$work")"
 }
 
+# Waits (at most a minute) until rank 0 reports progress in $work/err.
+await_progress() {
+    for _ in $(seq 600); do
+        grep -q "crtc: .*[0-9]*%" "$work/err" 2>/dev/null && return
+        sleep 0.1
+    done
+}
+
 # kill_rank_1 OUTPUT crtc-arguments...: a render of a few seconds over 3 processes; once rank 0
 # reports progress, rank 1 is killed. The job must end with an error, without hanging,
 # leaving no image and no temporary file.
@@ -271,10 +279,7 @@ kill_rank_1() {
     shift
     mpi 3 --threads 1 "$@" -o "$output" >"$work/out" 2>"$work/err" &
     local job=$! rank1=""
-    for _ in $(seq 600); do
-        grep -q "crtc: .*[0-9]*%" "$work/err" 2>/dev/null && break
-        sleep 0.1
-    done
+    await_progress
     for pid in $(pgrep -x crtc); do
         if tr '\0' '\n' <"/proc/$pid/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=1" &&
             tr '\0' '\n' <"/proc/$pid/environ" 2>/dev/null | grep -q "^PWD=$PWD$"; then
@@ -296,6 +301,27 @@ killed() {
     kill_rank_1 "$work/out.png" "$here/still.crt" --width 640 --height 480 --supersampling 4
     # An animation shared by frames, written as a GIF at the end.
     kill_rank_1 "$work/out.gif" "$here/moving.crt" --frames 9 --width 320 --height 240 --supersampling 4
+}
+
+# Ctrl-C to mpirun during a shared still: the job stops with an error, rank 0 says once what
+# it left (the resume log, no image), and the other ranks say nothing.
+interrupted() {
+    mpi 3 --threads 1 "$here/still.crt" --width 640 --height 480 --supersampling 12 -o "$work/out.png" \
+        >"$work/out" 2>"$work/err" &
+    local job=$!
+    await_progress
+    # As a terminal's Ctrl-C would (the job was started in the background, which ignores it).
+    pkill -INT -f "^mpirun .* -o $work/out.png" || fail "mpirun was not found"
+    wait "$job"
+    local status=$?
+    [ "$status" != 0 ] || fail "the job succeeded although it was interrupted"
+    [ "$status" != 124 ] || fail "the job hung after it was interrupted"
+    [ "$(grep -c "interrupted" "$work/err")" = 1 ] ||
+        fail "the interruption was not reported once: $(grep -v "%" "$work/err")"
+    expect_text "$work/err" "crtc: interrupted; no image written; crtc --continue" "rank 0 says what is left"
+    [ ! -e "$work/out.png" ] || fail "an image was written although the job was interrupted"
+    [ -e "$work/.out.png.crtc-resume" ] || fail "the interrupted job left no resume log: $(ls -A "$work")"
+    ls -A "$work" | grep -q "\.tmp$" && fail "a temporary file was left: $(ls -A "$work")"
 }
 
 missing_module() {

@@ -80,8 +80,10 @@ int renderDistributed(const Options& options, const CompileFrame& compileFrame) 
     MpiSession session(nullptr, nullptr);
     int status = 0;
     // A single frame is shared by tiles; the frames of an animation are shared out whole.
-    if (!session.root())
+    if (!session.root()) {
+        setStopNote(""); // rank 0 says what a Ctrl-C left, for the whole job
         status = serveRankZero(session, options, compileFrame);
+    }
     else if (options.frames.selected() > 1)
         status = renderFramesOnRankZero(session, options, compileFrame);
     else
