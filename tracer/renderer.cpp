@@ -14,6 +14,10 @@
 #include <mutex>
 #include <thread>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
 namespace crt::tracer {
 
 namespace {
@@ -194,6 +198,15 @@ std::vector<Tile> regionTiles(const Tile& region, int size) {
 
 std::vector<Tile> imageTiles(int width, int height, int size) { return regionTiles({0, 0, width, height}, size); }
 
+unsigned availableCores() {
+#if defined(__linux__)
+    // A mask larger than cpu_set_t (over 1,024 processors) fails: every core then.
+    cpu_set_t allowed;
+    if (sched_getaffinity(0, sizeof allowed, &allowed) == 0) return std::max(1, CPU_COUNT(&allowed));
+#endif
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
 PixelBuffer::PixelBuffer(int width, int height, int channels)
     : width(width), height(height), channels(channels),
       pixels(static_cast<size_t>(width) * height * channels, 0.0f) {}
@@ -231,8 +244,7 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     const int tileCount = static_cast<int>(tiles.size());
     outcome.tileCount = tileCount;
     std::atomic<int> nextTile{0}, doneTiles{0};
-    unsigned threadCount = job.threads > 0 ? static_cast<unsigned>(job.threads)
-                                           : std::max(1u, std::thread::hardware_concurrency());
+    unsigned threadCount = job.threads > 0 ? static_cast<unsigned>(job.threads) : availableCores();
     threadCount = std::max(1u, std::min<unsigned>(threadCount, static_cast<unsigned>(tileCount)));
     std::vector<RayStats> stats(threadCount);
     std::mutex callbackMutex; // the caller's callback sees one tile at a time

@@ -31,6 +31,10 @@ std::vector<Tile> regionTiles(const Tile& region, int size = kTileSize);
 /// A whole `width` × `height` image cut into tiles, as regionTiles.
 std::vector<Tile> imageTiles(int width, int height, int size = kTileSize);
 
+/// The cores this process may run on: its CPU affinity (set by taskset, by mpirun's binding, by
+/// Slurm's CPUs per task), else every core. The default number of render threads.
+unsigned availableCores();
+
 /// A finished tile: its linear RGB floats (and premultiplied alpha with RenderJob::alpha),
 /// row-major from its top row.
 struct TileResult {
@@ -52,7 +56,7 @@ struct RenderJob {
     /// The region to render, tiles inside the image; empty: the whole image (imageTiles).
     std::vector<Tile> tiles;
     SampleBudget samples;
-    int threads = 0;                           ///< 0: all cores
+    int threads = 0;                           ///< 0: availableCores()
     const std::atomic<bool>* cancel = nullptr; ///< once set, no further tile is started
     /// Called once for every finished tile, from the worker that traced it, one call at a time;
     /// `rgb` is valid during the call only. A tile's pixels do not depend on which thread traced

@@ -44,8 +44,7 @@ class TileWorker {
   public:
     TileWorker(MpiSession& session, const Options& options)
         : session_(session),
-          threads_(options.threads > 0 ? options.threads
-                                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
+          threads_(options.threads > 0 ? options.threads : static_cast<int>(tracer::availableCores())),
           options_(options) {
         if (const char* queued = std::getenv(kTestQueuedTilesVariable)) queuedForTests_ = std::atoi(queued);
     }
