@@ -43,6 +43,7 @@ Vec3 glossyMean(const Vec3& axis, const Vec3& side, double glossiness, int sampl
 } // namespace
 
 struct Integrator::ShadingPoint {
+    Hit hit;
     SurfaceInteraction si;
     const ShadingMaterial* material;
     Vec3 color;        ///< C: the material color or its texture
@@ -68,11 +69,12 @@ Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& sett
     }
 }
 
-Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context) const {
+Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context,
+                       int32_t departed) const {
     Hit hit;
     Vec3 color;
     double distance = kInfinity;
-    if (scene_.intersect(ray, kInfinity, hit, context.scratch, context.stats)) {
+    if (scene_.intersect(ray, kInfinity, hit, context.scratch, context.stats, departed)) {
         distance = hit.t;
         color = shade(ray, hit, depth, pathLength, medium, context);
     } else {
@@ -98,6 +100,7 @@ glm::dvec4 Integrator::traceCamera(const Ray& ray, int depth, bool transparentBa
 Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium,
                        TraceContext& context) const {
     ShadingPoint sp;
+    sp.hit = hit;
     sp.si = scene_.interaction(ray, hit);
     sp.material = &scene_.materials[sp.si.material];
     const ShadingMaterial& m = *sp.material;
@@ -169,7 +172,8 @@ Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) cons
             if (nDotL <= 0 || ls.color == Vec3(0.0)) continue;
             Vec3 origin = offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, ls.toLight);
             Ray shadowRay = ls.atInfinity ? Ray{origin, ls.toLight} : Ray{origin, ls.target - origin};
-            Vec3 visible = transmittance(shadowRay, ls.atInfinity ? kInfinity : 1.0, context);
+            Vec3 visible = transmittance(shadowRay, ls.atInfinity ? kInfinity : 1.0,
+                                         scene_.departedPrimitive(sp.hit, sp.si, ls.toLight), context);
             if (visible == Vec3(0.0)) continue;
             double falloff = 1;
             if (light.falloff() > 0 && !ls.atInfinity) {
@@ -190,11 +194,11 @@ Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) cons
     return c;
 }
 
-Vec3 Integrator::transmittance(const Ray& ray, double tMax, TraceContext& context) const {
+Vec3 Integrator::transmittance(const Ray& ray, double tMax, int32_t departed, TraceContext& context) const {
     ++context.stats.shadowRays;
     Vec3 through(1.0);
     const RenderScene& scene = scene_;
-    scene_.forEachCrossing(ray, tMax, context.scratch, context.stats, [&](int32_t primitive, double) {
+    scene_.forEachCrossing(ray, tMax, departed, context.scratch, context.stats, [&](int32_t primitive, double) {
         const ShadingMaterial& m = scene.materials[scene.primitives[primitive].material];
         if (m.transparency <= 0) {
             through = Vec3(0.0);
@@ -212,7 +216,8 @@ Vec3 Integrator::reflect(const ShadingPoint& sp, int depth, int32_t medium, Trac
     auto traceFrom = [&](const Vec3& dir) {
         ++context.stats.reflectionRays;
         Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, dir), dir};
-        return trace(next, depth - 1, sp.pathLength, medium, context);
+        return trace(next, depth - 1, sp.pathLength, medium, context,
+                     scene_.departedPrimitive(sp.hit, sp.si, dir));
     };
     if (m.glossiness <= 0) return traceFrom(mirror);
     return glossyMean(mirror, sp.facingNormal, m.glossiness, settings_.glossySamples, context,
@@ -224,7 +229,8 @@ Vec3 Integrator::refract(const ShadingPoint& sp, const Vec3& refracted, int dept
     auto traceFrom = [&](const Vec3& dir) {
         ++context.stats.refractionRays;
         Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, dir), dir};
-        return trace(next, depth - 1, sp.pathLength, nextMedium, context);
+        return trace(next, depth - 1, sp.pathLength, nextMedium, context,
+                     scene_.departedPrimitive(sp.hit, sp.si, dir));
     };
     const ShadingMaterial& m = *sp.material;
     if (m.glossiness <= 0) return traceFrom(refracted);

@@ -39,8 +39,10 @@ public:
     /// The color seen along `ray` (unit direction) with `depth` reflections/refractions left
     /// (besides each kind's own limit, counted in `context`);
     /// `pathLength` is the distance travelled from the camera to the ray's origin (falloff),
-    /// `medium` the material of the solid the ray travels in (-1: air).
-    Vec3 trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context) const;
+    /// `medium` the material of the solid the ray travels in (-1: air), `departed` a primitive
+    /// the ray cannot meet again (RenderScene::departedPrimitive; -1: none).
+    Vec3 trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context,
+               int32_t departed = -1) const;
     /// A camera ray's color and alpha: as trace() in air, alpha 1; with a transparent
     /// background a ray that meets nothing is (0, 0, 0) with alpha 0 instead of the background.
     glm::dvec4 traceCamera(const Ray& ray, int depth, bool transparentBackground,
@@ -53,7 +55,7 @@ private:
     Vec3 shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium, TraceContext& context) const;
     Vec3 directLight(const ShadingPoint& sp, TraceContext& context) const;
     /// The fraction of light that reaches the point through the shadow ray (0: blocked).
-    Vec3 transmittance(const Ray& ray, double tMax, TraceContext& context) const;
+    Vec3 transmittance(const Ray& ray, double tMax, int32_t departed, TraceContext& context) const;
     Vec3 reflect(const ShadingPoint& sp, int depth, int32_t medium, TraceContext& context) const;
     /// The light along `refracted` into `nextMedium` (blurred around it on a glossy material).
     Vec3 refract(const ShadingPoint& sp, const Vec3& refracted, int depth, int32_t nextMedium,

@@ -129,10 +129,12 @@ bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double 
     return found;
 }
 
-bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats) const {
+bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats,
+                            int32_t departed) const {
     bool found = false;
     double nearest = tMax;
     for (const PlaneObject& plane : planes) {
+        if (plane.primitive == departed) continue;
         ++stats.intersectionTests;
         double t = planeCrossing(plane, ray);
         if (t > 0 && t < nearest) {
@@ -143,19 +145,30 @@ bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch&
     }
     const LazyBoxRay lazy(ray);
     for (int32_t object : unbounded) {
-        if (nearestInObject(object, lazy, nearest, hit, scratch, stats)) {
+        if (object != departed && nearestInObject(object, lazy, nearest, hit, scratch, stats)) {
             nearest = hit.t;
             found = true;
         }
     }
     bvh.traverse(lazy, nearest, stats, [&](int32_t item) {
-        if (nearestInObject(objects[item], lazy, nearest, hit, scratch, stats)) {
+        const int32_t object = objects[item];
+        if (object != departed && nearestInObject(object, lazy, nearest, hit, scratch, stats)) {
             nearest = hit.t;
             found = true;
         }
         return true;
     });
     return found;
+}
+
+int32_t RenderScene::departedPrimitive(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const {
+    // A CSG object's faces are tested through its root, never one by one.
+    if (hit.primitive < 0 || hit.flipNormal) return -1;
+    // A face's plane or a convex solid's tangent plane has the whole primitive on one side;
+    // the ray starts beyond it and moves away.
+    const Geometry& geometry = primitives[hit.primitive].geometry;
+    if (isFlat(geometry) || (isBoundedConvex(geometry) && glm::dot(dir, si.normal) > 0)) return hit.primitive;
+    return -1;
 }
 
 SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) const {

@@ -126,12 +126,20 @@ public:
     std::vector<CsgTreeNode> csgNodes;
     std::vector<ShadingMaterial> materials;
 
-    /// Nearest hit with 0 < t < tMax.
-    bool intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats) const;
+    /// Nearest hit with 0 < t < tMax. `departed` (from departedPrimitive) is not tested.
+    bool intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats,
+                   int32_t departed = -1) const;
     /// Calls visit(primitive, t) for every surface crossing with 0 < t < tMax, in no
     /// particular order, until visit returns false; returns false if stopped early.
+    /// `departed` (from departedPrimitive) is not tested.
     template <typename Visit>
-    bool forEachCrossing(const Ray& ray, double tMax, QueryScratch& scratch, RayStats& stats, Visit&& visit) const;
+    bool forEachCrossing(const Ray& ray, double tMax, int32_t departed, QueryScratch& scratch, RayStats& stats,
+                         Visit&& visit) const;
+    /// The primitive that a ray from the hit's point (offset to the side it goes) in direction
+    /// `dir` cannot meet again, so that the queries need not test it: a flat one, or a bounded
+    /// convex solid the ray leaves outwards. -1 when it may (the ray enters the solid, the
+    /// primitive is neither, or it is part of a CSG object).
+    int32_t departedPrimitive(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const;
 
     /// The surface at the hit (uv only where the material reads it).
     SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;

@@ -36,18 +36,20 @@ bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, doubl
 }
 
 template <typename Visit>
-bool RenderScene::forEachCrossing(const Ray& ray, double tMax, QueryScratch& scratch, RayStats& stats,
-                                  Visit&& visit) const {
+bool RenderScene::forEachCrossing(const Ray& ray, double tMax, int32_t departed, QueryScratch& scratch,
+                                  RayStats& stats, Visit&& visit) const {
     for (const PlaneObject& plane : planes) {
+        if (plane.primitive == departed) continue;
         ++stats.intersectionTests;
         double t = planeCrossing(plane, ray);
         if (t > 0 && t < tMax && !visit(plane.primitive, t)) return false;
     }
     const LazyBoxRay lazy(ray);
     for (int32_t object : unbounded)
-        if (!crossingsInObject(object, lazy, tMax, scratch, stats, visit)) return false;
+        if (object != departed && !crossingsInObject(object, lazy, tMax, scratch, stats, visit)) return false;
     return bvh.traverse(lazy, tMax, stats, [&](int32_t item) {
-        return crossingsInObject(objects[item], lazy, tMax, scratch, stats, visit);
+        const int32_t object = objects[item];
+        return object == departed || crossingsInObject(object, lazy, tMax, scratch, stats, visit);
     });
 }
 

@@ -28,6 +28,12 @@ bool isBoundedConvex(const Geometry& geometry) {
     return false;
 }
 
+bool isFlat(const Geometry& geometry) {
+    return std::holds_alternative<PlaneGeometry>(geometry) || std::holds_alternative<DiscGeometry>(geometry) || std::holds_alternative<QuadGeometry>(geometry) ||
+           std::holds_alternative<TriangleGeometry>(geometry) ||
+           std::holds_alternative<MeshTriangleGeometry>(geometry);
+}
+
 bool hasCheapCrossings(const Geometry& geometry) {
     return std::holds_alternative<SphereGeometry>(geometry) || std::holds_alternative<BoxGeometry>(geometry) ||
            std::holds_alternative<PlaneGeometry>(geometry) || std::holds_alternative<DiscGeometry>(geometry) ||

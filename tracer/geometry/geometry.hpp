@@ -34,6 +34,8 @@ SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing&
 bool isSolid(const Geometry& geometry);
 /// Whether the primitive is a bounded convex solid (a line crosses it at most twice).
 bool isBoundedConvex(const Geometry& geometry);
+/// Whether the primitive's surface lies in one plane (a plane, a disc, a quad, a triangle).
+bool isFlat(const Geometry& geometry);
 /// Whether crossLine costs about as much as testing a ray against the primitive's bounds
 /// (then testing the bounds first does not pay).
 bool hasCheapCrossings(const Geometry& geometry);

@@ -53,7 +53,7 @@ using CrossingSet = std::vector<std::pair<double, int32_t>>;
 
 CrossingSet crossings(const RenderScene& scene, const Ray& ray, QueryScratch& scratch, RayStats& stats) {
     CrossingSet out;
-    scene.forEachCrossing(ray, kInfinity, scratch, stats, [&](int32_t primitive, double t) {
+    scene.forEachCrossing(ray, kInfinity, -1, scratch, stats, [&](int32_t primitive, double t) {
         out.emplace_back(t, primitive);
         return true;
     });

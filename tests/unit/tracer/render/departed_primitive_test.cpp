@@ -1,0 +1,106 @@
+// A ray spawned at a surface skips the primitive it leaves only where it could not meet it again.
+#include "scene_builder_util.hpp"
+#include "tracer/render_scene.hpp"
+#include "tracer/sampling.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace crt::tracer;
+using crt::tracer::test::SceneMaker;
+using crt::tracer::test::scale;
+using crt::tracer::test::translate;
+
+namespace {
+
+/// Shapes of every kind the rule distinguishes: convex solids (a sphere, an ellipsoid, a box,
+/// a closed cylinder), flat ones (a disc, a quad, a triangle), and ones a ray can leave and meet
+/// again (a torus, an open cylinder).
+std::unique_ptr<RenderScene> shapes() {
+    SceneMaker maker;
+    maker.draw(maker.sphere({-4, 0, 0}, 1));
+    maker.draw(maker.transformed(maker.sphere({0, 0, 0}, 1), {scale({2, 0.5, 1}), translate({0, 0, 4})}));
+    maker.draw(maker.box({3, -1, -1}, {5, 1, 1}));
+    maker.draw(maker.entity(crt::scene::CylinderShape{{0, -1, -4}, {0, 1, -4}, 1, false}));
+    maker.draw(maker.entity(crt::scene::CylinderShape{{-4, -1, 4}, {-4, 1, 4}, 1, true}, -1, false));
+    maker.draw(maker.entity(crt::scene::TorusShape{{4, 0, 4}, 1.2, 0.4, {0, 1, 0.3}}));
+    maker.draw(maker.entity(crt::scene::DiscShape{{4, 0, -4}, {0.3, 1, 0}, 1, 0.2}, -1, false));
+    maker.draw(maker.entity(crt::scene::QuadShape{{-5, 0, -5}, {2, 0.5, 0}, {0, 0.5, 2}}, -1, false));
+    maker.draw(maker.entity(crt::scene::TriangleShape{{-1, -1, -1}, {1, -1, -1}, {0, 1, 1}}, -1, false));
+    std::string error;
+    auto scene = buildRenderScene(maker.desc, error);
+    REQUIRE(scene);
+    return scene;
+}
+
+Vec3 randomDirection(SampleRng& rng) {
+    for (;;) {
+        Vec3 v(rng.uniform() * 2 - 1, rng.uniform() * 2 - 1, rng.uniform() * 2 - 1);
+        double length = glm::length(v);
+        if (length > 0.1 && length <= 1) return v / length;
+    }
+}
+
+} // namespace
+
+TEST_CASE("A ray skips the primitive it leaves only when it cannot meet it again", "[render]") {
+    auto scene = shapes();
+    QueryScratch scratch;
+    RayStats stats;
+    SampleRng rng(7, 0, 0);
+    int skipped = 0, tested = 0, enteringSolids = 0;
+    for (int i = 0; i < 4000; ++i) {
+        // A point on some surface, seen from outside the group of shapes.
+        Ray camera{12.0 * randomDirection(rng), Vec3(0)};
+        camera.dir = glm::normalize(Vec3(rng.uniform() * 8 - 4, rng.uniform() * 2 - 1, rng.uniform() * 8 - 4) - camera.origin);
+        Hit hit;
+        if (!scene->intersect(camera, kInfinity, hit, scratch, stats)) continue;
+        const SurfaceInteraction si = scene->interaction(camera, hit);
+        // Rays from it every way, off the surface to the side each goes, as the integrator
+        // spawns them.
+        for (int j = 0; j < 8; ++j) {
+            const Vec3 dir = randomDirection(rng);
+            const Ray ray{offsetRayOrigin(si.point, si.pointError, si.normal, dir), dir};
+            const int32_t departed = scene->departedPrimitive(hit, si, dir);
+            const Geometry& geometry = scene->primitives[hit.primitive].geometry;
+            if (isBoundedConvex(geometry) && glm::dot(dir, si.normal) < 0) {
+                ++enteringSolids;
+                CHECK(departed == -1);
+            }
+            if (departed < 0) {
+                ++tested;
+                continue;
+            }
+            ++skipped;
+            CHECK(departed == hit.primitive);
+            // What the queries would have found on it: nothing.
+            scene->forEachCrossing(ray, kInfinity, -1, scratch, stats, [&](int32_t primitive, double t) {
+                if (primitive == departed) FAIL("a ray meets the primitive it left at t = " << t);
+                return true;
+            });
+            Hit skippedHit, fullHit;
+            const bool skippedFound = scene->intersect(ray, kInfinity, skippedHit, scratch, stats, departed);
+            const bool fullFound = scene->intersect(ray, kInfinity, fullHit, scratch, stats);
+            REQUIRE(skippedFound == fullFound);
+            if (fullFound) CHECK((skippedHit.t == fullHit.t && skippedHit.primitive == fullHit.primitive));
+        }
+    }
+    // Each case came up often enough to mean something.
+    CHECK(skipped > 2000);
+    CHECK(tested > 2000);
+    CHECK(enteringSolids > 500);
+}
+
+TEST_CASE("A torus or an open cylinder is never skipped: a ray leaving it may meet it again", "[render]") {
+    auto scene = shapes();
+    for (size_t p = 0; p < scene->primitives.size(); ++p) {
+        const Geometry& geometry = scene->primitives[p].geometry;
+        const bool torus = std::holds_alternative<TorusGeometry>(geometry);
+        const bool open = std::holds_alternative<CylinderGeometry>(geometry) && !isSolid(geometry);
+        if (!torus && !open) continue;
+        Hit hit{1.0, static_cast<int32_t>(p), Crossing{1.0, 0}, false};
+        SurfaceInteraction si;
+        si.normal = Vec3(0, 0, 1);
+        CHECK(scene->departedPrimitive(hit, si, Vec3(0, 0, 1)) == -1);
+        CHECK(scene->departedPrimitive(hit, si, Vec3(0, 0, -1)) == -1);
+    }
+}
