@@ -162,7 +162,7 @@ bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch&
 }
 
 int32_t RenderScene::departedPrimitive(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const {
-    // A CSG object's faces are tested through its root, never one by one.
+    // A face a CSG difference turned inside out: its normal points into the primitive.
     if (hit.primitive < 0 || hit.flipNormal) return -1;
     // A face's plane or a convex solid's tangent plane has the whole primitive on one side;
     // the ray starts beyond it and moves away.

@@ -137,8 +137,8 @@ public:
                          Visit&& visit) const;
     /// The primitive that a ray from the hit's point (offset to the side it goes) in direction
     /// `dir` cannot meet again, so that the queries need not test it: a flat one, or a bounded
-    /// convex solid the ray leaves outwards. -1 when it may (the ray enters the solid, the
-    /// primitive is neither, or it is part of a CSG object).
+    /// convex solid the ray leaves outwards. -1 when it may: the ray enters the solid, or the
+    /// primitive is neither, or the hit is on a face a CSG difference turned inside out.
     int32_t departedPrimitive(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const;
 
     /// The surface at the hit (uv only where the material reads it).

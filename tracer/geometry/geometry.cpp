@@ -29,8 +29,8 @@ bool isBoundedConvex(const Geometry& geometry) {
 }
 
 bool isFlat(const Geometry& geometry) {
-    return std::holds_alternative<PlaneGeometry>(geometry) || std::holds_alternative<DiscGeometry>(geometry) || std::holds_alternative<QuadGeometry>(geometry) ||
-           std::holds_alternative<TriangleGeometry>(geometry) ||
+    return std::holds_alternative<PlaneGeometry>(geometry) || std::holds_alternative<DiscGeometry>(geometry) ||
+           std::holds_alternative<QuadGeometry>(geometry) || std::holds_alternative<TriangleGeometry>(geometry) ||
            std::holds_alternative<MeshTriangleGeometry>(geometry);
 }
 
