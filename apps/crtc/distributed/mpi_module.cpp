@@ -86,13 +86,13 @@ void startSend(int rank, int tag, const void* data, std::size_t bytes) {
 
 int sendFinished(int wait) {
     if (startedSend == MPI_REQUEST_NULL) return 1;
+    // MPI_Test, here or in waitAsleep, sets a request it finds complete to MPI_REQUEST_NULL.
     if (wait) {
         waitAsleep(startedSend, std::chrono::microseconds(50));
-        startedSend = MPI_REQUEST_NULL;
         return 1;
     }
     int done = 0;
-    MPI_Test(&startedSend, &done, MPI_STATUS_IGNORE); // sets it to MPI_REQUEST_NULL when done
+    MPI_Test(&startedSend, &done, MPI_STATUS_IGNORE);
     return done;
 }
 

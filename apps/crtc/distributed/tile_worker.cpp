@@ -16,7 +16,9 @@
 #include <exception>
 #include <iostream>
 #include <mutex>
+#include <optional>
 #include <thread>
+#include <utility>
 
 namespace crt::crtc::distributed {
 
@@ -77,7 +79,7 @@ class TileWorker {
     std::condition_variable changed_;
     std::deque<int> queue_;                ///< tiles handed to this rank, not yet begun
     std::deque<std::vector<char>> outbox_; ///< finished tiles not yet sent
-    std::vector<char> sending_;            ///< the batch on its way
+    std::optional<TileBatch> sending_;     ///< the batch on its way (kept until it has gone)
     bool asked_ = false, noMore_ = false, renderDone_ = false;
     std::chrono::steady_clock::time_point start_, lastSend_;
     int tilesDone_ = 0;
@@ -144,8 +146,8 @@ void TileWorker::sendResults() {
     lastSend_ = now;
     lock.unlock();
     if (batch.empty()) return;
-    sending_ = batch.bytes();
-    session_.startSend(0, kResultTag, sending_.data(), sending_.size());
+    sending_ = std::move(batch);
+    session_.startSend(0, kResultTag, sending_->bytes().data(), sending_->bytes().size());
 }
 
 /// The main thread's loop: sends finished tiles, asks for more and takes rank 0's answers,
