@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <numeric>
+#include <system_error>
 
 namespace crt::tracer {
 
@@ -13,6 +15,9 @@ namespace {
 constexpr int kBins = 12;
 constexpr int kMaxLeafItems = 4;
 constexpr int kMaxDepth = 56; // below the traversal stack's 64 entries
+// Subtrees of fewer items are built by the thread that reaches them: a thread's start costs
+// about as much as a subtree of a few hundred items.
+constexpr size_t kParallelItems = 8192;
 
 /// A node of the binary tree the build makes before it is collapsed into the wide one: a
 /// leaf holds items[offset .. offset+count); an interior node's first child follows it
@@ -25,27 +30,50 @@ struct BinaryNode {
 
 struct BuildItem {
     Bounds3 bounds;
-    Vec3 centroid;
     int32_t index;
+    uint8_t bin; ///< set by bestSplit for the node being split (in what was padding)
+
+    // Computed when needed rather than stored: the build's top levels are limited by how
+    // many bytes of items they read.
+    double centroid(int axis) const { return 0.5 * (bounds.lo[axis] + bounds.hi[axis]); }
 };
 
+/// The bounds of some items and of their centroids (which choose the split axis and bins).
+struct RangeBounds {
+    Bounds3 bounds, centroids;
+
+    void include(const BuildItem& item) {
+        bounds.include(item.bounds);
+        centroids.include(item.bounds.centroid());
+    }
+};
+
+/// Builds the binary tree over `items` (reordering them), depth-first: a node, its first
+/// subtree, its second. Near the root the two subtrees are built by two threads into builders
+/// of their own and then appended in that order, so the tree is the same whatever the
+/// number of threads.
 class Builder {
 public:
-    Builder(std::vector<BuildItem>& items, std::vector<BinaryNode>& nodes, std::vector<int32_t>& order)
-        : items_(items), nodes_(nodes), order_(order) {}
+    /// A builder for a subtree of `count` items: a binary tree with leaves of one item or
+    /// more has fewer than 2 · count nodes.
+    Builder(std::vector<BuildItem>& items, size_t count) : items_(items) {
+        nodes.reserve(2 * count);
+        order.reserve(count);
+    }
 
-    int build(size_t begin, size_t end, int depth) {
-        int32_t nodeIndex = static_cast<int32_t>(nodes_.size());
-        nodes_.emplace_back();
-        Bounds3 bounds, centroids;
-        for (size_t i = begin; i < end; ++i) {
-            bounds.include(items_[i].bounds);
-            centroids.include(items_[i].centroid);
-        }
-        nodes_[nodeIndex].bounds = bounds;
+    std::vector<BinaryNode> nodes;
+    std::vector<int32_t> order; ///< item indices in the order of the leaves
+
+    /// Builds the subtree over items [begin, end); below `parallelLevels` levels from here,
+    /// one thread. Returns the depth of its deepest leaf.
+    int build(size_t begin, size_t end, int depth, int parallelLevels) {
+        int32_t nodeIndex = static_cast<int32_t>(nodes.size());
+        nodes.emplace_back();
+        const RangeBounds range = boundsOf(begin, end);
+        nodes[nodeIndex].bounds = range.bounds;
         size_t count = end - begin;
         int axis = 0;
-        Vec3 extent = centroids.extent();
+        Vec3 extent = range.centroids.extent();
         if (extent.y > extent[axis]) axis = 1;
         if (extent.z > extent[axis]) axis = 2;
 
@@ -55,12 +83,11 @@ public:
         size_t mid = begin + count / 2;
         bool median = true;
         if (extent[axis] > 0 && count > 2) {
-            int split = bestSplit(begin, end, axis, centroids, bounds, count);
+            int split = bestSplit(begin, end, axis, range, count);
             if (split < 0 && !mustSplit) return makeLeaf(nodeIndex, begin, end, depth);
             if (split >= 0) {
-                auto bin = [&](const BuildItem& item) { return binOf(item.centroid[axis], centroids, axis); };
                 auto it = std::partition(items_.begin() + begin, items_.begin() + end,
-                                         [&](const BuildItem& item) { return bin(item) <= split; });
+                                         [&](const BuildItem& item) { return item.bin <= split; });
                 mid = static_cast<size_t>(it - items_.begin());
                 median = mid == begin || mid == end;
                 if (median) mid = begin + count / 2;
@@ -68,42 +95,82 @@ public:
         }
         if (median) {
             std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
-                             [axis](const BuildItem& a, const BuildItem& b) { return a.centroid[axis] < b.centroid[axis]; });
+                             [axis](const BuildItem& a, const BuildItem& b) { return a.centroid(axis) < b.centroid(axis); });
         }
-        int leftDepth = build(begin, mid, depth + 1);
-        nodes_[nodeIndex].offset = static_cast<int32_t>(nodes_.size());
-        int rightDepth = build(mid, end, depth + 1);
+        if (parallelLevels > 0 && count >= kParallelItems)
+            return buildChildrenInParallel(nodeIndex, begin, mid, end, depth, parallelLevels - 1);
+        int leftDepth = build(begin, mid, depth + 1, 0);
+        nodes[nodeIndex].offset = static_cast<int32_t>(nodes.size());
+        int rightDepth = build(mid, end, depth + 1, 0);
         return std::max(leftDepth, rightDepth);
     }
 
 private:
+    /// The children of nodes[nodeIndex], over items [begin, mid) and [mid, end): the first
+    /// built on a thread of its own (or later on this one, when no thread can be had).
+    int buildChildrenInParallel(int32_t nodeIndex, size_t begin, size_t mid, size_t end, int depth,
+                                int parallelLevels) {
+        Builder left(items_, mid - begin), right(items_, end - mid);
+        auto buildLeft = [&] { return left.build(begin, mid, depth + 1, parallelLevels); };
+        std::future<int> leftDepth;
+        try {
+            leftDepth = std::async(std::launch::async, buildLeft);
+        } catch (const std::system_error&) {
+            leftDepth = std::async(std::launch::deferred, buildLeft);
+        }
+        const int rightDepth = right.build(mid, end, depth + 1, parallelLevels);
+        const int depthReached = std::max(leftDepth.get(), rightDepth);
+        append(left);
+        nodes[nodeIndex].offset = static_cast<int32_t>(nodes.size());
+        append(right);
+        return depthReached;
+    }
+
+    /// Appends a subtree built apart, its node and item offsets moved past ours.
+    void append(const Builder& subtree) {
+        const auto nodeBase = static_cast<int32_t>(nodes.size());
+        const auto orderBase = static_cast<int32_t>(order.size());
+        for (BinaryNode node : subtree.nodes) {
+            node.offset += node.count > 0 ? orderBase : nodeBase;
+            nodes.push_back(node);
+        }
+        order.insert(order.end(), subtree.order.begin(), subtree.order.end());
+    }
+
     static int binOf(double c, const Bounds3& centroids, int axis) {
         double f = (c - centroids.lo[axis]) / (centroids.hi[axis] - centroids.lo[axis]);
         return std::clamp(static_cast<int>(f * kBins), 0, kBins - 1);
     }
 
-    /// The bin after which to split, or -1 when a leaf is cheaper.
-    int bestSplit(size_t begin, size_t end, int axis, const Bounds3& centroids, const Bounds3& bounds,
-                  size_t count) const {
-        Bounds3 binBounds[kBins];
+    RangeBounds boundsOf(size_t begin, size_t end) const {
+        RangeBounds range;
+        for (size_t i = begin; i < end; ++i) range.include(items_[i]);
+        return range;
+    }
+
+    /// The bin after which to split, or -1 when a leaf is cheaper; leaves each item's bin in
+    /// it, for the partition that follows.
+    int bestSplit(size_t begin, size_t end, int axis, const RangeBounds& range, size_t count) {
+        Bounds3 bins[kBins];
         int binCount[kBins] = {};
         for (size_t i = begin; i < end; ++i) {
-            int b = binOf(items_[i].centroid[axis], centroids, axis);
+            int b = binOf(items_[i].centroid(axis), range.centroids, axis);
+            items_[i].bin = static_cast<uint8_t>(b);
             ++binCount[b];
-            binBounds[b].include(items_[i].bounds);
+            bins[b].include(items_[i].bounds);
         }
         double costs[kBins - 1] = {};
         Bounds3 below;
         int countBelow = 0;
         for (int i = 0; i < kBins - 1; ++i) {
-            below.include(binBounds[i]);
+            below.include(bins[i]);
             countBelow += binCount[i];
             costs[i] = countBelow * below.surfaceArea();
         }
         Bounds3 above;
         int countAbove = 0;
         for (int i = kBins - 1; i >= 1; --i) {
-            above.include(binBounds[i]);
+            above.include(bins[i]);
             countAbove += binCount[i];
             costs[i - 1] += countAbove * above.surfaceArea();
         }
@@ -115,22 +182,20 @@ private:
                 best = i;
             }
         }
-        double area = bounds.surfaceArea();
+        double area = range.bounds.surfaceArea();
         double splitCost = 0.5 + (area > 0 ? bestCost / area : 0);
         if (count <= kMaxLeafItems && splitCost >= static_cast<double>(count)) return -1;
         return best;
     }
 
     int makeLeaf(int32_t nodeIndex, size_t begin, size_t end, int depth) {
-        nodes_[nodeIndex].offset = static_cast<int32_t>(order_.size());
-        nodes_[nodeIndex].count = static_cast<uint16_t>(end - begin);
-        for (size_t i = begin; i < end; ++i) order_.push_back(items_[i].index);
+        nodes[nodeIndex].offset = static_cast<int32_t>(order.size());
+        nodes[nodeIndex].count = static_cast<uint16_t>(end - begin);
+        for (size_t i = begin; i < end; ++i) order.push_back(items_[i].index);
         return depth;
     }
 
     std::vector<BuildItem>& items_;
-    std::vector<BinaryNode>& nodes_;
-    std::vector<int32_t>& order_;
 };
 
 float roundDown(double v) {
@@ -154,15 +219,17 @@ public:
     int32_t collapse(int32_t binaryIndex, int& depth) {
         int32_t wideIndex = static_cast<int32_t>(wide_.size());
         wide_.emplace_back();
-        std::vector<int32_t> children;
+        int32_t children[4];
+        size_t childCount = 0;
         const BinaryNode& node = binary_[binaryIndex];
         if (node.count > 0) {
-            children.push_back(binaryIndex); // a lone leaf at the root
+            children[childCount++] = binaryIndex; // a lone leaf at the root
         } else {
-            children = {binaryIndex + 1, node.offset};
-            while (children.size() < 4) {
+            children[childCount++] = binaryIndex + 1;
+            children[childCount++] = node.offset;
+            while (childCount < 4) {
                 int widest = -1;
-                for (size_t i = 0; i < children.size(); ++i) {
+                for (size_t i = 0; i < childCount; ++i) {
                     const BinaryNode& c = binary_[children[i]];
                     if (c.count == 0 && (widest < 0 || c.bounds.surfaceArea() > binary_[children[widest]].bounds.surfaceArea()))
                         widest = static_cast<int>(i);
@@ -170,7 +237,7 @@ public:
                 if (widest < 0) break;
                 int32_t opened = children[widest];
                 children[widest] = opened + 1;
-                children.push_back(binary_[opened].offset);
+                children[childCount++] = binary_[opened].offset;
             }
         }
         WideBvhNode filled;
@@ -179,12 +246,12 @@ public:
             filled.faces[axis] = Float4{inf, inf, inf, inf};
             filled.faces[3 + axis] = Float4{-inf, -inf, -inf, -inf};
         }
-        filled.used = static_cast<uint32_t>(children.size());
+        filled.used = static_cast<uint32_t>(childCount);
         depth = 1;
         for (size_t slot = 0; slot < 4; ++slot) {
             filled.child[slot] = 0;
             filled.count[slot] = 0;
-            if (slot >= children.size()) continue;
+            if (slot >= childCount) continue;
             const BinaryNode& c = binary_[children[slot]];
             for (int axis = 0; axis < 3; ++axis) {
                 filled.faces[axis][slot] = roundDown(c.bounds.lo[axis]);
@@ -230,7 +297,7 @@ WideRay::WideRay(const Ray& ray) {
     }
 }
 
-void Bvh::build(const std::vector<Bounds3>& itemBounds) {
+void Bvh::build(const std::vector<Bounds3>& itemBounds, unsigned threads) {
     nodes_.clear();
     items_.clear();
     fewItemBounds_.clear();
@@ -238,14 +305,16 @@ void Bvh::build(const std::vector<Bounds3>& itemBounds) {
     if (itemBounds.empty()) return;
     std::vector<BuildItem> items(itemBounds.size());
     for (size_t i = 0; i < itemBounds.size(); ++i)
-        items[i] = {itemBounds[i], itemBounds[i].centroid(), static_cast<int32_t>(i)};
-    std::vector<BinaryNode> binary;
-    binary.reserve(2 * items.size());
-    items_.reserve(items.size());
-    Builder builder(items, binary, items_);
-    builder.build(0, items.size(), 0);
-    nodes_.reserve(binary.size() / 2 + 1);
-    Collapser(binary, nodes_).collapse(0, depth_);
+        items[i] = {itemBounds[i], static_cast<int32_t>(i), 0};
+    // Levels of the tree whose two subtrees are built by two threads: twice as many subtrees
+    // as threads, so that an uneven split still leaves every thread busy.
+    int parallelLevels = 0;
+    while (threads > 1 && (1u << parallelLevels) < 2 * threads) ++parallelLevels;
+    Builder builder(items, items.size());
+    builder.build(0, items.size(), 0, parallelLevels);
+    items_ = std::move(builder.order);
+    nodes_.reserve(builder.nodes.size() / 2 + 1);
+    Collapser(builder.nodes, nodes_).collapse(0, depth_);
     if (items_.size() <= kFewItems)
         for (int32_t item : items_) {
             const Bounds3& b = itemBounds[item];

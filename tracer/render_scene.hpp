@@ -177,9 +177,10 @@ private:
     friend class RenderSceneBuilder;
 };
 
-/// Builds the render scene; returns nullptr and sets `error` ("file:line: message") when
-/// a mesh cannot be read.
-std::unique_ptr<RenderScene> buildRenderScene(const scene::SceneDesc& desc, std::string& error);
+/// Builds the render scene, its BVH on up to `threads` threads; returns nullptr and sets
+/// `error` ("file:line: message") when a mesh cannot be read.
+std::unique_ptr<RenderScene> buildRenderScene(const scene::SceneDesc& desc, std::string& error,
+                                              unsigned threads = 1);
 
 } // namespace crt::tracer
 

@@ -142,9 +142,9 @@ struct PreparedScene {
     std::unique_ptr<Camera> camera;
 };
 
-bool prepare(const scene::SceneDesc& desc, PreparedScene& out, std::string& error) {
+bool prepare(const scene::SceneDesc& desc, unsigned threads, PreparedScene& out, std::string& error) {
     const scene::SettingsDesc& s = desc.settings;
-    out.geometry = buildRenderScene(desc, error);
+    out.geometry = buildRenderScene(desc, error, threads);
     if (!out.geometry) return false;
     if (!loadSceneImages(desc, out.images, error)) return false;
     std::vector<Light> lights;
@@ -224,8 +224,9 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     RenderOutcome outcome;
     if (!tilesFit(job.tiles, desc.settings.width, desc.settings.height, outcome.error)) return outcome;
     auto buildStart = std::chrono::steady_clock::now();
+    const unsigned jobThreads = job.threads > 0 ? static_cast<unsigned>(job.threads) : availableCores();
     PreparedScene prepared;
-    if (!prepare(desc, prepared, outcome.error)) return outcome;
+    if (!prepare(desc, jobThreads, prepared, outcome.error)) return outcome;
     const scene::SettingsDesc settings = withBudget(desc.settings, job.samples);
     PixelSampler sampler(*prepared.integrator, *prepared.camera, settings, job.alpha);
     const int channels = job.alpha ? 4 : 3;
@@ -244,8 +245,7 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     const int tileCount = static_cast<int>(tiles.size());
     outcome.tileCount = tileCount;
     std::atomic<int> nextTile{0}, doneTiles{0};
-    unsigned threadCount = job.threads > 0 ? static_cast<unsigned>(job.threads) : availableCores();
-    threadCount = std::max(1u, std::min<unsigned>(threadCount, static_cast<unsigned>(tileCount)));
+    const unsigned threadCount = std::max(1u, std::min<unsigned>(jobThreads, static_cast<unsigned>(tileCount)));
     std::vector<RayStats> stats(threadCount);
     std::mutex callbackMutex; // the caller's callback sees one tile at a time
 

@@ -13,8 +13,8 @@ namespace crt::tracer {
 
 class RenderSceneBuilder {
 public:
-    RenderSceneBuilder(const scene::SceneDesc& desc, RenderScene& scene, std::string& error)
-        : desc_(desc), scene_(scene), error_(error) {}
+    RenderSceneBuilder(const scene::SceneDesc& desc, RenderScene& scene, unsigned threads, std::string& error)
+        : desc_(desc), scene_(scene), threads_(threads), error_(error) {}
 
     bool build() {
         scene_.materials.reserve(desc_.materials.size() + 1);
@@ -26,12 +26,18 @@ public:
         // Counted before anything is expanded: a shared entity doubled in a loop would
         // otherwise fill memory here. Evaluation refuses such a scene already; this is for
         // descriptions made otherwise.
-        if (scene::drawnPrimitives(desc_) > desc_.limits.maxPrimitives) {
+        const uint64_t drawn = scene::drawnPrimitives(desc_);
+        if (drawn > desc_.limits.maxPrimitives) {
             error_ = fmt::format("the scene expands to more than {} primitives; raise the limit "
                                  "with --max-primitives",
                                  desc_.limits.maxPrimitives);
             return false;
         }
+        // Room for them from the start (a mesh counts as one until its file is read): a
+        // vector growing by doubling would copy and fault in its elements about twice.
+        scene_.primitives.reserve(drawn);
+        scene_.primitiveEntities.reserve(drawn);
+        scene_.objects.reserve(drawn);
         for (int32_t root : desc_.drawn)
             if (!addDrawn(root, Transform())) return false;
         finishAcceleration();
@@ -293,19 +299,21 @@ private:
             scene_.bounds.include(b);
         }
         scene_.objects = std::move(bounded);
-        scene_.bvh.build(bounds);
+        scene_.bvh.build(bounds, threads_);
     }
 
     const scene::SceneDesc& desc_;
     RenderScene& scene_;
+    unsigned threads_;
     std::string& error_;
     int32_t defaultMaterial_ = 0;
     std::map<std::string, std::shared_ptr<const MeshData>> meshes_;
 };
 
-std::unique_ptr<RenderScene> buildRenderScene(const scene::SceneDesc& desc, std::string& error) {
+std::unique_ptr<RenderScene> buildRenderScene(const scene::SceneDesc& desc, std::string& error,
+                                              unsigned threads) {
     auto scene = std::make_unique<RenderScene>();
-    RenderSceneBuilder builder(desc, *scene, error);
+    RenderSceneBuilder builder(desc, *scene, threads, error);
     if (!builder.build()) return nullptr;
     return scene;
 }
