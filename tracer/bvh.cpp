@@ -120,14 +120,15 @@ private:
         }
         const int rightDepth = right.build(mid, end, depth + 1, parallelLevels);
         const int depthReached = std::max(leftDepth.get(), rightDepth);
-        append(left);
+        append(std::move(left));
         nodes[nodeIndex].offset = static_cast<int32_t>(nodes.size());
-        append(right);
+        append(std::move(right));
         return depthReached;
     }
 
-    /// Appends a subtree built apart, its node and item offsets moved past ours.
-    void append(const Builder& subtree) {
+    /// Appends a subtree built apart, its node and item offsets moved past ours, and frees
+    /// it (so that at most one subtree is held twice).
+    void append(Builder&& subtree) {
         const auto nodeBase = static_cast<int32_t>(nodes.size());
         const auto orderBase = static_cast<int32_t>(order.size());
         for (BinaryNode node : subtree.nodes) {
@@ -135,6 +136,8 @@ private:
             nodes.push_back(node);
         }
         order.insert(order.end(), subtree.order.begin(), subtree.order.end());
+        subtree.nodes = {};
+        subtree.order = {};
     }
 
     static int binOf(double c, const Bounds3& centroids, int axis) {
@@ -297,7 +300,7 @@ WideRay::WideRay(const Ray& ray) {
     }
 }
 
-void Bvh::build(const std::vector<Bounds3>& itemBounds, unsigned threads) {
+void Bvh::build(std::vector<Bounds3> itemBounds, unsigned threads) {
     nodes_.clear();
     items_.clear();
     fewItemBounds_.clear();
@@ -306,6 +309,7 @@ void Bvh::build(const std::vector<Bounds3>& itemBounds, unsigned threads) {
     std::vector<BuildItem> items(itemBounds.size());
     for (size_t i = 0; i < itemBounds.size(); ++i)
         items[i] = {itemBounds[i], static_cast<int32_t>(i), 0};
+    itemBounds = {}; // the items hold them now; not kept through the build
     // Levels of the tree whose two subtrees are built by two threads: twice as many subtrees
     // as threads, so that an uneven split still leaves every thread busy.
     int parallelLevels = 0;
@@ -315,9 +319,10 @@ void Bvh::build(const std::vector<Bounds3>& itemBounds, unsigned threads) {
     items_ = std::move(builder.order);
     nodes_.reserve(builder.nodes.size() / 2 + 1);
     Collapser(builder.nodes, nodes_).collapse(0, depth_);
+    // The build leaves the items in the order of the leaves, as items_ lists them.
     if (items_.size() <= kFewItems)
-        for (int32_t item : items_) {
-            const Bounds3& b = itemBounds[item];
+        for (const BuildItem& item : items) {
+            const Bounds3& b = item.bounds;
             fewItemBounds_.push_back({{b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z}});
         }
 }

@@ -155,7 +155,7 @@ class Bvh {
 public:
     /// Builds over items 0..n-1 with the given (finite) bounds, on up to `threads` threads;
     /// the tree is the same whatever their number.
-    void build(const std::vector<Bounds3>& itemBounds, unsigned threads = 1);
+    void build(std::vector<Bounds3> itemBounds, unsigned threads = 1);
 
     bool empty() const { return nodes_.empty(); }
     size_t nodeCount() const { return nodes_.size(); }

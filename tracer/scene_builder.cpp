@@ -299,7 +299,7 @@ private:
             scene_.bounds.include(b);
         }
         scene_.objects = std::move(bounded);
-        scene_.bvh.build(bounds, threads_);
+        scene_.bvh.build(std::move(bounds), threads_);
     }
 
     const scene::SceneDesc& desc_;
