@@ -187,7 +187,7 @@ void addQualityOptions(CLI::App& app, Options& o) {
         ->check(sampleCount(scene::kGlossySamplesRange))
         ->type_name("N")
         ->group(group);
-    app.add_option("--threads", o.threads, "render threads (default: the cores crtc may run on)")
+    app.add_option("--threads", o.threads, "threads (default: the cores crtc may run on)")
         ->check(positiveInt())
         ->type_name("N")
         ->group(group);
