@@ -627,6 +627,35 @@ TEST_CASE("files OpenImageIO's readers would abort on or reserve gigabytes for a
     }
 }
 
+TEST_CASE("an image whose rows begin near the end of int's range is refused, not read for seconds",
+          "[image_io]") {
+    // The fuzzing finding: a 2 KB little-endian DPX of 1 x 1664 pixels whose row origin
+    // (YOffset, bytes 1412..1415) is 0x7fc00000; OpenImageIO's count of rows overflowed and
+    // reading it took 8 s. The same file with other origins around the limit (2^30 for the
+    // last row's end).
+    std::ifstream in(CRT_FUZZ_REGRESSIONS_DIR "/image/dpx-row-origin-near-int-max.dpx", std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    REQUIRE(bytes.size() > 1416);
+    auto withRowOrigin = [&](uint32_t origin) {
+        std::string patched = bytes;
+        for (int i = 0; i < 4; ++i) patched[1412 + i] = char(origin >> 8 * i);
+        const std::string path = scratchFile("origin_" + std::to_string(origin) + ".dpx");
+        std::ofstream(path, std::ios::binary) << patched;
+        return path;
+    };
+    constexpr uint32_t kHeight = 1664, kLimit = uint32_t{1} << 30;
+    std::string error;
+    for (uint32_t origin : {uint32_t{0x7fc00000}, kLimit - kHeight + 1}) {
+        error.clear();
+        CHECK_FALSE(readImage(withRowOrigin(origin), error));
+        CHECK_THAT(error, Catch::Contains("damaged image file: its pixels lie too far from the origin"));
+    }
+    // Rows that begin nearer are read, the same pixels wherever they begin.
+    const ImageBuffer image = readOrFail(withRowOrigin(0));
+    CHECK(image.height == int(kHeight));
+    CHECK(readOrFail(withRowOrigin(kLimit - kHeight)).pixels == image.pixels);
+}
+
 TEST_CASE("sizes an image's header claims are limited before OpenImageIO opens it", "[image_io]") {
     auto writeBytes = [](const std::string& path, const std::string& bytes) {
         std::ofstream(path, std::ios::binary) << bytes;
