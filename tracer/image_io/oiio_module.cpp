@@ -144,8 +144,8 @@ bool readFloats(ImageInput& in, std::vector<float>& out) {
 
 // OpenImageIO reads an image in chunks of rows counted in `int` from the data window's first
 // row, which a header may put anywhere: a DPX whose row origin is within 2^24 of the largest
-// `int` overflowed that count and took 8 s of single-row reads for a 2 KB file (found by
-// tests/fuzz/fuzz_image). Windows ending within 2^30 of the origin leave the chunks (at most
+// `int` overflowed that count, and a tiny file turned into millions of single-row reads
+// (tests/fuzz/README.md). Windows ending within 2^30 of the origin leave the chunks (at most
 // 2^26 rows) room; real images lie far nearer.
 bool dataWindowInRange(const ImageSpec& spec) {
     constexpr std::int64_t kLimit = std::int64_t{1} << 30;
@@ -167,7 +167,8 @@ int readImage(const char* path, int* isInteger, CrtImageSizeFn acceptsSize, CrtI
         if (spec.depth > 1) return sink.fail("volume images are not supported");
         const int width = spec.width, height = spec.height, channels = spec.nchannels;
         if (width < 1 || height < 1 || channels < 1) return sink.fail("the image is empty");
-        if (!dataWindowInRange(spec)) return sink.fail("damaged image file: its pixels lie too far from the origin");
+        if (!dataWindowInRange(spec))
+            return sink.fail("damaged image file: its pixels lie too far from the origin");
 
         // The host may refuse the image before its pixels are read or decoded (a small file
         // can claim a huge image).
