@@ -112,11 +112,36 @@ TypeDesc readType(const ImageSpec& spec, TypeDesc wanted) {
     return spec.format == wanted && spec.channelformats.empty() ? OIIO::TypeUnknown : wanted;
 }
 
+// OpenImageIO 2.4's TIFF reader, asked for several rows of a min-is-white image stored in
+// deflated strips of 8- or 16-bit values, inverts a strip's length times the channel count
+// from each strip's start, past the end of the caller's buffer (found by tests/fuzz/fuzz_image;
+// a valid grey-and-alpha file is enough). Asked for one row at a time, it inverts the row it
+// decoded, in every kind of min-is-white file.
+bool invertsPastItsBuffer(const ImageInput& in) {
+    constexpr int kTiffMinIsWhite = 0; // TIFF 6.0's PhotometricInterpretation for it
+    const ImageSpec& spec = in.spec();
+    return std::string_view(in.format_name()) == "tiff" && spec.tile_width == 0 &&
+           spec.nchannels > 1 &&
+           spec.get_int_attribute("tiff:PhotometricInterpretation", -1) == kTiffMinIsWhite;
+}
+
+// Every pixel of the image, as `type` (readType), into `data`.
+bool readPixels(ImageInput& in, TypeDesc type, void* data) {
+    const ImageSpec& spec = in.spec();
+    if (!invertsPastItsBuffer(in)) return in.read_image(0, 0, 0, spec.nchannels, type, data);
+    const std::size_t valueBytes = type == OIIO::TypeUnknown ? spec.format.size() : type.size();
+    const std::size_t rowBytes = std::size_t(spec.width) * spec.nchannels * valueBytes;
+    auto* row = static_cast<unsigned char*>(data);
+    for (int y = spec.y; y < spec.y + spec.height; ++y, row += rowBytes)
+        if (!in.read_scanline(y, spec.z, type, row)) return false;
+    return true;
+}
+
 // OIIO converts integers to float by multiplying with 1/max, which is off by an ulp for many
 // codes; dividing here makes an 8-bit code k read as exactly k / 255.0f, as the spec says.
 template <class Int> bool readScaled(ImageInput& in, std::vector<float>& out) {
     std::vector<Int> raw(out.size());
-    if (!in.read_image(0, 0, 0, in.spec().nchannels, readType(in.spec(), OIIO::BaseTypeFromC<Int>::value), raw.data()))
+    if (!readPixels(in, readType(in.spec(), OIIO::BaseTypeFromC<Int>::value), raw.data()))
         return false;
     constexpr float max = float(std::numeric_limits<Int>::max());
     for (std::size_t i = 0; i < raw.size(); ++i) out[i] = float(raw[i]) / max;
@@ -130,9 +155,9 @@ bool readFloats(ImageInput& in, std::vector<float>& out) {
     const ImageSpec& spec = in.spec();
     const std::size_t valueBytes = spec.format.size();
     if (spec.format == OIIO::TypeFloat || !spec.channelformats.empty() || valueBytes == 0)
-        return in.read_image(0, 0, 0, spec.nchannels, readType(spec, OIIO::TypeFloat), out.data());
+        return readPixels(in, readType(spec, OIIO::TypeFloat), out.data());
     std::vector<unsigned char> raw(out.size() * valueBytes);
-    if (!in.read_image(0, 0, 0, spec.nchannels, OIIO::TypeUnknown, raw.data())) return false;
+    if (!readPixels(in, OIIO::TypeUnknown, raw.data())) return false;
     constexpr std::size_t kBatch = std::size_t{1} << 24; // convert_pixel_values counts in int
     for (std::size_t at = 0; at < out.size(); at += kBatch) {
         const int count = int(std::min(kBatch, out.size() - at));

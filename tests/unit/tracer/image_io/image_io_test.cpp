@@ -11,6 +11,7 @@
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -73,6 +74,51 @@ void writePpm(const std::string& path, int width, int height,
     std::ofstream out(path, std::ios::binary);
     out << "P6\n" << width << " " << height << "\n255\n";
     out.write(reinterpret_cast<const char*>(rgb.data()), std::streamsize(rgb.size()));
+}
+
+// A little-endian TIFF of 8-bit grey and alpha, min-is-white (code 0 is white), in strips of
+// `rowsPerStrip` rows deflated by zlib, written by hand: OpenImageIO writes no such file.
+std::string minIsWhiteGreyAlphaTiff(int width, int height, int rowsPerStrip,
+                                    const std::vector<std::uint8_t>& values) {
+    std::string file = "II*";
+    auto put16 = [&](std::uint32_t v) { file += {char(v), char(v >> 8)}; };
+    auto put32 = [&](std::uint32_t v) { put16(v & 0xffff), put16(v >> 16); };
+    put16(0), put32(0); // the directory's offset, set below
+    std::vector<std::uint32_t> offsets, sizes;
+    const std::size_t rowBytes = std::size_t(width) * 2;
+    for (int y = 0; y < height; y += rowsPerStrip) {
+        const std::size_t rows = std::size_t(std::min(rowsPerStrip, height - y));
+        std::vector<Bytef> strip(compressBound(uLong(rows * rowBytes)));
+        uLongf size = uLongf(strip.size());
+        REQUIRE(compress(strip.data(), &size, &values[y * rowBytes], uLong(rows * rowBytes)) ==
+                Z_OK);
+        offsets.push_back(std::uint32_t(file.size()));
+        sizes.push_back(std::uint32_t(size));
+        file.append(reinterpret_cast<const char*>(strip.data()), size);
+    }
+    if (file.size() % 2) file += '\0';
+    const auto offsetsAt = std::uint32_t(file.size());
+    for (std::uint32_t offset : offsets) put32(offset);
+    const auto sizesAt = std::uint32_t(file.size());
+    for (std::uint32_t size : sizes) put32(size);
+    const auto directoryAt = std::uint32_t(file.size());
+    for (int i = 0; i < 4; ++i) file[4 + i] = char(directoryAt >> 8 * i);
+    enum : std::uint16_t { kShort = 3, kLong = 4 };
+    auto entry = [&](std::uint16_t tag, std::uint16_t type, std::uint32_t count,
+                     std::uint32_t value) { put16(tag), put16(type), put32(count), put32(value); };
+    put16(10);
+    entry(256, kShort, 1, width);       // ImageWidth
+    entry(257, kShort, 1, height);      // ImageLength
+    entry(258, kShort, 2, 8 | 8 << 16); // BitsPerSample: 8, 8
+    entry(259, kShort, 1, 8);           // Compression: deflate
+    entry(262, kShort, 1, 0);           // PhotometricInterpretation: min-is-white
+    entry(273, kLong, std::uint32_t(offsets.size()), offsetsAt); // StripOffsets
+    entry(277, kShort, 1, 2);                                    // SamplesPerPixel
+    entry(278, kShort, 1, rowsPerStrip);                         // RowsPerStrip
+    entry(279, kLong, std::uint32_t(sizes.size()), sizesAt);     // StripByteCounts
+    entry(338, kShort, 1, 2);                                    // ExtraSamples: unassociated alpha
+    put32(0);
+    return file;
 }
 
 } // namespace
@@ -653,6 +699,30 @@ TEST_CASE("an image whose rows begin near the end of int's range is refused, not
     const ImageBuffer image = readOrFail(withRowOrigin(0));
     CHECK(image.height == int(kHeight));
     CHECK(readOrFail(withRowOrigin(kLimit - kHeight)).pixels == image.pixels);
+}
+
+TEST_CASE("a min-is-white TIFF with alpha in deflated strips reads inverted, within its buffer",
+          "[image_io]") {
+    // Strips of 1 MB: OpenImageIO's faulty path (readPixels in the module) wrote a whole strip
+    // past the end of the image, far enough to reach memory that is not there.
+    constexpr int kWidth = 1024, kHeight = 1024, kRowsPerStrip = 512;
+    std::vector<std::uint8_t> values;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            values.insert(values.end(), {std::uint8_t(x * 7 + y * 3), std::uint8_t(x)});
+    const std::string path = scratchFile("min_is_white.tif");
+    std::ofstream(path, std::ios::binary)
+        << minIsWhiteGreyAlphaTiff(kWidth, kHeight, kRowsPerStrip, values);
+    const ImageBuffer image = readOrFail(path);
+    REQUIRE(image.width == kWidth);
+    REQUIRE(image.height == kHeight);
+    std::size_t wrong = 0;
+    for (std::size_t i = 0; i < std::size_t(kWidth) * kHeight; ++i) {
+        const float white = float(255 - values[i * 2]) / 255.0f;
+        wrong += image.pixels[i * 3] != white || image.pixels[i * 3 + 1] != white ||
+                 image.pixels[i * 3 + 2] != white;
+    }
+    CHECK(wrong == 0);
 }
 
 TEST_CASE("sizes an image's header claims are limited before OpenImageIO opens it", "[image_io]") {
