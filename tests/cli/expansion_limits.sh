@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # What a small script or file can make the renderer hold ends in an error before it is held:
 # entities built (drawn or not), primitives after CSG and group expansion (counted before the
-# expansion, by --check too), and images whose header claims more pixels than allowed.
+# expansion, by --check too), and images whose header claims more pixels (or values) than allowed.
 set -u
 crtc=$1
 sanitized=${2:-0} # 1 for an AddressSanitizer build: its shadow memory needs all the address space
@@ -87,6 +87,20 @@ def png(path, width, height, truncate):
 png(sys.argv[1] + "/huge.png", 30000, 30000, False)
 png(sys.argv[1] + "/truncated.png", 30000, 30000, True)
 png(sys.argv[1] + "/small.png", 4, 4, False)
+# A TIFF whose header claims 1000 x 1000 pixels of 1000 channels (RGB and 997 extra), with no
+# pixel data: 4 KB that would take 5 GB to read.
+width, height, channels = 1000, 1000, 1000
+arrays_at = 8 + 2 + 10 * 12 + 4
+bits = struct.pack("<%dH" % channels, *[8] * channels)
+extra = struct.pack("<%dH" % (channels - 3), *[0] * (channels - 3))
+entries = [(256, 4, 1, width), (257, 4, 1, height), (258, 3, channels, arrays_at),
+           (259, 3, 1, 1), (262, 3, 1, 2), (273, 4, 1, 0), (277, 3, 1, channels),
+           (278, 4, 1, height), (279, 4, 1, width * height * channels),
+           (338, 3, channels - 3, arrays_at + len(bits))]
+directory = struct.pack("<H", len(entries)) + b"".join(
+    struct.pack("<HHII", tag, kind, count, value) for tag, kind, count, value in entries)
+with open(sys.argv[1] + "/channels.tif", "wb") as f:
+    f.write(b"II*\0" + struct.pack("<I", 8) + directory + struct.pack("<I", 0) + bits + extra)
 PY
 # The script asks for the image on line 2.
 with_background() { # image
@@ -99,6 +113,11 @@ for image in huge truncated; do
         "the $image PNG: the image error"
     [ -e "$work/$image-out.png" ] && fail "the $image PNG: an image was written"
 done
+with_background channels.tif >"$work/channels.crt"
+expect_status 1 "a TIFF of 1000 x 1000 pixels of 1000 channels" "${limited[@]}" "$crtc" -o "$work/channels-out.png" "$work/channels.crt"
+expect_text "$work/err" "^$work/channels.crt:2:19: error: cannot read \"$work/channels.tif\": it is 1000 x 1000 pixels of 1000 channels, more values than the 100000000 pixels allowed hold at four channels each; raise the limit with --max-image-pixels" \
+    "the 1000-channel TIFF: the image error"
+[ -e "$work/channels-out.png" ] && fail "the 1000-channel TIFF: an image was written"
 with_background small.png >"$work/small.crt"
 expect_status 1 "a 4 x 4 PNG, --max-image-pixels 15" "$crtc" --max-image-pixels 15 -o "$work/small-out.png" "$work/small.crt"
 expect_text "$work/err" "it is 4 x 4 pixels, more than the 15 allowed" "the small PNG over its limit"

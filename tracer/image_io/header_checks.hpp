@@ -13,7 +13,9 @@ namespace crt::tracer::image_io {
 struct SizeCheck {
     CrtImageSizeFn accepts;
     void* context;
-    bool operator()(long long width, long long height) const { return accepts(context, width, height) != 0; }
+    bool operator()(long long width, long long height, int channels = 0) const {
+        return accepts(context, width, height, channels) != 0;
+    }
 };
 
 /// What the module fails with when the host refused a size: the host reports its own reason.

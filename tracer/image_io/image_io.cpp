@@ -87,16 +87,25 @@ void storeError(void* context, const char* message) {
     static_cast<CallContext*>(context)->error = message ? message : "unknown error";
 }
 
-int acceptsSize(void* context, long long width, long long height) {
+// Pixels of more than four channels count as the pixels of four holding as many values: the
+// channels multiply what the image takes to read, and a small header may claim thousands.
+int acceptsSize(void* context, long long width, long long height, int channels) {
     CallContext& call = *static_cast<CallContext*>(context);
+    if (width <= 0 || height <= 0) return 1;
     // Counted in floating point: a header may claim 2^32 x 2^32.
-    if (width > 0 && height > 0 && double(width) * double(height) > double(call.maxPixels)) {
-        call.refusal = "it is " + std::to_string(width) + " x " + std::to_string(height) +
-                       " pixels, more than the " + std::to_string(call.maxPixels) +
-                       " allowed; raise the limit with --max-image-pixels";
-        return 0;
-    }
-    return 1;
+    const double pixels = double(width) * double(height);
+    const double asPixelsOfFour = pixels * std::max(channels, 4) / 4;
+    if (asPixelsOfFour <= double(call.maxPixels)) return 1;
+    const std::string size =
+        "it is " + std::to_string(width) + " x " + std::to_string(height) + " pixels";
+    const std::string allowed = std::to_string(call.maxPixels);
+    call.refusal = pixels > double(call.maxPixels)
+                       ? size + ", more than the " + allowed + " allowed"
+                       : size + " of " + std::to_string(channels) +
+                             " channels, more values than the " + allowed +
+                             " pixels allowed hold at four channels each";
+    call.refusal += "; raise the limit with --max-image-pixels";
+    return 0;
 }
 
 float* allocatePixels(void* context, int width, int height) {

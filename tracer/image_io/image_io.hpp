@@ -51,7 +51,8 @@ bool ensureLoaded(std::string& error);
 /// whether the source was an integer format. On failure, `error` names the path and the cause.
 /// An image of more than `maxPixels` pixels (width × height as its header says) is refused
 /// before any of its pixels is read or room is made for them, and for some formats before
-/// OpenImageIO opens the file (their readers reserve memory for the claimed size there).
+/// OpenImageIO opens the file (their readers reserve memory for the claimed size there); so is
+/// one of more than four channels that holds more values than `maxPixels` pixels of four.
 std::optional<ImageBuffer> readImage(const std::string& path, std::string& error,
                                      bool* eightBit = nullptr,
                                      uint64_t maxPixels = std::numeric_limits<uint64_t>::max());

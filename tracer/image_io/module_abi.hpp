@@ -11,16 +11,17 @@
 extern "C" {
 
 /// Raised whenever a function's signature or meaning changes; the host refuses other versions.
-inline constexpr int kCrtImageIoAbiVersion = 5;
+inline constexpr int kCrtImageIoAbiVersion = 6;
 
 /// The name of the module's one exported function.
 inline constexpr const char* kCrtImageIoEntryName = "crt_image_io_module";
 
-/// Whether the host takes an image of width × height pixels; when not, the host keeps the
-/// reason and the call fails. The module asks it with the size a file's header claims, before
-/// any pixel is read or room is made for one: where a reader would reserve memory for a size
-/// while it opens the file, before OpenImageIO sees the file.
-using CrtImageSizeFn = int (*)(void* context, long long width, long long height);
+/// Whether the host takes an image of width × height pixels of `channels` values each (0 where
+/// a header does not tell before the file is opened: at most four); when not, the host keeps
+/// the reason and the call fails. The module asks it with the size a file's header claims,
+/// before any pixel is read or room is made for one: where a reader would reserve memory for a
+/// size while it opens the file, before OpenImageIO sees the file.
+using CrtImageSizeFn = int (*)(void* context, long long width, long long height, int channels);
 
 /// Returns room for width × height × 3 floats, or null when out of memory.
 using CrtImageAllocFn = float* (*)(void* context, int width, int height);

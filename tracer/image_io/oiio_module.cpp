@@ -197,7 +197,7 @@ int readImage(const char* path, int* isInteger, CrtImageSizeFn acceptsSize, CrtI
 
         // The host may refuse the image before its pixels are read or decoded (a small file
         // can claim a huge image).
-        if (!accepts(width, height)) return sink.fail(kSizeRefused);
+        if (!accepts(width, height, channels)) return sink.fail(kSizeRefused);
         float* out = alloc(context, width, height);
         if (!out) return sink.fail("out of memory");
         std::vector<float> stored(std::size_t(width) * height * channels);
@@ -329,7 +329,7 @@ int describeImage(const char* path, CrtImageInfo* info, CrtImageSizeFn acceptsSi
         auto in = openInput(path, accepts, sink);
         if (!in) return 0;
         const ImageSpec spec = in->spec(); // a copy: seek_subimage replaces in->spec()
-        if (!accepts(spec.width, spec.height)) return sink.fail(kSizeRefused);
+        if (!accepts(spec.width, spec.height, spec.nchannels)) return sink.fail(kSizeRefused);
         *info = CrtImageInfo{};
         info->width = spec.width;
         info->height = spec.height;

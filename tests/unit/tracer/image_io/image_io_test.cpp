@@ -76,47 +76,63 @@ void writePpm(const std::string& path, int width, int height,
     out.write(reinterpret_cast<const char*>(rgb.data()), std::streamsize(rgb.size()));
 }
 
-// A little-endian TIFF of 8-bit grey and alpha, min-is-white (code 0 is white), in strips of
-// `rowsPerStrip` rows deflated by zlib, written by hand: OpenImageIO writes no such file.
-std::string minIsWhiteGreyAlphaTiff(int width, int height, int rowsPerStrip,
-                                    const std::vector<std::uint8_t>& values) {
+// A little-endian TIFF of 8-bit values, `channels` a pixel, in strips of `rowsPerStrip` rows
+// deflated by zlib, written by hand: OpenImageIO writes neither min-is-white files (code 0 is
+// white) nor files of hundreds of channels. The channels past the colour (grey, or RGB when
+// not min-is-white) are extra samples, the first of them unassociated alpha.
+std::string deflatedTiff(int width, int height, int channels, bool minIsWhite, int rowsPerStrip,
+                         const std::vector<std::uint8_t>& values) {
     std::string file = "II*";
     auto put16 = [&](std::uint32_t v) { file += {char(v), char(v >> 8)}; };
     auto put32 = [&](std::uint32_t v) { put16(v & 0xffff), put16(v >> 16); };
     put16(0), put32(0); // the directory's offset, set below
     std::vector<std::uint32_t> offsets, sizes;
-    const std::size_t rowBytes = std::size_t(width) * 2;
+    const std::size_t rowBytes = std::size_t(width) * channels;
     for (int y = 0; y < height; y += rowsPerStrip) {
-        const std::size_t rows = std::size_t(std::min(rowsPerStrip, height - y));
-        std::vector<Bytef> strip(compressBound(uLong(rows * rowBytes)));
+        const std::size_t bytes = std::size_t(std::min(rowsPerStrip, height - y)) * rowBytes;
+        std::vector<Bytef> strip(compressBound(uLong(bytes)));
         uLongf size = uLongf(strip.size());
-        REQUIRE(compress(strip.data(), &size, &values[y * rowBytes], uLong(rows * rowBytes)) ==
-                Z_OK);
+        REQUIRE(compress(strip.data(), &size, &values[y * rowBytes], uLong(bytes)) == Z_OK);
         offsets.push_back(std::uint32_t(file.size()));
         sizes.push_back(std::uint32_t(size));
         file.append(reinterpret_cast<const char*>(strip.data()), size);
     }
+    // A field's values are in its directory entry when they fit in 4 bytes, elsewhere otherwise.
+    auto field = [&](const auto& values) -> std::uint32_t {
+        constexpr std::size_t kSize = sizeof(values[0]);
+        if (values.empty()) return 0;
+        if (values.size() * kSize <= 4)
+            return values.size() == 1 ? values[0] : values[0] | values[1] << 16;
+        if (file.size() % 2) file += '\0';
+        const auto at = std::uint32_t(file.size());
+        for (auto v : values) kSize == 2 ? put16(v) : put32(v);
+        return at;
+    };
+    const int colours = minIsWhite ? 1 : 3;
+    std::vector<std::uint16_t> extraSamples(std::size_t(channels - colours), 0);
+    if (!extraSamples.empty()) extraSamples[0] = 2;
+    const std::uint32_t bitsField = field(std::vector<std::uint16_t>(std::size_t(channels), 8));
+    const std::uint32_t extraField = field(extraSamples);
+    const std::uint32_t offsetsField = field(offsets), sizesField = field(sizes);
     if (file.size() % 2) file += '\0';
-    const auto offsetsAt = std::uint32_t(file.size());
-    for (std::uint32_t offset : offsets) put32(offset);
-    const auto sizesAt = std::uint32_t(file.size());
-    for (std::uint32_t size : sizes) put32(size);
     const auto directoryAt = std::uint32_t(file.size());
     for (int i = 0; i < 4; ++i) file[4 + i] = char(directoryAt >> 8 * i);
     enum : std::uint16_t { kShort = 3, kLong = 4 };
-    auto entry = [&](std::uint16_t tag, std::uint16_t type, std::uint32_t count,
-                     std::uint32_t value) { put16(tag), put16(type), put32(count), put32(value); };
-    put16(10);
-    entry(256, kShort, 1, width);       // ImageWidth
-    entry(257, kShort, 1, height);      // ImageLength
-    entry(258, kShort, 2, 8 | 8 << 16); // BitsPerSample: 8, 8
-    entry(259, kShort, 1, 8);           // Compression: deflate
-    entry(262, kShort, 1, 0);           // PhotometricInterpretation: min-is-white
-    entry(273, kLong, std::uint32_t(offsets.size()), offsetsAt); // StripOffsets
-    entry(277, kShort, 1, 2);                                    // SamplesPerPixel
-    entry(278, kShort, 1, rowsPerStrip);                         // RowsPerStrip
-    entry(279, kLong, std::uint32_t(sizes.size()), sizesAt);     // StripByteCounts
-    entry(338, kShort, 1, 2);                                    // ExtraSamples: unassociated alpha
+    auto entry = [&](std::uint16_t tag, std::uint16_t type, std::size_t count,
+                     std::uint32_t value) {
+        put16(tag), put16(type), put32(std::uint32_t(count)), put32(value);
+    };
+    put16(extraSamples.empty() ? 9 : 10);
+    entry(256, kShort, 1, width);                    // ImageWidth
+    entry(257, kShort, 1, height);                   // ImageLength
+    entry(258, kShort, channels, bitsField);         // BitsPerSample
+    entry(259, kShort, 1, 8);                        // Compression: deflate
+    entry(262, kShort, 1, minIsWhite ? 0 : 2);       // PhotometricInterpretation
+    entry(273, kLong, offsets.size(), offsetsField); // StripOffsets
+    entry(277, kShort, 1, channels);                 // SamplesPerPixel
+    entry(278, kShort, 1, rowsPerStrip);             // RowsPerStrip
+    entry(279, kLong, sizes.size(), sizesField);     // StripByteCounts
+    if (!extraSamples.empty()) entry(338, kShort, extraSamples.size(), extraField); // ExtraSamples
     put32(0);
     return file;
 }
@@ -469,6 +485,43 @@ TEST_CASE("an image of more pixels than allowed is refused from its header", "[i
     CHECK_THAT(error, Catch::Contains("it is 30000 x 30000 pixels"));
 }
 
+TEST_CASE("pixels of more than four channels count as many pixels of four against the limit",
+          "[image_io]") {
+    // 16 x 16 pixels of 1000 channels (RGB and 997 extra): the values of 64,000 pixels of four.
+    constexpr int kSide = 16, kChannels = 1000;
+    std::vector<std::uint8_t> values(std::size_t(kSide) * kSide * kChannels);
+    for (std::size_t i = 0; i < values.size(); ++i)
+        values[i] = std::uint8_t(i % kChannels + i / kChannels);
+    const std::string path = scratchFile("thousand_channels.tif");
+    std::ofstream(path, std::ios::binary)
+        << deflatedTiff(kSide, kSide, kChannels, false, 8, values);
+    std::string error;
+    CHECK_FALSE(readImage(path, error, nullptr, 63'999));
+    CHECK(error ==
+          "cannot read \"" + path +
+              "\": it is 16 x 16 pixels of 1000 channels, more values "
+              "than the 63999 pixels allowed hold at four channels each; raise the limit with "
+              "--max-image-pixels");
+    error.clear();
+    CHECK_FALSE(describeImage(path, error, 63'999));
+    CHECK_THAT(error, Catch::Contains("of 1000 channels"));
+    // At the limit the image is read: its first three channels.
+    const std::optional<ImageBuffer> image = readImage(path, error, nullptr, 64'000);
+    INFO(error);
+    REQUIRE(image);
+    std::size_t wrong = 0;
+    for (std::size_t pixel = 0; pixel < std::size_t(kSide) * kSide; ++pixel)
+        for (std::size_t c = 0; c < 3; ++c)
+            wrong += image->pixels[pixel * 3 + c] != float(values[pixel * kChannels + c]) / 255.0f;
+    CHECK(wrong == 0);
+    // Up to four channels only the pixels count.
+    const std::string rgba = scratchFile("rgba_16.png");
+    REQUIRE(writeImage(rgba,
+                       ImageBuffer{kSide, kSide, 4, std::vector<float>(kSide * kSide * 4, 0.5f)},
+                       {}, error));
+    CHECK(readImage(rgba, error, nullptr, kSide * kSide));
+}
+
 TEST_CASE("concurrent writes and reads of different files", "[image_io]") {
     constexpr int kThreads = 6;
     std::vector<int> failures(kThreads, 0);
@@ -712,7 +765,7 @@ TEST_CASE("a min-is-white TIFF with alpha in deflated strips reads inverted, wit
             values.insert(values.end(), {std::uint8_t(x * 7 + y * 3), std::uint8_t(x)});
     const std::string path = scratchFile("min_is_white.tif");
     std::ofstream(path, std::ios::binary)
-        << minIsWhiteGreyAlphaTiff(kWidth, kHeight, kRowsPerStrip, values);
+        << deflatedTiff(kWidth, kHeight, 2, true, kRowsPerStrip, values);
     const ImageBuffer image = readOrFail(path);
     REQUIRE(image.width == kWidth);
     REQUIRE(image.height == kHeight);
