@@ -180,6 +180,20 @@ bool dataWindowInRange(const ImageSpec& spec) {
     return inRange(spec.x, spec.width) && inRange(spec.y, spec.height) && inRange(spec.z, spec.depth);
 }
 
+// OpenImageIO 2.4's TIFF reader unpacks CMYK values of other than 8 or 16 bits into a buffer
+// sized for the RGB it converts them to, writing past its end (fixed upstream after 2.4, in
+// OpenImageIO's pull request 5296; a valid 64 × 64 file of 4-bit CMYK is enough). The bits
+// of such a file's values, or zero.
+int cmykBitsUnpackedPastBuffer(const ImageInput& in) {
+    constexpr int kTiffSeparated = 5; // TIFF 6.0's PhotometricInterpretation for CMYK
+    const ImageSpec& spec = in.spec();
+    if (std::string_view(in.format_name()) != "tiff" ||
+        spec.get_int_attribute("tiff:PhotometricInterpretation", -1) != kTiffSeparated)
+        return 0;
+    const int bits = spec.get_int_attribute("oiio:BitsPerSample", 8);
+    return bits == 8 || bits == 16 ? 0 : bits;
+}
+
 int readImage(const char* path, int* isInteger, CrtImageSizeFn acceptsSize, CrtImageAllocFn alloc,
               CrtImageErrorFn error, void* context) {
     const ErrorSink sink{error, context};
@@ -194,6 +208,9 @@ int readImage(const char* path, int* isInteger, CrtImageSizeFn acceptsSize, CrtI
         if (width < 1 || height < 1 || channels < 1) return sink.fail("the image is empty");
         if (!dataWindowInRange(spec))
             return sink.fail("damaged image file: its pixels lie too far from the origin");
+        if (const int bits = cmykBitsUnpackedPastBuffer(*in))
+            return sink.fail("CMYK TIFF images of " + std::to_string(bits) +
+                             "-bit values are not supported (convert the file to 8 or 16 bits)");
 
         // The host may refuse the image before its pixels are read or decoded (a small file
         // can claim a huge image).

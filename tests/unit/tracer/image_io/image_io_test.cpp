@@ -778,6 +778,22 @@ TEST_CASE("a min-is-white TIFF with alpha in deflated strips reads inverted, wit
     CHECK(wrong == 0);
 }
 
+TEST_CASE("CMYK TIFFs of values OpenImageIO 2.4 unpacks past its buffer are refused",
+          "[image_io]") {
+    // 16 x 16 pixels of 4-bit CMYK, uncompressed, in one strip.
+    const std::string path = CRT_FUZZ_REGRESSIONS_DIR "/image/tiff-cmyk-4-bit.tif";
+    std::string error;
+    CHECK_FALSE(readImage(path, error));
+    CHECK(error ==
+          "cannot read \"" + path +
+              "\": CMYK TIFF images of 4-bit values are not supported (convert the file to "
+              "8 or 16 bits)");
+    // Its header is read, as the size limit needs it.
+    const std::optional<ImageInfo> info = describeImage(path, error);
+    REQUIRE(info);
+    CHECK(info->width == 16);
+}
+
 TEST_CASE("sizes an image's header claims are limited before OpenImageIO opens it", "[image_io]") {
     auto writeBytes = [](const std::string& path, const std::string& bytes) {
         std::ofstream(path, std::ios::binary) << bytes;
