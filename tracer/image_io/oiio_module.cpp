@@ -112,23 +112,30 @@ TypeDesc readType(const ImageSpec& spec, TypeDesc wanted) {
     return spec.format == wanted && spec.channelformats.empty() ? OIIO::TypeUnknown : wanted;
 }
 
-// OpenImageIO 2.4's TIFF reader, asked for several rows of a min-is-white image stored in
-// deflated strips of 8- or 16-bit values, inverts a strip's length times the channel count
-// from each strip's start, past the end of the caller's buffer (found by tests/fuzz/fuzz_image;
-// a valid grey-and-alpha file is enough). Asked for one row at a time, it inverts the row it
-// decoded, in every kind of min-is-white file.
-bool invertsPastItsBuffer(const ImageInput& in) {
+// Whether OpenImageIO 2.4 must be asked for a TIFF a row at a time; asked for many rows:
+// - of a min-is-white image of more than one channel stored in deflated strips of 8- or 16-bit
+//   values, it inverts a strip's length times the channel count from each strip's start, past
+//   the end of the caller's buffer (found by tests/fuzz/fuzz_image; a valid grey-and-alpha
+//   file is enough); a row at a time, it inverts the row it decoded;
+// - it rounds their count up to a multiple of the rows per strip, in `int`: a strip that
+//   claims nearly 2^31 rows or more made a 16 × 16 file take forever or abort. A strip longer
+//   than the image holds the image, however long it claims to be; OpenImageIO leaves the
+//   count out of the spec where it does not fit in `int`, and where the file does not give
+//   it (one strip).
+bool mustReadByRows(const ImageInput& in) {
     constexpr int kTiffMinIsWhite = 0; // TIFF 6.0's PhotometricInterpretation for it
     const ImageSpec& spec = in.spec();
-    return std::string_view(in.format_name()) == "tiff" && spec.tile_width == 0 &&
-           spec.nchannels > 1 &&
-           spec.get_int_attribute("tiff:PhotometricInterpretation", -1) == kTiffMinIsWhite;
+    if (std::string_view(in.format_name()) != "tiff" || spec.tile_width != 0) return false;
+    const int rowsPerStrip = spec.get_int_attribute("tiff:RowsPerStrip", 0);
+    return rowsPerStrip < 1 || rowsPerStrip > spec.height ||
+           (spec.nchannels > 1 &&
+            spec.get_int_attribute("tiff:PhotometricInterpretation", -1) == kTiffMinIsWhite);
 }
 
 // Every pixel of the image, as `type` (readType), into `data`.
 bool readPixels(ImageInput& in, TypeDesc type, void* data) {
     const ImageSpec& spec = in.spec();
-    if (!invertsPastItsBuffer(in)) return in.read_image(0, 0, 0, spec.nchannels, type, data);
+    if (!mustReadByRows(in)) return in.read_image(0, 0, 0, spec.nchannels, type, data);
     const std::size_t valueBytes = type == OIIO::TypeUnknown ? spec.format.size() : type.size();
     const std::size_t rowBytes = std::size_t(spec.width) * spec.nchannels * valueBytes;
     auto* row = static_cast<unsigned char*>(data);

@@ -80,19 +80,21 @@ void writePpm(const std::string& path, int width, int height,
 // deflated by zlib, written by hand: OpenImageIO writes neither min-is-white files (code 0 is
 // white) nor files of hundreds of channels. The channels past the colour (grey, or RGB when
 // not min-is-white) are extra samples, the first of them unassociated alpha.
-std::string deflatedTiff(int width, int height, int channels, bool minIsWhite, int rowsPerStrip,
-                         const std::vector<std::uint8_t>& values) {
+std::string deflatedTiff(int width, int height, int channels, bool minIsWhite,
+                         std::uint32_t rowsPerStrip, const std::vector<std::uint8_t>& values) {
     std::string file = "II*";
     auto put16 = [&](std::uint32_t v) { file += {char(v), char(v >> 8)}; };
     auto put32 = [&](std::uint32_t v) { put16(v & 0xffff), put16(v >> 16); };
     put16(0), put32(0); // the directory's offset, set below
     std::vector<std::uint32_t> offsets, sizes;
     const std::size_t rowBytes = std::size_t(width) * channels;
-    for (int y = 0; y < height; y += rowsPerStrip) {
-        const std::size_t bytes = std::size_t(std::min(rowsPerStrip, height - y)) * rowBytes;
+    for (std::int64_t y = 0; y < height; y += rowsPerStrip) {
+        const std::size_t bytes =
+            std::size_t(std::min<std::int64_t>(rowsPerStrip, height - y)) * rowBytes;
         std::vector<Bytef> strip(compressBound(uLong(bytes)));
         uLongf size = uLongf(strip.size());
-        REQUIRE(compress(strip.data(), &size, &values[y * rowBytes], uLong(bytes)) == Z_OK);
+        REQUIRE(compress(strip.data(), &size, &values[std::size_t(y) * rowBytes], uLong(bytes)) ==
+                Z_OK);
         offsets.push_back(std::uint32_t(file.size()));
         sizes.push_back(std::uint32_t(size));
         file.append(reinterpret_cast<const char*>(strip.data()), size);
@@ -130,7 +132,7 @@ std::string deflatedTiff(int width, int height, int channels, bool minIsWhite, i
     entry(262, kShort, 1, minIsWhite ? 0 : 2);       // PhotometricInterpretation
     entry(273, kLong, offsets.size(), offsetsField); // StripOffsets
     entry(277, kShort, 1, channels);                 // SamplesPerPixel
-    entry(278, kShort, 1, rowsPerStrip);             // RowsPerStrip
+    entry(278, kLong, 1, rowsPerStrip);              // RowsPerStrip
     entry(279, kLong, sizes.size(), sizesField);     // StripByteCounts
     if (!extraSamples.empty()) entry(338, kShort, extraSamples.size(), extraField); // ExtraSamples
     put32(0);
@@ -776,6 +778,26 @@ TEST_CASE("a min-is-white TIFF with alpha in deflated strips reads inverted, wit
                  image.pixels[i * 3 + 2] != white;
     }
     CHECK(wrong == 0);
+}
+
+TEST_CASE("a TIFF strip of more rows than the image holds the image, whatever it claims",
+          "[image_io]") {
+    // Nearly 2^31 rows or more a strip: OpenImageIO 2.4 took forever over the whole image
+    // or aborted (readPixels in the module).
+    constexpr int kSide = 16;
+    std::vector<std::uint8_t> values(std::size_t(kSide) * kSide * 3);
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = std::uint8_t(i * 5);
+    for (std::uint32_t rowsPerStrip : {32u, 2'147'000'000u, 2'147'483'648u, 4'000'000'000u}) {
+        INFO(rowsPerStrip);
+        const std::string path = scratchFile("strip_" + std::to_string(rowsPerStrip) + ".tif");
+        std::ofstream(path, std::ios::binary)
+            << deflatedTiff(kSide, kSide, 3, false, rowsPerStrip, values);
+        const ImageBuffer image = readOrFail(path);
+        std::size_t wrong = 0;
+        for (std::size_t i = 0; i < values.size(); ++i)
+            wrong += image.pixels[i] != float(values[i]) / 255.0f;
+        CHECK(wrong == 0);
+    }
 }
 
 TEST_CASE("CMYK TIFFs of values OpenImageIO 2.4 unpacks past its buffer are refused",
