@@ -17,6 +17,7 @@ packages=(
     neovim  # the language server's end-to-end test (tests/lsp/nvim)
     emacs-nox elpa-eglot # the Emacs mode's end-to-end test (tests/editors/emacs)
     unzip # the VS Code package's test opens the .vsix (tests/editors/vscode)
+    strace # the files a short render creates (tests/cli/resume.sh)
     go-md2man # the manual pages, from docs/man/*.md
     dpkg-dev file # the Debian package: dpkg-shlibdeps computes Depends, on files file finds ELF
     man-db    # the install tests read the installed manual pages with man

@@ -139,6 +139,12 @@ void addOutputOptions(CLI::App& app, Options& o) {
     app.add_flag("--continue", o.resume,
                  "finish an interrupted render of the same output, rendering only what it had not done")
         ->group(group);
+    app.add_option("--resume-log-after", o.resumeLogAfter,
+                   "log the tiles --continue reuses once a frame has rendered S seconds "
+                   "(default 5; 0: from the start)")
+        ->check(numberIn(0.0, 1e6, "a number of seconds from 0 to 1000000"))
+        ->type_name("S")
+        ->group(group);
     app.add_option("--fps", o.fps, "frames per second of an animated GIF (default 15)")
         ->check(numberIn(1e-3, 100.0, "a number from 0.001 to 100"))
         ->type_name("F")

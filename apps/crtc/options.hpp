@@ -47,6 +47,8 @@ struct Options {
     int pngCompression = -1; ///< --png-compression 0-9; -1: the image writer's default
     bool stats = false; ///< --stats
     bool resume = false; ///< --continue: finish what an interrupted render of the same output began
+    /// --resume-log-after: seconds a frame renders before its tiles go into the resume log
+    double resumeLogAfter = 5;
     scene::QualityOverrides quality;
     std::optional<tracer::Tile> region; ///< --region: the part of the image rendered
     bool alpha = false; ///< --alpha: a fourth channel, the background transparent

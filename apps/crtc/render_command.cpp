@@ -365,17 +365,15 @@ int RenderRun::openLog() {
             return 2;
         }
     }
-    if (!log_->open(path, options_.resume, error)) {
-        if (options_.resume) {
-            printError(error);
-            return 2;
-        }
-        // The log only helps after an interruption: render without it (a full disk also
-        // stops the output, which reports it).
-        std::cerr << "crtc: warning: " << lang::terminalSafe(error)
-                  << "; the render cannot be continued if it is interrupted\n";
-        log_->remove();
-        log_.reset();
+    // A continued render rewrites its log at once, so that a log it cannot write is said
+    // before any work.
+    log_->prepare(path, options_.resume,
+                  std::chrono::duration_cast<ResumeLog::Clock::duration>(
+                      std::chrono::duration<double>(options_.resumeLogAfter)),
+                  [this] { updateStopNote(); });
+    if (options_.resume && !log_->start(error)) {
+        printError(error);
+        return 2;
     }
     return 0;
 }
@@ -395,9 +393,10 @@ void RenderRun::updateStopNote() {
         written =
             fmt::format("frames {} to {} written ({} to {})", written_.front(), written_.back(),
                         plan_.target(written_.front()), plan_.target(written_.back()));
-    setStopNote(
-        fmt::format("crtc: interrupted; {}{}\n", written,
-                    log_ ? "; crtc --continue with the same options finishes the render" : ""));
+    setStopNote(fmt::format("crtc: interrupted; {}{}\n", written,
+                            log_ && log_->started()
+                                ? "; crtc --continue with the same options finishes the render"
+                                : ""));
 }
 
 int RenderRun::reuseUnchanged(int frame) {
@@ -507,7 +506,8 @@ int RenderRun::run(const CompileFrame& compileFrame) {
         written_.push_back(frame);
         updateStopNote();
         progress_.finishFrame();
-        if (log_) log_->frameDone(frame);
+        // After the last frame the log goes: a record of it would only create the file.
+        if (log_ && frame + 1 < frames_.end()) log_->frameDone(frame);
     }
     std::string error;
     if (plan_.gif && !image_io::writeAnimatedGif(plan_.path, gifFrames_, options_.fps, error)) {

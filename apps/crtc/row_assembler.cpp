@@ -15,6 +15,10 @@ void RowAssembler::add(const tracer::TileResult& result) {
     const size_t tileRowValues = static_cast<size_t>(tile.width()) * channels;
     for (int y = tile.y0; y < tile.y1; ++y) {
         std::vector<float>& row = pending_[y];
+        if (row.empty() && !spareRows_.empty()) {
+            row = std::move(spareRows_.back());
+            spareRows_.pop_back();
+        }
         if (row.empty()) row.resize(static_cast<size_t>(width_) * channels);
         std::copy_n(result.pixels.data() + static_cast<size_t>(y - tile.y0) * tileRowValues,
                     tileRowValues, row.data() + static_cast<size_t>(tile.x0) * channels);
@@ -25,15 +29,16 @@ void RowAssembler::add(const tracer::TileResult& result) {
 
 void RowAssembler::emitFinished() {
     const int begin = nextRow_;
-    std::vector<float> band;
+    band_.clear();
     while (nextRow_ < static_cast<int>(pixelsLeft_.size()) &&
            pixelsLeft_[static_cast<size_t>(nextRow_)] == 0) {
         auto row = pending_.find(nextRow_);
-        band.insert(band.end(), row->second.begin(), row->second.end());
+        band_.insert(band_.end(), row->second.begin(), row->second.end());
+        spareRows_.push_back(std::move(row->second));
         pending_.erase(row);
         ++nextRow_;
     }
-    if (nextRow_ > begin) emit_(begin, nextRow_, band);
+    if (nextRow_ > begin) emit_(begin, nextRow_, band_);
 }
 
 } // namespace crt::crtc

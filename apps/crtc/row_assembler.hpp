@@ -33,6 +33,10 @@ private:
     std::vector<int> pixelsLeft_;               ///< per row of the image
     std::map<int, std::vector<float>> pending_; ///< rows begun but not emitted
     int nextRow_ = 0;                           ///< the first row not emitted
+    // Kept for the next rows and bands: fresh memory costs a page fault every 4 KB, which
+    // for a simple scene is a good part of the time its rows take to trace.
+    std::vector<std::vector<float>> spareRows_;
+    std::vector<float> band_;
 };
 
 } // namespace crt::crtc

@@ -16,7 +16,15 @@ StreamedOutput::~StreamedOutput() {
 }
 
 void StreamedOutput::addRows(int yBegin, int yEnd, std::span<const float> pixels) {
-    Band band{yBegin, yEnd, std::vector<float>(pixels.begin(), pixels.end())};
+    Band band{yBegin, yEnd, {}};
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!spare_.empty()) {
+            band.pixels = std::move(spare_.back());
+            spare_.pop_back();
+        }
+    }
+    band.pixels.assign(pixels.begin(), pixels.end());
     if (channels_ == 4) image_io::straightenAlpha(band.pixels); // files take straight alpha
     {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -51,6 +59,8 @@ void StreamedOutput::write() {
             stream.reset();
             failed_ = true;
         }
+        std::lock_guard<std::mutex> lock(mutex_);
+        spare_.push_back(std::move(band.pixels));
     }
     std::lock_guard<std::mutex> lock(mutex_);
     stream_ = std::move(stream);

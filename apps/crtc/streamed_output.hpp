@@ -53,6 +53,8 @@ private:
     std::mutex mutex_;
     std::condition_variable ready_;
     std::deque<Band> bands_;
+    /// Buffers of bands written, for the next ones: fresh memory costs a page fault every 4 KB.
+    std::vector<std::vector<float>> spare_;
     bool noMoreRows_ = false;
     std::thread writer_;
 };

@@ -22,11 +22,12 @@ Scene {
 CRT
 
 # Starts a one-thread render in the background, waits until its log holds some tiles (or the
-# file `until` exists), then sends `signal`; leaves the exit status in $status.
+# file `until` exists), then sends `signal`; leaves the exit status in $status. The render logs
+# its tiles from the start, or once it has rendered $LOG_AFTER seconds.
 interrupt_render() { # signal log until crtc-arguments...
     local signal=$1 log=$2 until=$3
     shift 3
-    "$crtc" --threads 1 "$@" >"$work/out" 2>"$work/err" &
+    "$crtc" --threads 1 --resume-log-after "${LOG_AFTER:-0}" "$@" >"$work/out" 2>"$work/err" &
     local pid=$!
     for _ in $(seq 600); do
         if [ -n "$until" ]; then [ -e "$until" ] && break
@@ -77,6 +78,49 @@ expect_status 0 "--continue frames" "$crtc" --continue --frames 3 --width 240 --
 for f in f0 f1 f2; do
     cmp -s "$work/frames/$f.png" "$work/whole_frames/$f.png" || fail "continued frame $f differs"
 done
+
+# By default a frame's tiles are logged once it has rendered five seconds: a render stopped
+# sooner leaves no log, and says that there is nothing to continue.
+"$crtc" --threads 1 -o "$work/d.png" "$work/scene.crt" >"$work/out" 2>"$work/err" &
+pid=$!
+for _ in $(seq 600); do
+    grep -q "crtc: 30%" "$work/err" && break
+    sleep 0.05
+done
+kill -INT $pid
+wait $pid
+status=$?
+[ "$status" = 130 ] || fail "Ctrl-C before the log started: exit status $status, expected 130"
+grep -q -- "--continue" "$work/err" && fail "Ctrl-C before the log started offers --continue"
+expect_text "$work/err" "interrupted; no image written" "Ctrl-C before the log started says so"
+[ -e "$work/.d.png.crtc-resume" ] && fail "a render stopped before its log started left a log"
+
+# A log started during the frame: the tiles traced before it are traced again, the rest
+# reused, and the image is the same bits.
+expect_status 0 "uninterrupted heavier render" "$crtc" -q --supersampling 6 -o "$work/whole6.png" "$work/scene.crt"
+LOG_AFTER=0.3 interrupt_render INT "$work/.e.png.crtc-resume" "" --supersampling 6 \
+    -o "$work/e.png" "$work/scene.crt"
+[ "$status" = 130 ] || fail "Ctrl-C after the log started: exit status $status, expected 130"
+expect_text "$work/err" "interrupted; no image written; crtc --continue" "the note offers --continue once the log started"
+expect_status 0 "--continue of a log started late" "$crtc" --continue --supersampling 6 -o "$work/e.png" "$work/scene.crt"
+expect_text "$work/err" "continuing .*e.png: [0-9]+ of 690 tiles were rendered before" "--continue reuses the tiles logged"
+cmp -s "$work/e.png" "$work/whole6.png" || fail "the render continued from a late log differs"
+
+# A render that ends before the delay creates no file but its image (seen by strace, which
+# lists every file the process creates).
+if command -v strace >/dev/null; then
+    expect_status 0 "a short render under strace" strace -f -qq -o "$work/trace" -e trace=%file \
+        "$crtc" -q -o "$work/f.png" "$work/scene.crt"
+    created=$(grep -E '^[0-9]+ +((open|openat)\(.*O_CREAT|(creat|mkdir|mkdirat|link|linkat|symlink|symlinkat)\()' \
+        "$work/trace" | grep -v -- '= -1 E' | grep -oE '"[^"]*"' | head -n 1000 | sort -u | tr '\n' ' ')
+    case $created in
+    "\"$work/.f.png."*".tmp\" ") ;;
+    *) fail "a short render created more than its image's temporary file: $created" ;;
+    esac
+    [ -e "$work/f.png" ] || fail "the short render wrote no image"
+else
+    echo "SKIP: strace is not installed (scripts/setup.sh installs it): the files a short render creates are not checked"
+fi
 
 expect_status 2 "--continue of a GIF" "$crtc" --continue --frames 3 -o "$work/x.gif" "$work/scene.crt"
 expect_text "$work/err" "cannot finish an animated GIF" "GIF message"

@@ -306,8 +306,8 @@ killed() {
 # Ctrl-C to mpirun during a shared still: the job stops with an error, rank 0 says once what
 # it left (the resume log, no image), and the other ranks say nothing.
 interrupted() {
-    mpi 3 --threads 1 "$here/still.crt" --width 640 --height 480 --supersampling 12 -o "$work/out.png" \
-        >"$work/out" 2>"$work/err" &
+    mpi 3 --threads 1 --resume-log-after 0 "$here/still.crt" --width 640 --height 480 \
+        --supersampling 12 -o "$work/out.png" >"$work/out" 2>"$work/err" &
     local job=$!
     await_progress
     # As a terminal's Ctrl-C would (the job was started in the background, which ignores it).
