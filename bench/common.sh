@@ -2,6 +2,7 @@
 # check, the output folder with a private POV-Ray HOME, and timing helpers.
 #   bench_check_crtc            sets have_crtc (0: measure POV-Ray only); exits 2 if unusable
 #   bench_check_base            sets have_base (1 if $base names a second crtc); exits 2 if unusable
+#   bench_build_commit REV      builds crtc of commit REV and sets base to it (after the folder)
 #   bench_output_folder NAME    sets out, logs, povhome and keep_hint
 #   bench_parse_options SPEC... -- ARGS...
 #                               the script's options (see below); sets crtc from CRTC
@@ -66,6 +67,39 @@ bench_check_base() {
         exit 2
     fi
     have_base=1
+}
+
+# bench_build_commit REV: builds crtc as it was at commit REV of this repository (its tree
+# exported with git archive into $out/base-SHA, configured Release, the crtc target only) and
+# sets base to the binary. With BENCH_OUT, a build left there by an earlier run is reused.
+bench_build_commit() {
+    local rev=$1 sha tree binary
+    if ! sha=$(git -C "$root" rev-parse --verify --quiet "$rev^{commit}"); then
+        echo "$0: --base-commit: '$rev' is not a commit of $root" >&2
+        exit 2
+    fi
+    tree=$out/base-${sha:0:12}
+    if [[ ! -d $tree/build ]]; then
+        echo "building crtc of ${sha:0:12} in $tree (a few minutes) ..." >&2
+        mkdir -p "$tree"
+        git -C "$root" archive "$sha" | tar -x -C "$tree"
+        if ! { cmake -S "$tree" -B "$tree/build" -G Ninja -DCMAKE_BUILD_TYPE=Release &&
+            cmake --build "$tree/build" --target crtc; } >"$logs/base-build.log" 2>&1; then
+            echo "$0: building ${sha:0:12} failed; log: $logs/base-build.log$keep_hint" >&2
+            tail -n 20 "$logs/base-build.log" >&2
+            exit 2
+        fi
+    fi
+    # Where the crtc target's binary is depends on the commit: build/bin/ today, the folder
+    # of its sources before.
+    for binary in "$tree/build/bin/crtc" "$tree/build/lang/crtc" "$tree/build/apps/crtc"; do
+        [[ -x $binary ]] && break
+    done
+    if [[ ! -x $binary ]]; then
+        echo "$0: the build of ${sha:0:12} has no crtc binary (see $logs/base-build.log)" >&2
+        exit 2
+    fi
+    base=$binary
 }
 
 # Output folder: images or generated files, logs, and a private HOME for POV-Ray (so it

@@ -5,7 +5,6 @@
 #include "tracer/renderer.hpp"
 
 #include <functional>
-#include <map>
 #include <span>
 #include <vector>
 
@@ -21,22 +20,24 @@ public:
     RowAssembler(int width, int height, int channels, Emit emit);
 
     /// Takes a finished tile (tiles must not overlap); emits the rows it completes, with those
-    /// below them that were waiting. Holds only the rows not yet emitted.
+    /// below them that were waiting. Holds the rows from the first not emitted to the lowest
+    /// begun, in a buffer kept at the most such rows there were.
     void add(const tracer::TileResult& tile);
 
 private:
-    void emitFinished();
+  void makeRoomFor(int y);
+  float* rowAt(int y) { return ring_.data() + static_cast<size_t>(y % ringRows_) * rowValues_; }
+  void emitFinished();
 
-    int width_;
-    int channels_;
-    Emit emit_;
-    std::vector<int> pixelsLeft_;               ///< per row of the image
-    std::map<int, std::vector<float>> pending_; ///< rows begun but not emitted
-    int nextRow_ = 0;                           ///< the first row not emitted
-    // Kept for the next rows and bands: fresh memory costs a page fault every 4 KB, which
-    // for a simple scene is a good part of the time its rows take to trace.
-    std::vector<std::vector<float>> spareRows_;
-    std::vector<float> band_;
+  size_t channels_;  ///< floats a pixel
+  size_t rowValues_; ///< floats a row
+  Emit emit_;
+  std::vector<int> pixelsLeft_; ///< per row of the image
+  int nextRow_ = 0;             ///< the first row not emitted
+  /// The rows from nextRow_ on, row y in slot y % ringRows_: kept from tile to tile, since
+  /// fresh memory costs a page fault every 4 KB, and emitted from where they lie.
+  std::vector<float> ring_;
+  int ringRows_ = 0;
 };
 
 } // namespace crt::crtc

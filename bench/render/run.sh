@@ -4,14 +4,19 @@
 # alternating, several times. Prints median wall times, their ratio and the
 # RMSE between the two images as a Markdown table. See bench/README.md.
 #
-# usage: bench/render/run.sh [--runs N] [--sizes WxH,WxH] [--scenes a,b] [--base CRTC] [CRTC]
+# usage: bench/render/run.sh [--runs N] [--sizes WxH,WxH] [--scenes a,b]
+#                            [--base CRTC | --base-commit REV] [CRTC]
 #
 #   --runs N      timed runs per tool, scene and size; medians reported (default 3)
 #   --sizes LIST  comma-separated image sizes (default 800x600,1920x1080)
 #   --scenes LIST comma-separated subset of mirror_room,sphere_grid,csg
 #   --base CRTC   a second crtc binary (e.g. the build before a change; default
 #                 $CRTC_BASE), timed in the same runs against the same POV-Ray
-#                 renders; adds columns with its time and its ratio to POV-Ray
+#                 renders; adds columns with its time, its ratio to POV-Ray and
+#                 crtc's time over its own
+#   --base-commit REV
+#                 the base is crtc as it was at commit REV of this repository,
+#                 built first (Release, crtc only) in the output folder
 #   CRTC          path of the crtc binary (default: $CRTC, else build/bin/crtc
 #                 under the repository root)
 #
@@ -35,7 +40,8 @@ runs=3
 sizes=800x600,1920x1080
 scenes=mirror_room,sphere_grid,csg
 base=${CRTC_BASE:-}
-bench_parse_options runs sizes scenes base -- "$@"
+base_commit=
+bench_parse_options runs sizes scenes base base-commit=base_commit -- "$@"
 povray=${POVRAY:-/usr/bin/povray}
 threads=${THREADS:-2}
 
@@ -70,9 +76,15 @@ if ! command -v oiiotool >/dev/null; then
     exit 2
 fi
 
+if [[ -n $base_commit && -n $base ]]; then
+    echo "$0: give --base or --base-commit, not both" >&2
+    exit 2
+fi
+
 bench_check_crtc
-bench_check_base
 bench_output_folder render
+[[ -n $base_commit ]] && bench_build_commit "$base_commit"
+bench_check_base
 
 # ---------------------------------------------------------------------------
 
@@ -165,7 +177,7 @@ echo "POV-Ray: $povray ($(HOME=$povhome "$povray" --version 2>&1 | grep -m1 -o '
 echo "runs per tool, scene and size: $runs (median reported), $threads threads" >&2
 stamp start_all
 
-declare -A P_WALL P_CPU P_PARSE P_TRACE P_SINGLE C_WALL C_CPU C_SINGLE B_WALL RMSE MAXERR OVER2 STATUS STATS
+declare -A P_WALL P_CPU P_PARSE P_TRACE P_SINGLE C_WALL C_CPU C_SINGLE B_WALL B_SINGLE RMSE MAXERR OVER2 STATUS STATS
 
 for w in "${scene_list[@]}"; do
     for s in "${size_list[@]}"; do
@@ -204,7 +216,10 @@ for w in "${scene_list[@]}"; do
                 fi
             done
         done
-        [[ $base_ok -eq 1 && ${#bwalls[@]} -eq $runs ]] && B_WALL[$k]=$(median "${bwalls[@]}")
+        if [[ $base_ok -eq 1 && ${#bwalls[@]} -eq $runs ]]; then
+            B_WALL[$k]=$(median "${bwalls[@]}")
+            B_SINGLE[$k]=${bwalls[*]}
+        fi
         if [[ ${#pwalls[@]} -eq $runs ]]; then
             P_WALL[$k]=$(median "${pwalls[@]}")
             P_CPU[$k]=$(median "${pcpus[@]}")
@@ -238,7 +253,7 @@ total=$(elapsed "$start_all" "$end_all")
 goal_missed=0
 
 base_head='' base_rule=''
-[[ $have_base -eq 1 ]] && base_head=" base (s) | ratio (POV/base) |" base_rule=" ---: | ---: |"
+[[ $have_base -eq 1 ]] && base_head=" base (s) | ratio (POV/base) | crtc/base |" base_rule=" ---: | ---: | ---: |"
 echo
 echo "| scene | size | POV-Ray (s) | crtc (s) | ratio (POV/crtc) | RMSE (/255) | goal met? (ratio ≥ 3, RMSE ≤ 2) |$base_head"
 echo "| --- | --- | ---: | ---: | ---: | ---: | --- |$base_rule"
@@ -270,10 +285,15 @@ for w in "${scene_list[@]}"; do
             bw=${B_WALL[$k]:-}
             if [[ -n $bw && -n $pw ]]; then
                 base_cells=" $bw | $(awk -v a="$pw" -v b="$bw" 'BEGIN { if (b > 0) printf "%.2fx", a / b; else print "inf" }') |"
+                if [[ -n $cw ]]; then
+                    base_cells+=" $(awk -v a="$cw" -v b="$bw" 'BEGIN { if (b > 0) printf "%.3f", a / b; else print "—" }') |"
+                else
+                    base_cells+=" — |"
+                fi
             elif [[ ${STATUS[$k]} == pov-error ]]; then
-                base_cells=" not run | — |"
+                base_cells=" not run | — | — |"
             else
-                base_cells=" ${bw:-error} | — |"
+                base_cells=" ${bw:-error} | — | — |"
             fi
         fi
         echo "| $w | $s | ${pw:-error} | $cw_cell | $ratio | $e_cell | $met |$base_cells"
@@ -284,15 +304,17 @@ echo
 echo "Details: median CPU time (user + system) of the whole process and its ratio, POV-Ray's own"
 echo "parse and trace times (medians), every single wall time in run order, and how the images differ:"
 echo
-echo "| scene | size | POV-Ray CPU (s) | crtc CPU (s) | CPU ratio | POV-Ray parse (s) | POV-Ray trace (s) | POV-Ray runs (s) | crtc runs (s) | max diff (/255) | pixels > 2/255 |"
-echo "| --- | --- | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: |"
+base_runs_head='' base_runs_rule=''
+[[ $have_base -eq 1 ]] && base_runs_head=" base runs (s) |" base_runs_rule=" --- |"
+echo "| scene | size | POV-Ray CPU (s) | crtc CPU (s) | CPU ratio | POV-Ray parse (s) | POV-Ray trace (s) | POV-Ray runs (s) | crtc runs (s) | max diff (/255) | pixels > 2/255 |$base_runs_head"
+echo "| --- | --- | ---: | ---: | ---: | ---: | ---: | --- | --- | ---: | ---: |$base_runs_rule"
 for w in "${scene_list[@]}"; do
     for s in "${size_list[@]}"; do
         k="$w $s"
         cratio=—
         [[ -n ${P_CPU[$k]:-} && -n ${C_CPU[$k]:-} ]] &&
             cratio=$(awk -v a="${P_CPU[$k]}" -v b="${C_CPU[$k]}" 'BEGIN { if (b > 0) printf "%.2fx", a / b; else print "inf" }')
-        echo "| $w | $s | ${P_CPU[$k]:-—} | ${C_CPU[$k]:-—} | $cratio | ${P_PARSE[$k]:-—} | ${P_TRACE[$k]:-—} | ${P_SINGLE[$k]:-—} | ${C_SINGLE[$k]:-—} | ${MAXERR[$k]:-—} | ${OVER2[$k]:-—}${OVER2[$k]:+ %} |"
+        echo "| $w | $s | ${P_CPU[$k]:-—} | ${C_CPU[$k]:-—} | $cratio | ${P_PARSE[$k]:-—} | ${P_TRACE[$k]:-—} | ${P_SINGLE[$k]:-—} | ${C_SINGLE[$k]:-—} | ${MAXERR[$k]:-—} | ${OVER2[$k]:-—}${OVER2[$k]:+ %} |${base_runs_head:+ ${B_SINGLE[$k]:-—} |}"
     done
 done
 

@@ -72,3 +72,31 @@ TEST_CASE("No row is emitted before every pixel of it is finished", "[crtc]") {
     rows.add(tileOf({0, 0, 16, 8}, 2, 3, storage));
     CHECK(calls == 1);
 }
+
+TEST_CASE("Rows held while the rows above them are traced come out whole and in order", "[crtc]") {
+    // One tile column, its tile rows finished in this order: rows below a missing one wait,
+    // and the held rows span more than the buffer held before.
+    const int width = 16, height = 16 * 8;
+    const int order[] = {0, 2, 1, 5, 4, 3, 7, 6};
+    std::vector<float> emitted;
+    int nextRow = 0, calls = 0;
+    bool ordered = true;
+    RowAssembler rows(width, height, 3, [&](int yBegin, int yEnd, std::span<const float> values) {
+        ordered = ordered && yBegin == nextRow && yEnd > yBegin &&
+                  values.size() == static_cast<size_t>(yEnd - yBegin) * width * 3;
+        nextRow = yEnd;
+        ++calls;
+        emitted.insert(emitted.end(), values.begin(), values.end());
+    });
+    std::vector<float> storage;
+    for (int tileRow : order)
+        rows.add(tileOf({0, tileRow * 16, width, tileRow * 16 + 16}, tileRow, 3, storage));
+    CHECK(ordered);
+    CHECK(nextRow == height);
+    CHECK(calls <= 8); // never more than once per tile row
+    std::vector<float> expected;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < 3; ++c) expected.push_back(valueAt(x, y, c));
+    CHECK(emitted == expected);
+}
