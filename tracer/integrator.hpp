@@ -13,7 +13,7 @@
 namespace crt::tracer {
 
 /// The mutable state of one thread while it renders.
-struct TraceContext {
+struct alignas(64) TraceContext {
     SampleRng rng{0, 0, 0};
     QueryScratch scratch;
     RayStats stats;
