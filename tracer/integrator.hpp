@@ -12,7 +12,9 @@
 
 namespace crt::tracer {
 
-/// The mutable state of one thread while it renders.
+/// The mutable state of one thread while it renders. Written for every ray, so it has its
+/// cache lines to itself: one thread's context lives on a stack beside data the other
+/// threads read as often, and sharing a line with it would make the cores take turns at it.
 struct alignas(64) TraceContext {
     SampleRng rng{0, 0, 0};
     QueryScratch scratch;
