@@ -125,9 +125,10 @@ bool TemporaryFile::commit(std::string& error) {
     }
     struct stat status {};
     // A writer that ignored a failed write (a full disk) can leave an empty file and report
-    // success; fsync reports errors that the file system found after the writer's close.
-    if (::fsync(fd_) != 0) error = errnoText();
-    else if (::fstat(fd_, &status) != 0) error = errnoText();
+    // success; close reports what a network file system finds only when the file is flushed.
+    // The file is not synced to disk: that would make every render wait for the disk (tens of
+    // milliseconds on a laptop's), which no image writer does.
+    if (::fstat(fd_, &status) != 0) error = errnoText();
     else if (status.st_size == 0) error = "nothing was written (is the disk full?)";
     else if (::close(fd_) != 0) {
         fd_ = -2; // closed: only the name is left to remove
