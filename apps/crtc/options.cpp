@@ -153,8 +153,8 @@ void addOutputOptions(CLI::App& app, Options& o) {
 
 void addPreviewOptions(CLI::App& app, Options& o) {
     const char* group = "Preview";
-    app.add_option("--port", o.port, "--preview: listen on port N (default: a free port)")
-        ->check(numberIn(1, 65535, "a port number from 1 to 65535"))
+    app.add_option("--port", o.port, "--preview: listen on port N (default 0: a free port)")
+        ->check(numberIn(0, 65535, "a port number from 0 (a free port) to 65535"))
         ->type_name("N")
         ->group(group);
     app.add_flag("--open", o.open, "--preview: open the URL with xdg-open")->group(group);

@@ -6,10 +6,13 @@
 #include "preview/camera_writer.hpp"
 #include "preview_page.hpp"
 
-#include <httplib.h>
 #include <fmt/format.h>
+#include <httplib.h>
+#include <sys/socket.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <stdexcept>
 
@@ -85,6 +88,13 @@ Server::Server(Session& session, EventHub& events, std::string token, std::funct
     // Event streams hold a thread each: room for a few pages beside their requests.
     http_->new_task_queue = [] { return new httplib::ThreadPool(16); };
     http_->set_payload_max_length(1 << 16);
+    // cpp-httplib's own options add SO_REUSEPORT, with which a second preview could listen on
+    // the same port and take half of the first one's requests. SO_REUSEADDR alone lets a
+    // preview start again on a port whose last connections are closing, but not a taken one.
+    http_->set_socket_options([](socket_t sock) {
+        int yes = 1;
+        setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    });
     http_->set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
         if (allowed(req.get_header_value("Host"), req.get_header_value("Origin"), req.get_param_value("token")))
             return httplib::Server::HandlerResponse::Unhandled;
@@ -106,9 +116,19 @@ bool Server::allowed(const std::string& host, const std::string& origin, const s
 }
 
 bool Server::bind(int port, std::string& error) {
+    errno = 0;
     port_ = port == 0 ? http_->bind_to_any_port("127.0.0.1") : (http_->bind_to_port("127.0.0.1", port) ? port : -1);
     if (port_ > 0) return true;
-    error = port == 0 ? "cannot listen on 127.0.0.1" : fmt::format("cannot listen on 127.0.0.1:{}", port);
+    if (port == 0)
+        error = "cannot listen on 127.0.0.1";
+    else if (errno == EADDRINUSE)
+        error = fmt::format("cannot listen on 127.0.0.1:{}: the port is taken (another preview or "
+                            "program listens on it); choose another with --port, or --port 0 "
+                            "for a free one",
+                            port);
+    else
+        error = fmt::format("cannot listen on 127.0.0.1:{}{}", port,
+                            errno != 0 ? fmt::format(": {}", std::strerror(errno)) : "");
     return false;
 }
 
