@@ -35,6 +35,18 @@ void replyError(httplib::Response& res, const std::string& message, int status =
     replyJson(res, {{"error", message}}, status);
 }
 
+/// Why cpp-httplib refused a request with `status`, in the API's words.
+std::string errorReason(const httplib::Request& req, int status) {
+    switch (status) {
+    case 404: return fmt::format("no such request: {} {}", req.method, req.path);
+    case 405: return fmt::format("{} is not a method of {}", req.method, req.path);
+    case 411: return "a POST needs a body (send {} when there is nothing to say)";
+    case 413: return "the body is too large";
+    case 400: return "bad request (a POST needs a body: send {} when there is nothing to say)";
+    default: return fmt::format("refused with status {}", status);
+    }
+}
+
 /// The request's JSON body; throws std::invalid_argument when it is not a JSON object.
 json bodyOf(const httplib::Request& req) {
     json body = json::parse(req.body, nullptr, false);
@@ -98,10 +110,16 @@ Server::Server(Session& session, EventHub& events, std::string token, std::funct
     http_->set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
         if (allowed(req.get_header_value("Host"), req.get_header_value("Origin"), req.get_param_value("token")))
             return httplib::Server::HandlerResponse::Unhandled;
-        res.status = 403;
-        res.set_content("forbidden: open the URL crtc --preview printed\n", "text/plain");
+        replyError(res, "forbidden: open the URL crtc --preview printed", 403);
         return httplib::Server::HandlerResponse::Handled;
     });
+    // What cpp-httplib answers by itself (no such path, no body) is an API error like ours.
+    http_->set_error_handler(httplib::Server::HandlerWithResponse(
+        [](const httplib::Request& req, httplib::Response& res) {
+            if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
+            replyError(res, errorReason(req, res.status), res.status);
+            return httplib::Server::HandlerResponse::Handled;
+        }));
     addRoutes();
     addCameraRoutes();
 }
