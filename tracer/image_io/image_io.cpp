@@ -3,6 +3,7 @@
 #include "tracer/image_io/image_io.hpp"
 
 #include "tracer/image_io/encoding.hpp"
+#include "tracer/image_io/gif_frame_delays.hpp"
 #include "tracer/image_io/module_loader.hpp"
 #include "tracer/image_io/png_writer.hpp"
 #include "tracer/image_io/temporary_file.hpp"
@@ -491,19 +492,18 @@ bool writeAnimatedGif(const std::string& path, const GifFrames& frames, double f
     const CrtImageIoModule* module = moduleFor("cannot write " + quotedName(path), error);
     if (!module) return false;
     const std::vector<const std::uint8_t*> framePointers = frames.framePointers();
-    // GIF keeps a frame's delay in hundredths of a second. OIIO derives it from the rate in
-    // float and truncates, so 100 / delay can come out one short (delay 45 gave 44); a rate of
-    // 400 / (4·delay + 1) puts OIIO's quotient at delay + ¼, which truncates or rounds alike.
-    const long delay = std::clamp(std::lround(100.0 / fps), 1L, 65535L);
+    // OIIO gives every frame the same delay (here 1/100 s); each frame's own, which keep the
+    // rate, are set in the file after.
+    const std::vector<std::uint16_t> delays = gifFrameDelays(int(frames.size()), fps);
     return writeThroughTemporary(path, error, [&](const std::string& temporary, std::string& why) {
         CallContext context;
-        const int ok =
-            module->writeAnimatedGif(temporary.c_str(), frames.width(), frames.height(),
-                                     frames.channels(), int(frames.size()), framePointers.data(),
-                                     400, int(4 * delay + 1), storeError, &context);
+        const int ok = module->writeAnimatedGif(temporary.c_str(), frames.width(), frames.height(),
+                                                frames.channels(), int(frames.size()),
+                                                framePointers.data(), 100, 1, storeError, &context);
         why = context.error;
-        return ok != 0 && readsBack(*module, temporary, frames.width(), frames.height(),
-                                    int(frames.size()), why);
+        return ok != 0 && writeGifDelays(temporary, delays, why) &&
+               readsBack(*module, temporary, frames.width(), frames.height(), int(frames.size()),
+                         why);
     });
 }
 

@@ -4,6 +4,7 @@
 // the module pays OpenImageIO's slow start. CRT_IMAGE_IO_MODULE names the built module.
 // Cases run in declaration order; the first one must see the module still unloaded.
 #include "tracer/image_io/encoding.hpp"
+#include "tracer/image_io/gif_frame_delays.hpp"
 #include "tracer/image_io/image_io.hpp"
 
 #include "../scratch_folder.hpp"
@@ -376,11 +377,17 @@ TEST_CASE("an animated GIF has one subimage per frame, the frame rate, and loops
     CHECK(first.pixels[1] == 1.0f);
     CHECK(first.pixels[2] == 0.0f);
 
-    // 15 fps is a delay of 7/100 s, the nearest GIF can store.
+    // GIF keeps delays in hundredths of a second: at 15 fps the frames alternate 7, 6 and 7
+    // hundredths, so that every third frame ends on the time the rate puts it at.
     REQUIRE(writeAnimatedGif(path, frames, 15.0, {}, error));
-    info = describeImage(path, error);
-    REQUIRE(info);
-    CHECK(info->fps == Approx(100.0 / 7.0));
+    std::optional<std::vector<std::uint16_t>> delays = readGifDelays(path, error);
+    INFO(error);
+    REQUIRE(delays);
+    CHECK(*delays == std::vector<std::uint16_t>{7, 6, 7, 7, 6});
+    REQUIRE(writeAnimatedGif(path, frames, 20.0, {}, error));
+    delays = readGifDelays(path, error);
+    REQUIRE(delays);
+    CHECK(*delays == std::vector<std::uint16_t>{5, 5, 5, 5, 5});
 
     CHECK(writeAnimatedGif(scratchFile("one.gif"), {frames[0]}, 10.0, {}, error));
     CHECK_FALSE(writeAnimatedGif(scratchFile("anim.png"), frames, 20.0, {}, error));
