@@ -29,6 +29,14 @@ TileResult tile(int index, std::vector<float>& storage) {
 
 constexpr size_t kTileBytes = 16 * 16 * 3 * sizeof(float);
 
+/// Sets `log` out to log at `path` (no earlier log kept) and logs `tiles` tiles of one frame.
+void logFrame(ResumeLog& log, const std::string& path, ResumeLog::Clock::duration delay,
+              int frame, uint64_t hash, int tiles, std::vector<float>& storage) {
+    log.prepare(path, false, delay, nullptr);
+    log.beginFrame(frame, hash);
+    for (int i = 0; i < tiles; ++i) log.addTile(frame, tile(i, storage));
+}
+
 } // namespace
 
 TEST_CASE("A frame's tiles are not logged before the delay, and no file is made",
@@ -37,9 +45,7 @@ TEST_CASE("A frame's tiles are not logged before the delay, and no file is made"
     std::vector<float> storage;
     {
         ResumeLog log;
-        log.prepare(dir.path, false, std::chrono::hours(1), nullptr);
-        log.beginFrame(0, 42);
-        for (int i = 0; i < 50; ++i) log.addTile(0, tile(i, storage));
+        logFrame(log, dir.path, std::chrono::hours(1), 0, 42, 50, storage);
         CHECK_FALSE(log.started());
         log.remove(); // the render finished
     }
@@ -73,9 +79,7 @@ TEST_CASE("Tiles reach the file in blocks, within a second, and load back as the
     std::vector<float> storage;
     {
         ResumeLog log;
-        log.prepare(dir.path, false, std::chrono::seconds(0), nullptr);
-        log.beginFrame(3, 7);
-        for (int i = 0; i < 20; ++i) log.addTile(3, tile(i, storage));
+        logFrame(log, dir.path, std::chrono::seconds(0), 3, 7, 20, storage);
         REQUIRE(log.started());
         // The first tile created the file; the others wait for the next block.
         CHECK(dir.size() < 2 * kTileBytes);
@@ -100,9 +104,7 @@ TEST_CASE("A continued log is written again whole, with the tiles it had", "[crt
     std::vector<float> storage;
     {
         ResumeLog log;
-        log.prepare(dir.path, false, std::chrono::seconds(0), nullptr);
-        log.beginFrame(0, 9);
-        for (int i = 0; i < 5; ++i) log.addTile(0, tile(i, storage));
+        logFrame(log, dir.path, std::chrono::seconds(0), 0, 9, 5, storage);
     }
     ResumeLog continued;
     std::string error;
