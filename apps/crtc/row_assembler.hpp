@@ -25,19 +25,19 @@ public:
     void add(const tracer::TileResult& tile);
 
 private:
-  void makeRoomFor(int y);
-  float* rowAt(int y) { return ring_.data() + static_cast<size_t>(y % ringRows_) * rowValues_; }
-  void emitFinished();
+    void makeRoomFor(int y);
+    float* rowAt(int y) { return ring_.data() + static_cast<size_t>(y % ringRows_) * rowValues_; }
+    void emitFinished();
 
-  size_t channels_;  ///< floats a pixel
-  size_t rowValues_; ///< floats a row
-  Emit emit_;
-  std::vector<int> pixelsLeft_; ///< per row of the image
-  int nextRow_ = 0;             ///< the first row not emitted
-  /// The rows from nextRow_ on, row y in slot y % ringRows_: kept from tile to tile, since
-  /// fresh memory costs a page fault every 4 KB, and emitted from where they lie.
-  std::vector<float> ring_;
-  int ringRows_ = 0;
+    size_t channels_;  ///< floats a pixel
+    size_t rowValues_; ///< floats a row
+    Emit emit_;
+    std::vector<int> pixelsLeft_; ///< per row of the image
+    int nextRow_ = 0;             ///< the first row not emitted
+    /// The rows from nextRow_ on, row y in slot y % ringRows_: kept from tile to tile, since
+    /// fresh memory costs a page fault every 4 KB, and emitted from where they lie.
+    std::vector<float> ring_;
+    int ringRows_ = 0;
 };
 
 } // namespace crt::crtc

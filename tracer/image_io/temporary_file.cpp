@@ -126,8 +126,8 @@ bool TemporaryFile::commit(std::string& error) {
     struct stat status {};
     // A writer that ignored a failed write (a full disk) can leave an empty file and report
     // success; close reports what a network file system finds only when the file is flushed.
-    // The file is not synced to disk: that would make every render wait for the disk (tens of
-    // milliseconds on a laptop's), which no image writer does.
+    // The file is not synced to disk: every render would wait for the disk, which image writers
+    // do not make their users do.
     if (::fstat(fd_, &status) != 0) error = errnoText();
     else if (status.st_size == 0) error = "nothing was written (is the disk full?)";
     else if (::close(fd_) != 0) {
