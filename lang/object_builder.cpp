@@ -17,12 +17,22 @@ bool equalsIgnoringCase(std::string_view a, std::string_view b) {
            });
 }
 
-bool isTextureType(ObjectType type) {
-    return type >= ObjectType::Checker && type <= ObjectType::Image;
-}
-
 bool isBumpType(ObjectType type) {
     return type == ObjectType::NoiseBump || type == ObjectType::ImageBump;
+}
+
+bool isTextureType(ObjectType type) {
+    return objectInfo(type).category == ObjectCategory::Texture && !isBumpType(type);
+}
+
+/// Where item `index` of a list attribute is written: the item itself when the value is a
+/// list literal, else the whole value.
+SourceRange itemRange(const Expr* value, size_t index) {
+    if (value->kind == NodeKind::List) {
+        auto* list = static_cast<const ListExpr*>(value);
+        if (index < list->items.size()) return list->items[index]->range;
+    }
+    return value->range;
 }
 
 /// What the fix-it for a missing attribute of this type writes.
@@ -114,6 +124,53 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
     case AttrType::Bump: checkReference(a, v, attr.type); return;
     case AttrType::Gamma: checkGamma(a, v); return;
     case AttrType::Aperture: checkAperture(a, v, attr); return;
+    case AttrType::ColorMap: checkColorMap(a, v); return;
+    case AttrType::Turbulence:
+        if (v.kind == ValueKind::Vec3) {
+            finite(a, v, 3);
+            return;
+        }
+        if (!v.isNumber()) wrongType(a, v, "a float or a vec3");
+        finite(a, v, 1);
+        return;
+    }
+}
+
+/// A colour map: at least two [value, colour] stops, values from 0 to 1 and in order.
+void ObjectBuilder::checkColorMap(const Attribute& a, const Value& v) {
+    if (v.kind != ValueKind::List) wrongType(a, v, "a colour map: a list of [value, colour]");
+    const std::vector<Value>& stops = *v.list;
+    if (stops.size() < 2) {
+        in.fail(a.value->range,
+                fmt::format("a colour map needs at least 2 stops, not {}", stops.size()));
+    }
+    double previous = 0;
+    for (size_t i = 0; i < stops.size(); ++i) {
+        const Value& stop = stops[i];
+        SourceRange where = itemRange(a.value, i);
+        if (stop.kind != ValueKind::List || stop.list->size() != 2 || !(*stop.list)[0].isNumber() ||
+            (*stop.list)[1].kind != ValueKind::Color) {
+            in.fail(where, fmt::format("stop {} of the colour map must be [value, colour], not {}",
+                                       i + 1, in.str(stop)));
+        }
+        double value = (*stop.list)[0].asDouble();
+        if (!(value >= 0 && value <= 1)) {
+            in.fail(where, fmt::format("stop {} of the colour map is at {}; stops lie from 0 to 1",
+                                       i + 1, formatFloat(value)));
+        }
+        if (value < previous) {
+            in.fail(where, fmt::format("stop {} of the colour map ({}) comes before the one ahead "
+                                       "of it ({}); stops go in order",
+                                       i + 1, formatFloat(value), formatFloat(previous)));
+        }
+        for (int k = 0; k < 4; ++k) {
+            if (!std::isfinite((*stop.list)[1].v[k])) {
+                in.fail(where, fmt::format("stop {} of the colour map has a colour that is not "
+                                           "finite",
+                                           i + 1));
+            }
+        }
+        previous = value;
     }
 }
 
@@ -166,7 +223,7 @@ void ObjectBuilder::checkReference(const Attribute& a, const Value& v, AttrType 
         return;
     case AttrType::Texture:
         if (v.kind != ValueKind::Texture || !isTextureType(v.objectType)) {
-            wrongType(a, v, "a texture (Checker, Stripes, Noise, Marble, Wood or Image)");
+            wrongType(a, v, "a texture (a pattern such as Checker or Gradient, or an Image)");
         }
         return;
     default:

@@ -97,6 +97,25 @@ struct ObjectBuilder {
         const Value* v = get(name);
         return v ? scene::Color{v->v[0], v->v[1], v->v[2], v->v[3]} : absent;
     }
+    /// A colour map attribute (checked: stops of [number, colour]).
+    std::vector<scene::ColorStop> colorMap(std::string_view name,
+                                           std::vector<scene::ColorStop> absent) const {
+        const Value* v = get(name);
+        if (!v) return absent;
+        std::vector<scene::ColorStop> stops;
+        for (const Value& stop : *v->list) {
+            const Value& c = (*stop.list)[1];
+            stops.push_back({(*stop.list)[0].asDouble(), {c.v[0], c.v[1], c.v[2], c.v[3]}});
+        }
+        return stops;
+    }
+    /// A float or vec3 attribute as a vec3 (a float on every axis).
+    glm::dvec3 floatOrVec(std::string_view name, glm::dvec3 absent) const {
+        const Value* v = get(name);
+        if (!v) return absent;
+        return v->kind == ValueKind::Vec3 ? glm::dvec3{v->v[0], v->v[1], v->v[2]}
+                                          : glm::dvec3(v->asDouble());
+    }
     std::string text(std::string_view name, const std::string& absent) const {
         const Value* v = get(name);
         return v && v->kind == ValueKind::String ? *v->s : absent;
@@ -138,6 +157,7 @@ struct ObjectBuilder {
     void checkGamma(const Attribute& a, const Value& v);
     void checkAperture(const Attribute& a, const Value& v, const AttributeInfo& attr);
     void checkChoice(const Attribute& a, const Value& v, const AttributeInfo& attr);
+    void checkColorMap(const Attribute& a, const Value& v);
     [[noreturn]] void missing(const AttributeInfo& attr);
     [[noreturn]] void wrongType(const Attribute& a, const Value& v, std::string_view wanted);
     [[noreturn]] void floatForInt(const Attribute& a, const Value& v, std::string_view wanted);

@@ -184,9 +184,65 @@ void readMapping(const ObjectBuilder& b, scene::TextureDesc& t) {
     }
 }
 
-/// Wood's rings wander less than Marble's veins: the one default TextureDesc cannot carry,
-/// since it differs by kind (a unit test checks it against the schema's documented one).
-constexpr double kWoodTurbulence = 0.1;
+/// A pattern's colours: its `colors` map, or a 2015 texture's `a` and `b` (the stops at 0
+/// and 1). Patterns that pick colours by position need as many stops as they have colours.
+void readPatternColors(const ObjectBuilder& b, scene::TextureDesc& t) {
+    if (b.get("colors") && (b.get("a") || b.get("b"))) {
+        b.in.fail(b.where("colors"), fmt::format("{} is given both 'colors' and '{}'; give the "
+                                                 "colour map or the two colours, not both",
+                                                 b.info.name, b.get("a") ? "a" : "b"));
+    }
+    t.colors = b.colorMap("colors", t.colors);
+    if (t.colors.size() == 2) {
+        t.colors[0].color = b.color("a", t.colors[0].color);
+        t.colors[1].color = b.color("b", t.colors[1].color);
+    }
+    size_t wanted = t.kind == scene::TextureKind::Hexagon ? 3 : 2;
+    if (b.get("colors") && scene::isDiscretePattern(t.kind) && t.colors.size() != wanted) {
+        b.in.fail(b.where("colors"), fmt::format("{} shows {} colours, one a stop; this map has {}",
+                                                 b.info.name, wanted, t.colors.size()));
+    }
+}
+
+/// Frequency, phase and waveform (checked by the builder against the choices).
+void readWave(const ObjectBuilder& b, scene::TextureDesc& t) {
+    t.frequency = b.number("frequency", t.frequency);
+    t.phase = b.number("phase", t.phase);
+    t.exponent = b.number("exponent", t.exponent);
+    if (!b.get("waveform")) return;
+    std::string waveform = b.lowerText("waveform");
+    for (size_t i = 0; i < std::size(scene::kWaveformNames); ++i) {
+        if (waveform == scene::kWaveformNames[i]) t.waveform = static_cast<scene::Waveform>(i);
+    }
+}
+
+/// Mandel's most iterations a point: more would make a render look hung.
+constexpr int64_t kMaxIterations = 100000;
+constexpr int64_t kMaxArms = 1000000;
+
+/// The attributes that only some patterns have: arms, bricks, quilts, iterations.
+void readPatternShape(ObjectBuilder& b, scene::TextureDesc& t) {
+    int64_t arms = b.integer("arms", t.arms);
+    if (arms < -kMaxArms || arms > kMaxArms) {
+        b.in.fail(b.where("arms"),
+                  fmt::format("arms must be between {} and {}", -kMaxArms, kMaxArms));
+    }
+    t.arms = static_cast<int>(arms);
+    t.brickSize = b.vec("bricksize", t.brickSize);
+    if (b.get("bricksize") && !(t.brickSize.x > 0 && t.brickSize.y > 0 && t.brickSize.z > 0)) {
+        b.in.fail(b.where("bricksize"), "a brick's size must be positive on every axis");
+    }
+    t.mortar = b.number("mortar", t.mortar);
+    b.nonNegative("mortar");
+    t.control0 = b.number("control0", t.control0);
+    t.control1 = b.number("control1", t.control1);
+    int64_t iterations = b.integer("iterations", t.iterations);
+    if (b.get("iterations") && (iterations < 1 || iterations > kMaxIterations)) {
+        b.in.fail(b.where("iterations"),
+                  fmt::format("iterations must be between 1 and {}", kMaxIterations));
+    }
+    t.iterations = static_cast<int>(iterations);
+}
 
 } // namespace
 
@@ -502,23 +558,32 @@ Value Interpreter::buildBackground(const ObjectBuilder& b) {
 
 Value Interpreter::buildTexture(ObjectBuilder& b) {
     ObjectType type = b.info.type;
-    scene::TextureDesc t;
-    t.kind = static_cast<scene::TextureKind>(static_cast<int>(type) -
-                                             static_cast<int>(ObjectType::Checker));
-    t.a = b.color("a", t.a);
-    t.b = b.color("b", t.b);
+    scene::TextureDesc t = scene::defaultTexture(static_cast<scene::TextureKind>(
+        static_cast<int>(type) - static_cast<int>(ObjectType::Checker)));
+    readPatternColors(b, t);
     t.size = b.number("size", t.size);
     if (b.get("size") && t.size <= 0) fail(b.where("size"), "a texture's size must be positive");
     t.axis = b.vec("axis", t.axis);
-    if (b.get("axis")) b.nonZeroVector("axis", "stripes need a direction");
+    if (b.get("axis")) {
+        b.nonZeroVector("axis", t.kind == scene::TextureKind::Stripes
+                                    ? "stripes need a direction"
+                                    : "a gradient needs a direction");
+    }
     int64_t octaves = b.integer("octaves", t.octaves);
     if (octaves < 1 || octaves > 16) fail(b.where("octaves"), "octaves must be between 1 and 16");
     t.octaves = static_cast<int>(octaves);
-    t.turbulence =
-        b.number("turbulence", type == ObjectType::Wood ? kWoodTurbulence : t.turbulence);
+    if (scene::hasOwnTurbulence(t.kind)) {
+        t.turbulence = b.number("turbulence", t.turbulence);
+    } else {
+        t.displacement = b.floatOrVec("turbulence", t.displacement);
+    }
+    t.omega = b.number("omega", t.omega);
+    t.lambda = b.number("lambda", t.lambda);
+    readWave(b, t);
+    readPatternShape(b, t);
     t.rings = b.number("rings", t.rings);
     t.strength = b.number("strength", t.strength);
-    if (type == ObjectType::Image || type == ObjectType::ImageBump) {
+    if (scene::readsImage(t.kind)) {
         t.file = b.text("file", t.file);
         t.resolvedFile = findFile(b, "file", "image");
         readMapping(b, t);

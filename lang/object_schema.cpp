@@ -203,29 +203,94 @@ constexpr AttributeInfo kMesh[] = {
     CRT_MATERIAL_ATTR,
 };
 
-#define CRT_PATTERN_AB                                                                          \
-    {"a", A::Color, false, "rgb(1,1,1)", "First colour."},                                     \
-        {"b", A::Color, false, "rgb(0,0,0)", "Second colour."},                                \
-        {"size", A::Float, false, "1", "Size of the pattern."}
+// What every pattern may take besides its own attributes (docs/language.md, "Textures").
+// clang-format off
+#define CRT_PATTERN_COLORS(defaultMap)                                                          \
+    {"colors", A::ColorMap, false, defaultMap,                                                  \
+     "The colour map: [[value, colour], ...], values from 0 to 1 in order."}
+#define CRT_PATTERN_WAVE(defaultWave)                                                           \
+    {"frequency", A::Float, false, "1", "The value becomes frac(value * frequency + phase)."},  \
+    {"phase", A::Float, false, "0", "Added to the value times frequency."},                     \
+    {"waveform", A::Choice, false, defaultWave,                                                 \
+     "How the value is shaped: ramp, triangle, sine, scallop, cubic or poly.",                  \
+     scene::kWaveformNames},                                                                    \
+    {"exponent", A::Float, false, "1", "The poly waveform's exponent."}
+#define CRT_PATTERN_TURBULENCE_STEPS                                                            \
+    {"omega", A::Float, false, "0.5", "Each turbulence octave's amplitude over the last's."},   \
+    {"lambda", A::Float, false, "2", "Each turbulence octave's frequency over the last's."}
+#define CRT_PATTERN_TURBULENCE                                                                  \
+    {"turbulence", A::Turbulence, false, "0",                                                   \
+     "How far turbulence moves each point: a float, or a vec3 per axis."},                      \
+    {"octaves", A::Int, false, "6", "Octaves of turbulence, 1 to 16."},                         \
+    CRT_PATTERN_TURBULENCE_STEPS
+// clang-format on
+#define CRT_WHITE_BLACK "[[0, rgb(1, 1, 1)], [1, rgb(0, 0, 0)]]"
+#define CRT_BLACK_WHITE "[[0, rgb(0, 0, 0)], [1, rgb(1, 1, 1)]]"
+#define CRT_PATTERN_AB                                                                             \
+    {"a", A::Color, false, "rgb(1,1,1)", "First colour (the map's stop at 0)."},                   \
+        {"b", A::Color, false, "rgb(0,0,0)", "Second colour (the map's stop at 1)."},              \
+        {"size", A::Float, false, "1", "Size of the pattern."},                                    \
+        CRT_PATTERN_COLORS(CRT_WHITE_BLACK)
+#define CRT_PATTERN(defaultMap)                                                                    \
+    CRT_PATTERN_COLORS(defaultMap), CRT_PATTERN_WAVE("\"ramp\""), CRT_PATTERN_TURBULENCE
 
-constexpr AttributeInfo kChecker[] = {CRT_PATTERN_AB};
+constexpr AttributeInfo kChecker[] = {CRT_PATTERN_AB, CRT_PATTERN_TURBULENCE};
 constexpr AttributeInfo kStripes[] = {
     CRT_PATTERN_AB,
     {"axis", A::Vec3, false, "vec3(1,0,0)", "Direction across the stripes."},
+    CRT_PATTERN_TURBULENCE,
 };
 constexpr AttributeInfo kNoise[] = {
     CRT_PATTERN_AB,
-    {"octaves", A::Int, false, "4", "Layers of Perlin noise."},
+    {"octaves", A::Int, false, "4", "Layers of Perlin noise (and of turbulence), 1 to 16."},
+    {"turbulence", A::Turbulence, false, "0",
+     "How far turbulence moves each point: a float, or a vec3 per axis."},
+    CRT_PATTERN_TURBULENCE_STEPS,
+    CRT_PATTERN_WAVE("\"ramp\""),
 };
 constexpr AttributeInfo kMarble[] = {
     CRT_PATTERN_AB,
     {"turbulence", A::Float, false, "1", "How much the veins wander."},
     {"octaves", A::Int, false, "4", "Layers of noise."},
+    CRT_PATTERN_WAVE("\"ramp\""),
 };
 constexpr AttributeInfo kWood[] = {
     CRT_PATTERN_AB,
     {"turbulence", A::Float, false, "0.1", "How much the rings wander."},
     {"rings", A::Float, false, "8", "Rings per unit."},
+    CRT_PATTERN_WAVE("\"ramp\""),
+};
+constexpr AttributeInfo kGradient[] = {
+    {"axis", A::Vec3, false, "vec3(1,0,0)",
+     "The direction the value grows along, 0 to 1 per unit."},
+    CRT_PATTERN(CRT_BLACK_WHITE),
+};
+constexpr AttributeInfo kPlainPattern[] = {CRT_PATTERN(CRT_BLACK_WHITE)};
+constexpr AttributeInfo kSpiral[] = {
+    {"arms", A::Int, true, "", "How many arms wind around the z axis."},
+    CRT_PATTERN_COLORS(CRT_BLACK_WHITE),
+    CRT_PATTERN_WAVE("\"triangle\""),
+    CRT_PATTERN_TURBULENCE,
+};
+constexpr AttributeInfo kBrick[] = {
+    {"bricksize", A::Vec3, false, "vec3(8,3,4.5)",
+     "A brick's length (x), height (y) and depth (z)."},
+    {"mortar", A::Float, false, "0.5", "The width of the joints."},
+    CRT_PATTERN_COLORS("[[0, rgb(0.5, 0.5, 0.5)], [1, rgb(0.6, 0.15, 0.15)]]"),
+    CRT_PATTERN_TURBULENCE,
+};
+constexpr AttributeInfo kHexagon[] = {
+    CRT_PATTERN_COLORS("[[0, rgb(0, 0, 1)], [0.5, rgb(0, 1, 0)], [1, rgb(1, 0, 0)]]"),
+    CRT_PATTERN_TURBULENCE,
+};
+constexpr AttributeInfo kQuilted[] = {
+    {"control0", A::Float, false, "1", "The first inner control point of each quilt's curve."},
+    {"control1", A::Float, false, "1", "The second inner control point of each quilt's curve."},
+    CRT_PATTERN(CRT_BLACK_WHITE),
+};
+constexpr AttributeInfo kMandel[] = {
+    {"iterations", A::Int, true, "", "The most iterations before a point counts as inside."},
+    CRT_PATTERN(CRT_BLACK_WHITE),
 };
 constexpr AttributeInfo kImage[] = {
     {"file", A::String, true, "", "The image."},
@@ -248,19 +313,24 @@ using C = ObjectCategory;
 using T = ObjectType;
 
 constexpr ObjectInfo kObjects[] = {
-    {T::Settings, "Settings", C::Settings, false, "How to render: camera, lights, image size.", kSettings},
+    {T::Settings, "Settings", C::Settings, false, "How to render: camera, lights, image size.",
+     kSettings},
     {T::Camera, "Camera", C::Camera, false, "A camera (pinhole, lens or spherical).", kCamera},
     {T::PointLight, "PointLight", C::Light, false, "A light shining from a point.", kPointLight},
-    {T::ParallelLight, "ParallelLight", C::Light, false, "Parallel light, like the sun.", kParallelLight},
+    {T::ParallelLight, "ParallelLight", C::Light, false, "Parallel light, like the sun.",
+     kParallelLight},
     {T::SpotLight, "SpotLight", C::Light, false, "A point light limited to a cone.", kSpotLight},
-    {T::AreaLight, "AreaLight", C::Light, false, "A parallelogram that emits light (soft shadows).", kAreaLight},
+    {T::AreaLight, "AreaLight", C::Light, false, "A parallelogram that emits light (soft shadows).",
+     kAreaLight},
     {T::CylinderLight, "CylinderLight", C::Light, false,
      "A segment that emits light, as a fluorescent tube.", kCylinderLight},
     {T::Material, "Material", C::Material, false, "How a surface looks.", kMaterial},
-    {T::Background, "Background", C::Background, false, "What rays that hit nothing see.", kBackground},
+    {T::Background, "Background", C::Background, false, "What rays that hit nothing see.",
+     kBackground},
     {T::Sphere, "Sphere", C::Entity, true, "A sphere (solid).", kSphere},
     {T::Box, "Box", C::Entity, true, "An axis-aligned box (solid).", kBox},
-    {T::Plane, "Plane", C::Entity, true, "An infinite plane; as a solid, the half-space behind its normal.", kPlane},
+    {T::Plane, "Plane", C::Entity, true,
+     "An infinite plane; as a solid, the half-space behind its normal.", kPlane},
     {T::Cylinder, "Cylinder", C::Entity, true, "A cylinder between two points (solid).", kCylinder},
     {T::Cone, "Cone", C::Entity, true, "A cone or truncated cone (solid).", kCone},
     {T::Torus, "Torus", C::Entity, true, "A torus (solid).", kTorus},
@@ -275,7 +345,27 @@ constexpr ObjectInfo kObjects[] = {
     {T::Wood, "Wood", C::Texture, false, "Wood rings.", kWood},
     {T::Image, "Image", C::Texture, false, "An image mapped onto the surface.", kImage},
     {T::NoiseBump, "NoiseBump", C::Texture, false, "Bumps from Perlin noise.", kNoiseBump},
-    {T::ImageBump, "ImageBump", C::Texture, false, "Bumps from an image's grey levels.", kImageBump},
+    {T::ImageBump, "ImageBump", C::Texture, false, "Bumps from an image's grey levels.",
+     kImageBump},
+    {T::Gradient, "Gradient", C::Texture, false, "A value growing along an axis.", kGradient},
+    {T::Onion, "Onion", C::Texture, false, "Concentric spheres, one per unit.", kPlainPattern},
+    {T::Leopard, "Leopard", C::Texture, false, "Regular spots from sines of x, y and z.",
+     kPlainPattern},
+    {T::Radial, "Radial", C::Texture, false, "The angle around the y axis.", kPlainPattern},
+    {T::Spiral, "Spiral", C::Texture, false, "Arms winding around the z axis.", kSpiral},
+    {T::Brick, "Brick", C::Texture, false, "Bricks and mortar.", kBrick},
+    {T::Hexagon, "Hexagon", C::Texture, false, "Hexagons of three colours in the x-z plane.",
+     kHexagon},
+    {T::Boxed, "Boxed", C::Texture, false, "1 at the origin, falling to 0 on a unit cube.",
+     kPlainPattern},
+    {T::Spherical, "Spherical", C::Texture, false,
+     "1 at the origin, falling to 0 on a unit sphere.", kPlainPattern},
+    {T::Cylindrical, "Cylindrical", C::Texture, false,
+     "1 on the y axis, falling to 0 at distance 1 from it.", kPlainPattern},
+    {T::Planar, "Planar", C::Texture, false, "1 on the x-z plane, falling to 0 at distance 1.",
+     kPlainPattern},
+    {T::Quilted, "Quilted", C::Texture, false, "Cushions filling each unit cube.", kQuilted},
+    {T::Mandel, "Mandel", C::Texture, false, "The Mandelbrot set in the x-y plane.", kMandel},
 };
 static_assert(std::size(kObjects) == static_cast<size_t>(ObjectType::Count));
 static_assert(std::size(kSettings) <= kMaxAttributes && std::size(kMaterial) <= kMaxAttributes);
@@ -323,6 +413,8 @@ std::string_view attrTypeName(AttrType type) {
     case A::Bump: return "bump texture";
     case A::Gamma: return "float or \"srgb\"";
     case A::Aperture: return "aperture shape";
+    case A::ColorMap: return "colour map";
+    case A::Turbulence: return "float or vec3";
     }
     return "value";
 }

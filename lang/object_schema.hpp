@@ -37,6 +37,19 @@ enum class ObjectType : uint8_t {
     Image,
     NoiseBump,
     ImageBump,
+    Gradient,
+    Onion,
+    Leopard,
+    Radial,
+    Spiral,
+    Brick,
+    Hexagon,
+    Boxed,
+    Spherical,
+    Cylindrical,
+    Planar,
+    Quilted,
+    Mandel,
     Count,
 };
 
@@ -44,21 +57,23 @@ enum class ObjectCategory : uint8_t { Settings, Camera, Light, Material, Backgro
 
 /// What an attribute accepts.
 enum class AttrType : uint8_t {
-    Float,       ///< a float or an int
-    Int,         ///< an int (a float is an error with a fix-it)
+    Float, ///< a float or an int
+    Int,   ///< an int (a float is an error with a fix-it)
     Bool,
     String,
     Vec3,
     Color,
-    Choice,      ///< a string from `choices` (case-insensitive)
+    Choice, ///< a string from `choices` (case-insensitive)
     Material,
     Camera,
-    Background,  ///< a Background or a color
-    LightList,   ///< a list of lights
-    Texture,     ///< a pattern or Image texture
-    Bump,        ///< a NoiseBump or ImageBump
-    Gamma,       ///< a float > 0, or "srgb"
-    Aperture,    ///< a shape name, or an int >= 3 (polygon sides)
+    Background, ///< a Background or a color
+    LightList,  ///< a list of lights
+    Texture,    ///< a pattern or Image texture
+    Bump,       ///< a NoiseBump or ImageBump
+    Gamma,      ///< a float > 0, or "srgb"
+    Aperture,   ///< a shape name, or an int >= 3 (polygon sides)
+    ColorMap,   ///< a list of [value, colour] pairs
+    Turbulence, ///< a float (the same on every axis) or a vec3
 };
 
 struct AttributeInfo {

@@ -108,6 +108,8 @@ int typeFit(AttrType want, const std::string& type) {
         return object != ObjectType::Count && objectFits(want, objectInfo(object)) ? 0 : -1;
     case AttrType::Gamma: return type == "float" || type == "int" || type == "string" ? 0 : -1;
     case AttrType::Aperture: return type == "int" || type == "string" ? 0 : -1;
+    case AttrType::ColorMap: return type == "list" ? 0 : -1;
+    case AttrType::Turbulence: return type == "float" || type == "int" || type == "vec3" ? 0 : -1;
     }
     return 1;
 }

@@ -44,18 +44,80 @@ struct Modifier {
 };
 
 enum class TextureKind : uint8_t {
-    Checker, Stripes, Noise, Marble, Wood, Image, NoiseBump, ImageBump
+    Checker,
+    Stripes,
+    Noise,
+    Marble,
+    Wood,
+    Image,
+    NoiseBump,
+    ImageBump,
+    Gradient,
+    Onion,
+    Leopard,
+    Radial,
+    Spiral,
+    Brick,
+    Hexagon,
+    Boxed,
+    Spherical,
+    Cylindrical,
+    Planar,
+    Quilted,
+    Mandel
 };
 enum class TextureMapping : uint8_t { Uv, Planar, Spherical, Cylindrical, Cubic };
 
+/// What a pattern's value goes through before its colour map reads it (POV-Ray's wave types).
+enum class Waveform : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
+inline constexpr std::string_view kWaveformNames[] = {"ramp",    "triangle", "sine",
+                                                      "scallop", "cubic",    "poly"};
+
+/// Patterns whose value picks one colour of their map by position (0, 1, 2), not by value.
+inline bool isDiscretePattern(TextureKind kind) {
+    return kind == TextureKind::Checker || kind == TextureKind::Stripes ||
+           kind == TextureKind::Brick || kind == TextureKind::Hexagon;
+}
+/// Textures that read an image file rather than a pattern.
+inline bool readsImage(TextureKind kind) {
+    return kind == TextureKind::Image || kind == TextureKind::ImageBump;
+}
+/// Patterns whose `turbulence` is their own (how their veins or rings wander, as in 2015),
+/// rather than a displacement of the point.
+inline bool hasOwnTurbulence(TextureKind kind) {
+    return kind == TextureKind::Marble || kind == TextureKind::Wood;
+}
+
+/// One entry of a colour map: the colour at a pattern value.
+struct ColorStop {
+    double value = 0;
+    Color color;
+
+    bool operator==(const ColorStop&) const = default;
+};
+
 struct TextureDesc {
     TextureKind kind = TextureKind::Checker;
-    Color a{1, 1, 1, 1};
-    Color b{0, 0, 0, 1};
+    /// The colour map: values non-decreasing in [0, 1]. Discrete patterns use the colours
+    /// by position. A 2015 texture's `a` and `b` are the stops at 0 and 1.
+    std::vector<ColorStop> colors{{0, {1, 1, 1, 1}}, {1, {0, 0, 0, 1}}};
     double size = 1;
-    glm::dvec3 axis{1, 0, 0};  ///< Stripes
-    int octaves = 4;           ///< Noise, Marble, NoiseBump
-    double turbulence = 1;     ///< Marble (1), Wood (0.1)
+    glm::dvec3 axis{1, 0, 0};     ///< Stripes, Gradient
+    int octaves = 6;              ///< the turbulence's; Noise, Marble, NoiseBump: their noise's (4)
+    double turbulence = 1;        ///< Marble (1), Wood (0.1): how the veins or rings wander
+    glm::dvec3 displacement{0.0}; ///< the other patterns' `turbulence`: how far points move
+    double omega = 0.5;           ///< each turbulence octave's amplitude over the last's
+    double lambda = 2;            ///< each turbulence octave's frequency over the last's
+    double frequency = 1;         ///< the value becomes frac(value * frequency + phase)
+    double phase = 0;
+    Waveform waveform = Waveform::Ramp; ///< Spiral: Triangle
+    double exponent = 1;                ///< the poly waveform's
+    int arms = 0;                       ///< Spiral (required)
+    glm::dvec3 brickSize{8, 3, 4.5};    ///< Brick
+    double mortar = 0.5;                ///< Brick: the width of the joints
+    double control0 = 1;                ///< Quilted: the curve of each quilt's edge
+    double control1 = 1;
+    int iterations = 0;        ///< Mandel (required)
     double rings = 8;          ///< Wood
     double strength = 0.5;     ///< bump textures
     std::string file;          ///< Image, ImageBump: as written in the script
@@ -64,6 +126,11 @@ struct TextureDesc {
     std::vector<Modifier> modifiers;
     SourceSpan source;
 };
+
+/// A texture of `kind` with every attribute at that kind's default: where kinds differ from
+/// the defaults above (their colours, Wood's turbulence, the turbulence's octaves, Spiral's
+/// waveform), this is the one place that says so.
+TextureDesc defaultTexture(TextureKind kind);
 
 /// Everything a material is besides its color. Materials that agree on all of it share one
 /// entry of SceneDesc::finishes: a generated scene of 100,000 spheres, each with its own
@@ -240,7 +307,7 @@ struct RenderLimits {
 
 /// The evaluated scene.
 struct SceneDesc {
-    static constexpr int kSchemaVersion = 1;
+    static constexpr int kSchemaVersion = 2;
 
     std::vector<std::string> files; ///< script paths, indexed by SourceSpan::file
     SettingsDesc settings;

@@ -117,32 +117,50 @@ const char* lightKind(LightKind kind) {
 }
 
 const char* textureKind(TextureKind kind) {
-    static const char* names[] = {"Checker", "Stripes", "Noise", "Marble", "Wood", "Image", "NoiseBump", "ImageBump"};
+    static const char* names[] = {
+        "Checker",   "Stripes",  "Noise",     "Marble",      "Wood",   "Image",   "NoiseBump",
+        "ImageBump", "Gradient", "Onion",     "Leopard",     "Radial", "Spiral",  "Brick",
+        "Hexagon",   "Boxed",    "Spherical", "Cylindrical", "Planar", "Quilted", "Mandel"};
+    static_assert(std::size(names) == static_cast<size_t>(TextureKind::Mandel) + 1);
     return names[static_cast<int>(kind)];
 }
 
-/// Writes arrays of numbers on one line ("[0.0, 1.0, 0.0]"): vectors and colors are
-/// read as units, and the dump stays a third as long.
+/// Where the array opening at `open` closes, when it holds only numbers and arrays of
+/// numbers; npos otherwise.
+size_t closeOfNumberArray(const std::string& json, size_t open) {
+    int depth = 0;
+    for (size_t k = open; k < json.size(); ++k) {
+        char c = json[k];
+        if (c == '{' || c == '"') return std::string::npos;
+        if (c == '[' && ++depth > 2) return std::string::npos;
+        if (c == ']' && --depth == 0) return k;
+    }
+    return std::string::npos;
+}
+
+/// Writes arrays of numbers, and arrays of them, on one line ("[0.0, 1.0, 0.0]", a colour
+/// map's "[0.5, [1.0, 0.0, 0.0, 1.0]]"): vectors, colours and stops are read as units, and
+/// the dump stays a third as long.
 std::string compactNumberArrays(const std::string& json) {
     std::string out;
     out.reserve(json.size());
     for (size_t i = 0; i < json.size(); ++i) {
-        if (json[i] == '[') {
-            size_t close = json.find_first_of("[]{}\"", i + 1);
-            if (close != std::string::npos && json[close] == ']') {
-                std::string items;
-                bool number = false;
-                for (size_t k = i + 1; k < close; ++k) {
-                    char c = json[k];
-                    if (c == ' ' || c == '\n') continue;
-                    if (c == ',') items += ", ";
-                    else items += c, number = true;
-                }
-                if (number) {
-                    out += '[' + items + ']';
-                    i = close;
-                    continue;
-                }
+        size_t close = json[i] == '[' ? closeOfNumberArray(json, i) : std::string::npos;
+        if (close != std::string::npos) {
+            std::string items;
+            bool number = false;
+            for (size_t k = i; k <= close; ++k) {
+                char c = json[k];
+                if (c == ' ' || c == '\n') continue;
+                if (c == ',')
+                    items += ", ";
+                else
+                    items += c, number = number || (c != '[' && c != ']');
+            }
+            if (number) {
+                out += items;
+                i = close;
+                continue;
             }
         }
         out += json[i];
@@ -228,6 +246,43 @@ Json materialJson(const MaterialDesc& material, const FinishDesc& m) {
                 {"texture", m.texture}, {"bump", m.bump}, {"source", source(material.source)}};
 }
 
+/// A pattern's keys, in the order of its attributes in docs/scene-json.md.
+void patternJson(const TextureDesc& x, Json& texture) {
+    using K = TextureKind;
+    Json stops = Json::array();
+    for (const ColorStop& stop : x.colors)
+        stops.push_back(Json::array({stop.value, color(stop.color)}));
+    texture["colors"] = stops;
+    bool from2015 = x.kind <= K::Wood;
+    if (from2015) texture["size"] = x.size;
+    if (x.kind == K::Stripes || x.kind == K::Gradient) texture["axis"] = vec(x.axis);
+    if (x.kind == K::Spiral) texture["arms"] = x.arms;
+    if (x.kind == K::Brick) {
+        texture["bricksize"] = vec(x.brickSize);
+        texture["mortar"] = x.mortar;
+    }
+    if (x.kind == K::Quilted) {
+        texture["control0"] = x.control0;
+        texture["control1"] = x.control1;
+    }
+    if (x.kind == K::Mandel) texture["iterations"] = x.iterations;
+    if (x.kind == K::Wood) texture["rings"] = x.rings;
+    if (x.kind != K::Wood) texture["octaves"] = x.octaves;
+    if (hasOwnTurbulence(x.kind)) {
+        texture["turbulence"] = x.turbulence;
+    } else {
+        texture["turbulence"] = vec(x.displacement);
+        texture["omega"] = x.omega;
+        texture["lambda"] = x.lambda;
+    }
+    if (!isDiscretePattern(x.kind)) {
+        texture["frequency"] = x.frequency;
+        texture["phase"] = x.phase;
+        texture["waveform"] = kWaveformNames[static_cast<int>(x.waveform)];
+        texture["exponent"] = x.exponent;
+    }
+}
+
 Json textureJson(const TextureDesc& x) {
     static const char* mappings[] = {"uv", "planar", "spherical", "cylindrical", "cubic"};
     Json texture{{"type", textureKind(x.kind)}};
@@ -244,15 +299,7 @@ Json textureJson(const TextureDesc& x) {
         texture["strength"] = x.strength;
         texture["octaves"] = x.octaves;
         break;
-    default:
-        texture["a"] = color(x.a);
-        texture["b"] = color(x.b);
-        texture["size"] = x.size;
-        if (x.kind == TextureKind::Stripes) texture["axis"] = vec(x.axis);
-        if (x.kind == TextureKind::Noise || x.kind == TextureKind::Marble) texture["octaves"] = x.octaves;
-        if (x.kind == TextureKind::Marble || x.kind == TextureKind::Wood) texture["turbulence"] = x.turbulence;
-        if (x.kind == TextureKind::Wood) texture["rings"] = x.rings;
-        break;
+    default: patternJson(x, texture); break;
     }
     texture["modifiers"] = modifiers(x.modifiers);
     texture["source"] = source(x.source);

@@ -2,7 +2,7 @@
 # Installs everything crt needs to build and test, from Debian 12's packages.
 # Quick and quiet when everything is already installed. Run as root.
 #   scripts/setup.sh          build and test dependencies
-#   scripts/setup.sh --bench  also POV-Ray, Embree and the tools the benchmarks use
+#   scripts/setup.sh --bench  also Embree and the tools the benchmarks use
 #   scripts/setup.sh --fuzz   also clang and its libFuzzer runtime (tests/fuzz/)
 set -euo pipefail
 
@@ -23,6 +23,7 @@ packages=(
     man-db    # the install tests read the installed manual pages with man
     pkg-config libcpp-httplib-dev # crtc --preview's HTTP server
     chromium # crtc --preview's browser test (puppeteer-core, tests/preview)
+    povray # the oracle of the pattern twin tests (tests/render/povray) and the benchmarks' peer
     libopenmpi-dev openmpi-bin # crtc under mpirun (apps/crtc/distributed, tests/mpi)
 )
 # The VS Code extension's tests and package.sh need node and npm. The machines come with
@@ -30,7 +31,7 @@ packages=(
 # where there is none.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 case "${1:-}" in
---bench) packages+=(povray time libembree-dev) ;; # libembree-dev: bench/embree/ only
+--bench) packages+=(time libembree-dev) ;; # libembree-dev: bench/embree/ only
 --fuzz) packages+=(clang libclang-rt-14-dev) ;;
 esac
 

@@ -1,8 +1,9 @@
-// Texture patterns. Checker, stripes, noise, marble and wood are solid (3D) textures.
+// Textures: a pattern read through its colour map, or an image mapped onto the surface.
 #include "tracer/texture.hpp"
 
 #include "tracer/lights.hpp"
 #include "tracer/noise.hpp"
+#include "tracer/patterns/pattern.hpp"
 
 #include <cmath>
 
@@ -10,14 +11,15 @@ namespace crt::tracer {
 
 namespace {
 
-double fract(double x) { return x - std::floor(x); }
-Vec3 mix(const Vec3& a, const Vec3& b, double t) { return a + (b - a) * t; }
+double fract(double x) {
+    return x - std::floor(x);
+}
 
 } // namespace
 
 Texture::Texture(const scene::TextureDesc& desc, const Image* image)
-    : desc_(desc), image_(image), toTexture_(Transform::fromModifiers(desc.modifiers).inverse()), a_(rgb(desc.a)),
-      b_(rgb(desc.b)) {}
+    : desc_(desc), image_(image), toTexture_(Transform::fromModifiers(desc.modifiers).inverse()),
+      colors_(desc.colors) {}
 
 Vec2 Texture::imageCoordinates(const Vec3& p, const Vec2& uv) const {
     switch (desc_.mapping) {
@@ -43,39 +45,20 @@ Vec2 Texture::imageCoordinates(const Vec3& p, const Vec2& uv) const {
 
 Vec3 Texture::color(const Vec3& objectPoint, const Vec2& uv) const {
     Vec3 p = toTexture_.point(objectPoint);
-    double s = desc_.size > 0 ? desc_.size : 1;
     switch (desc_.kind) {
-    case scene::TextureKind::Checker: {
-        // A tiny nudge keeps faces lying exactly on a cell boundary (z = 0 planes) on one color.
-        Vec3 q = p / s + Vec3(1e-9);
-        long sum = static_cast<long>(std::floor(q.x)) + static_cast<long>(std::floor(q.y)) +
-                   static_cast<long>(std::floor(q.z));
-        return (sum & 1) ? b_ : a_;
-    }
-    case scene::TextureKind::Stripes: {
-        double along = glm::dot(p, glm::normalize(desc_.axis)) / s + 1e-9;
-        return (static_cast<long>(std::floor(along)) & 1) ? b_ : a_;
-    }
-    case scene::TextureKind::Noise: return mix(a_, b_, fractalNoise(p / s, desc_.octaves));
-    case scene::TextureKind::Marble: {
-        double t = 0.5 + 0.5 * std::sin((p.x / s + desc_.turbulence * turbulence(p / s, desc_.octaves) * 4) * kPi);
-        return mix(a_, b_, t);
-    }
-    case scene::TextureKind::Wood: {
-        double r = std::sqrt(p.x * p.x + p.z * p.z) / s;
-        double t = fract(desc_.rings * r + desc_.turbulence * 4 * (fractalNoise(p / s, 3) - 0.5));
-        return mix(a_, b_, t < 0.5 ? 2 * t : 2 - 2 * t);
-    }
     case scene::TextureKind::Image:
-        if (!image_ || image_->width == 0) return a_;
+        if (!image_ || image_->width == 0) return colors_.entry(0);
         {
             Vec2 c = imageCoordinates(p, uv);
             return image_->bilinear(c.x, c.y, true);
         }
     case scene::TextureKind::NoiseBump:
-    case scene::TextureKind::ImageBump: break;
+    case scene::TextureKind::ImageBump: return colors_.entry(0);
+    default: break;
     }
-    return a_;
+    double value = patternValue(desc_, p);
+    if (scene::isDiscretePattern(desc_.kind)) return colors_.entry(static_cast<size_t>(value));
+    return colors_.at(value);
 }
 
 double Texture::height(const Vec3& objectPoint, const Vec2& uv) const {

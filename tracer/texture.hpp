@@ -1,8 +1,9 @@
 // Procedural and image textures (spec §5, ext), evaluated in the entity's object space.
 #pragma once
 
-#include "tracer/image.hpp"
 #include "scene/scene_desc.hpp"
+#include "tracer/image.hpp"
+#include "tracer/patterns/color_map.hpp"
 #include "tracer/transform.hpp"
 
 namespace crt::tracer {
@@ -16,7 +17,10 @@ public:
     Vec3 color(const Vec3& objectPoint, const Vec2& uv) const;
     /// A bump texture's height at a point (its gradient perturbs the normal).
     double height(const Vec3& objectPoint, const Vec2& uv) const;
-    bool isBump() const { return desc_.kind == scene::TextureKind::NoiseBump || desc_.kind == scene::TextureKind::ImageBump; }
+    bool isBump() const {
+        return desc_.kind == scene::TextureKind::NoiseBump ||
+               desc_.kind == scene::TextureKind::ImageBump;
+    }
     double strength() const { return desc_.strength; }
     /// Whether height() reads the surface's uv (an ImageBump mapped "uv"), not the point.
     bool heightFromUv() const {
@@ -30,7 +34,7 @@ private:
     scene::TextureDesc desc_;
     const Image* image_;
     Transform toTexture_; ///< object space to texture space (the inverse of its modifiers)
-    Vec3 a_, b_;
+    ColorMap colors_;
 };
 
 } // namespace crt::tracer

@@ -59,7 +59,7 @@ expect_status 1 "the step limit" "$crtc" --check --max-steps 1000 "$work/loop.cr
 expect_text "$work/err" "exceeded 1000 steps" "step limit message"
 
 expect_status 0 "--dump-scene" "$crtc" --dump-scene "$work/good.crt"
-expect_text "$work/out" '"schema": 1' "scene JSON has a schema version"
+expect_text "$work/out" '"schema": 2' "scene JSON has a schema version"
 expect_text "$work/out" '"type": "Sphere"' "scene JSON has the sphere"
 expect_status 0 "--dump-ast" "$crtc" --dump-ast "$work/good.crt"
 expect_text "$work/out" "Object Sphere <1:5-1:51>" "AST dump shows the object and its range"

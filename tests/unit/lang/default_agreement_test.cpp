@@ -74,6 +74,19 @@ constexpr Usage kUsages[] = {
     {ObjectType::NoiseBump, CRT_SPHERE_WITH("Material { bump -> NoiseBump { @ } }")},
     {ObjectType::ImageBump,
      CRT_SPHERE_WITH("Material { bump -> ImageBump { file -> \"b.png\" @ } }")},
+    {ObjectType::Gradient, CRT_SPHERE_WITH("Material { texture -> Gradient { @ } }")},
+    {ObjectType::Onion, CRT_SPHERE_WITH("Material { texture -> Onion { @ } }")},
+    {ObjectType::Leopard, CRT_SPHERE_WITH("Material { texture -> Leopard { @ } }")},
+    {ObjectType::Radial, CRT_SPHERE_WITH("Material { texture -> Radial { @ } }")},
+    {ObjectType::Spiral, CRT_SPHERE_WITH("Material { texture -> Spiral { arms -> 3 @ } }")},
+    {ObjectType::Brick, CRT_SPHERE_WITH("Material { texture -> Brick { @ } }")},
+    {ObjectType::Hexagon, CRT_SPHERE_WITH("Material { texture -> Hexagon { @ } }")},
+    {ObjectType::Boxed, CRT_SPHERE_WITH("Material { texture -> Boxed { @ } }")},
+    {ObjectType::Spherical, CRT_SPHERE_WITH("Material { texture -> Spherical { @ } }")},
+    {ObjectType::Cylindrical, CRT_SPHERE_WITH("Material { texture -> Cylindrical { @ } }")},
+    {ObjectType::Planar, CRT_SPHERE_WITH("Material { texture -> Planar { @ } }")},
+    {ObjectType::Quilted, CRT_SPHERE_WITH("Material { texture -> Quilted { @ } }")},
+    {ObjectType::Mandel, CRT_SPHERE_WITH("Material { texture -> Mandel { iterations -> 20 @ } }")},
 };
 
 /// Defaults documented as a rule rather than a value; each has its own test below.
@@ -164,6 +177,21 @@ std::string otherValue(const AttributeInfo& attr) {
     case AttrType::Camera: return "Camera { position -> vec3(0, 0, -2) pointing -> vec3(0, 1, 0) }";
     case AttrType::LightList:
         return "[PointLight { origin -> vec3(0, 5, 0) color -> rgb(1, 1, 1) }]";
+    case AttrType::ColorMap: { // as many stops as the default, for patterns that need so many
+        std::string stops;
+        size_t count = 0;
+        for (size_t at = attr.defaultText.find("rgb("); at != std::string_view::npos;
+             at = attr.defaultText.find("rgb(", at + 1)) {
+            ++count;
+        }
+        for (size_t i = 0; i < count; ++i) {
+            stops += fmt::format("{}[{}, rgb(0.25, 0.5, {})]", i ? ", " : "",
+                                 static_cast<double>(i) / static_cast<double>(count - 1),
+                                 0.1 * static_cast<double>(i));
+        }
+        return "[" + stops + "]";
+    }
+    case AttrType::Turbulence: return "vec3(0.25, 0.5, 0.75)";
     case AttrType::Texture:
     case AttrType::Bump: return "";
     }

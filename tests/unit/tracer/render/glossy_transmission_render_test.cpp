@@ -35,8 +35,7 @@ scene::SceneDesc glassInFrontOfChecker(double glossiness, int glossySamples) {
     m.desc.settings.recursionDepth = 6; // rays reflected inside the glass get out again
     scene::TextureDesc checker;
     checker.kind = scene::TextureKind::Checker;
-    checker.a = scene::Color{1, 1, 1, 1};
-    checker.b = scene::Color{0, 0, 0, 1};
+    checker.colors = {{0, {1, 1, 1, 1}}, {1, {0, 0, 0, 1}}};
     checker.size = kCell;
     m.desc.textures.push_back(checker);
     ShadingMaterial wall;

@@ -130,8 +130,7 @@ TEST_CASE("Refraction through a glass slab shifts a stripe pattern by what Snell
     m.draw(m.box({-20, -20, 0}, {20, 20, thickness}, m.material(glass(ior))));
     scene::TextureDesc stripes;
     stripes.kind = scene::TextureKind::Stripes;
-    stripes.a = scene::Color{1, 1, 0, 1};
-    stripes.b = scene::Color{0, 0.2, 1, 1};
+    stripes.colors = {{0, {1, 1, 0, 1}}, {1, {0, 0.2, 1, 1}}};
     stripes.size = stripe;
     stripes.axis = {1, 0, 0};
     m.desc.textures.push_back(stripes);
@@ -151,7 +150,7 @@ TEST_CASE("Refraction through a glass slab shifts a stripe pattern by what Snell
             double cell = wallX / stripe;
             if (std::abs(fract(cell) - 0.5) > 0.5 - 0.02) continue; // too near a stripe boundary
             bool odd = static_cast<long>(std::floor(cell)) & 1;
-            DVec3 want = rgbOf(odd ? stripes.b : stripes.a);
+            DVec3 want = rgbOf(stripes.colors[odd ? 1 : 0].color);
             DVec3 got = pixelAt(image, x, y);
             INFO("pixel " << x << "," << y << " wall x " << wallX << " got " << got.x << " " << got.y << " " << got.z);
             CHECK(maxDifference(got, want) < 1e-6);

@@ -1,0 +1,32 @@
+// The defaults that differ by texture kind (the others are TextureDesc's own).
+#include "scene/scene_desc.hpp"
+
+namespace crt::scene {
+
+TextureDesc defaultTexture(TextureKind kind) {
+    TextureDesc t;
+    t.kind = kind;
+    switch (kind) {
+    case TextureKind::Checker:
+    case TextureKind::Stripes:
+    case TextureKind::Image:
+    case TextureKind::ImageBump: break;
+    case TextureKind::Noise:
+    case TextureKind::Marble:
+    case TextureKind::NoiseBump: t.octaves = 4; break; // layers of their own noise, as in 2015
+    case TextureKind::Wood:
+        t.turbulence = 0.1;
+        break; // rings wander less than veins
+    // POV-Ray's colours for the patterns that pick colours by position.
+    case TextureKind::Brick: t.colors = {{0, {0.5, 0.5, 0.5, 1}}, {1, {0.6, 0.15, 0.15, 1}}}; break;
+    case TextureKind::Hexagon:
+        t.colors = {{0, {0, 0, 1, 1}}, {0.5, {0, 1, 0, 1}}, {1, {1, 0, 0, 1}}};
+        break;
+    // The patterns new beside 2015's read black to white, as POV-Ray's do without a map.
+    case TextureKind::Spiral: t.waveform = Waveform::Triangle; [[fallthrough]];
+    default: t.colors = {{0, {0, 0, 0, 1}}, {1, {1, 1, 1, 1}}}; break;
+    }
+    return t;
+}
+
+} // namespace crt::scene

@@ -1,0 +1,3 @@
+#include "stage.inc"
+#declare P = pigment { planar color_map { TwinColors } scale 3 }
+Wall(P)

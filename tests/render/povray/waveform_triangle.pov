@@ -1,0 +1,3 @@
+#include "stage.inc"
+#declare P = pigment { gradient <1, 0.5, 0> color_map { TwinColors } frequency 0.6 phase 0.3 triangle_wave }
+Wall(P)

@@ -1,0 +1,39 @@
+// The patterns' own definitions, before turbulence and waveform (used by pattern.cpp).
+#pragma once
+
+#include "scene/scene_desc.hpp"
+#include "tracer/geometry/ray.hpp"
+
+namespace crt::tracer::patterns {
+
+// Tilings (tilings.cpp): the position of the colour, 0, 1 or 2.
+double checker(const Vec3& p, double size);
+double stripes(const Vec3& p, const Vec3& axis, double size);
+double brick(const Vec3& p, const Vec3& brickSize, double mortar);
+double hexagon(const Vec3& p);
+
+// Distances (distance_patterns.cpp), POV-Ray 3.7's definitions.
+double gradient(const Vec3& p, const Vec3& axis);
+double onion(const Vec3& p);
+double boxed(const Vec3& p);
+double spherical(const Vec3& p);
+double cylindrical(const Vec3& p);
+double planar(const Vec3& p);
+
+// Around an axis (angular_patterns.cpp).
+double radial(const Vec3& p);
+double spiral(const Vec3& p, int arms);
+
+// Periodic (periodic_patterns.cpp).
+double leopard(const Vec3& p);
+double quilted(const Vec3& p, double control0, double control1);
+
+// Fractal (mandel_pattern.cpp).
+double mandel(const Vec3& p, int iterations);
+
+// The 2015 noise textures (noise_patterns.cpp), each with its own size and turbulence.
+double noise(const Vec3& p, const scene::TextureDesc& desc);
+double marble(const Vec3& p, const scene::TextureDesc& desc);
+double wood(const Vec3& p, const scene::TextureDesc& desc);
+
+} // namespace crt::tracer::patterns
