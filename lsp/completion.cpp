@@ -308,6 +308,14 @@ private:
         case AttrType::LightList:
             add({"[…]", CompletionKind::Snippet, "a list of lights", "", "[${1}]", true, "0"});
             break;
+        case AttrType::ColorMap:
+            add({"[[0, …], [1, …]]", CompletionKind::Snippet, "a colour map", "",
+                 "[[0, rgb(${1:0}, ${2:0}, ${3:0})], [1, rgb(${4:1}, ${5:1}, ${6:1})]]", true, "0"});
+            break;
+        case AttrType::Turbulence:
+            add({"vec3", CompletionKind::Function, "vec3(x, y, z)", "", "vec3(${1:0.5}, ${2:0.5}, ${3:0.5})",
+                 true, "0"});
+            break;
         default: break;
         }
         for (const ObjectInfo& info : allObjectTypes()) {

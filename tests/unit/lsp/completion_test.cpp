@@ -93,6 +93,13 @@ TEST_CASE("after '->': values of the attribute's type", "[completion]") {
         auto list = completeAt("Settings { antialias -> @ }");
         CHECK(has(list, "\"adaptive\""));
     }
+    SECTION("a pattern's colour map, waveform and turbulence") {
+        auto map = completeAt("m = Material { texture -> Onion { colors -> @ } }");
+        CHECK(has(map, "[[0, …], [1, …]]"));
+        CHECK(item(map, "[[0, …], [1, …]]").snippet);
+        CHECK(has(completeAt("t = Spiral { waveform -> @ }"), "\"scallop\""));
+        CHECK(has(completeAt("t = Leopard { turbulence -> @ }"), "vec3"));
+    }
     SECTION("a bool") {
         auto list = completeAt("Cylinder { open -> @ }");
         CHECK(has(list, "true"));

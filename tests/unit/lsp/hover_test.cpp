@@ -97,3 +97,17 @@ TEST_CASE("hover on nothing is empty", "[hover]") {
     CHECK_FALSE(hover(*a, code.points()[0], nullptr));
     CHECK_FALSE(hover(*a, code.points()[1], nullptr));
 }
+
+TEST_CASE("hover on a pattern's attributes gives their types and defaults", "[hover]") {
+    Annotations code("t = Spiral { arms -> 3 col@ors -> [[0, rgb(0, 0, 0)], [1, rgb(1, 1, 1)]] wave@form -> \"sine\" turb@ulence -> 0.2 }");
+    auto a = analyzeCode(code.code);
+    auto colors = hover(*a, code.points()[0], nullptr);
+    REQUIRE(colors);
+    CHECK_THAT(colors->markdown, Contains("Spiral.colors: colour map") && Contains("rgb(0, 0, 0)"));
+    auto waveform = hover(*a, code.points()[1], nullptr);
+    REQUIRE(waveform);
+    CHECK_THAT(waveform->markdown, Contains("Default: `\"triangle\"`"));
+    auto turbulence = hover(*a, code.points()[2], nullptr);
+    REQUIRE(turbulence);
+    CHECK_THAT(turbulence->markdown, Contains("float or vec3"));
+}
