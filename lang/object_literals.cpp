@@ -242,6 +242,11 @@ void readPatternShape(ObjectBuilder& b, scene::TextureDesc& t) {
                   fmt::format("iterations must be between 1 and {}", kMaxIterations));
     }
     t.iterations = static_cast<int>(iterations);
+    t.metric = b.number("metric", t.metric);
+    if (b.get("metric") && t.metric <= 0) b.in.fail(b.where("metric"), "a metric must be positive");
+    t.form = b.vec("form", t.form);
+    t.axis = b.vec("direction", t.axis);
+    if (b.get("direction")) b.nonZeroVector("direction", "a slope needs a direction");
 }
 
 } // namespace

@@ -288,6 +288,17 @@ constexpr AttributeInfo kQuilted[] = {
     {"control1", A::Float, false, "1", "The second inner control point of each quilt's curve."},
     CRT_PATTERN(CRT_BLACK_WHITE),
 };
+constexpr AttributeInfo kCrackle[] = {
+    {"metric", A::Float, false, "2", "How distance is measured: 2 straight, 1 along the axes."},
+    {"form", A::Vec3, false, "vec3(-1,1,0)",
+     "Weights of the distances to the nearest, second and third feature point."},
+    CRT_PATTERN(CRT_BLACK_WHITE),
+};
+constexpr AttributeInfo kSlope[] = {
+    {"direction", A::Vec3, false, "vec3(0,1,0)",
+     "0 where the surface faces away from it, 1 where it faces it (in world space)."},
+    CRT_PATTERN(CRT_BLACK_WHITE),
+};
 constexpr AttributeInfo kMandel[] = {
     {"iterations", A::Int, true, "", "The most iterations before a point counts as inside."},
     CRT_PATTERN(CRT_BLACK_WHITE),
@@ -366,6 +377,19 @@ constexpr ObjectInfo kObjects[] = {
      kPlainPattern},
     {T::Quilted, "Quilted", C::Texture, false, "Cushions filling each unit cube.", kQuilted},
     {T::Mandel, "Mandel", C::Texture, false, "The Mandelbrot set in the x-y plane.", kMandel},
+    {T::Bozo, "Bozo", C::Texture, false, "Smooth noise: blotches.", kPlainPattern},
+    {T::Spotted, "Spotted", C::Texture, false, "Smooth noise (POV-Ray's spotted, as Bozo).",
+     kPlainPattern},
+    {T::Granite, "Granite", C::Texture, false, "Sharp fractal noise, as of granite.",
+     kPlainPattern},
+    {T::Agate, "Agate", C::Texture, false, "Turbulent bands along z, as of agate.", kPlainPattern},
+    {T::Wrinkles, "Wrinkles", C::Texture, false, "Ten octaves of noise: wrinkled.", kPlainPattern},
+    {T::Dents, "Dents", C::Texture, false, "The cube of noise: dark dents in light.",
+     kPlainPattern},
+    {T::Crackle, "Crackle", C::Texture, false, "Cells around random points (Worley noise).",
+     kCrackle},
+    {T::Cells, "Cells", C::Texture, false, "A random value for each unit cube.", kPlainPattern},
+    {T::Slope, "Slope", C::Texture, false, "The surface's slope against a direction.", kSlope},
 };
 static_assert(std::size(kObjects) == static_cast<size_t>(ObjectType::Count));
 static_assert(std::size(kSettings) <= kMaxAttributes && std::size(kMaterial) <= kMaxAttributes);

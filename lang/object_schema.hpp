@@ -50,6 +50,15 @@ enum class ObjectType : uint8_t {
     Planar,
     Quilted,
     Mandel,
+    Bozo,
+    Spotted,
+    Granite,
+    Agate,
+    Wrinkles,
+    Dents,
+    Crackle,
+    Cells,
+    Slope,
     Count,
 };
 

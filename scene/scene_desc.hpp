@@ -64,7 +64,16 @@ enum class TextureKind : uint8_t {
     Cylindrical,
     Planar,
     Quilted,
-    Mandel
+    Mandel,
+    Bozo,
+    Spotted,
+    Granite,
+    Agate,
+    Wrinkles,
+    Dents,
+    Crackle,
+    Cells,
+    Slope
 };
 enum class TextureMapping : uint8_t { Uv, Planar, Spherical, Cylindrical, Cubic };
 
@@ -118,6 +127,8 @@ struct TextureDesc {
     double control0 = 1;                ///< Quilted: the curve of each quilt's edge
     double control1 = 1;
     int iterations = 0;        ///< Mandel (required)
+    double metric = 2;         ///< Crackle: the Minkowski exponent of its distances (2: Euclid's)
+    glm::dvec3 form{-1, 1, 0}; ///< Crackle: weights of the nearest three feature points' distances
     double rings = 8;          ///< Wood
     double strength = 0.5;     ///< bump textures
     std::string file;          ///< Image, ImageBump: as written in the script

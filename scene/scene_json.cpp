@@ -117,11 +117,13 @@ const char* lightKind(LightKind kind) {
 }
 
 const char* textureKind(TextureKind kind) {
-    static const char* names[] = {
-        "Checker",   "Stripes",  "Noise",     "Marble",      "Wood",   "Image",   "NoiseBump",
-        "ImageBump", "Gradient", "Onion",     "Leopard",     "Radial", "Spiral",  "Brick",
-        "Hexagon",   "Boxed",    "Spherical", "Cylindrical", "Planar", "Quilted", "Mandel"};
-    static_assert(std::size(names) == static_cast<size_t>(TextureKind::Mandel) + 1);
+    static const char* names[] = {"Checker",  "Stripes",   "Noise",       "Marble",   "Wood",
+                                  "Image",    "NoiseBump", "ImageBump",   "Gradient", "Onion",
+                                  "Leopard",  "Radial",    "Spiral",      "Brick",    "Hexagon",
+                                  "Boxed",    "Spherical", "Cylindrical", "Planar",   "Quilted",
+                                  "Mandel",   "Bozo",      "Spotted",     "Granite",  "Agate",
+                                  "Wrinkles", "Dents",     "Crackle",     "Cells",    "Slope"};
+    static_assert(std::size(names) == static_cast<size_t>(TextureKind::Slope) + 1);
     return names[static_cast<int>(kind)];
 }
 
@@ -266,6 +268,11 @@ void patternJson(const TextureDesc& x, Json& texture) {
         texture["control1"] = x.control1;
     }
     if (x.kind == K::Mandel) texture["iterations"] = x.iterations;
+    if (x.kind == K::Crackle) {
+        texture["metric"] = x.metric;
+        texture["form"] = vec(x.form);
+    }
+    if (x.kind == K::Slope) texture["direction"] = vec(x.axis);
     if (x.kind == K::Wood) texture["rings"] = x.rings;
     if (x.kind != K::Wood) texture["octaves"] = x.octaves;
     if (hasOwnTurbulence(x.kind)) {

@@ -6,11 +6,9 @@ namespace crt::scene {
 TextureDesc defaultTexture(TextureKind kind) {
     TextureDesc t;
     t.kind = kind;
+    // The patterns new beside 2015's read black to white, as POV-Ray's do without a map.
+    if (kind > TextureKind::ImageBump) t.colors = {{0, {0, 0, 0, 1}}, {1, {1, 1, 1, 1}}};
     switch (kind) {
-    case TextureKind::Checker:
-    case TextureKind::Stripes:
-    case TextureKind::Image:
-    case TextureKind::ImageBump: break;
     case TextureKind::Noise:
     case TextureKind::Marble:
     case TextureKind::NoiseBump: t.octaves = 4; break; // layers of their own noise, as in 2015
@@ -22,9 +20,9 @@ TextureDesc defaultTexture(TextureKind kind) {
     case TextureKind::Hexagon:
         t.colors = {{0, {0, 0, 1, 1}}, {0.5, {0, 1, 0, 1}}, {1, {1, 0, 0, 1}}};
         break;
-    // The patterns new beside 2015's read black to white, as POV-Ray's do without a map.
-    case TextureKind::Spiral: t.waveform = Waveform::Triangle; [[fallthrough]];
-    default: t.colors = {{0, {0, 0, 0, 1}}, {1, {1, 1, 1, 1}}}; break;
+    case TextureKind::Spiral: t.waveform = Waveform::Triangle; break;
+    case TextureKind::Slope: t.axis = {0, 1, 0}; break; // up: 1 on tops, 0 underneath
+    default: break;
     }
     return t;
 }

@@ -110,7 +110,9 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
     bool entering = glm::dot(ray.dir, sp.si.normal) < 0;
     sp.facingNormal = entering ? sp.si.normal : -sp.si.normal;
     sp.n = glm::dot(sp.si.shadingNormal, sp.v) < 0 ? -sp.si.shadingNormal : sp.si.shadingNormal;
-    sp.color = m.texture >= 0 ? textures_[m.texture].color(sp.si.objectPoint, sp.si.uv) : rgb(m.color);
+    sp.color = m.texture >= 0
+                   ? textures_[m.texture].color(sp.si.objectPoint, sp.si.uv, sp.si.shadingNormal)
+                   : rgb(m.color);
     sp.tint = m.metallic ? sp.color : Vec3(1.0);
     if (m.bump >= 0) sp.n = bumpedNormal(textures_[m.bump], sp.si, sp.n);
 

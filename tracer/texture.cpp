@@ -43,7 +43,7 @@ Vec2 Texture::imageCoordinates(const Vec3& p, const Vec2& uv) const {
     return uv;
 }
 
-Vec3 Texture::color(const Vec3& objectPoint, const Vec2& uv) const {
+Vec3 Texture::color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal) const {
     Vec3 p = toTexture_.point(objectPoint);
     switch (desc_.kind) {
     case scene::TextureKind::Image:
@@ -56,7 +56,7 @@ Vec3 Texture::color(const Vec3& objectPoint, const Vec2& uv) const {
     case scene::TextureKind::ImageBump: return colors_.entry(0);
     default: break;
     }
-    double value = patternValue(desc_, p);
+    double value = patternValue(desc_, p, normal);
     if (scene::isDiscretePattern(desc_.kind)) return colors_.entry(static_cast<size_t>(value));
     return colors_.at(value);
 }

@@ -13,8 +13,9 @@ public:
     /// `image` is the decoded file of an Image or ImageBump texture (null otherwise).
     Texture(const scene::TextureDesc& desc, const Image* image);
 
-    /// The color at an object-space point with surface coordinates uv.
-    Vec3 color(const Vec3& objectPoint, const Vec2& uv) const;
+    /// The color at an object-space point with surface coordinates uv, where the surface's
+    /// world-space unit normal is `normal`.
+    Vec3 color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal) const;
     /// A bump texture's height at a point (its gradient perturbs the normal).
     double height(const Vec3& objectPoint, const Vec2& uv) const;
     bool isBump() const {

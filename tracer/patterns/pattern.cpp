@@ -11,7 +11,7 @@ namespace {
 
 using Kind = scene::TextureKind;
 
-double continuousValue(const scene::TextureDesc& d, const Vec3& p) {
+double continuousValue(const scene::TextureDesc& d, const Vec3& p, const Vec3& normal) {
     switch (d.kind) {
     case Kind::Noise: return patterns::noise(p, d);
     case Kind::Marble: return patterns::marble(p, d);
@@ -27,6 +27,15 @@ double continuousValue(const scene::TextureDesc& d, const Vec3& p) {
     case Kind::Planar: return patterns::planar(p);
     case Kind::Quilted: return patterns::quilted(p, d.control0, d.control1);
     case Kind::Mandel: return patterns::mandel(p, d.iterations);
+    case Kind::Bozo:
+    case Kind::Spotted: return patterns::bozo(p);
+    case Kind::Granite: return patterns::granite(p);
+    case Kind::Agate: return patterns::agate(p);
+    case Kind::Wrinkles: return patterns::wrinkles(p);
+    case Kind::Dents: return patterns::dents(p);
+    case Kind::Crackle: return patterns::crackle(p, d.metric, d.form);
+    case Kind::Cells: return patterns::cells(p);
+    case Kind::Slope: return patterns::slope(normal, d.axis);
     default: return 0;
     }
 }
@@ -43,11 +52,11 @@ double discreteValue(const scene::TextureDesc& d, const Vec3& p) {
 
 } // namespace
 
-double patternValue(const scene::TextureDesc& desc, const Vec3& point) {
+double patternValue(const scene::TextureDesc& desc, const Vec3& point, const Vec3& normal) {
     bool turbulent = !scene::hasOwnTurbulence(desc.kind) && desc.displacement != Vec3(0.0);
     Vec3 p = turbulent ? turbulentPoint(point, desc) : point;
     if (scene::isDiscretePattern(desc.kind)) return discreteValue(desc, p);
-    return shapeValue(continuousValue(desc, p), desc);
+    return shapeValue(continuousValue(desc, p, normal), desc);
 }
 
 } // namespace crt::tracer

@@ -20,9 +20,10 @@ double spherical(const Vec3& p);
 double cylindrical(const Vec3& p);
 double planar(const Vec3& p);
 
-// Around an axis (angular_patterns.cpp).
+// Angles (angular_patterns.cpp): around an axis, and the surface's against a direction.
 double radial(const Vec3& p);
 double spiral(const Vec3& p, int arms);
+double slope(const Vec3& normal, const Vec3& direction);
 
 // Periodic (periodic_patterns.cpp).
 double leopard(const Vec3& p);
@@ -35,5 +36,16 @@ double mandel(const Vec3& p, int iterations);
 double noise(const Vec3& p, const scene::TextureDesc& desc);
 double marble(const Vec3& p, const scene::TextureDesc& desc);
 double wood(const Vec3& p, const scene::TextureDesc& desc);
+
+// POV-Ray's noise patterns over crt's noise (noise_patterns.cpp): the same recipes.
+double bozo(const Vec3& p);
+double granite(const Vec3& p);
+double agate(const Vec3& p);
+double wrinkles(const Vec3& p);
+double dents(const Vec3& p);
+
+// Cellular (cellular_patterns.cpp): a random point or value in each unit cube.
+double crackle(const Vec3& p, double metric, const Vec3& form);
+double cells(const Vec3& p);
 
 } // namespace crt::tracer::patterns

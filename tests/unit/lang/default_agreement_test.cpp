@@ -87,6 +87,15 @@ constexpr Usage kUsages[] = {
     {ObjectType::Planar, CRT_SPHERE_WITH("Material { texture -> Planar { @ } }")},
     {ObjectType::Quilted, CRT_SPHERE_WITH("Material { texture -> Quilted { @ } }")},
     {ObjectType::Mandel, CRT_SPHERE_WITH("Material { texture -> Mandel { iterations -> 20 @ } }")},
+    {ObjectType::Bozo, CRT_SPHERE_WITH("Material { texture -> Bozo { @ } }")},
+    {ObjectType::Spotted, CRT_SPHERE_WITH("Material { texture -> Spotted { @ } }")},
+    {ObjectType::Granite, CRT_SPHERE_WITH("Material { texture -> Granite { @ } }")},
+    {ObjectType::Agate, CRT_SPHERE_WITH("Material { texture -> Agate { @ } }")},
+    {ObjectType::Wrinkles, CRT_SPHERE_WITH("Material { texture -> Wrinkles { @ } }")},
+    {ObjectType::Dents, CRT_SPHERE_WITH("Material { texture -> Dents { @ } }")},
+    {ObjectType::Crackle, CRT_SPHERE_WITH("Material { texture -> Crackle { @ } }")},
+    {ObjectType::Cells, CRT_SPHERE_WITH("Material { texture -> Cells { @ } }")},
+    {ObjectType::Slope, CRT_SPHERE_WITH("Material { texture -> Slope { @ } }")},
 };
 
 /// Defaults documented as a rule rather than a value; each has its own test below.

@@ -3,6 +3,10 @@
 
 #include "tracer/patterns/pattern.hpp"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
 using namespace crt;
 using tracer::patternValue;
 using tracer::Vec3;
@@ -54,4 +58,37 @@ TEST_CASE("Mandel is 1 inside the set and the share of iterations outside", "[pa
     CHECK(patternValue(mandel, Vec3(3, 0, 0)) == 0); // escapes at the first iteration
     CHECK(patternValue(mandel, Vec3(0.5, 0, 0)) ==
           Approx(3.0 / 50)); // |z| passes 2 at the fourth step
+}
+
+TEST_CASE("Crackle is 0 on the walls between its cells and grows inside them", "[patterns]") {
+    auto crackle = scene::defaultTexture(scene::TextureKind::Crackle);
+    double lowest = 1, highest = 0;
+    for (int i = 0; i < 2000; ++i) {
+        double v = patternValue(crackle, Vec3(0.0137 * i, 0.021 * i, -0.0071 * i));
+        REQUIRE(v >= 0); // the second-nearest point is never nearer than the nearest
+        lowest = std::min(lowest, v);
+        highest = std::max(highest, v);
+    }
+    CHECK(lowest < 0.02);
+    CHECK(highest > 0.4);
+    auto nearest = crackle;
+    nearest.form = Vec3(1, 0, 0);
+    auto manhattan = nearest;
+    manhattan.metric = 1;
+    Vec3 p(0.3, 1.7, -2.2);
+    CHECK(patternValue(manhattan, p) >= patternValue(nearest, p) - 1e-12);
+}
+
+TEST_CASE("Cells is one value in each unit cube", "[patterns]") {
+    auto cells = scene::defaultTexture(scene::TextureKind::Cells);
+    CHECK(patternValue(cells, Vec3(2.1, -0.5, 7.2)) == patternValue(cells, Vec3(2.9, -0.1, 7.8)));
+    CHECK(patternValue(cells, Vec3(2.1, -0.5, 7.2)) != patternValue(cells, Vec3(3.1, -0.5, 7.2)));
+}
+
+TEST_CASE("Slope reads the normal against its direction", "[patterns]") {
+    auto slope = scene::defaultTexture(scene::TextureKind::Slope);
+    CHECK(patternValue(slope, Vec3(5, 5, 5), Vec3(0, 1, 0)) == Approx(1));
+    CHECK(patternValue(slope, Vec3(5, 5, 5), Vec3(1, 0, 0)) == Approx(0.5));
+    CHECK(patternValue(slope, Vec3(5, 5, 5), Vec3(0, -1, 0)) == Approx(0).margin(1e-12));
+    CHECK(patternValue(slope, Vec3(0, 0, 0), glm::normalize(Vec3(1, 1, 0))) == Approx(0.75));
 }
