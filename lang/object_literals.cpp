@@ -93,13 +93,19 @@ struct ZeroSize {
     bool operator()(const auto&) const { return false; } // planes and meshes
 };
 
-/// A material's finish; `diffuse` defaults to what reflection and refraction leave.
+/// A material's finish; `diffuse` defaults to what reflection and refraction leave (to 1
+/// when energy is conserved at each point).
 scene::FinishDesc readFinish(const ObjectBuilder& b) {
     scene::FinishDesc f;
     f.reflectivity = b.number("reflectivity", f.reflectivity);
+    f.reflectivityMin = b.number("reflectivitymin", f.reflectivityMin);
+    f.reflectionFalloff = b.number("reflectionfalloff", f.reflectionFalloff);
     f.transparency = b.number("transparency", f.transparency);
     f.ior = b.number("ior", f.ior);
-    f.diffuse = b.number("diffuse", std::max(0.0, 1.0 - f.reflectivity - f.transparency));
+    f.conserveEnergy = b.flag("conserveenergy", f.conserveEnergy);
+    f.diffuse = b.number(
+        "diffuse", f.conserveEnergy ? 1.0 : std::max(0.0, 1.0 - f.reflectivity - f.transparency));
+    f.brilliance = b.number("brilliance", f.brilliance);
     f.specular = b.number("specular", f.specular);
     f.shininess = b.number("shininess", f.shininess);
     f.metallic = b.flag("metallic", f.metallic);
@@ -112,6 +118,13 @@ scene::FinishDesc readFinish(const ObjectBuilder& b) {
     if (f.ior <= 0) b.in.fail(b.where("ior"), "the index of refraction must be positive");
     if (f.glossiness < 0 || f.glossiness > 1) {
         b.in.fail(b.where("glossiness"), "glossiness must be between 0 and 1");
+    }
+    if (f.brilliance <= 0) b.in.fail(b.where("brilliance"), "brilliance must be positive");
+    if (b.get("reflectivitymin") && f.reflectivityMin < 0) {
+        b.in.fail(b.where("reflectivitymin"), "reflectivitymin must not be negative");
+    }
+    if (f.reflectionFalloff <= 0) {
+        b.in.fail(b.where("reflectionfalloff"), "reflectionfalloff must be positive");
     }
     return f;
 }

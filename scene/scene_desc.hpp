@@ -147,13 +147,17 @@ TextureDesc defaultTexture(TextureKind kind);
 /// entry of SceneDesc::finishes: a generated scene of 100,000 spheres, each with its own
 /// color, keeps 100,000 small materials and one finish.
 struct FinishDesc {
-    double reflectivity = 0;
+    double reflectivity = 0;      ///< at grazing angles when reflectivityMin differs
+    double reflectivityMin = -1;  ///< facing the viewer; < 0: reflectivity at every angle
+    double reflectionFalloff = 1; ///< reflection = min + (max − min) (1 − cos θ)^falloff
     double transparency = 0;
     double ior = 1;
     double diffuse = 1; ///< default max(0, 1 - reflectivity - transparency)
     double specular = 0;
     double shininess = 3;
     double glossiness = 0;
+    double brilliance = 1;       ///< diffuse ∝ cos^brilliance
+    bool conserveEnergy = false; ///< diffuse takes what reflection and transmission leave
     bool metallic = false;
     bool fresnel = false;
     Color absorption{0, 0, 0, 1};

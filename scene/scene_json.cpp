@@ -240,12 +240,25 @@ Json backgroundJson(const BackgroundDesc& b) {
 }
 
 Json materialJson(const MaterialDesc& material, const FinishDesc& m) {
-    return Json{{"color", color(material.color)}, {"reflectivity", m.reflectivity},
-                {"transparency", m.transparency}, {"ior", m.ior}, {"diffuse", m.diffuse},
-                {"specular", m.specular}, {"shininess", m.shininess}, {"metallic", m.metallic},
-                {"glossiness", m.glossiness}, {"fresnel", m.fresnel},
-                {"absorption", color(m.absorption)}, {"emission", color(m.emission)},
-                {"texture", m.texture}, {"bump", m.bump}, {"source", source(material.source)}};
+    return Json{{"color", color(material.color)},
+                {"reflectivity", m.reflectivity},
+                {"reflectivitymin", m.reflectivityMin < 0 ? m.reflectivity : m.reflectivityMin},
+                {"reflectionfalloff", m.reflectionFalloff},
+                {"transparency", m.transparency},
+                {"ior", m.ior},
+                {"diffuse", m.diffuse},
+                {"brilliance", m.brilliance},
+                {"conserveenergy", m.conserveEnergy},
+                {"specular", m.specular},
+                {"shininess", m.shininess},
+                {"metallic", m.metallic},
+                {"glossiness", m.glossiness},
+                {"fresnel", m.fresnel},
+                {"absorption", color(m.absorption)},
+                {"emission", color(m.emission)},
+                {"texture", m.texture},
+                {"bump", m.bump},
+                {"source", source(material.source)}};
 }
 
 /// A pattern's keys, in the order of its attributes in docs/scene-json.md.

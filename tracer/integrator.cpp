@@ -53,7 +53,20 @@ struct Integrator::ShadingPoint {
     Vec3 v;            ///< unit direction back along the incoming ray
     Vec3 d;            ///< the incoming direction
     double pathLength; ///< from the camera to this point
+    double diffuse;    ///< the material's, less what reflection takes with conserveenergy
 };
+
+namespace {
+
+/// Mirror reflection at a point seen at cos θ = `cosView`: from reflectivitymin facing the
+/// viewer to reflectivity at grazing (POV-Ray's reflection { min max falloff }).
+double reflectivityAt(const ShadingMaterial& m, double cosView) {
+    if (m.reflectivityMin < 0 || m.reflectivityMin == m.reflectivity) return m.reflectivity;
+    return m.reflectivityMin +
+           (m.reflectivity - m.reflectivityMin) * std::pow(1 - cosView, m.reflectionFalloff);
+}
+
+} // namespace
 
 Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& settings, std::vector<Light> lights,
                        const Background& background, std::vector<Texture> textures)
@@ -116,11 +129,13 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
     sp.tint = m.metallic ? sp.color : Vec3(1.0);
     if (m.bump >= 0) sp.n = bumpedNormal(textures_[m.bump], sp.si, sp.n);
 
-    Vec3 c = rgb(m.emission) + ambient_ * sp.color * m.diffuse;
+    double cosView = std::clamp(glm::dot(sp.v, sp.n), 0.0, 1.0);
+    double kr = reflectivityAt(m, cosView), kt = m.transparency;
+    sp.diffuse = m.conserveEnergy ? m.diffuse * std::max(0.0, 1 - kr - kt) : m.diffuse;
+    Vec3 c = rgb(m.emission) + ambient_ * sp.color * sp.diffuse;
     c += directLight(sp, context);
     if (depth <= 0) return c;
 
-    double kr = m.reflectivity, kt = m.transparency;
     Vec3 refracted(0.0);
     bool refracts = false;
     if (kt > 0) {
@@ -162,10 +177,10 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
 Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) const {
     const ShadingMaterial& m = *sp.material;
     Vec3 c(0.0);
-    Vec3 diffuseColor = sp.color * m.diffuse;
+    Vec3 diffuseColor = sp.color * sp.diffuse;
     for (const Light& light : lights_) {
         c += light.ambient() * light.color() * diffuseColor;
-        if (m.diffuse <= 0 && m.specular <= 0) continue;
+        if (sp.diffuse <= 0 && m.specular <= 0) continue;
         int samples = light.sampleCount();
         for (int s = 0; s < samples; ++s) {
             Vec2 jitter = samples > 1 ? context.rng.uniform2() : Vec2(0.5);
@@ -184,7 +199,7 @@ Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) cons
             }
             // CS 488's attenuation, by the distance to the light alone (not the path).
             if (light.attenuates()) falloff *= light.attenuation(ls.distance);
-            Vec3 term = diffuseColor * nDotL;
+            Vec3 term = diffuseColor * (m.brilliance == 1 ? nDotL : std::pow(nDotL, m.brilliance));
             if (m.specular > 0) {
                 Vec3 r = 2 * nDotL * sp.n - ls.toLight;
                 double rv = std::max(0.0, glm::dot(r, sp.v));

@@ -100,10 +100,11 @@ constexpr Usage kUsages[] = {
 
 /// Defaults documented as a rule rather than a value; each has its own test below.
 constexpr std::pair<ObjectType, std::string_view> kRuleDefaults[] = {
-    {ObjectType::Camera, "focaldistance"}, // the distance from position to pointing
-    {ObjectType::Material, "diffuse"},     // what reflection and refraction leave
-    {ObjectType::Material, "texture"},     // none
-    {ObjectType::Material, "bump"},        // none
+    {ObjectType::Camera, "focaldistance"},     // the distance from position to pointing
+    {ObjectType::Material, "diffuse"},         // what reflection and refraction leave
+    {ObjectType::Material, "reflectivitymin"}, // reflectivity
+    {ObjectType::Material, "texture"},         // none
+    {ObjectType::Material, "bump"},            // none
     {ObjectType::Settings, "reflectiondepth"}, // recursiondepth
     {ObjectType::Settings, "refractiondepth"}, // recursiondepth
 };
@@ -275,6 +276,24 @@ TEST_CASE("defaults documented as rules follow their rule", "[defaults]") {
             CHECK(s.finishOf(s.materials[0]).diffuse ==
                   std::max(0.0, 1.0 - reflectivity - transparency));
         }
+    }
+
+    SECTION("with conserveenergy diffuse is 1, as each point takes its own share") {
+        crt::scene::SceneDesc s = evaluate(withAttribute(
+            usageOf(ObjectType::Material), "reflectivity -> 0.5 conserveenergy -> true"));
+        CHECK(s.finishOf(s.materials[0]).diffuse == 1.0);
+    }
+
+    SECTION("reflectivitymin is reflectivity unless given") {
+        const ObjectInfo& material = objectInfo(ObjectType::Material);
+        CHECK(material.attributes[findAttribute(material, "reflectivitymin")].defaultText ==
+              "reflectivity");
+        Json absent =
+            described(withAttribute(usageOf(ObjectType::Material), "reflectivity -> 0.4"));
+        CHECK(absent["materials"][0]["reflectivitymin"] == 0.4);
+        Json given = described(withAttribute(usageOf(ObjectType::Material),
+                                             "reflectivity -> 0.4 reflectivitymin -> 0.1"));
+        CHECK(given["materials"][0]["reflectivitymin"] == 0.1);
     }
 
     SECTION("reflection and refraction depths follow recursiondepth unless given") {
