@@ -18,7 +18,8 @@ bool equalsIgnoringCase(std::string_view a, std::string_view b) {
 }
 
 bool isBumpType(ObjectType type) {
-    return type == ObjectType::NoiseBump || type == ObjectType::ImageBump;
+    return type == ObjectType::NoiseBump || type == ObjectType::ImageBump ||
+           type == ObjectType::Bump;
 }
 
 bool isTextureType(ObjectType type) {
@@ -228,7 +229,7 @@ void ObjectBuilder::checkReference(const Attribute& a, const Value& v, AttrType 
         return;
     default:
         if (v.kind != ValueKind::Texture || !isBumpType(v.objectType)) {
-            wrongType(a, v, "a bump texture (NoiseBump or ImageBump)");
+            wrongType(a, v, "a bump texture (Bump, NoiseBump or ImageBump)");
         }
         return;
     }

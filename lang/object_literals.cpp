@@ -217,6 +217,20 @@ void readPatternColors(const ObjectBuilder& b, scene::TextureDesc& t) {
     }
 }
 
+/// A Bump's pattern, copied in: the Bump stands alone however the pattern is used elsewhere.
+void readBumpPattern(const ObjectBuilder& b, const std::vector<scene::TextureDesc>& textures,
+                     scene::TextureDesc& t) {
+    const scene::TextureDesc& pattern = textures[static_cast<size_t>(b.index("pattern", 0))];
+    if (scene::readsImage(pattern.kind) || scene::isDiscretePattern(pattern.kind)) {
+        b.in.fail(
+            b.where("pattern"),
+            fmt::format("a Bump reads the slope of a pattern's value, and {} has none to read{}",
+                        objectInfo(b.get("pattern")->objectType).name,
+                        scene::readsImage(pattern.kind) ? "; use ImageBump for an image" : ""));
+    }
+    t.pattern = {pattern};
+}
+
 /// Frequency, phase and waveform (checked by the builder against the choices).
 void readWave(const ObjectBuilder& b, scene::TextureDesc& t) {
     t.frequency = b.number("frequency", t.frequency);
@@ -601,6 +615,7 @@ Value Interpreter::buildTexture(ObjectBuilder& b) {
     readPatternShape(b, t);
     t.rings = b.number("rings", t.rings);
     t.strength = b.number("strength", t.strength);
+    if (t.kind == scene::TextureKind::Bump) readBumpPattern(b, scene_.textures, t);
     if (scene::readsImage(t.kind)) {
         t.file = b.text("file", t.file);
         t.resolvedFile = findFile(b, "file", "image");

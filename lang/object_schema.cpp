@@ -307,6 +307,10 @@ constexpr AttributeInfo kSlope[] = {
      "0 where the surface faces away from it, 1 where it faces it (in world space)."},
     CRT_PATTERN(CRT_BLACK_WHITE),
 };
+constexpr AttributeInfo kBump[] = {
+    {"pattern", A::Texture, true, "", "The pattern whose value is the surface's height."},
+    {"strength", A::Float, false, "0.5", "Height of the bumps."},
+};
 constexpr AttributeInfo kMandel[] = {
     {"iterations", A::Int, true, "", "The most iterations before a point counts as inside."},
     CRT_PATTERN(CRT_BLACK_WHITE),
@@ -398,6 +402,7 @@ constexpr ObjectInfo kObjects[] = {
      kCrackle},
     {T::Cells, "Cells", C::Texture, false, "A random value for each unit cube.", kPlainPattern},
     {T::Slope, "Slope", C::Texture, false, "The surface's slope against a direction.", kSlope},
+    {T::Bump, "Bump", C::Texture, false, "Bumps from any pattern's value.", kBump},
 };
 static_assert(std::size(kObjects) == static_cast<size_t>(ObjectType::Count));
 static_assert(std::size(kSettings) <= kMaxAttributes && std::size(kMaterial) <= kMaxAttributes);

@@ -59,6 +59,7 @@ enum class ObjectType : uint8_t {
     Crackle,
     Cells,
     Slope,
+    Bump,
     Count,
 };
 

@@ -83,8 +83,10 @@ bool objectFits(AttrType type, const ObjectInfo& info) {
     case AttrType::Background: return info.type == ObjectType::Background;
     case AttrType::Texture:
         return info.category == ObjectCategory::Texture && info.type != ObjectType::NoiseBump &&
-               info.type != ObjectType::ImageBump;
-    case AttrType::Bump: return info.type == ObjectType::NoiseBump || info.type == ObjectType::ImageBump;
+               info.type != ObjectType::ImageBump && info.type != ObjectType::Bump;
+    case AttrType::Bump:
+        return info.type == ObjectType::NoiseBump || info.type == ObjectType::ImageBump ||
+               info.type == ObjectType::Bump;
     default: return false;
     }
 }

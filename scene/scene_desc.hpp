@@ -73,7 +73,8 @@ enum class TextureKind : uint8_t {
     Dents,
     Crackle,
     Cells,
-    Slope
+    Slope,
+    Bump
 };
 enum class TextureMapping : uint8_t { Uv, Planar, Spherical, Cylindrical, Cubic };
 
@@ -86,6 +87,11 @@ inline constexpr std::string_view kWaveformNames[] = {"ramp",    "triangle", "si
 inline bool isDiscretePattern(TextureKind kind) {
     return kind == TextureKind::Checker || kind == TextureKind::Stripes ||
            kind == TextureKind::Brick || kind == TextureKind::Hexagon;
+}
+/// Textures that perturb the normal rather than give a colour.
+inline bool isBumpKind(TextureKind kind) {
+    return kind == TextureKind::NoiseBump || kind == TextureKind::ImageBump ||
+           kind == TextureKind::Bump;
 }
 /// Textures that read an image file rather than a pattern.
 inline bool readsImage(TextureKind kind) {
@@ -131,6 +137,7 @@ struct TextureDesc {
     glm::dvec3 form{-1, 1, 0}; ///< Crackle: weights of the nearest three feature points' distances
     double rings = 8;          ///< Wood
     double strength = 0.5;     ///< bump textures
+    std::vector<TextureDesc> pattern; ///< Bump: the one pattern whose value is the height
     std::string file;          ///< Image, ImageBump: as written in the script
     std::string resolvedFile;  ///< the path found on disk, or "" if not found yet
     TextureMapping mapping = TextureMapping::Uv;

@@ -117,13 +117,13 @@ const char* lightKind(LightKind kind) {
 }
 
 const char* textureKind(TextureKind kind) {
-    static const char* names[] = {"Checker",  "Stripes",   "Noise",       "Marble",   "Wood",
-                                  "Image",    "NoiseBump", "ImageBump",   "Gradient", "Onion",
-                                  "Leopard",  "Radial",    "Spiral",      "Brick",    "Hexagon",
-                                  "Boxed",    "Spherical", "Cylindrical", "Planar",   "Quilted",
-                                  "Mandel",   "Bozo",      "Spotted",     "Granite",  "Agate",
-                                  "Wrinkles", "Dents",     "Crackle",     "Cells",    "Slope"};
-    static_assert(std::size(names) == static_cast<size_t>(TextureKind::Slope) + 1);
+    static const char* names[] = {
+        "Checker",   "Stripes",  "Noise",     "Marble",      "Wood",     "Image",   "NoiseBump",
+        "ImageBump", "Gradient", "Onion",     "Leopard",     "Radial",   "Spiral",  "Brick",
+        "Hexagon",   "Boxed",    "Spherical", "Cylindrical", "Planar",   "Quilted", "Mandel",
+        "Bozo",      "Spotted",  "Granite",   "Agate",       "Wrinkles", "Dents",   "Crackle",
+        "Cells",     "Slope",    "Bump"};
+    static_assert(std::size(names) == static_cast<size_t>(TextureKind::Bump) + 1);
     return names[static_cast<int>(kind)];
 }
 
@@ -313,6 +313,10 @@ Json textureJson(const TextureDesc& x) {
         texture["resolvedFile"] = x.resolvedFile;
         texture["mapping"] = mappings[static_cast<int>(x.mapping)];
         if (x.kind == TextureKind::ImageBump) texture["strength"] = x.strength;
+        break;
+    case TextureKind::Bump:
+        texture["pattern"] = textureJson(x.pattern.front());
+        texture["strength"] = x.strength;
         break;
     case TextureKind::NoiseBump:
         texture["size"] = x.size;

@@ -19,7 +19,15 @@ double fract(double x) {
 
 Texture::Texture(const scene::TextureDesc& desc, const Image* image)
     : desc_(desc), image_(image), toTexture_(Transform::fromModifiers(desc.modifiers).inverse()),
-      colors_(desc.colors) {}
+      colors_(desc.colors) {
+    if (desc.kind == scene::TextureKind::Bump && !desc.pattern.empty()) {
+        pattern_ = std::make_shared<const Texture>(desc.pattern.front(), nullptr);
+    }
+}
+
+double Texture::value(const Vec3& objectPoint, const Vec3& normal) const {
+    return patternValue(desc_, toTexture_.point(objectPoint), normal);
+}
 
 Vec2 Texture::imageCoordinates(const Vec3& p, const Vec2& uv) const {
     switch (desc_.mapping) {
@@ -53,7 +61,8 @@ Vec3 Texture::color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal)
             return image_->bilinear(c.x, c.y, true);
         }
     case scene::TextureKind::NoiseBump:
-    case scene::TextureKind::ImageBump: return colors_.entry(0);
+    case scene::TextureKind::ImageBump:
+    case scene::TextureKind::Bump: return colors_.entry(0);
     default: break;
     }
     double value = patternValue(desc_, p, normal);
@@ -65,6 +74,8 @@ double Texture::height(const Vec3& objectPoint, const Vec2& uv) const {
     Vec3 p = toTexture_.point(objectPoint);
     double s = desc_.size > 0 ? desc_.size : 1;
     if (desc_.kind == scene::TextureKind::NoiseBump) return fractalNoise(p / s, desc_.octaves);
+    if (desc_.kind == scene::TextureKind::Bump && pattern_)
+        return pattern_->value(p, Vec3(0, 1, 0));
     if (desc_.kind == scene::TextureKind::ImageBump && image_ && image_->width > 0) {
         Vec2 c = imageCoordinates(p, uv);
         Vec3 v = image_->bilinear(c.x, c.y, true);

@@ -6,6 +6,8 @@
 #include "tracer/patterns/color_map.hpp"
 #include "tracer/transform.hpp"
 
+#include <memory>
+
 namespace crt::tracer {
 
 class Texture {
@@ -16,12 +18,11 @@ public:
     /// The color at an object-space point with surface coordinates uv, where the surface's
     /// world-space unit normal is `normal`.
     Vec3 color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal) const;
+    /// A pattern's value at an object-space point (through the texture's modifiers).
+    double value(const Vec3& objectPoint, const Vec3& normal) const;
     /// A bump texture's height at a point (its gradient perturbs the normal).
     double height(const Vec3& objectPoint, const Vec2& uv) const;
-    bool isBump() const {
-        return desc_.kind == scene::TextureKind::NoiseBump ||
-               desc_.kind == scene::TextureKind::ImageBump;
-    }
+    bool isBump() const { return scene::isBumpKind(desc_.kind); }
     double strength() const { return desc_.strength; }
     /// Whether height() reads the surface's uv (an ImageBump mapped "uv"), not the point.
     bool heightFromUv() const {
@@ -36,6 +37,7 @@ private:
     const Image* image_;
     Transform toTexture_; ///< object space to texture space (the inverse of its modifiers)
     ColorMap colors_;
+    std::shared_ptr<const Texture> pattern_; ///< a Bump's pattern
 };
 
 } // namespace crt::tracer

@@ -96,6 +96,7 @@ constexpr Usage kUsages[] = {
     {ObjectType::Crackle, CRT_SPHERE_WITH("Material { texture -> Crackle { @ } }")},
     {ObjectType::Cells, CRT_SPHERE_WITH("Material { texture -> Cells { @ } }")},
     {ObjectType::Slope, CRT_SPHERE_WITH("Material { texture -> Slope { @ } }")},
+    {ObjectType::Bump, CRT_SPHERE_WITH("Material { bump -> Bump { pattern -> Granite { } @ } }")},
 };
 
 /// Defaults documented as a rule rather than a value; each has its own test below.
