@@ -588,6 +588,10 @@ Value Interpreter::buildBackground(const ObjectBuilder& b) {
                          static_cast<uint32_t>(backgrounds_.size() - 1));
 }
 
+// A texture's kind is its object type's place after Checker: the two lists keep one order.
+static_assert(static_cast<int>(ObjectType::Bump) - static_cast<int>(ObjectType::Checker) ==
+              static_cast<int>(scene::TextureKind::Bump));
+
 Value Interpreter::buildTexture(ObjectBuilder& b) {
     ObjectType type = b.info.type;
     scene::TextureDesc t = scene::defaultTexture(static_cast<scene::TextureKind>(

@@ -114,6 +114,17 @@ inline double maxDifference(DVec3 a, DVec3 b) {
     return std::max({d.x, d.y, d.z});
 }
 
+/// A parallel light from `from` towards `pointing` (by default white, towards the origin).
+inline scene::LightDesc parallelLight(DVec3 from, DVec3 pointing = DVec3(0.0),
+                                      scene::Color color = scene::Color{1, 1, 1, 1}) {
+    scene::LightDesc l;
+    l.kind = scene::LightKind::Parallel;
+    l.from = from;
+    l.pointing = pointing;
+    l.color = color;
+    return l;
+}
+
 /// A scene with a black background and no lights, the given camera and size.
 inline scene::SceneDesc blankScene(int width, int height, const scene::CameraDesc& camera) {
     scene::SceneDesc desc;

@@ -79,15 +79,6 @@ scene::TextureDesc imageBump(const std::string& path, scene::TextureMapping mapp
     return t;
 }
 
-scene::LightDesc parallelLight(DVec3 toLight) {
-    scene::LightDesc l;
-    l.kind = scene::LightKind::Parallel;
-    l.from = toLight;
-    l.pointing = DVec3(0.0);
-    l.color = scene::Color{1, 1, 1, 1};
-    return l;
-}
-
 /// A diffuse grey material, bumped by `bump` when given.
 int32_t bumpedMaterial(SceneMaker& m, const std::optional<scene::TextureDesc>& bump) {
     ShadingMaterial mat;

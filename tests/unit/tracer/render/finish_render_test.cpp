@@ -14,15 +14,6 @@ namespace {
 
 constexpr double kTolerance = 1e-4;
 
-scene::LightDesc sunFrom(DVec3 from) {
-    scene::LightDesc l;
-    l.kind = scene::LightKind::Parallel;
-    l.from = from;
-    l.pointing = DVec3(0.0);
-    l.color = scene::Color{1, 1, 1, 1};
-    return l;
-}
-
 /// Renders a floor seen at a slant with a white sky, and checks every floor pixel against
 /// `want(cos of the view angle, cos of the light angle)`; returns how many it checked.
 template <typename Want> int checkFloor(const ShadingMaterial& floor, bool lit, Want want) {
@@ -31,7 +22,7 @@ template <typename Want> int checkFloor(const ShadingMaterial& floor, bool lit, 
     m.desc = blankScene(W, H, lookAt({0, 1.5, -4}, {0, 0, 2}, 50));
     m.desc.background.color = scene::Color{1, 1, 1, 1};
     const DVec3 sun = glm::normalize(DVec3(-1, 2, -1));
-    if (lit) m.desc.lights.push_back(sunFrom(sun * 10.0));
+    if (lit) m.desc.lights.push_back(parallelLight(sun * 10.0));
     m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(floor)));
     PixelBuffer image = renderOk(m.desc);
     int checked = 0;

@@ -13,11 +13,7 @@ TEST_CASE("A Bump of a gradient lights a floor as one tilted plane", "[render][a
     const int W = 40, H = 30;
     SceneMaker m;
     m.desc = blankScene(W, H, lookAt({0.3, 2, -3}, {0.3, 0, 0.5}, 40));
-    scene::LightDesc sun;
-    sun.kind = scene::LightKind::Parallel;
-    sun.from = {2, 3, -1};
-    sun.pointing = {0, 0, 0};
-    sun.color = scene::Color{1, 1, 1, 1};
+    scene::LightDesc sun = parallelLight({2, 3, -1});
     m.desc.lights.push_back(sun);
     scene::TextureDesc gradient = scene::defaultTexture(scene::TextureKind::Gradient);
     gradient.modifiers.push_back({scene::ModifierKind::Scale, DVec3(20.0)}); // no wrap in view

@@ -18,15 +18,6 @@ namespace {
 
 constexpr double kTolerance = 1e-4;
 
-scene::LightDesc parallelLight(DVec3 from, DVec3 pointing, scene::Color color) {
-    scene::LightDesc l;
-    l.kind = scene::LightKind::Parallel;
-    l.from = from;
-    l.pointing = pointing;
-    l.color = color;
-    return l;
-}
-
 scene::LightDesc pointLight(DVec3 origin, scene::Color color, double falloff = 0) {
     scene::LightDesc l;
     l.kind = scene::LightKind::Point;
