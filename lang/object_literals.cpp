@@ -245,9 +245,10 @@ void readWave(const ObjectBuilder& b, scene::TextureDesc& t) {
 
 /// Mandel's most iterations a point: more would make a render look hung.
 constexpr int64_t kMaxIterations = 100000;
-constexpr int64_t kMaxArms = 1000000;
+constexpr int64_t kMaxArms = 1000000; ///< beyond any use; keeps the count an int
 
-/// The attributes that only some patterns have: arms, bricks, quilts, iterations.
+/// The attributes that only some patterns have: arms, bricks, quilts, iterations, cells
+/// (Crackle) and a slope's direction.
 void readPatternShape(ObjectBuilder& b, scene::TextureDesc& t) {
     int64_t arms = b.integer("arms", t.arms);
     if (arms < -kMaxArms || arms > kMaxArms) {

@@ -11,17 +11,18 @@ TextureDesc defaultTexture(TextureKind kind) {
     switch (kind) {
     case TextureKind::Noise:
     case TextureKind::Marble:
-    case TextureKind::NoiseBump: t.octaves = 4; break; // layers of their own noise, as in 2015
-    case TextureKind::Wood:
-        t.turbulence = 0.1;
-        break; // rings wander less than veins
+    // Their octaves are their own noise's layers, 4 as in 2015.
+    case TextureKind::NoiseBump: t.octaves = 4; break;
+    // Wood's rings wander less than Marble's veins.
+    case TextureKind::Wood: t.turbulence = 0.1; break;
     // POV-Ray's colours for the patterns that pick colours by position.
     case TextureKind::Brick: t.colors = {{0, {0.5, 0.5, 0.5, 1}}, {1, {0.6, 0.15, 0.15, 1}}}; break;
     case TextureKind::Hexagon:
         t.colors = {{0, {0, 0, 1, 1}}, {0.5, {0, 1, 0, 1}}, {1, {1, 0, 0, 1}}};
         break;
     case TextureKind::Spiral: t.waveform = Waveform::Triangle; break;
-    case TextureKind::Slope: t.axis = {0, 1, 0}; break; // up: 1 on tops, 0 underneath
+    // Up: 1 on tops, 0 underneath.
+    case TextureKind::Slope: t.axis = {0, 1, 0}; break;
     default: break;
     }
     return t;
