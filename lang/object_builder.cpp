@@ -17,15 +17,6 @@ bool equalsIgnoringCase(std::string_view a, std::string_view b) {
            });
 }
 
-bool isBumpType(ObjectType type) {
-    return type == ObjectType::NoiseBump || type == ObjectType::ImageBump ||
-           type == ObjectType::Bump;
-}
-
-bool isTextureType(ObjectType type) {
-    return objectInfo(type).category == ObjectCategory::Texture && !isBumpType(type);
-}
-
 /// Where item `index` of a list attribute is written: the item itself when the value is a
 /// list literal, else the whole value.
 SourceRange itemRange(const Expr* value, size_t index) {
@@ -223,12 +214,12 @@ void ObjectBuilder::checkReference(const Attribute& a, const Value& v, AttrType 
         }
         return;
     case AttrType::Texture:
-        if (v.kind != ValueKind::Texture || !isTextureType(v.objectType)) {
+        if (v.kind != ValueKind::Texture || !isColorTexture(v.objectType)) {
             wrongType(a, v, "a texture (a pattern such as Checker or Gradient, or an Image)");
         }
         return;
     default:
-        if (v.kind != ValueKind::Texture || !isBumpType(v.objectType)) {
+        if (v.kind != ValueKind::Texture || !isBumpTexture(v.objectType)) {
             wrongType(a, v, "a bump texture (Bump, NoiseBump or ImageBump)");
         }
         return;

@@ -433,6 +433,15 @@ int findAttribute(const ObjectInfo& info, std::string_view name) {
 
 std::span<const ObjectInfo> allObjectTypes() { return kObjects; }
 
+bool isBumpTexture(ObjectType type) {
+    return type == ObjectType::NoiseBump || type == ObjectType::ImageBump ||
+           type == ObjectType::Bump;
+}
+
+bool isColorTexture(ObjectType type) {
+    return objectInfo(type).category == ObjectCategory::Texture && !isBumpTexture(type);
+}
+
 std::string_view attrTypeName(AttrType type) {
     switch (type) {
     case A::Float: return "float";

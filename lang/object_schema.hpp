@@ -113,6 +113,10 @@ ObjectType findObjectType(std::string_view name);
 /// Index of attribute `name` in `info.attributes`, or -1 (synonyms map to their canonical).
 int findAttribute(const ObjectInfo& info, std::string_view name);
 std::span<const ObjectInfo> allObjectTypes();
+/// Whether `type` is a bump texture (Bump, NoiseBump, ImageBump): one for `Material.bump`.
+bool isBumpTexture(ObjectType type);
+/// Whether `type` gives a colour (a pattern or Image): one for `Material.texture`.
+bool isColorTexture(ObjectType type);
 std::string_view attrTypeName(AttrType type);
 
 } // namespace crt::lang

@@ -81,12 +81,8 @@ bool objectFits(AttrType type, const ObjectInfo& info) {
     case AttrType::Material: return info.type == ObjectType::Material;
     case AttrType::Camera: return info.type == ObjectType::Camera;
     case AttrType::Background: return info.type == ObjectType::Background;
-    case AttrType::Texture:
-        return info.category == ObjectCategory::Texture && info.type != ObjectType::NoiseBump &&
-               info.type != ObjectType::ImageBump && info.type != ObjectType::Bump;
-    case AttrType::Bump:
-        return info.type == ObjectType::NoiseBump || info.type == ObjectType::ImageBump ||
-               info.type == ObjectType::Bump;
+    case AttrType::Texture: return isColorTexture(info.type);
+    case AttrType::Bump: return isBumpTexture(info.type);
     default: return false;
     }
 }

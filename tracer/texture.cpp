@@ -9,14 +9,6 @@
 
 namespace crt::tracer {
 
-namespace {
-
-double fract(double x) {
-    return x - std::floor(x);
-}
-
-} // namespace
-
 Texture::Texture(const scene::TextureDesc& desc, const Image* image)
     : desc_(desc), image_(image), toTexture_(Transform::fromModifiers(desc.modifiers).inverse()),
       colors_(desc.colors) {

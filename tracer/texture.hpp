@@ -18,8 +18,6 @@ public:
     /// The color at an object-space point with surface coordinates uv, where the surface's
     /// world-space unit normal is `normal`.
     Vec3 color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal) const;
-    /// A pattern's value at an object-space point (through the texture's modifiers).
-    double value(const Vec3& objectPoint, const Vec3& normal) const;
     /// A bump texture's height at a point (its gradient perturbs the normal).
     double height(const Vec3& objectPoint, const Vec2& uv) const;
     bool isBump() const { return scene::isBumpKind(desc_.kind); }
@@ -31,13 +29,16 @@ public:
     }
 
 private:
-    Vec2 imageCoordinates(const Vec3& p, const Vec2& uv) const;
+  /// A pattern's value at an object-space point (through the texture's modifiers): what a
+  /// Bump reads of its pattern.
+  double value(const Vec3& objectPoint, const Vec3& normal) const;
+  Vec2 imageCoordinates(const Vec3& p, const Vec2& uv) const;
 
-    scene::TextureDesc desc_;
-    const Image* image_;
-    Transform toTexture_; ///< object space to texture space (the inverse of its modifiers)
-    ColorMap colors_;
-    std::shared_ptr<const Texture> pattern_; ///< a Bump's pattern
+  scene::TextureDesc desc_;
+  const Image* image_;
+  Transform toTexture_; ///< object space to texture space (the inverse of its modifiers)
+  ColorMap colors_;
+  std::shared_ptr<const Texture> pattern_; ///< a Bump's pattern
 };
 
 } // namespace crt::tracer

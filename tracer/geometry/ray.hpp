@@ -19,6 +19,11 @@ using Vec3 = glm::dvec3;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
 
+/// The fractional part x − ⌊x⌋, in [0, 1) (also for negative x, unlike std::modf).
+inline double fract(double x) {
+    return x - std::floor(x);
+}
+
 /// pbrt's gamma(n) = n·u / (1 − n·u): bounds the relative error of n chained roundings.
 constexpr double errorGamma(int n) {
     constexpr double unitRoundoff = std::numeric_limits<double>::epsilon() * 0.5;

@@ -3,6 +3,7 @@
 #include "tracer/patterns/pattern_functions.hpp"
 
 #include "tracer/noise.hpp"
+#include "tracer/patterns/waveform.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,9 +23,7 @@ double marble(const Vec3& p, const scene::TextureDesc& desc) {
 double wood(const Vec3& p, const scene::TextureDesc& desc) {
     double s = desc.size;
     double r = std::sqrt(p.x * p.x + p.z * p.z) / s;
-    double t = desc.rings * r + desc.turbulence * 4 * (fractalNoise(p / s, 3) - 0.5);
-    t -= std::floor(t);
-    return t < 0.5 ? 2 * t : 2 - 2 * t;
+    return triangleWave(desc.rings * r + desc.turbulence * 4 * (fractalNoise(p / s, 3) - 0.5));
 }
 
 namespace {

@@ -9,10 +9,6 @@ namespace crt::tracer::patterns {
 
 namespace {
 
-double fraction(double x) {
-    return x - std::floor(x);
-}
-
 /// Which of a hexagon tiling's three colours a unit block of its 6 × 6 grid shows, where
 /// the block is split by a hexagon's slanted edge (POV-Ray's hexagon pattern).
 int slantedBlock(double xs, double zs, int xm, int zm) {
@@ -50,11 +46,11 @@ double brick(const Vec3& p, const Vec3& brickSize, double mortar) {
     constexpr double kOffset = 1e-10;
     double joint = mortar - 2 * kOffset;
     Vec3 q = p + Vec3(kOffset + joint);
-    if (fraction(q.y / brickSize.y) <= joint / brickSize.y) return 0;
-    bool oddCourse = fraction(q.y / brickSize.y * 0.5) > 0.5;
+    if (fract(q.y / brickSize.y) <= joint / brickSize.y) return 0;
+    bool oddCourse = fract(q.y / brickSize.y * 0.5) > 0.5;
     double shift = oddCourse ? 0.5 : 0;
-    if (fraction(q.x / brickSize.x + shift) <= joint / brickSize.x) return 0;
-    if (fraction(q.z / brickSize.z + (oddCourse ? 0 : 0.5)) <= joint / brickSize.z) return 0;
+    if (fract(q.x / brickSize.x + shift) <= joint / brickSize.x) return 0;
+    if (fract(q.z / brickSize.z + (oddCourse ? 0 : 0.5)) <= joint / brickSize.z) return 0;
     return 1;
 }
 

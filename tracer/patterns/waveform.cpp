@@ -22,7 +22,7 @@ double cycloidal(double value) {
 } // namespace
 
 double triangleWave(double value) {
-    double offset = value - std::floor(value);
+    double offset = fract(value);
     return offset >= 0.5 ? 2 * (1 - offset) : 2 * offset;
 }
 

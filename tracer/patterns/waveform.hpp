@@ -9,7 +9,7 @@ namespace crt::tracer {
 /// pattern's highest value keeps the top of its map), then shaped by the waveform.
 double shapeValue(double value, const scene::TextureDesc& desc);
 
-/// 0 → 1 → 0 over each unit: POV-Ray's triangle wave, which Spiral and Marble use.
+/// 0 → 1 → 0 over each unit: POV-Ray's triangle wave (Spiral's waveform, Wood's rings).
 double triangleWave(double value);
 
 } // namespace crt::tracer

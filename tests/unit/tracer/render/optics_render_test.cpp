@@ -35,8 +35,6 @@ ShadingMaterial glass(double ior, double transparency = 1) {
 /// The pixel as stored: the renderer computes in doubles and stores floats.
 DVec3 asStored(DVec3 c) { return {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)}; }
 
-double fract(double x) { return x - std::floor(x); }
-
 } // namespace
 
 TEST_CASE("A mirror reflects a known colour exactly and recursion depth 0 gives no reflection", "[render][analytic]") {
