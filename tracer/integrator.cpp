@@ -58,10 +58,12 @@ struct Integrator::ShadingPoint {
 
 namespace {
 
-/// Mirror reflection at a point seen at cos θ = `cosView`: from reflectivitymin facing the
-/// viewer to reflectivity at grazing (POV-Ray's reflection { min max falloff }).
-double reflectivityAt(const ShadingMaterial& m, double cosView) {
+/// Mirror reflection at a point seen along `toViewer` where its normal is `n`: from
+/// reflectivitymin facing the viewer to reflectivity at grazing (POV-Ray's
+/// reflection { min max falloff }).
+double reflectivityAt(const ShadingMaterial& m, const Vec3& toViewer, const Vec3& n) {
     if (m.reflectivityMin < 0 || m.reflectivityMin == m.reflectivity) return m.reflectivity;
+    double cosView = std::clamp(glm::dot(toViewer, n), 0.0, 1.0);
     return m.reflectivityMin +
            (m.reflectivity - m.reflectivityMin) * std::pow(1 - cosView, m.reflectionFalloff);
 }
@@ -129,8 +131,7 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
     sp.tint = m.metallic ? sp.color : Vec3(1.0);
     if (m.bump >= 0) sp.n = bumpedNormal(textures_[m.bump], sp.si, sp.n);
 
-    double cosView = std::clamp(glm::dot(sp.v, sp.n), 0.0, 1.0);
-    double kr = reflectivityAt(m, cosView), kt = m.transparency;
+    double kr = reflectivityAt(m, sp.v, sp.n), kt = m.transparency;
     sp.diffuse = m.conserveEnergy ? m.diffuse * std::max(0.0, 1 - kr - kt) : m.diffuse;
     Vec3 c = rgb(m.emission) + ambient_ * sp.color * sp.diffuse;
     c += directLight(sp, context);
