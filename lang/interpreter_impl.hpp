@@ -232,7 +232,7 @@ private:
     void keepReachable();
     /// Removes the entities, materials and textures not marked, renumbering references.
     void dropUnreachable(const std::vector<bool>& keepEntity, const std::vector<bool>& keepMaterial,
-                         const std::vector<bool>& keepTexture);
+                         const std::vector<bool>& keepTexture, const std::vector<bool>& keepBlend);
     void reportUnused();
     struct SpanCacheEntry {
         SourceRange range{~0u, 0, 0};

@@ -116,7 +116,9 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
     case AttrType::Bump: checkReference(a, v, attr.type); return;
     case AttrType::Gamma: checkGamma(a, v); return;
     case AttrType::Aperture: checkAperture(a, v, attr); return;
-    case AttrType::ColorMap: checkColorMap(a, v); return;
+    case AttrType::ColorMap:
+    case AttrType::MaterialMap: checkMap(a, v, attr.type); return;
+    case AttrType::MaterialList: checkMaterialList(a, v); return;
     case AttrType::Turbulence:
         if (v.kind == ValueKind::Vec3) {
             finite(a, v, 3);
@@ -128,41 +130,62 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
     }
 }
 
-/// A colour map: at least two [value, colour] stops, values from 0 to 1 and in order.
-void ObjectBuilder::checkColorMap(const Attribute& a, const Value& v) {
-    if (v.kind != ValueKind::List) wrongType(a, v, "a colour map: a list of [value, colour]");
-    const std::vector<Value>& stops = *v.list;
-    if (stops.size() < 2) {
-        in.fail(a.value->range,
-                fmt::format("a colour map needs at least 2 stops, not {}", stops.size()));
+/// A colour map or a material map: at least two [value, item] entries, values from 0 to 1
+/// and in order.
+void ObjectBuilder::checkMap(const Attribute& a, const Value& v, AttrType type) {
+    const bool colours = type == AttrType::ColorMap;
+    const std::string_view map = colours ? "colour map" : "material map";
+    const std::string_view entry = colours ? "stop" : "entry";
+    const std::string_view item = colours ? "colour" : "material";
+    if (v.kind != ValueKind::List) {
+        wrongType(a, v, fmt::format("a {}: a list of [value, {}]", map, item));
+    }
+    const std::vector<Value>& entries = *v.list;
+    if (entries.size() < 2) {
+        in.fail(a.value->range, fmt::format("a {} needs at least 2 {}, not {}", map,
+                                            colours ? "stops" : "entries", entries.size()));
     }
     double previous = 0;
-    for (size_t i = 0; i < stops.size(); ++i) {
-        const Value& stop = stops[i];
+    for (size_t i = 0; i < entries.size(); ++i) {
+        const Value& e = entries[i];
         SourceRange where = itemRange(a.value, i);
-        if (stop.kind != ValueKind::List || stop.list->size() != 2 || !(*stop.list)[0].isNumber() ||
-            (*stop.list)[1].kind != ValueKind::Color) {
-            in.fail(where, fmt::format("stop {} of the colour map must be [value, colour], not {}",
-                                       i + 1, in.str(stop)));
+        if (e.kind != ValueKind::List || e.list->size() != 2 || !(*e.list)[0].isNumber() ||
+            (*e.list)[1].kind != (colours ? ValueKind::Color : ValueKind::Material)) {
+            in.fail(where, fmt::format("{} {} of the {} must be [value, {}], not {}", entry, i + 1,
+                                       map, item, in.str(e)));
         }
-        double value = (*stop.list)[0].asDouble();
+        double value = (*e.list)[0].asDouble();
         if (!(value >= 0 && value <= 1)) {
-            in.fail(where, fmt::format("stop {} of the colour map is at {}; stops lie from 0 to 1",
-                                       i + 1, formatFloat(value)));
+            in.fail(where, fmt::format("{} {} of the {} is at {}; {}s lie from 0 to 1", entry,
+                                       i + 1, map, formatFloat(value), colours ? "stop" : "value"));
         }
         if (value < previous) {
-            in.fail(where, fmt::format("stop {} of the colour map ({}) comes before the one ahead "
-                                       "of it ({}); stops go in order",
-                                       i + 1, formatFloat(value), formatFloat(previous)));
+            in.fail(where, fmt::format("{} {} of the {} ({}) comes before the one ahead of it "
+                                       "({}); {}s go in order",
+                                       entry, i + 1, map, formatFloat(value), formatFloat(previous),
+                                       colours ? "stop" : "value"));
         }
-        for (int k = 0; k < 4; ++k) {
-            if (!std::isfinite((*stop.list)[1].v[k])) {
+        for (int k = 0; colours && k < 4; ++k) {
+            if (!std::isfinite((*e.list)[1].v[k])) {
                 in.fail(where, fmt::format("stop {} of the colour map has a colour that is not "
                                            "finite",
                                            i + 1));
             }
         }
         previous = value;
+    }
+}
+
+/// Layered's materials: a non-empty list of materials, bottom first.
+void ObjectBuilder::checkMaterialList(const Attribute& a, const Value& v) {
+    if (v.kind != ValueKind::List) wrongType(a, v, "a list of materials");
+    if (v.list->empty()) in.fail(a.value->range, "a Layered needs at least one material");
+    for (size_t i = 0; i < v.list->size(); ++i) {
+        const Value& layer = (*v.list)[i];
+        if (layer.kind != ValueKind::Material) {
+            in.fail(itemRange(a.value, i),
+                    fmt::format("layer {} must be a material, not {}", i + 1, typeName(layer)));
+        }
     }
 }
 

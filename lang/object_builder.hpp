@@ -157,7 +157,8 @@ struct ObjectBuilder {
     void checkGamma(const Attribute& a, const Value& v);
     void checkAperture(const Attribute& a, const Value& v, const AttributeInfo& attr);
     void checkChoice(const Attribute& a, const Value& v, const AttributeInfo& attr);
-    void checkColorMap(const Attribute& a, const Value& v);
+    void checkMap(const Attribute& a, const Value& v, AttrType type);
+    void checkMaterialList(const Attribute& a, const Value& v);
     [[noreturn]] void missing(const AttributeInfo& attr);
     [[noreturn]] void wrongType(const Attribute& a, const Value& v, std::string_view wanted);
     [[noreturn]] void floatForInt(const Attribute& a, const Value& v, std::string_view wanted);

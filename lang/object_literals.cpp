@@ -113,8 +113,11 @@ scene::FinishDesc readFinish(const ObjectBuilder& b) {
     f.fresnel = b.flag("fresnel", f.fresnel);
     f.absorption = b.color("absorption", f.absorption);
     f.emission = b.color("emission", f.emission);
+    f.filter = b.number("filter", f.filter);
     f.texture = b.index("texture", f.texture);
     f.bump = b.index("bump", f.bump);
+    if (f.filter < 0 || f.filter > 1)
+        b.in.fail(b.where("filter"), "filter must be between 0 and 1");
     if (f.ior <= 0) b.in.fail(b.where("ior"), "the index of refraction must be positive");
     if (f.glossiness < 0 || f.glossiness > 1) {
         b.in.fail(b.where("glossiness"), "glossiness must be between 0 and 1");
@@ -480,8 +483,41 @@ scene::Shape Interpreter::surfaceShape(ObjectBuilder& b) {
     }
 }
 
+namespace {
+
+/// A MaterialMap's or a Layered's materials, as a blend of them.
+scene::BlendDesc readBlend(const ObjectBuilder& b,
+                           const std::vector<scene::TextureDesc>& textures) {
+    scene::BlendDesc blend;
+    if (b.info.type == ObjectType::Layered) {
+        blend.kind = scene::BlendKind::Layers;
+        for (const Value& layer : *b.get("materials")->list) {
+            blend.materials.push_back(static_cast<int32_t>(layer.index));
+        }
+        return blend;
+    }
+    blend.pattern = b.index("pattern", blend.pattern);
+    if (scene::readsImage(textures[static_cast<size_t>(blend.pattern)].kind)) {
+        b.in.fail(b.where("pattern"),
+                  "a MaterialMap reads a pattern's value, and an Image has none to read");
+    }
+    for (const Value& entry : *b.get("materials")->list) {
+        blend.values.push_back((*entry.list)[0].asDouble());
+        blend.materials.push_back(static_cast<int32_t>((*entry.list)[1].index));
+    }
+    return blend;
+}
+
+} // namespace
+
 Value Interpreter::buildMaterial(const ObjectBuilder& b) {
-    scene::FinishDesc finish = readFinish(b);
+    scene::FinishDesc finish;
+    if (b.info.type == ObjectType::Material) {
+        finish = readFinish(b);
+    } else {
+        scene_.blends.push_back(readBlend(b, scene_.textures));
+        finish.blend = static_cast<int32_t>(scene_.blends.size() - 1);
+    }
     scene::MaterialDesc& m = scene_.materials.emplace_back();
     m.color = b.color("color", m.color);
     m.finish = scene_.internFinish(finish);

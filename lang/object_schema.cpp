@@ -137,7 +137,20 @@ constexpr AttributeInfo kMaterial[] = {
     {"texture", A::Texture, false, "none", "A texture that replaces the colour."},
     {"bump", A::Bump, false, "none", "A bump texture that perturbs the normal."},
     {"emission", A::Color, false, "rgb(0,0,0)", "Light the surface gives off."},
+    {"filter", A::Float, false, "0",
+     "0 to 1: how much of what the colour's alpha lets through takes the colour."},
     // `refractiveindex` is a synonym of `ior`, handled by findAttribute.
+};
+
+constexpr AttributeInfo kMaterialMap[] = {
+    {"pattern", A::Texture, true, "", "The pattern whose value picks the materials."},
+    {"materials", A::MaterialMap, true, "",
+     "[[value, material], ...]: values in order from 0 to 1; between two, their mix."},
+};
+
+constexpr AttributeInfo kLayered[] = {
+    {"materials", A::MaterialList, true, "",
+     "[bottom, ..., top]: each layer's colour alpha shows the layers under it."},
 };
 
 constexpr AttributeInfo kBackground[] = {
@@ -348,6 +361,10 @@ constexpr ObjectInfo kObjects[] = {
     {T::CylinderLight, "CylinderLight", C::Light, false,
      "A segment that emits light, as a fluorescent tube.", kCylinderLight},
     {T::Material, "Material", C::Material, false, "How a surface looks.", kMaterial},
+    {T::MaterialMap, "MaterialMap", C::Material, false,
+     "Materials picked and mixed by a pattern's value.", kMaterialMap},
+    {T::Layered, "Layered", C::Material, false,
+     "Materials in layers, the ones below showing through each layer's alpha.", kLayered},
     {T::Background, "Background", C::Background, false, "What rays that hit nothing see.",
      kBackground},
     {T::Sphere, "Sphere", C::Entity, true, "A sphere (solid).", kSphere},
@@ -461,6 +478,8 @@ std::string_view attrTypeName(AttrType type) {
     case A::Aperture: return "aperture shape";
     case A::ColorMap: return "colour map";
     case A::Turbulence: return "float or vec3";
+    case A::MaterialMap: return "material map";
+    case A::MaterialList: return "list of materials";
     }
     return "value";
 }

@@ -18,6 +18,8 @@ enum class ObjectType : uint8_t {
     AreaLight,
     CylinderLight,
     Material,
+    MaterialMap,
+    Layered,
     Background,
     Sphere,
     Box,
@@ -76,14 +78,16 @@ enum class AttrType : uint8_t {
     Choice, ///< a string from `choices` (case-insensitive)
     Material,
     Camera,
-    Background, ///< a Background or a color
-    LightList,  ///< a list of lights
-    Texture,    ///< a pattern or Image texture
-    Bump,       ///< a NoiseBump or ImageBump
-    Gamma,      ///< a float > 0, or "srgb"
-    Aperture,   ///< a shape name, or an int >= 3 (polygon sides)
-    ColorMap,   ///< a list of [value, colour] pairs
-    Turbulence, ///< a float (the same on every axis) or a vec3
+    Background,   ///< a Background or a color
+    LightList,    ///< a list of lights
+    Texture,      ///< a pattern or Image texture
+    Bump,         ///< a NoiseBump or ImageBump
+    Gamma,        ///< a float > 0, or "srgb"
+    Aperture,     ///< a shape name, or an int >= 3 (polygon sides)
+    ColorMap,     ///< a list of [value, colour] pairs
+    Turbulence,   ///< a float (the same on every axis) or a vec3
+    MaterialMap,  ///< a list of [value, material] pairs
+    MaterialList, ///< a list of materials
 };
 
 struct AttributeInfo {

@@ -28,20 +28,29 @@ template <typename T> std::vector<int32_t> compact(std::vector<T>& items, const 
 
 } // namespace
 
-void Interpreter::dropUnreachable(const std::vector<bool>& keepEntity, const std::vector<bool>& keepMaterial,
-                                  const std::vector<bool>& keepTexture) {
+void Interpreter::dropUnreachable(const std::vector<bool>& keepEntity,
+                                  const std::vector<bool>& keepMaterial,
+                                  const std::vector<bool>& keepTexture,
+                                  const std::vector<bool>& keepBlend) {
     std::vector<int32_t> entityMap = compact(scene_.entities, keepEntity);
     std::vector<int32_t> materialMap = compact(scene_.materials, keepMaterial);
     std::vector<int32_t> textureMap = compact(scene_.textures, keepTexture);
+    std::vector<int32_t> blendMap = compact(scene_.blends, keepBlend);
+    for (scene::BlendDesc& blend : scene_.blends) {
+        blend.pattern = blend.pattern >= 0 ? textureMap[static_cast<size_t>(blend.pattern)] : -1;
+        for (int32_t& m : blend.materials) m = materialMap[static_cast<size_t>(m)];
+    }
     for (scene::EntityDesc& entity : scene_.entities) {
         if (entity.material >= 0) entity.material = materialMap[static_cast<size_t>(entity.material)];
         scene::forEachPart(entity, [&](int32_t& child) { child = entityMap[static_cast<size_t>(child)]; });
     }
     for (int32_t& root : scene_.drawn) root = entityMap[static_cast<size_t>(root)];
-    // A finish of dropped materials only may name a dropped texture: it becomes -1, unused.
+    // A finish of dropped materials only may name a dropped texture or blend: it becomes -1,
+    // unused.
     for (scene::FinishDesc& finish : scene_.finishes) {
         if (finish.texture >= 0) finish.texture = textureMap[static_cast<size_t>(finish.texture)];
         if (finish.bump >= 0) finish.bump = textureMap[static_cast<size_t>(finish.bump)];
+        if (finish.blend >= 0) finish.blend = blendMap[static_cast<size_t>(finish.blend)];
     }
 }
 
@@ -96,19 +105,36 @@ void Interpreter::keepReachable() {
     for (size_t i = 0; i < scene_.entities.size(); ++i) {
         if (keepEntity[i] && scene_.entities[i].material >= 0) keepMaterial[static_cast<size_t>(scene_.entities[i].material)] = true;
     }
+    // A material made of others keeps them, and the pattern that mixes them.
     std::vector<bool> keepTexture(scene_.textures.size(), false);
+    std::vector<bool> keepBlend(scene_.blends.size(), false);
+    std::vector<int32_t> pendingMaterials;
     for (size_t i = 0; i < scene_.materials.size(); ++i) {
-        if (!keepMaterial[i]) continue;
-        const scene::FinishDesc& finish = scene_.finishOf(scene_.materials[i]);
+        if (keepMaterial[i]) pendingMaterials.push_back(static_cast<int32_t>(i));
+    }
+    while (!pendingMaterials.empty()) {
+        const scene::FinishDesc& finish =
+            scene_.finishOf(scene_.materials[static_cast<size_t>(pendingMaterials.back())]);
+        pendingMaterials.pop_back();
         for (int32_t t : {finish.texture, finish.bump}) {
             if (t >= 0) keepTexture[static_cast<size_t>(t)] = true;
+        }
+        if (finish.blend < 0) continue;
+        keepBlend[static_cast<size_t>(finish.blend)] = true;
+        const scene::BlendDesc& blend = scene_.blends[static_cast<size_t>(finish.blend)];
+        if (blend.pattern >= 0) keepTexture[static_cast<size_t>(blend.pattern)] = true;
+        for (int32_t m : blend.materials) {
+            if (keepMaterial[static_cast<size_t>(m)]) continue;
+            keepMaterial[static_cast<size_t>(m)] = true;
+            pendingMaterials.push_back(m);
         }
     }
     reachable_ = keepEntity;
     // Usually everything is reachable, and there is nothing to renumber.
     auto allTrue = [](const std::vector<bool>& keep) { return std::find(keep.begin(), keep.end(), false) == keep.end(); };
-    if (!allTrue(keepEntity) || !allTrue(keepMaterial) || !allTrue(keepTexture)) {
-        dropUnreachable(keepEntity, keepMaterial, keepTexture);
+    if (!allTrue(keepEntity) || !allTrue(keepMaterial) || !allTrue(keepTexture) ||
+        !allTrue(keepBlend)) {
+        dropUnreachable(keepEntity, keepMaterial, keepTexture, keepBlend);
     }
 }
 

@@ -78,7 +78,7 @@ bool isValueEnd(TokenKind k) {
 /// Which object types fit an attribute of type `type`.
 bool objectFits(AttrType type, const ObjectInfo& info) {
     switch (type) {
-    case AttrType::Material: return info.type == ObjectType::Material;
+    case AttrType::Material: return info.category == ObjectCategory::Material;
     case AttrType::Camera: return info.type == ObjectType::Camera;
     case AttrType::Background: return info.type == ObjectType::Background;
     case AttrType::Texture: return isColorTexture(info.type);
@@ -106,7 +106,9 @@ int typeFit(AttrType want, const std::string& type) {
         return object != ObjectType::Count && objectFits(want, objectInfo(object)) ? 0 : -1;
     case AttrType::Gamma: return type == "float" || type == "int" || type == "string" ? 0 : -1;
     case AttrType::Aperture: return type == "int" || type == "string" ? 0 : -1;
-    case AttrType::ColorMap: return type == "list" ? 0 : -1;
+    case AttrType::ColorMap:
+    case AttrType::MaterialMap:
+    case AttrType::MaterialList: return type == "list" ? 0 : -1;
     case AttrType::Turbulence: return type == "float" || type == "int" || type == "vec3" ? 0 : -1;
     }
     return 1;
@@ -313,6 +315,14 @@ private:
         case AttrType::Turbulence:
             add({"vec3", CompletionKind::Function, "vec3(x, y, z)", "", "vec3(${1:0.5}, ${2:0.5}, ${3:0.5})",
                  true, "0"});
+            break;
+        case AttrType::MaterialMap:
+            add({"[[0, …], [1, …]]", CompletionKind::Snippet, "a material map", "",
+                 "[[0, Material { ${1} }], [1, Material { ${2} }]]", true, "0"});
+            break;
+        case AttrType::MaterialList:
+            add({"[…, …]", CompletionKind::Snippet, "layers, bottom first", "",
+                 "[Material { ${1} }, Material { ${2} }]", true, "0"});
             break;
         default: break;
         }

@@ -169,10 +169,30 @@ struct FinishDesc {
     bool fresnel = false;
     Color absorption{0, 0, 0, 1};
     Color emission{0, 0, 0, 1};
+    double filter = 0;    ///< how much of what the colour's alpha lets through takes its colour
     int32_t texture = -1; ///< replaces color
     int32_t bump = -1;
+    int32_t blend = -1; ///< index into SceneDesc::blends: the material is made of others
 
     bool operator==(const FinishDesc&) const = default;
+};
+
+/// How a material made of others combines them.
+enum class BlendKind : uint8_t {
+    Map,    ///< MaterialMap: a pattern's value picks two neighbours and mixes them
+    Layers, ///< Layered: each layer's colour alpha shows the layers under it
+};
+
+/// A material made of other materials, resolved at each point of the surface.
+struct BlendDesc {
+    BlendKind kind = BlendKind::Map;
+    int32_t pattern = -1;       ///< Map: index into SceneDesc::textures
+    std::vector<double> values; ///< Map: one a material, non-decreasing in [0, 1]
+    /// Map: in the order of values; Layers: bottom first. Each comes before the material
+    /// made of it in SceneDesc::materials, so that no material is made of itself.
+    std::vector<int32_t> materials;
+
+    bool operator==(const BlendDesc&) const = default;
 };
 
 /// A material: its own color, its (possibly shared) finish, and where the script built it.
@@ -339,6 +359,7 @@ struct SceneDesc {
     std::vector<MaterialDesc> materials;
     std::vector<FinishDesc> finishes; ///< shared by materials
     std::vector<TextureDesc> textures;
+    std::vector<BlendDesc> blends; ///< of the materials made of others
     std::vector<EntityDesc> entities;
     std::vector<int32_t> drawn; ///< roots: entities drawn by Scene blocks, in order
     /// The meshes the front end read, by MeshShape::resolvedFile: the renderer draws what was

@@ -256,9 +256,19 @@ Json materialJson(const MaterialDesc& material, const FinishDesc& m) {
                 {"fresnel", m.fresnel},
                 {"absorption", color(m.absorption)},
                 {"emission", color(m.emission)},
+                {"filter", m.filter},
                 {"texture", m.texture},
                 {"bump", m.bump},
+                {"blend", m.blend},
                 {"source", source(material.source)}};
+}
+
+Json blendJson(const BlendDesc& b) {
+    if (b.kind == BlendKind::Layers) return Json{{"type", "layered"}, {"materials", b.materials}};
+    Json entries = Json::array();
+    for (size_t i = 0; i < b.values.size(); ++i)
+        entries.push_back(Json{b.values[i], b.materials[i]});
+    return Json{{"type", "materialmap"}, {"pattern", b.pattern}, {"materials", entries}};
 }
 
 /// A pattern's keys, in the order of its attributes in docs/scene-json.md.
@@ -357,6 +367,8 @@ std::string sceneToJson(const SceneDesc& scene, int indent) {
     for (const MaterialDesc& m : scene.materials) materials.push_back(materialJson(m, scene.finishOf(m)));
     Json& textures = root["textures"] = Json::array();
     for (const TextureDesc& t : scene.textures) textures.push_back(textureJson(t));
+    Json& blends = root["blends"] = Json::array();
+    for (const BlendDesc& b : scene.blends) blends.push_back(blendJson(b));
     Json& entities = root["entities"] = Json::array();
     for (size_t i = 0; i < scene.entities.size(); ++i) entities.push_back(entityJson(scene.entities[i], i));
     root["drawn"] = scene.drawn;

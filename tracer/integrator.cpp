@@ -45,6 +45,7 @@ Vec3 glossyMean(const Vec3& axis, const Vec3& side, double glossiness, int sampl
 struct Integrator::ShadingPoint {
     Hit hit;
     SurfaceInteraction si;
+    bool entering; ///< the ray meets the outside of the surface
     const ShadingMaterial* material;
     Vec3 color;        ///< C: the material color or its texture
     Vec3 tint;         ///< K: C for metallic materials, else white
@@ -70,16 +71,20 @@ double reflectivityAt(const ShadingMaterial& m, const Vec3& toViewer, const Vec3
 
 } // namespace
 
-Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& settings, std::vector<Light> lights,
-                       const Background& background, std::vector<Texture> textures)
+Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& settings,
+                       std::vector<Light> lights, const Background& background,
+                       std::vector<Texture> textures)
     : scene_(scene), settings_(settings), lights_(std::move(lights)), background_(background),
-      textures_(std::move(textures)), ambient_(rgb(settings.ambient)),
-      reflectionLimit_(settings.reflectionLimit()), refractionLimit_(settings.refractionLimit()) {
-    for (const ShadingMaterial& m : scene.materials) {
+      textures_(std::move(textures)), mixer_(scene.materials, scene.blends, textures_),
+      ambient_(rgb(settings.ambient)), reflectionLimit_(settings.reflectionLimit()),
+      refractionLimit_(settings.refractionLimit()) {
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const ShadingMaterial& m = scene.materials[i];
+        bool plain = mixer_.isPlain(static_cast<int32_t>(i));
         features_.reflection |= m.reflectivity > 0 || (m.fresnel && m.transparency > 0);
-        features_.refraction |= m.transparency > 0;
-        features_.transparentShadows |= m.transparency > 0;
-        features_.textures |= m.texture >= 0 || m.bump >= 0;
+        features_.refraction |= m.transparency > 0 || !plain;
+        features_.transparentShadows |= m.transparency > 0 || !plain;
+        features_.textures |= m.readsSurface();
         features_.specular |= m.specular > 0;
     }
 }
@@ -117,17 +122,34 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
     ShadingPoint sp;
     sp.hit = hit;
     sp.si = scene_.interaction(ray, hit);
-    sp.material = &scene_.materials[sp.si.material];
-    const ShadingMaterial& m = *sp.material;
     sp.d = ray.dir;
     sp.v = -ray.dir;
     sp.pathLength = pathLength + hit.t;
-    bool entering = glm::dot(ray.dir, sp.si.normal) < 0;
-    sp.facingNormal = entering ? sp.si.normal : -sp.si.normal;
+    sp.entering = glm::dot(ray.dir, sp.si.normal) < 0;
+    sp.facingNormal = sp.entering ? sp.si.normal : -sp.si.normal;
+    const int32_t index = sp.si.material;
+    const ShadingMaterial& m = scene_.materials[index];
+    if (mixer_.isPlain(index)) {
+        return shadeMaterial(sp, index, Vec3(mixer_.colorAt(m, sp.si)), depth, medium, context);
+    }
+    size_t first = context.shares.size();
+    Vec3 passes = mixer_.resolve(index, sp.si, 1, context.shares);
+    Vec3 c(0.0);
+    for (size_t i = first; i < context.shares.size(); ++i) {
+        MaterialShare share = context.shares[i]; // a copy: shading below adds to the list
+        c += share.weight * shadeMaterial(sp, share.material, share.color, depth, medium, context);
+    }
+    context.shares.resize(first);
+    if (passes != Vec3(0.0)) c += passes * passThrough(sp, depth, medium, context);
+    return c;
+}
+
+Vec3 Integrator::shadeMaterial(ShadingPoint& sp, int32_t material, const Vec3& color, int depth,
+                               int32_t medium, TraceContext& context) const {
+    const ShadingMaterial& m = scene_.materials[material];
+    sp.material = &m;
     sp.n = glm::dot(sp.si.shadingNormal, sp.v) < 0 ? -sp.si.shadingNormal : sp.si.shadingNormal;
-    sp.color = m.texture >= 0
-                   ? textures_[m.texture].color(sp.si.objectPoint, sp.si.uv, sp.si.shadingNormal)
-                   : rgb(m.color);
+    sp.color = color;
     sp.tint = m.metallic ? sp.color : Vec3(1.0);
     if (m.bump >= 0) sp.n = bumpedNormal(textures_[m.bump], sp.si, sp.n);
 
@@ -141,7 +163,7 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
     bool refracts = false;
     if (kt > 0) {
         // Snell's law against air; a surface without inside (a quad, a disc) is a thin sheet.
-        double eta = sp.si.solid ? (entering ? 1.0 / m.ior : m.ior) : 1.0;
+        double eta = sp.si.solid ? (sp.entering ? 1.0 / m.ior : m.ior) : 1.0;
         double cosI = std::min(1.0, glm::dot(sp.v, sp.n));
         double sin2T = eta * eta * std::max(0.0, 1 - cosI * cosI);
         if (sin2T >= 1) {
@@ -168,7 +190,7 @@ Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLen
     }
     if (kt > 0 && refracts && context.refractions < refractionLimit_) {
         ++context.refractions;
-        int32_t nextMedium = sp.si.solid ? (entering ? sp.si.material : -1) : medium;
+        int32_t nextMedium = sp.si.solid ? (sp.entering ? material : -1) : medium;
         c += kt * refract(sp, refracted, depth, nextMedium, context);
         --context.refractions;
     }
@@ -216,16 +238,46 @@ Vec3 Integrator::transmittance(const Ray& ray, double tMax, int32_t departed, Tr
     ++context.stats.shadowRays;
     Vec3 through(1.0);
     const RenderScene& scene = scene_;
-    scene_.forEachCrossing(ray, tMax, departed, context.scratch, context.stats, [&](int32_t primitive, double) {
-        const ShadingMaterial& m = scene.materials[scene.primitives[primitive].material];
-        if (m.transparency <= 0) {
-            through = Vec3(0.0);
-            return false;
-        }
-        through *= m.transparency * rgb(m.color);
-        return through != Vec3(0.0);
-    });
+    scene_.forEachCrossing(ray, tMax, departed, context.scratch, context.stats,
+                           [&](const Hit& hit) {
+                               const int32_t index = scene.primitives[hit.primitive].material;
+                               const ShadingMaterial& m = scene.materials[index];
+                               if (!mixer_.isPlain(index)) {
+                                   through *= seenThrough(ray, hit, context);
+                               } else if (m.transparency <= 0) {
+                                   through = Vec3(0.0);
+                               } else {
+                                   through *= m.transparency * rgb(m.color);
+                               }
+                               return through != Vec3(0.0);
+                           });
     return through;
+}
+
+Vec3 Integrator::seenThrough(const Ray& ray, const Hit& hit, TraceContext& context) const {
+    SurfaceInteraction si = scene_.interaction(ray, hit);
+    size_t first = context.shares.size();
+    Vec3 through = mixer_.resolve(si.material, si, 1, context.shares);
+    for (size_t i = first; i < context.shares.size(); ++i) {
+        const MaterialShare& share = context.shares[i];
+        through += share.weight * scene_.materials[share.material].transparency * share.color;
+    }
+    context.shares.resize(first);
+    return through;
+}
+
+Vec3 Integrator::passThrough(const ShadingPoint& sp, int depth, int32_t medium,
+                             TraceContext& context) const {
+    // A refraction that does not bend: it takes a bounce and counts against the refraction
+    // limit, so a stack of see-through surfaces ends where a stack of glass panes would.
+    if (depth <= 0 || context.refractions >= refractionLimit_) return Vec3(0.0);
+    ++context.refractions;
+    ++context.stats.refractionRays;
+    Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, sp.d), sp.d};
+    Vec3 behind = trace(next, depth - 1, sp.pathLength, medium, context,
+                        scene_.departedPrimitive(sp.hit, sp.si, sp.d));
+    --context.refractions;
+    return behind;
 }
 
 Vec3 Integrator::reflect(const ShadingPoint& sp, int depth, int32_t medium, TraceContext& context) const {

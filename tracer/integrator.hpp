@@ -4,6 +4,7 @@
 
 #include "tracer/background.hpp"
 #include "tracer/lights.hpp"
+#include "tracer/material_mix.hpp"
 #include "tracer/render_scene.hpp"
 #include "tracer/sampling.hpp"
 #include "tracer/texture.hpp"
@@ -18,6 +19,9 @@ namespace crt::tracer {
 struct alignas(64) TraceContext {
     SampleRng rng{0, 0, 0};
     QueryScratch scratch;
+    /// The shares of the surface points being shaded on the path, each point's after those
+    /// of the points before it (MaterialMixer::resolve).
+    std::vector<MaterialShare> shares;
     RayStats stats;
     bool inGlossy = false; ///< below a glossy bounce only one ray per bounce is spawned
     int reflections = 0;   ///< reflections on the path to the point being shaded
@@ -55,6 +59,14 @@ public:
 private:
     struct ShadingPoint;
     Vec3 shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium, TraceContext& context) const;
+    /// The light plain material `material`, of colour `color` there, sends back from the point.
+    Vec3 shadeMaterial(ShadingPoint& sp, int32_t material, const Vec3& color, int depth,
+                       int32_t medium, TraceContext& context) const;
+    /// The light that arrives at the point from straight behind it, through the surface.
+    Vec3 passThrough(const ShadingPoint& sp, int depth, int32_t medium,
+                     TraceContext& context) const;
+    /// What of a shadow ray's light passes the crossing `hit` of a surface that is not plain.
+    Vec3 seenThrough(const Ray& ray, const Hit& hit, TraceContext& context) const;
     Vec3 directLight(const ShadingPoint& sp, TraceContext& context) const;
     /// The fraction of light that reaches the point through the shadow ray (0: blocked).
     Vec3 transmittance(const Ray& ray, double tMax, int32_t departed, TraceContext& context) const;
@@ -68,6 +80,7 @@ private:
     std::vector<Light> lights_;
     const Background& background_;
     std::vector<Texture> textures_;
+    MaterialMixer mixer_;
     SceneFeatures features_;
     Vec3 ambient_;
     int reflectionLimit_, refractionLimit_;

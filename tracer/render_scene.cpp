@@ -174,7 +174,7 @@ int32_t RenderScene::departedPrimitive(const Hit& hit, const SurfaceInteraction&
 SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) const {
     const Primitive& p = primitives[hit.primitive];
     const ShadingMaterial& m = materials[p.material];
-    SurfacePoint sp = surfaceAt(p.geometry, objectRay(p, ray), hit.crossing, m.texture >= 0 || m.bump >= 0);
+    SurfacePoint sp = surfaceAt(p.geometry, objectRay(p, ray), hit.crossing, m.readsSurface());
     SurfaceInteraction si;
     si.objectPoint = sp.point;
     si.uv = sp.uv;

@@ -113,6 +113,9 @@ struct QueryScratch {
 /// A material as shading reads it: its color beside its finish, in one place.
 struct ShadingMaterial : scene::FinishDesc {
     scene::Color color = scene::MaterialDesc{}.color;
+
+    /// Whether shading reads the surface's uv (a texture, a bump or the materials of a blend).
+    bool readsSurface() const { return texture >= 0 || bump >= 0 || blend >= 0; }
 };
 
 /// Built by buildRenderScene; read-only while rendering, shared by every thread.
@@ -125,12 +128,13 @@ public:
     std::vector<TransformPair> transforms;
     std::vector<CsgTreeNode> csgNodes;
     std::vector<ShadingMaterial> materials;
+    std::vector<scene::BlendDesc> blends; ///< of the materials made of others
 
     /// Nearest hit with 0 < t < tMax. `departed` (from departedPrimitive) is not tested.
     bool intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats,
                    int32_t departed = -1) const;
-    /// Calls visit(primitive, t) for every surface crossing with 0 < t < tMax, in no
-    /// particular order, until visit returns false; returns false if stopped early.
+    /// Calls visit(hit) for every surface crossing with 0 < t < tMax, in no particular
+    /// order, until visit returns false; returns false if stopped early.
     /// `departed` (from departedPrimitive) is not tested.
     template <typename Visit>
     bool forEachCrossing(const Ray& ray, double tMax, int32_t departed, QueryScratch& scratch, RayStats& stats,

@@ -18,8 +18,8 @@ bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, doubl
         ++stats.intersectionTests;
         crossLine(p.geometry, objectRay(p, ray.ray()), list);
         for (int i = 0; i < list.count; ++i) {
-            double t = list.items[i].t;
-            if (t > 0 && t < tMax && !visit(object, t)) return false;
+            const Crossing& c = list.items[i];
+            if (c.t > 0 && c.t < tMax && !visit(Hit{c.t, object, c, false})) return false;
         }
         return true;
     }
@@ -29,7 +29,8 @@ bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, doubl
     bool keepGoing = true;
     for (size_t i = start; i < scratch.csg.size() && keepGoing; ++i) {
         const CsgCrossing& c = scratch.csg[i];
-        if (c.t > 0 && c.t < tMax) keepGoing = visit(c.primitive, c.t);
+        if (c.t > 0 && c.t < tMax)
+            keepGoing = visit(Hit{c.t, c.primitive, Crossing{c.t, c.part}, c.flipNormal});
     }
     scratch.csg.resize(start);
     return keepGoing;
@@ -42,7 +43,8 @@ bool RenderScene::forEachCrossing(const Ray& ray, double tMax, int32_t departed,
         if (plane.primitive == departed) continue;
         ++stats.intersectionTests;
         double t = planeCrossing(plane, ray);
-        if (t > 0 && t < tMax && !visit(plane.primitive, t)) return false;
+        if (t > 0 && t < tMax && !visit(Hit{t, plane.primitive, Crossing{t, 0}, false}))
+            return false;
     }
     const LazyBoxRay lazy(ray);
     for (int32_t object : unbounded)

@@ -23,6 +23,7 @@ public:
         }
         defaultMaterial_ = static_cast<int32_t>(scene_.materials.size());
         scene_.materials.emplace_back(); // the default material
+        scene_.blends = desc_.blends;
         // Counted before anything is expanded: a shared entity doubled in a loop would
         // otherwise fill memory here. Evaluation refuses such a scene already; this is for
         // descriptions made otherwise.

@@ -23,7 +23,18 @@ bool load(const scene::SceneDesc& desc, const std::string& path, const scene::So
     Image image;
     image.width = buffer->width;
     image.height = buffer->height;
-    image.rgb = std::move(buffer->pixels);
+    if (buffer->channels == 4) {
+        // Colour and coverage apart: the alpha is neither sRGB-decoded nor premultiplied.
+        size_t pixels = buffer->pixels.size() / 4;
+        image.rgb.resize(pixels * 3);
+        image.alpha.resize(pixels);
+        for (size_t i = 0; i < pixels; ++i) {
+            for (int c = 0; c < 3; ++c) image.rgb[3 * i + c] = buffer->pixels[4 * i + c];
+            image.alpha[i] = buffer->pixels[4 * i + 3];
+        }
+    } else {
+        image.rgb = std::move(buffer->pixels);
+    }
     if (eightBit && decodeSrgb)
         for (float& v : image.rgb) v = image_io::srgbToLinear(v);
     images.byPath.emplace(path, std::move(image));

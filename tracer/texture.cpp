@@ -43,14 +43,14 @@ Vec2 Texture::imageCoordinates(const Vec3& p, const Vec2& uv) const {
     return uv;
 }
 
-Vec3 Texture::color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal) const {
+Vec4 Texture::color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal) const {
     Vec3 p = toTexture_.point(objectPoint);
     switch (desc_.kind) {
     case scene::TextureKind::Image:
         if (!image_ || image_->width == 0) return colors_.entry(0);
         {
             Vec2 c = imageCoordinates(p, uv);
-            return image_->bilinear(c.x, c.y, true);
+            return {image_->bilinear(c.x, c.y, true), image_->bilinearAlpha(c.x, c.y, true)};
         }
     case scene::TextureKind::NoiseBump:
     case scene::TextureKind::ImageBump:
@@ -60,6 +60,14 @@ Vec3 Texture::color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal)
     double value = patternValue(desc_, p, normal);
     if (scene::isDiscretePattern(desc_.kind)) return colors_.entry(static_cast<size_t>(value));
     return colors_.at(value);
+}
+
+bool Texture::translucent() const {
+    if (isBump()) return false;
+    if (desc_.kind == scene::TextureKind::Image && image_ && image_->width > 0) {
+        return !image_->alpha.empty();
+    }
+    return colors_.translucent();
 }
 
 double Texture::height(const Vec3& objectPoint, const Vec2& uv) const {

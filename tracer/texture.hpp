@@ -15,11 +15,17 @@ public:
     /// `image` is the decoded file of an Image or ImageBump texture (null otherwise).
     Texture(const scene::TextureDesc& desc, const Image* image);
 
-    /// The color at an object-space point with surface coordinates uv, where the surface's
-    /// world-space unit normal is `normal`.
-    Vec3 color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal) const;
+    /// The colour and alpha at an object-space point with surface coordinates uv, where the
+    /// surface's world-space unit normal is `normal`.
+    Vec4 color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal) const;
+    /// Whether color() can give an alpha below 1 (a map's stop, an image's alpha channel).
+    bool translucent() const;
     /// A bump texture's height at a point (its gradient perturbs the normal).
     double height(const Vec3& objectPoint, const Vec2& uv) const;
+    /// A pattern's value at an object-space point (through the texture's modifiers): what a
+    /// Bump and a MaterialMap read of their pattern. A discrete pattern's is its entry's index.
+    double value(const Vec3& objectPoint, const Vec3& normal) const;
+    bool isDiscrete() const { return scene::isDiscretePattern(desc_.kind); }
     bool isBump() const { return scene::isBumpKind(desc_.kind); }
     double strength() const { return desc_.strength; }
     /// Whether height() reads the surface's uv (an ImageBump mapped "uv"), not the point.
@@ -28,17 +34,14 @@ public:
                desc_.mapping == scene::TextureMapping::Uv;
     }
 
-private:
-  /// A pattern's value at an object-space point (through the texture's modifiers): what a
-  /// Bump reads of its pattern.
-  double value(const Vec3& objectPoint, const Vec3& normal) const;
-  Vec2 imageCoordinates(const Vec3& p, const Vec2& uv) const;
+  private:
+    Vec2 imageCoordinates(const Vec3& p, const Vec2& uv) const;
 
-  scene::TextureDesc desc_;
-  const Image* image_;
-  Transform toTexture_; ///< object space to texture space (the inverse of its modifiers)
-  ColorMap colors_;
-  std::shared_ptr<const Texture> pattern_; ///< a Bump's pattern
+    scene::TextureDesc desc_;
+    const Image* image_;
+    Transform toTexture_; ///< object space to texture space (the inverse of its modifiers)
+    ColorMap colors_;
+    std::shared_ptr<const Texture> pattern_; ///< a Bump's pattern
 };
 
 } // namespace crt::tracer

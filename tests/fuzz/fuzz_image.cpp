@@ -69,9 +69,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (error.empty()) std::abort();
         return 0;
     }
-    // What readImage promises: three channels, every pixel present.
-    if (image->channels != 3 || image->width < 1 || image->height < 1 ||
-        image->pixels.size() != size_t(image->width) * size_t(image->height) * 3)
+    // What readImage promises: three channels (four with alpha), every pixel present.
+    if ((image->channels != 3 && image->channels != 4) || image->width < 1 || image->height < 1 ||
+        image->pixels.size() != size_t(image->width) * size_t(image->height) * image->channels)
         std::abort();
     return 0;
 }

@@ -1,6 +1,7 @@
 // Compares a render with its reference image at the spec's tolerance (§6: at most 2/255 per
 // channel on 99.5% of pixels) and reports the largest difference. With --rmse the verdict is
-// instead the root mean square difference over all channels, in 8-bit codes (POV-Ray twins).
+// instead the root mean square difference over the colour channels, in 8-bit codes (POV-Ray
+// twins).
 //
 // usage: render_compare REFERENCE IMAGE [--tolerance CODES] [--fraction F] [--rmse CODES]
 // Exit status: 0 identical or within tolerance, 1 outside it, 2 unreadable or of another size.
@@ -68,8 +69,8 @@ int main(int argc, char** argv) {
     for (size_t p = 0; p < pixels; ++p) {
         int d = 0;
         for (int c = 0; c < 3; ++c) {
-            int difference =
-                std::abs(code(image->pixels[3 * p + c]) - code(reference->pixels[3 * p + c]));
+            int difference = std::abs(code(image->pixels[image->channels * p + c]) -
+                                      code(reference->pixels[reference->channels * p + c]));
             d = std::max(d, difference);
             squares += static_cast<double>(difference) * difference;
         }

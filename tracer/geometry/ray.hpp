@@ -15,6 +15,7 @@ namespace crt::tracer {
 
 using Vec2 = glm::dvec2;
 using Vec3 = glm::dvec3;
+using Vec4 = glm::dvec4; ///< a colour with its alpha
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;

@@ -109,13 +109,14 @@ int acceptsSize(void* context, long long width, long long height, int channels) 
     return 0;
 }
 
-float* allocatePixels(void* context, int width, int height) {
+float* allocatePixels(void* context, int width, int height, int channels) {
     ImageBuffer& image = *static_cast<CallContext*>(context)->image;
+    if (channels != 3 && channels != 4) return nullptr;
     try {
         image.width = width;
         image.height = height;
-        image.channels = 3;
-        image.pixels.assign(std::size_t(width) * std::size_t(height) * 3, 0.0f);
+        image.channels = channels;
+        image.pixels.assign(std::size_t(width) * std::size_t(height) * channels, 0.0f);
         return image.pixels.data();
     } catch (const std::bad_alloc&) {
         return nullptr; // reported by the module as out of memory; no exception crosses C

@@ -11,7 +11,7 @@
 extern "C" {
 
 /// Raised whenever a function's signature or meaning changes; the host refuses other versions.
-inline constexpr int kCrtImageIoAbiVersion = 6;
+inline constexpr int kCrtImageIoAbiVersion = 7;
 
 /// The name of the module's one exported function.
 inline constexpr const char* kCrtImageIoEntryName = "crt_image_io_module";
@@ -23,8 +23,9 @@ inline constexpr const char* kCrtImageIoEntryName = "crt_image_io_module";
 /// size while it opens the file, before OpenImageIO sees the file.
 using CrtImageSizeFn = int (*)(void* context, long long width, long long height, int channels);
 
-/// Returns room for width × height × 3 floats, or null when out of memory.
-using CrtImageAllocFn = float* (*)(void* context, int width, int height);
+/// Returns room for width × height × channels floats (3: RGB; 4: RGB and alpha), or null when
+/// out of memory.
+using CrtImageAllocFn = float* (*)(void* context, int width, int height, int channels);
 
 /// Receives the message of a failed call.
 using CrtImageErrorFn = void (*)(void* context, const char* message);
@@ -45,8 +46,8 @@ struct CrtImageInfo {
 /// The module's functions; each returns 1 on success, 0 after calling `error` once.
 struct CrtImageIoModule {
     int abiVersion;
-    /// Reads subimage 0 into 3 channels of floats (integer formats as value / max), once
-    /// `accepts` took its size.
+    /// Reads subimage 0 into 3 channels of floats (integer formats as value / max), or 4 when
+    /// the file has an alpha channel, once `accepts` took its size.
     int (*readImage)(const char* path, int* isInteger, CrtImageSizeFn accepts, CrtImageAllocFn alloc,
                      CrtImageErrorFn error, void* context);
     /// Opens `path` for one image in the OpenImageIO format `format` ("png", "openexr" …),

@@ -68,8 +68,9 @@ std::unique_ptr<ImageInput> openInput(const char* path, const SizeCheck& accepts
         sink.fail(refused);
         return nullptr;
     }
-    // Color channels of a PNG with alpha must come back as stored, not premultiplied:
-    // the alpha is dropped, so premultiplying would darken every transparent pixel.
+    // Color channels of a PNG with alpha must come back as stored, not premultiplied: a
+    // texture's colour and its coverage are used apart, so premultiplying would darken
+    // every transparent pixel.
     ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
     // First the reader of the file's extension, as OpenImageIO would; where that one fails or
@@ -122,14 +123,18 @@ TypeDesc readType(const ImageSpec& spec, TypeDesc wanted) {
 //   than the image holds the image, however long it claims to be; OpenImageIO leaves the
 //   count out of the spec where it does not fit in `int`, and where the file does not give
 //   it (one strip).
+constexpr int kTiffMinIsWhite = 0; // TIFF 6.0's PhotometricInterpretation for it
+
+bool isMinIsWhite(const ImageSpec& spec) {
+    return spec.get_int_attribute("tiff:PhotometricInterpretation", -1) == kTiffMinIsWhite;
+}
+
 bool mustReadByRows(const ImageInput& in) {
-    constexpr int kTiffMinIsWhite = 0; // TIFF 6.0's PhotometricInterpretation for it
     const ImageSpec& spec = in.spec();
     if (std::string_view(in.format_name()) != "tiff" || spec.tile_width != 0) return false;
     const int rowsPerStrip = spec.get_int_attribute("tiff:RowsPerStrip", 0);
     return rowsPerStrip < 1 || rowsPerStrip > spec.height ||
-           (spec.nchannels > 1 &&
-            spec.get_int_attribute("tiff:PhotometricInterpretation", -1) == kTiffMinIsWhite);
+           (spec.nchannels > 1 && isMinIsWhite(spec));
 }
 
 // Every pixel of the image, as `type` (readType), into `data`.
@@ -222,7 +227,9 @@ int readImage(const char* path, int* isInteger, CrtImageSizeFn acceptsSize, CrtI
         // The host may refuse the image before its pixels are read or decoded (a small file
         // can claim a huge image).
         if (!accepts(width, height, channels)) return sink.fail(kSizeRefused);
-        float* out = alloc(context, width, height);
+        const int alpha = spec.alpha_channel < channels ? spec.alpha_channel : -1; // -1: none
+        const int kept = alpha >= 0 ? 4 : 3;
+        float* out = alloc(context, width, height, kept);
         if (!out) return sink.fail("out of memory");
         std::vector<float> stored(std::size_t(width) * height * channels);
         const bool ok = spec.format == OIIO::TypeUInt8    ? readScaled<std::uint8_t>(*in, stored)
@@ -231,15 +238,19 @@ int readImage(const char* path, int* isInteger, CrtImageSizeFn acceptsSize, CrtI
         if (!ok) return sink.fail(oiioError(in->geterror()));
 
         // One or two channels are grey (and alpha): replicate the grey. Otherwise the first
-        // three are RGB and any further (alpha, depth …) are dropped.
+        // three are RGB; of any further, only alpha is kept.
         const bool grey = channels < 3;
+        // OpenImageIO inverts every channel of a min-is-white TIFF; TIFF's photometric
+        // interpretation is the colour's, so the alpha is inverted back.
+        const bool alphaInverted = alpha >= 0 && isMinIsWhite(spec);
         const std::size_t pixels = std::size_t(width) * height;
         for (std::size_t i = 0; i < pixels; ++i) {
             const float* s = &stored[i * channels];
-            float* d = &out[i * 3];
+            float* d = &out[i * kept];
             d[0] = s[0];
             d[1] = grey ? s[0] : s[1];
             d[2] = grey ? s[0] : s[2];
+            if (alpha >= 0) d[3] = alphaInverted ? 1 - s[alpha] : s[alpha];
         }
         if (isInteger) *isInteger = spec.format.is_floating_point() ? 0 : 1;
         return 1;

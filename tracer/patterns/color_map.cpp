@@ -1,30 +1,31 @@
 // Colour maps, looked up as POV-Ray's blend maps are.
 #include "tracer/patterns/color_map.hpp"
 
-#include "tracer/lights.hpp"
+#include "tracer/patterns/map_position.hpp"
 
 namespace crt::tracer {
 
 ColorMap::ColorMap(const std::vector<scene::ColorStop>& stops) {
     for (const scene::ColorStop& stop : stops) {
         values_.push_back(stop.value);
-        colors_.push_back(rgb(stop.color));
+        colors_.push_back({stop.color.r, stop.color.g, stop.color.b, stop.color.a});
     }
     if (colors_.empty()) {
         values_.push_back(0);
-        colors_.push_back(Vec3(0.0));
+        colors_.push_back({0, 0, 0, 1});
     }
 }
 
-Vec3 ColorMap::at(double value) const {
-    size_t last = values_.size() - 1;
-    if (!(value < values_[last])) return colors_[last]; // NaN too: the map's end
-    size_t next = 0;
-    while (value > values_[next]) ++next;
-    if (next == 0 || value == values_[next]) return colors_[next];
-    size_t previous = next - 1;
-    double fraction = (value - values_[previous]) / (values_[next] - values_[previous]);
-    return colors_[previous] + (colors_[next] - colors_[previous]) * fraction;
+Vec4 ColorMap::at(double value) const {
+    MapPosition at = mapPosition(values_, value);
+    if (at.below == at.above) return colors_[at.below];
+    return colors_[at.below] + (colors_[at.above] - colors_[at.below]) * at.fraction;
+}
+
+bool ColorMap::translucent() const {
+    for (const Vec4& c : colors_)
+        if (c.a != 1) return true;
+    return false;
 }
 
 } // namespace crt::tracer

@@ -13,15 +13,17 @@ class ColorMap {
     /// `stops` are non-decreasing in value (the front end checks); there is at least one.
     explicit ColorMap(const std::vector<scene::ColorStop>& stops);
 
-    /// The colour at `value`: the first or last stop's outside them; where stops share a
-    /// value, the colour changes there at once.
-    Vec3 at(double value) const;
+    /// The colour and alpha at `value`: the first or last stop's outside them; where stops
+    /// share a value, the colour changes there at once.
+    Vec4 at(double value) const;
     /// The colour of stop `index` (the last one past the end): discrete patterns' colours.
-    Vec3 entry(size_t index) const { return colors_[std::min(index, colors_.size() - 1)]; }
+    Vec4 entry(size_t index) const { return colors_[std::min(index, colors_.size() - 1)]; }
+    /// Whether some stop's alpha is not 1 (the surface lets light through there).
+    bool translucent() const;
 
   private:
     std::vector<double> values_;
-    std::vector<Vec3> colors_;
+    std::vector<Vec4> colors_;
 };
 
 } // namespace crt::tracer

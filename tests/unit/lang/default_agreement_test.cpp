@@ -49,6 +49,10 @@ constexpr Usage kUsages[] = {
     {ObjectType::CylinderLight, "Settings { lights -> [CylinderLight { from -> vec3(-1, 5, 0) "
                                 "to -> vec3(1, 5, 0) color -> rgb(1, 1, 1) @ }] }"},
     {ObjectType::Material, CRT_SPHERE_WITH("Material { @ }")},
+    {ObjectType::MaterialMap,
+     CRT_SPHERE_WITH("MaterialMap { pattern -> Gradient {} "
+                     "materials -> [[0, Material {}], [1, Material {}]] @ }")},
+    {ObjectType::Layered, CRT_SPHERE_WITH("Layered { materials -> [Material {}] @ }")},
     {ObjectType::Background, "Settings { background -> Background { image -> \"sky.png\" @ } }"},
     {ObjectType::Sphere, "Scene { Sphere { center -> vec3(0, 0, 0) radius -> 1 @ } }"},
     {ObjectType::Box, "Scene { Box { cornerA -> vec3(0, 0, 0) cornerB -> vec3(1, 1, 1) @ } }"},
@@ -204,7 +208,9 @@ std::string otherValue(const AttributeInfo& attr) {
     }
     case AttrType::Turbulence: return "vec3(0.25, 0.5, 0.75)";
     case AttrType::Texture:
-    case AttrType::Bump: return "";
+    case AttrType::Bump:
+    case AttrType::MaterialMap:
+    case AttrType::MaterialList: return ""; // required: no default to differ from
     }
     return "";
 }

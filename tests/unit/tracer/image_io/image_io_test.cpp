@@ -56,8 +56,8 @@ ImageBuffer readOrFail(const std::string& path, bool* eightBit = nullptr) {
     std::optional<ImageBuffer> image = readImage(path, error, eightBit);
     INFO(error);
     REQUIRE(image);
-    REQUIRE(image->channels == 3);
-    REQUIRE(image->pixels.size() == std::size_t(image->width) * image->height * 3);
+    REQUIRE((image->channels == 3 || image->channels == 4));
+    REQUIRE(image->pixels.size() == std::size_t(image->width) * image->height * image->channels);
     return *image;
 }
 
@@ -306,15 +306,21 @@ TEST_CASE("grey images read as three equal channels", "[image_io]") {
                                             200 / 255.0f, 200 / 255.0f});
 }
 
-TEST_CASE("alpha is dropped on read and not premultiplied", "[image_io]") {
+TEST_CASE("alpha is read beside the colour, which is not premultiplied", "[image_io]") {
     ImageBuffer rgba{2, 1, 4, {0.6f, 0.4f, 0.2f, 0.0f, 1.0f, 0.5f, 0.0f, 0.5f}};
     const std::string path = scratchFile("alpha.png");
     writeOrFail(path, rgba, {2.2, false});
     const ImageBuffer back = readOrFail(path);
+    REQUIRE(back.channels == 4);
     CHECK(back.pixels[0] == encodeGamma8(0.6f, 2.2) / 255.0f); // alpha 0 keeps its colour
     CHECK(back.pixels[1] == encodeGamma8(0.4f, 2.2) / 255.0f);
-    CHECK(back.pixels[3] == 1.0f);
-    CHECK(back.pixels[4] == encodeGamma8(0.5f, 2.2) / 255.0f); // not divided by alpha ½
+    CHECK(back.pixels[3] == 0.0f);
+    CHECK(back.pixels[4] == 1.0f);
+    CHECK(back.pixels[5] == encodeGamma8(0.5f, 2.2) / 255.0f); // not multiplied by alpha ½
+    CHECK(back.pixels[7] == Approx(0.5).margin(1 / 255.0));    // alpha is not gamma-encoded
+    ImageBuffer rgb{2, 1, 3, {0.6f, 0.4f, 0.2f, 1.0f, 0.5f, 0.0f}};
+    writeOrFail(scratchFile("opaque.png"), rgb);
+    CHECK(readOrFail(scratchFile("opaque.png")).channels == 3);
     std::string error;
     const std::optional<ImageInfo> info = describeImage(path, error);
     REQUIRE(info);
@@ -514,14 +520,15 @@ TEST_CASE("pixels of more than four channels count as many pixels of four agains
     error.clear();
     CHECK_FALSE(describeImage(path, error, 63'999));
     CHECK_THAT(error, Catch::Contains("of 1000 channels"));
-    // At the limit the image is read: its first three channels.
+    // At the limit the image is read: its first three channels (and an alpha, if it has one).
     const std::optional<ImageBuffer> image = readImage(path, error, nullptr, 64'000);
     INFO(error);
     REQUIRE(image);
     std::size_t wrong = 0;
     for (std::size_t pixel = 0; pixel < std::size_t(kSide) * kSide; ++pixel)
         for (std::size_t c = 0; c < 3; ++c)
-            wrong += image->pixels[pixel * 3 + c] != float(values[pixel * kChannels + c]) / 255.0f;
+            wrong += image->pixels[pixel * image->channels + c] !=
+                     float(values[pixel * kChannels + c]) / 255.0f;
     CHECK(wrong == 0);
     // Up to four channels only the pixels count.
     const std::string rgba = scratchFile("rgba_16.png");
@@ -778,11 +785,13 @@ TEST_CASE("a min-is-white TIFF with alpha in deflated strips reads inverted, wit
     const ImageBuffer image = readOrFail(path);
     REQUIRE(image.width == kWidth);
     REQUIRE(image.height == kHeight);
+    REQUIRE(image.channels == 4); // grey and alpha: the grey made RGB, the alpha as stored
     std::size_t wrong = 0;
     for (std::size_t i = 0; i < std::size_t(kWidth) * kHeight; ++i) {
         const float white = float(255 - values[i * 2]) / 255.0f;
-        wrong += image.pixels[i * 3] != white || image.pixels[i * 3 + 1] != white ||
-                 image.pixels[i * 3 + 2] != white;
+        const float* p = &image.pixels[i * 4];
+        wrong += p[0] != white || p[1] != white || p[2] != white ||
+                 std::abs(p[3] - float(values[i * 2 + 1]) / 255.0f) > 1e-6f;
     }
     CHECK(wrong == 0);
 }

@@ -9,6 +9,7 @@
 using namespace crt;
 using tracer::ColorMap;
 using tracer::Vec3;
+using tracer::Vec4;
 
 namespace {
 
@@ -41,10 +42,10 @@ TEST_CASE("two stops at one value make a sharp edge", "[patterns]") {
 TEST_CASE("a two-stop map at 0 and 1 is the 2015 mix of a and b, bit for bit", "[patterns]") {
     scene::Color a{0.9, 0.3, 0.05, 1}, b{0.1, 0.7, 0.95, 1};
     ColorMap map({{0, a}, {1, b}});
-    CHECK(map.at(1.0) == Vec3(b.r, b.g, b.b)); // the top stop itself (2015: a + (b - a) · 1)
+    CHECK(map.at(1.0) == Vec4(b.r, b.g, b.b, 1)); // the top stop itself (2015: a + (b - a) · 1)
     for (double t : {0.0, 0.1, 0.3333333333, 0.5, 0.77, 0.999}) {
         Vec3 old = Vec3(a.r, a.g, a.b) + (Vec3(b.r, b.g, b.b) - Vec3(a.r, a.g, a.b)) * t;
-        CHECK(map.at(t) == old);
+        CHECK(Vec3(map.at(t)) == old);
     }
 }
 
@@ -54,4 +55,13 @@ TEST_CASE("discrete patterns read stops by position", "[patterns]") {
     CHECK(map.entry(1).x == 0.5);
     CHECK(map.entry(2).x == 0.9);
     CHECK(map.entry(5).x == 0.9);
+}
+
+TEST_CASE("a colour map carries its stops' alpha", "[patterns]") {
+    ColorMap opaque({{0, grey(0)}, {1, grey(1)}});
+    CHECK_FALSE(opaque.translucent());
+    ColorMap lace({{0, {1, 1, 1, 1}}, {1, {1, 1, 1, 0}}});
+    CHECK(lace.translucent());
+    CHECK(lace.at(0.25).a == Approx(0.75));
+    CHECK(lace.entry(1).a == 0);
 }

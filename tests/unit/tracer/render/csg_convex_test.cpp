@@ -53,8 +53,8 @@ using CrossingSet = std::vector<std::pair<double, int32_t>>;
 
 CrossingSet crossings(const RenderScene& scene, const Ray& ray, QueryScratch& scratch, RayStats& stats) {
     CrossingSet out;
-    scene.forEachCrossing(ray, kInfinity, -1, scratch, stats, [&](int32_t primitive, double t) {
-        out.emplace_back(t, primitive);
+    scene.forEachCrossing(ray, kInfinity, -1, scratch, stats, [&](const Hit& hit) {
+        out.emplace_back(hit.t, hit.primitive);
         return true;
     });
     std::sort(out.begin(), out.end());

@@ -23,7 +23,8 @@ struct Probe {
     bool hit(const Ray& ray, Hit& hit) { return scene->intersect(ray, kInfinity, hit, scratch, stats); }
     int crossings(const Ray& ray) {
         int n = 0;
-        scene->forEachCrossing(ray, kInfinity, -1, scratch, stats, [&](int32_t, double) { return ++n, true; });
+        scene->forEachCrossing(ray, kInfinity, -1, scratch, stats,
+                               [&](const Hit&) { return ++n, true; });
         return n;
     }
 };

@@ -73,8 +73,10 @@ TEST_CASE("A ray skips the primitive it leaves only when it cannot meet it again
             ++skipped;
             CHECK(departed == hit.primitive);
             // What the queries would have found on it: nothing.
-            scene->forEachCrossing(ray, kInfinity, -1, scratch, stats, [&](int32_t primitive, double t) {
-                if (primitive == departed) FAIL("a ray meets the primitive it left at t = " << t);
+            scene->forEachCrossing(ray, kInfinity, -1, scratch, stats, [&](const Hit& hit) {
+                if (hit.primitive == departed) {
+                    FAIL("a ray meets the primitive it left at t = " << hit.t);
+                }
                 return true;
             });
             Hit skippedHit, fullHit;
