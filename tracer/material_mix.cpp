@@ -20,11 +20,6 @@ MaterialMixer::MaterialMixer(const std::vector<ShadingMaterial>& materials,
     }
 }
 
-Vec4 MaterialMixer::colorAt(const ShadingMaterial& m, const SurfaceInteraction& si) const {
-    if (m.texture < 0) return {m.color.r, m.color.g, m.color.b, m.color.a};
-    return textures_[static_cast<size_t>(m.texture)].color(si.objectPoint, si.uv, si.shadingNormal);
-}
-
 Vec3 MaterialMixer::resolve(int32_t index, const SurfaceInteraction& si, double weight,
                             std::vector<MaterialShare>& shares) const {
     const ShadingMaterial& m = materials_[static_cast<size_t>(index)];

@@ -26,7 +26,10 @@ class MaterialMixer {
     /// Whether material `index` is one opaque plain material: shading takes it as it is.
     bool isPlain(int32_t index) const { return plain_[static_cast<size_t>(index)] != 0; }
     /// A plain material's colour and alpha at the surface point.
-    Vec4 colorAt(const ShadingMaterial& m, const SurfaceInteraction& si) const;
+    Vec4 colorAt(const ShadingMaterial& m, const SurfaceInteraction& si) const {
+        if (m.texture < 0) return {m.color.r, m.color.g, m.color.b, m.color.a};
+        return textures_[static_cast<size_t>(m.texture)].color(si.objectPoint, si.uv, si.shadingNormal);
+    }
     /// Appends to `shares` the plain materials material `index` is made of at the point, each
     /// weighted by `weight` times its part; returns `weight` times the light that passes the
     /// surface there unbent (what the alphas leave, tinted by `filter`).

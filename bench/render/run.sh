@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Render benchmark: crtc against POV-Ray 3.7 on three equivalent scenes
-# (mirror_room, sphere_grid, csg), rendered by both tools at each size,
+# (mirror_room, sphere_grid, csg, textured), rendered by both tools at each size,
 # alternating, several times. Prints median wall times, their ratio and the
 # RMSE between the two images as a Markdown table. See bench/README.md.
 #
@@ -9,7 +9,7 @@
 #
 #   --runs N      timed runs per tool, scene and size; medians reported (default 3)
 #   --sizes LIST  comma-separated image sizes (default 800x600,1920x1080)
-#   --scenes LIST comma-separated subset of mirror_room,sphere_grid,csg
+#   --scenes LIST comma-separated subset of mirror_room,sphere_grid,csg,textured
 #   --base CRTC   a second crtc binary (e.g. the build before a change; default
 #                 $CRTC_BASE), timed in the same runs against the same POV-Ray
 #                 renders; adds columns with its time, its ratio to POV-Ray and
@@ -38,7 +38,7 @@ root=$(cd "$here/../.." && pwd)
 
 runs=3
 sizes=800x600,1920x1080
-scenes=mirror_room,sphere_grid,csg
+scenes=mirror_room,sphere_grid,csg,textured
 base=${CRTC_BASE:-}
 base_commit=
 bench_parse_options runs sizes scenes base base-commit=base_commit -- "$@"
@@ -63,8 +63,8 @@ done
 IFS=, read -r -a scene_list <<<"$scenes"
 for w in "${scene_list[@]}"; do
     case $w in
-        mirror_room | sphere_grid | csg) ;;
-        *) echo "$0: unknown scene '$w' (mirror_room, sphere_grid, csg)" >&2; exit 2 ;;
+        mirror_room | sphere_grid | csg | textured) ;;
+        *) echo "$0: unknown scene '$w' (mirror_room, sphere_grid, csg, textured)" >&2; exit 2 ;;
     esac
 done
 if [[ ! -x $povray ]]; then
@@ -255,7 +255,7 @@ goal_missed=0
 base_head='' base_rule=''
 [[ $have_base -eq 1 ]] && base_head=" base (s) | ratio (POV/base) | crtc/base |" base_rule=" ---: | ---: | ---: |"
 echo
-echo "| scene | size | POV-Ray (s) | crtc (s) | ratio (POV/crtc) | RMSE (/255) | goal met? (ratio ≥ 3, RMSE ≤ 2) |$base_head"
+echo "| scene | size | POV-Ray (s) | crtc (s) | ratio (POV/crtc) | RMSE (/255) | goal met? (ratio ≥ 3, RMSE ≤ 2; textured: ratio ≥ 1) |$base_head"
 echo "| --- | --- | ---: | ---: | ---: | ---: | --- |$base_rule"
 for w in "${scene_list[@]}"; do
     for s in "${size_list[@]}"; do
@@ -270,12 +270,17 @@ for w in "${scene_list[@]}"; do
         else
             cw_cell=$cw e_cell=${e:-error}
             ratio=$(awk -v a="$pw" -v b="$cw" 'BEGIN { if (b > 0) printf "%.2fx", a / b; else print "inf" }')
+            # textured: crt's noise is its own, so its images are not held to POV-Ray's, and
+            # its textured shading need only cost no more than POV-Ray's.
+            speed=3 image=2
+            [[ $w == textured ]] && speed=1 image=inf
             met=no
-            awk -v a="$pw" -v b="$cw" -v e="$e" 'BEGIN { exit !(e != "" && a >= 3 * b && e <= 2) }' && met=yes
+            awk -v a="$pw" -v b="$cw" -v e="$e" -v k="$speed" -v m="$image" \
+                'BEGIN { exit !(e != "" && a >= k * b && (m == "inf" || e <= m)) }' && met=yes
             if [[ $met == no ]]; then
                 why=()
-                awk -v a="$pw" -v b="$cw" 'BEGIN { exit !(a < 3 * b) }' && why+=(speed)
-                awk -v e="$e" 'BEGIN { exit !(e == "" || e > 2) }' && why+=(image)
+                awk -v a="$pw" -v b="$cw" -v k="$speed" 'BEGIN { exit !(a < k * b) }' && why+=(speed)
+                awk -v e="$e" -v m="$image" 'BEGIN { exit !(e == "" || (m != "inf" && e > m)) }' && why+=(image)
                 met="no (${why[*]})"
             fi
         fi
