@@ -86,7 +86,24 @@ Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& sett
         features_.transparentShadows |= m.transparency > 0 || !plain;
         features_.textures |= m.readsSurface();
         features_.specular |= m.specular > 0;
+        features_.blends |= m.blend >= 0;
+        features_.seeThrough |= !plain && m.blend < 0;
     }
+}
+
+std::string SceneFeatures::names() const {
+    std::string list;
+    auto add = [&](bool used, const char* name) {
+        if (used) list += (list.empty() ? "" : ", ") + std::string(name);
+    };
+    add(reflection, "reflection");
+    add(refraction, "refraction");
+    add(transparentShadows, "transparent shadows");
+    add(specular, "highlights");
+    add(textures, "textures");
+    add(blends, "material blends");
+    add(seeThrough, "see-through colours");
+    return list.empty() ? "plain" : list;
 }
 
 Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context,

@@ -9,6 +9,7 @@
 #include "tracer/sampling.hpp"
 #include "tracer/texture.hpp"
 
+#include <string>
 #include <vector>
 
 namespace crt::tracer {
@@ -28,13 +29,18 @@ struct alignas(64) TraceContext {
     int refractions = 0;   ///< refractions on the path to the point being shaded
 };
 
-/// What the scene uses, found once so per-ray code can skip what is absent.
+/// What the scene uses, found once so per-ray code can skip what is absent (--stats says).
 struct SceneFeatures {
     bool reflection = false;
     bool refraction = false;
     bool transparentShadows = false;
     bool textures = false;
     bool specular = false;
+    bool blends = false;     ///< MaterialMap, Layered
+    bool seeThrough = false; ///< a colour's alpha below 1 somewhere
+
+    /// Those in use, by name ("reflection, textures"), or "plain" when none is.
+    std::string names() const;
 };
 
 class Integrator {

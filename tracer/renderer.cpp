@@ -234,6 +234,7 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     outcome.primitives = prepared.geometry->primitives.size();
     outcome.bvhNodes = prepared.geometry->bvh.nodeCount();
     outcome.bvhDepth = prepared.geometry->bvh.depth();
+    outcome.shading = prepared.integrator->features().names();
     outcome.samples = settings.antialias == scene::Antialias::Grid ||
                               settings.antialias == scene::Antialias::Stratified
                           ? static_cast<uint64_t>(settings.supersampling) * settings.supersampling

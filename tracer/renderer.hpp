@@ -85,6 +85,7 @@ struct RenderOutcome {
     size_t bvhNodes = 0;
     int bvhDepth = 0;
     uint64_t samples = 0; ///< camera samples per pixel (before depth of field)
+    std::string shading;  ///< the shading the scene uses (SceneFeatures::names)
 };
 
 /// Renders the tiles of `job` of `scene` at its settings' width and height.

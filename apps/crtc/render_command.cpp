@@ -74,6 +74,7 @@ struct RenderTotals {
         outcome.primitives = r.primitives;
         outcome.bvhNodes = r.bvhNodes;
         outcome.bvhDepth = r.bvhDepth;
+        outcome.shading = r.shading;
     }
 };
 
@@ -82,12 +83,13 @@ void printStats(const RenderTotals& totals) {
     const tracer::RayStats& s = r.stats;
     std::cerr << fmt::format(
         "crtc: stats: primitives {}, BVH nodes {}, BVH depth {}\n"
+        "crtc: stats: shading: {}\n"
         "crtc: stats: rays: camera {}, reflection {}, refraction {}, shadow {} (total {})\n"
         "crtc: stats: BVH nodes visited {}, intersection tests {}\n"
         "crtc: stats: build {:.3f}s, render {:.3f}s, frames reused unchanged {}\n",
-        r.primitives, r.bvhNodes, r.bvhDepth, s.cameraRays, s.reflectionRays, s.refractionRays,
-        s.shadowRays, s.totalRays(), s.nodesVisited, s.intersectionTests, r.buildSeconds,
-        r.renderSeconds, totals.reusedFrames);
+        r.primitives, r.bvhNodes, r.bvhDepth, r.shading, s.cameraRays, s.reflectionRays,
+        s.refractionRays, s.shadowRays, s.totalRays(), s.nodesVisited, s.intersectionTests,
+        r.buildSeconds, r.renderSeconds, totals.reusedFrames);
 }
 
 /// The camera rays a pixel got on average: depth of field and adaptive samples included.

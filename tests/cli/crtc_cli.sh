@@ -175,6 +175,18 @@ expect_text "$work/err" "mesh\.crt:2:24: error: bad mesh" "--check reports the b
 expect_status 0 "--stats" "$crtc" --stats -o "$work/images/s.png" "$work/scenes/tiny.crt"
 expect_text "$work/err" "stats: rays: camera 768, reflection 0, refraction 0, shadow 0" "--stats counts the rays"
 expect_text "$work/err" "stats: BVH nodes visited [0-9]+, intersection tests [0-9]+" "--stats counts BVH work"
+expect_text "$work/err" "stats: shading: plain$" "--stats says a grey ball takes none of the shading it can skip"
+cat >"$work/scenes/lace.crt" <<'CRT'
+Settings { width -> 32 height -> 24 }
+lace = Material { texture -> Checker { colors -> [[0, rgba(1, 1, 1, 1)], [1, rgba(1, 1, 1, 0)]] } }
+Scene {
+    Sphere { center -> vec3(0, 0, 1) radius -> 0.5
+        material -> MaterialMap { pattern -> Gradient { } materials -> [[0, lace], [1, Material { }]] } }
+}
+CRT
+expect_status 0 "--stats of a material map" "$crtc" --stats -o "$work/images/lace.png" "$work/scenes/lace.crt"
+expect_text "$work/err" "stats: shading: .*textures, material blends, see-through colours$" \
+    "--stats names the material blend and the see-through colour"
 expect_status 0 "-q" "$crtc" -q -o "$work/images/q.png" "$work/scenes/tiny.crt"
 if [ -s "$work/out" ] || [ -s "$work/err" ]; then
     echo "FAIL: -q printed something on success"
