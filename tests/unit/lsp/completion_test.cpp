@@ -83,6 +83,18 @@ TEST_CASE("after '->': values of the attribute's type", "[completion]") {
         CHECK(item(list, "shiny").sortText < item(list, "Material").sortText + "z");
         CHECK_FALSE(has(list, "Sphere"));
         CHECK_FALSE(has(list, "vec3"));
+        CHECK(has(list, "MaterialMap")); // the materials made of others stand there too
+        CHECK(has(list, "Layered"));
+    }
+    SECTION("a material map's entries and a Layered's layers, and the map's pattern") {
+        auto entries = completeAt("m = MaterialMap { pattern -> Bozo { } materials -> @ }");
+        CHECK(has(entries, "[[0, …], [1, …]]"));
+        CHECK(item(entries, "[[0, …], [1, …]]").snippet);
+        CHECK(has(completeAt("m = Layered { materials -> @ }"), "[…, …]"));
+        auto pattern = completeAt("m = MaterialMap { pattern -> @ }");
+        CHECK(has(pattern, "Granite"));
+        CHECK_FALSE(has(pattern, "NoiseBump"));
+        CHECK_FALSE(has(pattern, "Material"));
     }
     SECTION("a colour") {
         auto list = completeAt("Settings { background -> @");

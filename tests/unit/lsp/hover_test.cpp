@@ -111,3 +111,22 @@ TEST_CASE("hover on a pattern's attributes gives their types and defaults", "[ho
     REQUIRE(turbulence);
     CHECK_THAT(turbulence->markdown, Contains("float or vec3"));
 }
+
+TEST_CASE("hover on a material map's and a Layered's attributes and types", "[hover]") {
+    Annotations code("m = MaterialMap { pat@tern -> Gradient { } mate@rials -> [[0, Material { }], "
+                     "[1, Material { fil@ter -> 0.5 }]] }\n"
+                     "l = Lay@ered { materials -> [m] }");
+    auto a = analyzeCode(code.code);
+    auto pattern = hover(*a, code.points()[0], nullptr);
+    REQUIRE(pattern);
+    CHECK_THAT(pattern->markdown, Contains("MaterialMap.pattern: texture"));
+    auto materials = hover(*a, code.points()[1], nullptr);
+    REQUIRE(materials);
+    CHECK_THAT(materials->markdown, Contains("MaterialMap.materials: material map"));
+    auto filter = hover(*a, code.points()[2], nullptr);
+    REQUIRE(filter);
+    CHECK_THAT(filter->markdown, Contains("Material.filter: float") && Contains("Default: `0`"));
+    auto layered = hover(*a, code.points()[3], nullptr);
+    REQUIRE(layered);
+    CHECK_THAT(layered->markdown, Contains("Layered"));
+}
