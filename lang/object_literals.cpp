@@ -626,8 +626,8 @@ Value Interpreter::buildBackground(const ObjectBuilder& b) {
 }
 
 // A texture's kind is its object type's place after Checker: the two lists keep one order.
-static_assert(static_cast<int>(ObjectType::Bump) - static_cast<int>(ObjectType::Checker) ==
-              static_cast<int>(scene::TextureKind::Bump));
+static_assert(static_cast<int>(ObjectType::Waves) - static_cast<int>(ObjectType::Checker) ==
+              static_cast<int>(scene::TextureKind::Waves));
 
 Value Interpreter::buildTexture(ObjectBuilder& b) {
     ObjectType type = b.info.type;

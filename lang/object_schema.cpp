@@ -420,6 +420,12 @@ constexpr ObjectInfo kObjects[] = {
     {T::Cells, "Cells", C::Texture, false, "A random value for each unit cube.", kPlainPattern},
     {T::Slope, "Slope", C::Texture, false, "The surface's slope against a direction.", kSlope},
     {T::Bump, "Bump", C::Texture, false, "Bumps from any pattern's value.", kBump},
+    {T::Ripples, "Ripples", C::Texture, false,
+     "Rings spreading from ten points near the origin, one unit apart (POV-Ray's ripples).",
+     kPlainPattern},
+    {T::Waves, "Waves", C::Texture, false,
+     "Waves from ten points near the origin, each of its own length (POV-Ray's waves).",
+     kPlainPattern},
 };
 static_assert(std::size(kObjects) == static_cast<size_t>(ObjectType::Count));
 static_assert(std::size(kSettings) <= kMaxAttributes && std::size(kMaterial) <= kMaxAttributes);

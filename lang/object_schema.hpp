@@ -62,6 +62,8 @@ enum class ObjectType : uint8_t {
     Cells,
     Slope,
     Bump,
+    Ripples,
+    Waves,
     Count,
 };
 

@@ -74,7 +74,9 @@ enum class TextureKind : uint8_t {
     Crackle,
     Cells,
     Slope,
-    Bump
+    Bump,
+    Ripples,
+    Waves
 };
 enum class TextureMapping : uint8_t { Uv, Planar, Spherical, Cylindrical, Cubic };
 

@@ -122,8 +122,8 @@ const char* textureKind(TextureKind kind) {
         "ImageBump", "Gradient", "Onion",     "Leopard",     "Radial",   "Spiral",  "Brick",
         "Hexagon",   "Boxed",    "Spherical", "Cylindrical", "Planar",   "Quilted", "Mandel",
         "Bozo",      "Spotted",  "Granite",   "Agate",       "Wrinkles", "Dents",   "Crackle",
-        "Cells",     "Slope",    "Bump"};
-    static_assert(std::size(names) == static_cast<size_t>(TextureKind::Bump) + 1);
+        "Cells",     "Slope",    "Bump",      "Ripples",     "Waves"};
+    static_assert(std::size(names) == static_cast<size_t>(TextureKind::Waves) + 1);
     return names[static_cast<int>(kind)];
 }
 

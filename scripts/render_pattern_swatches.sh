@@ -41,6 +41,8 @@ swatches=(
     "crackle|Crackle { }"
     "cells|Cells { }"
     "slope|Slope { }"
+    "ripples|Ripples { frequency -> 2 } <scale 1.5>"
+    "waves|Waves { frequency -> 2 } <scale 1.5>"
 )
 for swatch in "${swatches[@]}"; do
     name=${swatch%%|*} texture=${swatch#*|}

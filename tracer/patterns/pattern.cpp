@@ -36,6 +36,8 @@ double continuousValue(const scene::TextureDesc& d, const Vec3& p, const Vec3& n
     case Kind::Crackle: return patterns::crackle(p, d.metric, d.form);
     case Kind::Cells: return patterns::cells(p);
     case Kind::Slope: return patterns::slope(normal, d.axis);
+    case Kind::Ripples: return patterns::ripples(p, d.frequency, d.phase);
+    case Kind::Waves: return patterns::waves(p, d.frequency, d.phase);
     default: return 0;
     }
 }

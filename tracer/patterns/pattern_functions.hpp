@@ -29,6 +29,11 @@ double slope(const Vec3& normal, const Vec3& direction);
 double leopard(const Vec3& p);
 double quilted(const Vec3& p, double control0, double control1);
 
+// Circular waves from POV-Ray's ten sources (wave_patterns.cpp), given the pattern's
+// frequency and phase, which they read inside.
+double ripples(const Vec3& p, double frequency, double phase);
+double waves(const Vec3& p, double frequency, double phase);
+
 // Fractal (mandel_pattern.cpp).
 double mandel(const Vec3& p, int iterations);
 

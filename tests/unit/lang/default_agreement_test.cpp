@@ -78,6 +78,8 @@ constexpr Usage kUsages[] = {
     {ObjectType::NoiseBump, CRT_SPHERE_WITH("Material { bump -> NoiseBump { @ } }")},
     {ObjectType::ImageBump,
      CRT_SPHERE_WITH("Material { bump -> ImageBump { file -> \"b.png\" @ } }")},
+    {ObjectType::Ripples, CRT_SPHERE_WITH("Material { texture -> Ripples { @ } }")},
+    {ObjectType::Waves, CRT_SPHERE_WITH("Material { texture -> Waves { @ } }")},
     {ObjectType::Gradient, CRT_SPHERE_WITH("Material { texture -> Gradient { @ } }")},
     {ObjectType::Onion, CRT_SPHERE_WITH("Material { texture -> Onion { @ } }")},
     {ObjectType::Leopard, CRT_SPHERE_WITH("Material { texture -> Leopard { @ } }")},

@@ -1,0 +1,3 @@
+#include "stage.inc"
+#declare P = pigment { ripples color_map { TwinColors } }
+Wall(P)

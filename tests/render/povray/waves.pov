@@ -1,0 +1,3 @@
+#include "stage.inc"
+#declare P = pigment { waves color_map { TwinColors } }
+Wall(P)
