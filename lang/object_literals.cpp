@@ -116,8 +116,9 @@ scene::FinishDesc readFinish(const ObjectBuilder& b) {
     f.filter = b.number("filter", f.filter);
     f.texture = b.index("texture", f.texture);
     f.bump = b.index("bump", f.bump);
-    if (f.filter < 0 || f.filter > 1)
+    if (f.filter < 0 || f.filter > 1) {
         b.in.fail(b.where("filter"), "filter must be between 0 and 1");
+    }
     if (f.ior <= 0) b.in.fail(b.where("ior"), "the index of refraction must be positive");
     if (f.glossiness < 0 || f.glossiness > 1) {
         b.in.fail(b.where("glossiness"), "glossiness must be between 0 and 1");
