@@ -214,7 +214,7 @@ void readPatternColors(const ObjectBuilder& b, scene::TextureDesc& t) {
         t.colors[0].color = b.color("a", t.colors[0].color);
         t.colors[1].color = b.color("b", t.colors[1].color);
     }
-    size_t wanted = t.kind == scene::TextureKind::Hexagon ? 3 : 2;
+    size_t wanted = scene::discreteColorCount(t.kind);
     if (b.get("colors") && scene::isDiscretePattern(t.kind) && t.colors.size() != wanted) {
         b.in.fail(b.where("colors"), fmt::format("{} shows {} colours, one a stop; this map has {}",
                                                  b.info.name, wanted, t.colors.size()));
@@ -225,12 +225,10 @@ void readPatternColors(const ObjectBuilder& b, scene::TextureDesc& t) {
 void readBumpPattern(const ObjectBuilder& b, const std::vector<scene::TextureDesc>& textures,
                      scene::TextureDesc& t) {
     const scene::TextureDesc& pattern = textures[static_cast<size_t>(b.index("pattern", 0))];
-    if (scene::readsImage(pattern.kind) || scene::isDiscretePattern(pattern.kind)) {
-        b.in.fail(
-            b.where("pattern"),
-            fmt::format("a Bump reads the slope of a pattern's value, and {} has none to read{}",
-                        objectInfo(b.get("pattern")->objectType).name,
-                        scene::readsImage(pattern.kind) ? "; use ImageBump for an image" : ""));
+    if (scene::readsImage(pattern.kind)) {
+        b.in.fail(b.where("pattern"),
+                  "a Bump reads the slope of a pattern's value, and an Image has none to read; "
+                  "use ImageBump for an image");
     }
     t.pattern = {pattern};
 }

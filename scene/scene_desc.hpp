@@ -90,6 +90,10 @@ inline bool isDiscretePattern(TextureKind kind) {
     return kind == TextureKind::Checker || kind == TextureKind::Stripes ||
            kind == TextureKind::Brick || kind == TextureKind::Hexagon;
 }
+/// How many colours a discrete pattern shows: Hexagon three, the others two.
+inline size_t discreteColorCount(TextureKind kind) {
+    return kind == TextureKind::Hexagon ? 3 : 2;
+}
 /// Textures that perturb the normal rather than give a colour.
 inline bool isBumpKind(TextureKind kind) {
     return kind == TextureKind::NoiseBump || kind == TextureKind::ImageBump ||

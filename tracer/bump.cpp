@@ -7,25 +7,24 @@ namespace crt::tracer {
 
 namespace {
 
-/// Finite-difference step, in object-space units or in uv.
-constexpr double kStep = 1e-4;
-
 /// The height's gradient in object space.
 Vec3 pointGradient(const Texture& bump, const SurfaceInteraction& si) {
+    double step = bump.slopeStep();
     double h0 = bump.height(si.objectPoint, si.uv);
-    Vec3 gradient(bump.height(si.objectPoint + Vec3(kStep, 0, 0), si.uv) - h0,
-                  bump.height(si.objectPoint + Vec3(0, kStep, 0), si.uv) - h0,
-                  bump.height(si.objectPoint + Vec3(0, 0, kStep), si.uv) - h0);
-    return gradient / kStep;
+    Vec3 gradient(bump.height(si.objectPoint + Vec3(step, 0, 0), si.uv) - h0,
+                  bump.height(si.objectPoint + Vec3(0, step, 0), si.uv) - h0,
+                  bump.height(si.objectPoint + Vec3(0, 0, step), si.uv) - h0);
+    return gradient / step;
 }
 
 /// The surface vector g with g·dpdu = ∂h/∂u and g·dpdv = ∂h/∂v: the height's gradient on the
 /// surface (through the inverse of the uv metric, so skewed or stretched uvs are handled).
 /// Zero where the tangents do not span a plane (a sphere's pole, degenerate mesh uvs).
 Vec3 uvGradient(const Texture& bump, const SurfaceInteraction& si) {
+    double step = bump.slopeStep();
     double h0 = bump.height(si.objectPoint, si.uv);
-    double hu = (bump.height(si.objectPoint, si.uv + Vec2(kStep, 0)) - h0) / kStep;
-    double hv = (bump.height(si.objectPoint, si.uv + Vec2(0, kStep)) - h0) / kStep;
+    double hu = (bump.height(si.objectPoint, si.uv + Vec2(step, 0)) - h0) / step;
+    double hv = (bump.height(si.objectPoint, si.uv + Vec2(0, step)) - h0) / step;
     double e = glm::dot(si.dpdu, si.dpdu), f = glm::dot(si.dpdu, si.dpdv),
            g = glm::dot(si.dpdv, si.dpdv);
     double det = e * g - f * f;

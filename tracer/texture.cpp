@@ -14,6 +14,12 @@ Texture::Texture(const scene::TextureDesc& desc, const Image* image)
       colors_(desc.colors) {
     if (desc.kind == scene::TextureKind::Bump && !desc.pattern.empty()) {
         pattern_ = std::make_shared<const Texture>(desc.pattern.front(), nullptr);
+        if (pattern_->isDiscrete()) {
+            constexpr double kBevel = 0.02;
+            glm::dmat3 toPattern = pattern_->toTexture_.linear() * toTexture_.linear();
+            double step = kBevel / std::cbrt(std::abs(glm::determinant(toPattern)));
+            if (std::isfinite(step)) slopeStep_ = step;
+        }
     }
 }
 
@@ -74,8 +80,11 @@ double Texture::height(const Vec3& objectPoint, const Vec2& uv) const {
     Vec3 p = toTexture_.point(objectPoint);
     double s = desc_.size > 0 ? desc_.size : 1;
     if (desc_.kind == scene::TextureKind::NoiseBump) return fractalNoise(p / s, desc_.octaves);
-    if (desc_.kind == scene::TextureKind::Bump && pattern_)
-        return pattern_->value(p, Vec3(0, 1, 0));
+    if (desc_.kind == scene::TextureKind::Bump && pattern_) {
+        double value = pattern_->value(p, Vec3(0, 1, 0));
+        if (!pattern_->isDiscrete()) return value;
+        return value / static_cast<double>(scene::discreteColorCount(pattern_->desc_.kind) - 1);
+    }
     if (desc_.kind == scene::TextureKind::ImageBump && image_ && image_->width > 0) {
         Vec2 c = imageCoordinates(p, uv);
         Vec3 v = image_->bilinear(c.x, c.y, true);

@@ -28,6 +28,10 @@ public:
     bool isDiscrete() const { return scene::isDiscretePattern(desc_.kind); }
     bool isBump() const { return scene::isBumpKind(desc_.kind); }
     double strength() const { return desc_.strength; }
+    /// The object-space distance over which a bump's slope is read. A discrete pattern is
+    /// flat but at its edges, which it bevels this wide (POV-Ray's default accuracy, 0.02 of
+    /// the pattern's units); any other bump is differentiated over a step too small to see.
+    double slopeStep() const { return slopeStep_; }
     /// Whether height() reads the surface's uv (an ImageBump mapped "uv"), not the point.
     bool heightFromUv() const {
         return desc_.kind == scene::TextureKind::ImageBump &&
@@ -42,6 +46,7 @@ public:
     Transform toTexture_; ///< object space to texture space (the inverse of its modifiers)
     ColorMap colors_;
     std::shared_ptr<const Texture> pattern_; ///< a Bump's pattern
+    double slopeStep_ = 1e-4;
 };
 
 } // namespace crt::tracer
