@@ -10,10 +10,10 @@ namespace {
 /// The height's gradient in object space.
 Vec3 pointGradient(const Texture& bump, const SurfaceInteraction& si) {
     double step = bump.slopeStep();
-    double h0 = bump.height(si.objectPoint, si.uv);
-    Vec3 gradient(bump.height(si.objectPoint + Vec3(step, 0, 0), si.uv) - h0,
-                  bump.height(si.objectPoint + Vec3(0, step, 0), si.uv) - h0,
-                  bump.height(si.objectPoint + Vec3(0, 0, step), si.uv) - h0);
+    double h0 = bump.height(si.objectPoint, si.uv, si.mappingAxis);
+    Vec3 gradient(bump.height(si.objectPoint + Vec3(step, 0, 0), si.uv, si.mappingAxis) - h0,
+                  bump.height(si.objectPoint + Vec3(0, step, 0), si.uv, si.mappingAxis) - h0,
+                  bump.height(si.objectPoint + Vec3(0, 0, step), si.uv, si.mappingAxis) - h0);
     return gradient / step;
 }
 
@@ -22,9 +22,9 @@ Vec3 pointGradient(const Texture& bump, const SurfaceInteraction& si) {
 /// Zero where the tangents do not span a plane (a sphere's pole, degenerate mesh uvs).
 Vec3 uvGradient(const Texture& bump, const SurfaceInteraction& si) {
     double step = bump.slopeStep();
-    double h0 = bump.height(si.objectPoint, si.uv);
-    double hu = (bump.height(si.objectPoint, si.uv + Vec2(step, 0)) - h0) / step;
-    double hv = (bump.height(si.objectPoint, si.uv + Vec2(0, step)) - h0) / step;
+    double h0 = bump.height(si.objectPoint, si.uv, si.mappingAxis);
+    double hu = (bump.height(si.objectPoint, si.uv + Vec2(step, 0), si.mappingAxis) - h0) / step;
+    double hv = (bump.height(si.objectPoint, si.uv + Vec2(0, step), si.mappingAxis) - h0) / step;
     double e = glm::dot(si.dpdu, si.dpdu), f = glm::dot(si.dpdu, si.dpdv),
            g = glm::dot(si.dpdv, si.dpdv);
     double det = e * g - f * f;

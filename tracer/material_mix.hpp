@@ -28,7 +28,7 @@ class MaterialMixer {
     /// A plain material's colour and alpha at the surface point.
     Vec4 colorAt(const ShadingMaterial& m, const SurfaceInteraction& si) const {
         if (m.texture < 0) return {m.color.r, m.color.g, m.color.b, m.color.a};
-        return textures_[static_cast<size_t>(m.texture)].color(si.objectPoint, si.uv, si.shadingNormal);
+        return textures_[static_cast<size_t>(m.texture)].color(si.objectPoint, si.uv, si.shadingNormal, si.mappingAxis);
     }
     /// Appends to `shares` the plain materials material `index` is made of at the point, each
     /// weighted by `weight` times its part; returns `weight` times the light that passes the

@@ -178,6 +178,7 @@ SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) cons
     SurfaceInteraction si;
     si.objectPoint = sp.point;
     si.uv = sp.uv;
+    if (m.readsSurface()) si.mappingAxis = mappingAxis(p.geometry);
     si.material = p.material;
     si.solid = isSolid(p.geometry);
     if (p.transform < 0) {

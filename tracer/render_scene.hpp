@@ -91,6 +91,7 @@ struct SurfaceInteraction {
     Vec3 shadingNormal{0, 1, 0}; ///< same orientation as normal
     Vec3 objectPoint{0.0};       ///< in the primitive's object space (textures)
     Vec2 uv{0.0};                ///< (0, 0) unless the material has a texture or bump
+    MappingAxis mappingAxis;     ///< the primitive's, where uv is set
     Vec3 dpdu{0.0}, dpdv{0.0};   ///< world-space ∂point/∂u, ∂point/∂v, where uv is set
     int32_t material = 0;
     bool solid = false;

@@ -27,7 +27,13 @@ double Texture::value(const Vec3& objectPoint, const Vec3& normal) const {
     return patternValue(desc_, toTexture_.point(objectPoint), normal);
 }
 
-Vec2 Texture::imageCoordinates(const Vec3& p, const Vec2& uv) const {
+Vec2 Texture::imageCoordinates(const Vec3& objectPoint, const Vec2& uv, const MappingAxis& axis) const {
+    // Spherical and cylindrical mappings wrap around the shape's own centre and axis (a
+    // sphere made away from the origin is covered as one made there and moved); the texture's
+    // modifiers then move the image about that centre.
+    bool aroundShape = desc_.mapping == scene::TextureMapping::Spherical ||
+                       desc_.mapping == scene::TextureMapping::Cylindrical;
+    Vec3 p = toTexture_.point(aroundShape ? axis.toAxisSpace(objectPoint) : objectPoint);
     switch (desc_.mapping) {
     case scene::TextureMapping::Uv: return {uv.x, 1 - uv.y};
     case scene::TextureMapping::Planar: return {fract(p.x / desc_.size), fract(-p.y / desc_.size)};
@@ -49,13 +55,13 @@ Vec2 Texture::imageCoordinates(const Vec3& p, const Vec2& uv) const {
     return uv;
 }
 
-Vec4 Texture::color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal) const {
-    Vec3 p = toTexture_.point(objectPoint);
+Vec4 Texture::color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal,
+                    const MappingAxis& axis) const {
     switch (desc_.kind) {
     case scene::TextureKind::Image:
         if (!image_ || image_->width == 0) return colors_.entry(0);
         {
-            Vec2 c = imageCoordinates(p, uv);
+            Vec2 c = imageCoordinates(objectPoint, uv, axis);
             return {image_->bilinear(c.x, c.y, true), image_->bilinearAlpha(c.x, c.y, true)};
         }
     case scene::TextureKind::NoiseBump:
@@ -63,7 +69,7 @@ Vec4 Texture::color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal)
     case scene::TextureKind::Bump: return colors_.entry(0);
     default: break;
     }
-    double value = patternValue(desc_, p, normal);
+    double value = patternValue(desc_, toTexture_.point(objectPoint), normal);
     if (scene::isDiscretePattern(desc_.kind)) return colors_.entry(static_cast<size_t>(value));
     return colors_.at(value);
 }
@@ -76,7 +82,7 @@ bool Texture::translucent() const {
     return colors_.translucent();
 }
 
-double Texture::height(const Vec3& objectPoint, const Vec2& uv) const {
+double Texture::height(const Vec3& objectPoint, const Vec2& uv, const MappingAxis& axis) const {
     Vec3 p = toTexture_.point(objectPoint);
     double s = desc_.size > 0 ? desc_.size : 1;
     if (desc_.kind == scene::TextureKind::NoiseBump) return fractalNoise(p / s, desc_.octaves);
@@ -86,7 +92,7 @@ double Texture::height(const Vec3& objectPoint, const Vec2& uv) const {
         return value / static_cast<double>(scene::discreteColorCount(pattern_->desc_.kind) - 1);
     }
     if (desc_.kind == scene::TextureKind::ImageBump && image_ && image_->width > 0) {
-        Vec2 c = imageCoordinates(p, uv);
+        Vec2 c = imageCoordinates(objectPoint, uv, axis);
         Vec3 v = image_->bilinear(c.x, c.y, true);
         return (v.x + v.y + v.z) / 3;
     }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "scene/scene_desc.hpp"
+#include "tracer/geometry/mapping_axis.hpp"
 #include "tracer/image.hpp"
 #include "tracer/patterns/color_map.hpp"
 #include "tracer/transform.hpp"
@@ -16,12 +17,13 @@ public:
     Texture(const scene::TextureDesc& desc, const Image* image);
 
     /// The colour and alpha at an object-space point with surface coordinates uv, where the
-    /// surface's world-space unit normal is `normal`.
-    Vec4 color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal) const;
+    /// surface's world-space unit normal is `normal`; spherical and cylindrical image mappings
+    /// wrap around `axis`.
+    Vec4 color(const Vec3& objectPoint, const Vec2& uv, const Vec3& normal, const MappingAxis& axis) const;
     /// Whether color() can give an alpha below 1 (a map's stop, an image's alpha channel).
     bool translucent() const;
     /// A bump texture's height at a point (its gradient perturbs the normal).
-    double height(const Vec3& objectPoint, const Vec2& uv) const;
+    double height(const Vec3& objectPoint, const Vec2& uv, const MappingAxis& axis) const;
     /// A pattern's value at an object-space point (through the texture's modifiers): what a
     /// Bump and a MaterialMap read of their pattern. A discrete pattern's is its entry's index.
     double value(const Vec3& objectPoint, const Vec3& normal) const;
@@ -39,7 +41,8 @@ public:
     }
 
   private:
-    Vec2 imageCoordinates(const Vec3& p, const Vec2& uv) const;
+    /// Where an image is read at an object-space point.
+    Vec2 imageCoordinates(const Vec3& objectPoint, const Vec2& uv, const MappingAxis& axis) const;
 
     scene::TextureDesc desc_;
     const Image* image_;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "tracer/geometry/geometry_math.hpp"
+#include "tracer/geometry/mapping_axis.hpp"
 
 namespace crt::tracer {
 
@@ -22,6 +23,8 @@ class AxialSolid {
     /// The refined point, its error bound, the normal and UV at one of crossLine's crossings.
     SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     bool solid() const { return !open_; }
+    /// From the base, along the axis.
+    MappingAxis mappingAxis() const { return {base_, frame_.w}; }
 
   private:
     Vec3 base_;

@@ -22,6 +22,7 @@ class ConeGeometry {
     SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// An open cone has no inside.
     bool solid() const { return solid_.solid(); }
+    MappingAxis mappingAxis() const { return solid_.mappingAxis(); }
 
   private:
     AxialSolid solid_;

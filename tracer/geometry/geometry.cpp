@@ -17,6 +17,17 @@ SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing&
     return std::visit([&](const auto& g) { return g.surfaceAt(ray, crossing, wantUv); }, geometry);
 }
 
+MappingAxis mappingAxis(const Geometry& geometry) {
+    return std::visit(
+        [](const auto& g) {
+            if constexpr (requires { g.mappingAxis(); })
+                return g.mappingAxis();
+            else
+                return MappingAxis{};
+        },
+        geometry);
+}
+
 bool isSolid(const Geometry& geometry) {
     return std::visit([](const auto& g) { return g.solid(); }, geometry);
 }

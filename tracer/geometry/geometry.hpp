@@ -30,6 +30,8 @@ void crossLine(const Geometry& geometry, const Ray& ray, CrossingList& out);
 /// the shape may leave uv at (0, 0) (only textures read it, and some shapes need
 /// trigonometry for it).
 SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing& crossing, bool wantUv = true);
+/// What spherical and cylindrical image mappings wrap around on this primitive.
+MappingAxis mappingAxis(const Geometry& geometry);
 /// Whether the primitive bounds a volume (usable in CSG).
 bool isSolid(const Geometry& geometry);
 /// Whether the primitive is a bounded convex solid (a line crosses it at most twice).

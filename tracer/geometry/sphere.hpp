@@ -1,6 +1,7 @@
 // The sphere primitive: exact line crossings and refined surface points.
 #pragma once
 
+#include "tracer/geometry/mapping_axis.hpp"
 #include "tracer/geometry/shape.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -21,6 +22,8 @@ class SphereGeometry {
     SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// Usable in CSG: the crossings bound an inside.
     bool solid() const { return true; }
+    /// About the centre, +y up.
+    MappingAxis mappingAxis() const { return {center_, Vec3(0, 1, 0)}; }
 
   private:
     Vec3 center_;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "tracer/geometry/geometry_math.hpp"
+#include "tracer/geometry/mapping_axis.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace crt::tracer {
@@ -23,6 +24,8 @@ class TorusGeometry {
     SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// Usable in CSG: the crossings bound an inside.
     bool solid() const { return true; }
+    /// About the centre and the ring's axis.
+    MappingAxis mappingAxis() const { return {center_, frame_.w}; }
 
   private:
     Vec3 center_;
