@@ -31,17 +31,23 @@ void DiagnosticBag::promoteWarnings() {
 namespace {
 
 size_t editDistance(std::string_view a, std::string_view b) {
-    std::vector<size_t> row(b.size() + 1);
+    // Optimal string alignment: insertions, deletions, substitutions and swaps of two
+    // neighbouring letters ("widht"), each one edit; letter case is ignored.
+    auto same = [](char x, char y) {
+        return std::tolower(static_cast<unsigned char>(x)) ==
+               std::tolower(static_cast<unsigned char>(y));
+    };
+    std::vector<size_t> before(b.size() + 1), previous(b.size() + 1), row(b.size() + 1);
     for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
     for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diagonal = row[0];
+        before.swap(previous);
+        previous.swap(row);
         row[0] = i;
         for (size_t j = 1; j <= b.size(); ++j) {
-            size_t above = row[j];
-            bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
-                        std::tolower(static_cast<unsigned char>(b[j - 1]));
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
-            diagonal = above;
+            row[j] = std::min({previous[j] + 1, row[j - 1] + 1,
+                               previous[j - 1] + (same(a[i - 1], b[j - 1]) ? 0 : 1)});
+            if (i > 1 && j > 1 && same(a[i - 1], b[j - 2]) && same(a[i - 2], b[j - 1]))
+                row[j] = std::min(row[j], before[j - 2] + 1);
         }
     }
     return row[b.size()];
@@ -50,8 +56,9 @@ size_t editDistance(std::string_view a, std::string_view b) {
 } // namespace
 
 std::string closestMatch(std::string_view word, const std::vector<std::string_view>& candidates) {
-    // Allow about one typo per three characters, as clang's typo correction does.
-    size_t best = std::max<size_t>(1, (word.size() + 2) / 3) + 1;
+    // Allow one typo per three characters, at least one: more would suggest far-fetched
+    // names for short words (Cube for Cone).
+    size_t best = std::max<size_t>(1, word.size() / 3) + 1;
     std::string_view found;
     for (std::string_view candidate : candidates) {
         size_t distance = editDistance(word, candidate);

@@ -4,6 +4,7 @@
 #include "builtins.hpp"
 #include "large_stack.hpp"
 #include "parser.hpp"
+#include "povray_habits.hpp"
 #include "terminal_text.hpp"
 #include "value_format.hpp"
 
@@ -384,7 +385,15 @@ void Interpreter::execInclude(const IncludeStmt* node) {
         std::string folders;
         for (const fs::path& dir : options_.includes.folders(folder))
             folders += fmt::format("\n  {}", dir.lexically_normal().string());
-        fail(node->path->range, fmt::format("cannot find include file \"{}\"; searched:{}", name, folders));
+        std::string_view instead = povray::includeReplacement(fs::path(name).filename().string());
+        std::string hint =
+            instead.empty()
+                ? ""
+                : fmt::format(
+                      "; did you mean \"{}\"? (the standard library's, in place of POV-Ray's)",
+                      instead);
+        fail(node->path->range,
+             fmt::format("cannot find include file \"{}\"{}; searched:{}", name, hint, folders));
     }
     std::error_code error;
     std::string canonical = fs::weakly_canonical(found, error).string();

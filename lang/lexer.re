@@ -1,8 +1,11 @@
 // The re2c lexer for CRT scripts (spec §1). Compiled by re2c into the build tree.
 #include "lexer.hpp"
+#include "povray_habits.hpp"
 #include "string_escape.hpp"
 
 #include <fmt/format.h>
+
+#include <cctype>
 
 namespace crt::lang {
 
@@ -30,16 +33,20 @@ void Lexer::reportInvalid(const char* start, const char* end) {
         diagnostics_.error(range(start, end),
                            "unexpected character ';'; statements need no terminator")
             .fixits.push_back({range(start, end), ""});
+    } else if (text == "." && end < end_ && std::isalpha(static_cast<unsigned char>(*end))) {
+        diagnostics_.error(range(start, end), "unexpected character '.'; components are not read with "
+                                              "'.': dot(v, vec3(1, 0, 0)) is v's x");
     } else if (text == "#") {
         // POV-Ray's directives: #declare x = 1, #include "f.inc", #local, #macro ...
         std::string_view after(end, static_cast<size_t>(end_ - end));
         const size_t word = after.find_first_not_of("abcdefghijklmnopqrstuvwxyz");
         const std::string_view directive = after.substr(0, word);
-        std::string hint = "; CRT has no '#' directives";
-        if (directive == "declare" || directive == "local") hint += ": write 'x = value' for '#declare x = value'";
-        else if (directive == "include") hint += ": write 'include \"file.crt\"'";
-        else if (directive == "macro") hint += ": write 'name = Macro (a, b) { ... }'";
-        diagnostics_.error(range(start, end), fmt::format("unexpected character '#'{}", directive.empty() ? "" : hint));
+        std::string hint;
+        if (!directive.empty()) {
+            hint = "; CRT has no '#' directives";
+            if (std::string_view how = povray::directiveHint(directive); !how.empty()) hint += fmt::format(": {}", how);
+        }
+        diagnostics_.error(range(start, end), fmt::format("unexpected character '#'{}", hint));
     } else {
         diagnostics_.error(range(start, end), fmt::format("unexpected character '{}'", text));
     }
@@ -182,6 +189,16 @@ Token Lexer::scan() {
         "?"  { return make(TokenKind::Question); }
         ":"  { return make(TokenKind::Colon); }
 
+        "#" [a-z]+ {
+            // POV-Ray's directives: one error, and the line skipped where it is no CRT.
+            reportInvalid(start, start + 1);
+            const std::string_view word(start + 1, reinterpret_cast<const char*>(cursor) - start - 1);
+            const char* p = reinterpret_cast<const char*>(cursor);
+            if (povray::directiveLineIsForeign(word))
+                while (p < end_ && *p != '\n') ++p;
+            cursor_ = p;
+            continue;
+        }
         utf8lead2 cont | utf8lead3 cont cont | utf8lead4 cont cont cont | [^] {
             cursor_ = reinterpret_cast<const char*>(cursor);
             reportInvalid(start, cursor_);

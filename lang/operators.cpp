@@ -39,7 +39,11 @@ std::string typeName(const Value& value) {
 }
 
 std::string operandError(std::string_view op, const Value& left, const Value& right) {
-    return fmt::format("cannot apply '{}' to {} and {}", op, typeName(left), typeName(right));
+    std::string message =
+        fmt::format("cannot apply '{}' to {} and {}", op, typeName(left), typeName(right));
+    if (op == "^" && left.isNumber() && right.isNumber())
+        message += "; '^' is the intersection of solids: write pow(a, b) for a power";
+    return message;
 }
 
 namespace {

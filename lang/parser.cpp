@@ -4,6 +4,7 @@
 #include "grammar.hpp"
 #include "object_schema.hpp"
 #include "parser_support.hpp"
+#include "povray_habits.hpp"
 #include "string_escape.hpp"
 
 #include "large_stack.hpp"
@@ -295,24 +296,64 @@ Parser::symbol_kind_type closerSymbol(const Token& opener) {
                                          : Parser::symbol_kind::S_RBRACKET;
 }
 
-/// What a POV-Ray user may have meant by `found`: "<x, y, z>" for a vector.
-std::string povRayHint(const ParseContext& ctx, const Token& found) {
-    if (found.kind != TokenKind::Less && found.kind != TokenKind::ModifierOpen) return "";
-    const std::string_view rest = ctx.file.text().substr(found.end);
-    const std::string_view inside = rest.substr(0, rest.find_first_of(">\n"));
-    if (inside.size() == rest.size() || rest[inside.size()] != '>' || inside.find(',') == std::string_view::npos)
-        return "";
-    return "; vectors are written vec3(x, y, z), not <x, y, z>";
+/// Whether `text` ends with `word`, spaces and an unclosed `<x, y, …`.
+bool endsWithVectorAfter(std::string_view text, std::string_view word) {
+    const size_t open = text.rfind('<');
+    if (open == std::string_view::npos || text.find('>', open) != std::string_view::npos)
+        return false;
+    std::string_view before = text.substr(0, open);
+    while (!before.empty() && before.back() == ' ') before.remove_suffix(1);
+    return before.ends_with(word);
 }
 
-/// `sphere {`: POV-Ray's lower-case object names; CRT's object types are capitalised.
-void lowerCaseTypeFix(const ParseContext& ctx, Diagnostic& d) {
+/// What a POV-Ray user may have meant where the parser stopped at `found`: "<x, y, z>" for a
+/// vector, "rgb <r, g, b>" for a colour, "i++", a capitalised variable, a bare modifier.
+std::string povRayHint(const ParseContext& ctx, const Token& found) {
+    const std::string_view text = ctx.file.text();
+    const Token& before = ctx.previousToken;
+    if (found.kind == TokenKind::Less || found.kind == TokenKind::ModifierOpen) {
+        const std::string_view rest = text.substr(found.end);
+        const std::string_view inside = rest.substr(0, rest.find_first_of(">\n"));
+        if (inside.size() == rest.size() || rest[inside.size()] != '>' ||
+            inside.find(',') == std::string_view::npos)
+            return "";
+        return "; vectors are written vec3(x, y, z), not <x, y, z>";
+    }
+    if (found.kind == TokenKind::Comma) {
+        // `rgb <1, 0, 0>` read as a comparison `rgb < 1`, then the comma.
+        const std::string_view line =
+            text.substr(0, found.begin).substr(text.rfind('\n', found.begin) + 1);
+        if (endsWithVectorAfter(line, "rgb"))
+            return "; colours are written rgb(r, g, b), not color rgb <r, g, b>";
+    }
+    if (found.kind == TokenKind::Assign && before.kind == TokenKind::Name)
+        return "; variable names start with a lower-case letter (capitalised names are types)";
+    if (before.kind == TokenKind::Plus && before.begin > 0 && text[before.begin - 1] == '+')
+        return "; CRT has no '++': write 'i = i + 1'";
+    const bool modifier = found.kind == TokenKind::KwTranslate ||
+                          found.kind == TokenKind::KwRotate || found.kind == TokenKind::KwScale;
+    std::string_view after = text.substr(found.end);
+    after.remove_prefix(std::min(after.size(), after.find_first_not_of(" \t")));
+    const bool asAttribute = after.starts_with("->");
+    if (modifier && !asAttribute)
+        return "; modifiers go in angle brackets after what they move: 'thing <translate v>'";
+    return "";
+}
+
+/// `sphere {`: POV-Ray's lower-case object names; CRT's object types are capitalised. Its other
+/// blocks (`light_source {`, `union {` …) get a note saying how CRT writes them.
+void povRayBlockNote(const ParseContext& ctx, Diagnostic& d) {
     const Token& name = ctx.previousToken;
     if (name.kind != TokenKind::Identifier) return;
     std::string capitalised(ctx.text(name));
     capitalised[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(capitalised[0])));
-    if (findObjectType(capitalised) == ObjectType::Count) return;
     const SourceRange range = ctx.range(name.begin, name.end);
+    if (findObjectType(capitalised) == ObjectType::Count) {
+        std::string_view hint = povray::blockHint(ctx.text(name));
+        if (!hint.empty())
+            d.notes.push_back({range, fmt::format("POV-Ray's '{}': {}", ctx.text(name), hint)});
+        return;
+    }
     d.notes.push_back({range, fmt::format("object types start with a capital letter: '{} {{ … }}'", capitalised)});
     d.fixits.push_back({range, capitalised});
 }
@@ -382,7 +423,7 @@ void Parser::report_syntax_error(const context& yyctx) const {
         if (openerElsewhere && (expectsCloser || found.kind == TokenKind::EndOfFile))
             d.notes.push_back({ctx.range(opener->begin, opener->end),
                                fmt::format("to match this '{}'", ctx.text(*opener))});
-        if (found.kind == TokenKind::LBrace) lowerCaseTypeFix(ctx, d);
+        if (found.kind == TokenKind::LBrace) povRayBlockNote(ctx, d);
         if (expectsArrow && found.kind == TokenKind::Assign) {
             d.message += "; attributes are written 'name -> value'";
             d.fixits.push_back({where, "->"});

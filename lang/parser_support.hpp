@@ -37,9 +37,14 @@ inline Expr* makeBool(ParseContext& ctx, bool value, SourceRange where) {
 
 inline Expr* makeAssign(ParseContext& ctx, Expr* target, Expr* value, SourceRange whole) {
     if (target->kind != NodeKind::Var) {
-        ctx.diagnostics.error(target->range,
-                              "cannot assign to this expression; the left of '=' must be a "
-                              "variable name");
+        std::string message =
+            "cannot assign to this expression; the left of '=' must be a variable name";
+        // `i++` on one line and an assignment on the next read as `i + (+next) = …`.
+        const std::string_view text =
+            ctx.file.text().substr(target->range.begin, target->range.end - target->range.begin);
+        if (text.find("++") != std::string_view::npos)
+            message += "; CRT has no '++': write 'i = i + 1'";
+        ctx.diagnostics.error(target->range, std::move(message));
         return value;
     }
     auto* n = ctx.node<AssignExpr>(NodeKind::Assign, whole);

@@ -2,6 +2,7 @@
 #include "resolver.hpp"
 
 #include "builtins.hpp"
+#include "povray_habits.hpp"
 
 #include <fmt/format.h>
 
@@ -203,8 +204,17 @@ private:
     void reportUnknownAttribute(const ObjectInfo& info, const Attribute& a) {
         std::vector<std::string_view> names;
         for (const AttributeInfo& attr : info.attributes) names.push_back(attr.name);
-        std::string suggestion = closestMatch(a.name, names);
         std::string message = fmt::format("unknown attribute '{}' of {}", a.name, info.name);
+        if (auto hint = povray::attributeHint(info.category, a.name)) {
+            if (!hint->crtName.empty())
+                message += fmt::format("; did you mean '{}'?", hint->crtName);
+            Diagnostic& d = diagnostics_.error(a.nameRange, std::move(message));
+            d.notes.push_back({a.nameRange, std::string(hint->note)});
+            if (!hint->crtName.empty())
+                d.fixits.push_back({a.nameRange, std::string(hint->crtName)});
+            return;
+        }
+        std::string suggestion = closestMatch(a.name, names);
         if (!suggestion.empty()) message += fmt::format("; did you mean '{}'?", suggestion);
         Diagnostic& d = diagnostics_.error(a.nameRange, std::move(message));
         if (!suggestion.empty()) d.fixits.push_back({a.nameRange, suggestion});

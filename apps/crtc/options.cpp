@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 
 namespace crt::crtc {
@@ -343,10 +344,43 @@ std::vector<std::string> longNames(const CLI::App& app) {
     return names;
 }
 
+/// For a POV-Ray command-line option (`+W320`, `+A0.3`), how crtc says it; "" for anything else.
+std::string povRayOptionProblem(const std::string& arg) {
+    if (arg.size() < 2 || arg[0] != '+' || !std::isupper(static_cast<unsigned char>(arg[1])))
+        return "";
+    struct Spelling {
+        std::string_view pov, crtc;
+    };
+    // Longest first, so that +WT is not read as +W.
+    static constexpr Spelling kOptions[] = {
+        {"WT", "--threads N"},
+        {"KFF", "--frames N"},
+        {"SF", "--frame-range A:B"},
+        {"EF", "--frame-range A:B"},
+        {"UA", "--alpha"},
+        {"W", "--width N"},
+        {"H", "--height N"},
+        {"O", "-o FILE"},
+        {"A", "Settings.antialias -> \"adaptive\" and aathreshold"},
+        {"R", "Settings.aadepth"},
+        {"L", "-I DIR"},
+        {"I", "the script's name alone"},
+    };
+    const std::string_view name = std::string_view(arg).substr(1);
+    for (const Spelling& option : kOptions)
+        if (name.starts_with(option.pov))
+            return fmt::format("'{}' is a POV-Ray option; crtc's is {}", arg, option.crtc);
+    return fmt::format("'{}' is a POV-Ray option; crtc's options start with '-' (crtc --help)",
+                       arg);
+}
+
 /// What CLI11 left over: an unknown option or a second script, as a message ("" if none).
 std::string leftOverProblem(const CLI::App& app, const Options& o) {
+    if (std::string problem = povRayOptionProblem(o.script); !problem.empty()) return problem;
     bool afterDashes = false;
     for (const std::string& arg : app.remaining()) {
+        if (std::string problem = povRayOptionProblem(arg); !afterDashes && !problem.empty())
+            return problem;
         if (!afterDashes && arg == "--") {
             afterDashes = true;
             continue;

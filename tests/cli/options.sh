@@ -29,6 +29,10 @@ expect_status 0 "-- before a script named -dash.crt" "$crtc" -q --draft -o "$wor
 [ -s "$work/dash.png" ] || fail "-- then a script: no image written"
 expect_status 2 "did-you-mean" "$crtc" --widht 20 "$work/dof.crt"
 expect_text "$work/err" "unknown option '--widht'; did you mean '--width'\?" "did-you-mean names the option"
+expect_status 2 "POV-Ray's options before the script" "$crtc" +W320 +H240 "$work/dof.crt"
+expect_text "$work/err" "'\+W320' is a POV-Ray option; crtc's is --width N" "a POV-Ray option is named with crtc's"
+expect_status 2 "POV-Ray's options after the script" "$crtc" "$work/dof.crt" +WT2
+expect_text "$work/err" "'\+WT2' is a POV-Ray option; crtc's is --threads N" "+WT is read before +W"
 expect_status 2 "bad --antialias" "$crtc" --antialias=smooth "$work/dof.crt"
 expect_text "$work/err" "--antialias takes grid, adaptive, showadaptive or stratified, not 'smooth'" "--antialias choices"
 expect_status 2 "--supersampling out of range" "$crtc" --supersampling 65 "$work/dof.crt"
