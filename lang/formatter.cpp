@@ -38,8 +38,13 @@ bool isBinaryLike(TokenKind k) {
     case TokenKind::Percent: case TokenKind::Caret: case TokenKind::Less: case TokenKind::Greater:
     case TokenKind::LessEqual: case TokenKind::GreaterEqual: case TokenKind::EqualEqual:
     case TokenKind::NotEqual: case TokenKind::AndAnd: case TokenKind::OrOr: case TokenKind::Question:
-    case TokenKind::Colon: case TokenKind::Arrow: case TokenKind::Assign:
-        return true;
+    case TokenKind::Colon:
+    case TokenKind::Arrow:
+    case TokenKind::Assign:
+    case TokenKind::PlusAssign:
+    case TokenKind::MinusAssign:
+    case TokenKind::StarAssign:
+    case TokenKind::SlashAssign: return true;
     default: return false;
     }
 }

@@ -171,6 +171,10 @@ Token Lexer::scan() {
         ","  { return make(TokenKind::Comma); }
         "->" { return make(TokenKind::Arrow); }
         "="  { return make(TokenKind::Assign); }
+        "+=" { return make(TokenKind::PlusAssign); }
+        "-=" { return make(TokenKind::MinusAssign); }
+        "*=" { return make(TokenKind::StarAssign); }
+        "/=" { return make(TokenKind::SlashAssign); }
         "+"  { return make(TokenKind::Plus); }
         "-"  { return make(TokenKind::Minus); }
         "^"  { return make(TokenKind::Caret); }
@@ -263,6 +267,10 @@ std::string_view tokenDescription(TokenKind kind) {
     case TokenKind::Comma: return "','";
     case TokenKind::Arrow: return "'->'";
     case TokenKind::Assign: return "'='";
+    case TokenKind::PlusAssign: return "'+='";
+    case TokenKind::MinusAssign: return "'-='";
+    case TokenKind::StarAssign: return "'*='";
+    case TokenKind::SlashAssign: return "'/='";
     case TokenKind::Plus: return "'+'";
     case TokenKind::Minus: return "'-'";
     case TokenKind::Caret: return "'^'";

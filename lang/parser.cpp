@@ -245,6 +245,10 @@ int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseCo
     case TokenKind::Comma: return T::TOK_COMMA;
     case TokenKind::Arrow: return T::TOK_ARROW;
     case TokenKind::Assign: return T::TOK_ASSIGN;
+    case TokenKind::PlusAssign: return T::TOK_PLUS_ASSIGN;
+    case TokenKind::MinusAssign: return T::TOK_MINUS_ASSIGN;
+    case TokenKind::StarAssign: return T::TOK_STAR_ASSIGN;
+    case TokenKind::SlashAssign: return T::TOK_SLASH_ASSIGN;
     case TokenKind::Plus: return T::TOK_PLUS;
     case TokenKind::Minus: return T::TOK_MINUS;
     case TokenKind::Caret: return T::TOK_CARET;
@@ -329,7 +333,7 @@ std::string povRayHint(const ParseContext& ctx, const Token& found) {
     if (found.kind == TokenKind::Assign && before.kind == TokenKind::Name)
         return "; variable names start with a lower-case letter (capitalised names are types)";
     if (before.kind == TokenKind::Plus && before.begin > 0 && text[before.begin - 1] == '+')
-        return "; CRT has no '++': write 'i = i + 1'";
+        return "; CRT has no '++': write 'i += 1'";
     const bool modifier = found.kind == TokenKind::KwTranslate ||
                           found.kind == TokenKind::KwRotate || found.kind == TokenKind::KwScale;
     std::string_view after = text.substr(found.end);

@@ -35,6 +35,18 @@ inline Expr* makeBool(ParseContext& ctx, bool value, SourceRange where) {
     return n;
 }
 
+inline Expr* makeAssign(ParseContext& ctx, Expr* target, Expr* value, SourceRange whole);
+
+/// `x += v` is `x = x + v` (and -=, *=, /= likewise): the variable is read, then assigned,
+/// so an undefined one is reported as for `x = x + v`.
+inline Expr* makeCompoundAssign(ParseContext& ctx, BinaryOp op, Expr* target, SourceRange opRange,
+                                Expr* value, SourceRange whole) {
+    if (target->kind != NodeKind::Var) return makeAssign(ctx, target, value, whole);
+    auto* read = ctx.node<VarExpr>(NodeKind::Var, target->range);
+    read->name = static_cast<VarExpr*>(target)->name;
+    return makeAssign(ctx, target, makeBinary(ctx, op, read, opRange, value, whole), whole);
+}
+
 inline Expr* makeAssign(ParseContext& ctx, Expr* target, Expr* value, SourceRange whole) {
     if (target->kind != NodeKind::Var) {
         std::string message =
@@ -43,7 +55,7 @@ inline Expr* makeAssign(ParseContext& ctx, Expr* target, Expr* value, SourceRang
         const std::string_view text =
             ctx.file.text().substr(target->range.begin, target->range.end - target->range.begin);
         if (text.find("++") != std::string_view::npos)
-            message += "; CRT has no '++': write 'i = i + 1'";
+            message += "; CRT has no '++': write 'i += 1'";
         ctx.diagnostics.error(target->range, std::move(message));
         return value;
     }

@@ -43,6 +43,10 @@ enum class TokenKind : uint8_t {
     Comma,
     Arrow,
     Assign,
+    PlusAssign,  ///< +=
+    MinusAssign, ///< -=
+    StarAssign,  ///< *=
+    SlashAssign, ///< /=
     Plus,
     Minus,
     Caret,

@@ -186,6 +186,8 @@ private:
 
     void mention(std::string_view name, SourceRange range, const Resolution& r, bool write) {
         if (range.file != 0) return;
+        // `x += 1` reads and writes x at one place: one occurrence, the write.
+        if (!a_.occurrences.empty() && a_.occurrences.back().range == range) return;
         a_.occurrences.push_back({range, symbolFor(name, r), write, false});
     }
 

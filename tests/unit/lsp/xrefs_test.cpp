@@ -76,6 +76,19 @@ TEST_CASE("rename checks the new name", "[xrefs]") {
     CHECK_FALSE(rename(*a, code.points()[2], "a b", options).error.empty());
 }
 
+TEST_CASE("a compound assignment is one occurrence, a write, and renames once", "[xrefs]") {
+    Annotations code("$g«total» = 0\nfor i in range(3) { $g«tot@al» += i }\nprint($g«total»)\n");
+    auto a = analyzeCode(code.code);
+    CHECK(inDocument(references(*a, code.points()[0], true), *a) == code.ranges("g"));
+    auto highlights = documentHighlights(*a, code.points()[0]);
+    std::vector<bool> writes;
+    for (const Highlight& h : highlights) writes.push_back(h.write);
+    CHECK(writes == std::vector<bool>{true, true, false});
+    RenameResult renamed = rename(*a, code.points()[0], "sum", testOptions());
+    CHECK(renamed.error.empty());
+    CHECK(inDocument(renamed.edits, *a) == code.ranges("g"));
+}
+
 TEST_CASE("built-ins and non-names cannot be renamed", "[xrefs]") {
     Annotations code("x = s@in(1) + 2@");
     auto a = analyzeCode(code.code);
