@@ -36,17 +36,6 @@ void Lexer::reportInvalid(const char* start, const char* end) {
     } else if (text == "." && end < end_ && std::isalpha(static_cast<unsigned char>(*end))) {
         diagnostics_.error(range(start, end), "unexpected character '.'; components are not read with "
                                               "'.': dot(v, vec3(1, 0, 0)) is v's x");
-    } else if (text == "#") {
-        // POV-Ray's directives: #declare x = 1, #include "f.inc", #local, #macro ...
-        std::string_view after(end, static_cast<size_t>(end_ - end));
-        const size_t word = after.find_first_not_of("abcdefghijklmnopqrstuvwxyz");
-        const std::string_view directive = after.substr(0, word);
-        std::string hint;
-        if (!directive.empty()) {
-            hint = "; CRT has no '#' directives";
-            if (std::string_view how = povray::directiveHint(directive); !how.empty()) hint += fmt::format(": {}", how);
-        }
-        diagnostics_.error(range(start, end), fmt::format("unexpected character '#'{}", hint));
     } else {
         diagnostics_.error(range(start, end), fmt::format("unexpected character '{}'", text));
     }
@@ -194,9 +183,12 @@ Token Lexer::scan() {
         ":"  { return make(TokenKind::Colon); }
 
         "#" [a-z]+ {
-            // POV-Ray's directives: one error, and the line skipped where it is no CRT.
-            reportInvalid(start, start + 1);
+            // POV-Ray's directives (#declare x = 1, #include "f.inc", #macro …): one error
+            // saying how CRT writes it, and the line skipped where it is no CRT.
             const std::string_view word(start + 1, reinterpret_cast<const char*>(cursor) - start - 1);
+            std::string message = "unexpected character '#'; CRT has no '#' directives";
+            if (std::string_view how = povray::directiveHint(word); !how.empty()) message += fmt::format(": {}", how);
+            diagnostics_.error(range(start, start + 1), std::move(message));
             const char* p = reinterpret_cast<const char*>(cursor);
             if (povray::directiveLineIsForeign(word))
                 while (p < end_ && *p != '\n') ++p;

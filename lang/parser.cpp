@@ -333,7 +333,7 @@ std::string povRayHint(const ParseContext& ctx, const Token& found) {
     if (found.kind == TokenKind::Assign && before.kind == TokenKind::Name)
         return "; variable names start with a lower-case letter (capitalised names are types)";
     if (before.kind == TokenKind::Plus && before.begin > 0 && text[before.begin - 1] == '+')
-        return "; CRT has no '++': write 'i += 1'";
+        return fmt::format("; {}", povray::kNoIncrement);
     const bool modifier = found.kind == TokenKind::KwTranslate ||
                           found.kind == TokenKind::KwRotate || found.kind == TokenKind::KwScale;
     std::string_view after = text.substr(found.end);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "parse_context.hpp"
+#include "povray_habits.hpp"
 
 #include <charconv>
 #include <fmt/format.h>
@@ -35,7 +36,24 @@ inline Expr* makeBool(ParseContext& ctx, bool value, SourceRange where) {
     return n;
 }
 
-inline Expr* makeAssign(ParseContext& ctx, Expr* target, Expr* value, SourceRange whole);
+inline Expr* makeAssign(ParseContext& ctx, Expr* target, Expr* value, SourceRange whole) {
+    if (target->kind != NodeKind::Var) {
+        std::string message =
+            "cannot assign to this expression; the left of '=' must be a variable name";
+        // `i++` on one line and an assignment on the next read as `i + (+next) = …`.
+        const std::string_view text =
+            ctx.file.text().substr(target->range.begin, target->range.end - target->range.begin);
+        if (text.find("++") != std::string_view::npos)
+            message += fmt::format("; {}", povray::kNoIncrement);
+        ctx.diagnostics.error(target->range, std::move(message));
+        return value;
+    }
+    auto* n = ctx.node<AssignExpr>(NodeKind::Assign, whole);
+    n->name = static_cast<VarExpr*>(target)->name;
+    n->nameRange = target->range;
+    n->value = value;
+    return n;
+}
 
 /// `x += v` is `x = x + v` (and -=, *=, /= likewise): the variable is read, then assigned,
 /// so an undefined one is reported as for `x = x + v`.
@@ -45,25 +63,6 @@ inline Expr* makeCompoundAssign(ParseContext& ctx, BinaryOp op, Expr* target, So
     auto* read = ctx.node<VarExpr>(NodeKind::Var, target->range);
     read->name = static_cast<VarExpr*>(target)->name;
     return makeAssign(ctx, target, makeBinary(ctx, op, read, opRange, value, whole), whole);
-}
-
-inline Expr* makeAssign(ParseContext& ctx, Expr* target, Expr* value, SourceRange whole) {
-    if (target->kind != NodeKind::Var) {
-        std::string message =
-            "cannot assign to this expression; the left of '=' must be a variable name";
-        // `i++` on one line and an assignment on the next read as `i + (+next) = …`.
-        const std::string_view text =
-            ctx.file.text().substr(target->range.begin, target->range.end - target->range.begin);
-        if (text.find("++") != std::string_view::npos)
-            message += "; CRT has no '++': write 'i += 1'";
-        ctx.diagnostics.error(target->range, std::move(message));
-        return value;
-    }
-    auto* n = ctx.node<AssignExpr>(NodeKind::Assign, whole);
-    n->name = static_cast<VarExpr*>(target)->name;
-    n->nameRange = target->range;
-    n->value = value;
-    return n;
 }
 
 } // namespace crt::lang::grammar

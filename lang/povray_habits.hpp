@@ -8,6 +8,9 @@
 
 namespace crt::lang::povray {
 
+/// What to say where `i++` broke a statement (CRT has no increment operator).
+inline constexpr std::string_view kNoIncrement = "CRT has no '++': write 'i += 1'";
+
 /// For `#word`, a POV-Ray directive: how CRT writes it ("" for a word POV-Ray does not have).
 std::string_view directiveHint(std::string_view word);
 /// Whether the rest of the line after `#word` is no CRT (a condition, a macro's head), so
