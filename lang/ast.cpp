@@ -37,6 +37,9 @@ std::string_view opSpelling(ModifierOp op) {
     case ModifierOp::Translate: return "translate";
     case ModifierOp::Rotate: return "rotate";
     case ModifierOp::Scale: return "scale";
+    case ModifierOp::Material: return "material";
+    case ModifierOp::Matrix: return "matrix";
+    case ModifierOp::Splice: return "";
     }
     return "?";
 }

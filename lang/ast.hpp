@@ -26,6 +26,7 @@ enum class NodeKind : uint8_t {
     Call,
     Index,
     Modify,
+    ModifierList,
     List,
     Object,
     Macro,
@@ -45,7 +46,8 @@ enum class BinaryOp : uint8_t {
     Add, Sub, Intersect, Mul, Div, Mod, Less, Greater, LessEqual, GreaterEqual, Equal, NotEqual,
     And, Or,
 };
-enum class ModifierOp : uint8_t { Translate, Rotate, Scale };
+/// Splice: a list of modifiers held in a value, given by name (`<spin>`).
+enum class ModifierOp : uint8_t { Translate, Rotate, Scale, Material, Matrix, Splice };
 
 std::string_view opSpelling(UnaryOp op);
 std::string_view opSpelling(BinaryOp op);
@@ -127,6 +129,11 @@ struct Modifier {
 
 struct ModifyExpr : Expr {
     Expr* target;
+    std::span<Modifier> modifiers;
+};
+
+/// `<rotate v, translate w>` on its own: a list of modifiers as a value.
+struct ModifierListExpr : Expr {
     std::span<Modifier> modifiers;
 };
 
@@ -239,6 +246,9 @@ template <typename F> void forEachChild(Node* node, F&& visit) {
     case NodeKind::Modify:
         visit(static_cast<ModifyExpr*>(node)->target);
         for (Modifier& m : static_cast<ModifyExpr*>(node)->modifiers) visit(m.argument);
+        break;
+    case NodeKind::ModifierList:
+        for (Modifier& m : static_cast<ModifierListExpr*>(node)->modifiers) visit(m.argument);
         break;
     case NodeKind::List: each(static_cast<ListExpr*>(node)->items); break;
     case NodeKind::Object:

@@ -77,12 +77,13 @@ private:
             auto* m = static_cast<const ModifyExpr*>(n);
             line(n, depth, "Modify");
             node(m->target, depth + 1);
-            for (const Modifier& mod : m->modifiers) {
-                text(mod.range, depth + 1, fmt::format("Modifier {}", opSpelling(mod.op)));
-                node(mod.argument, depth + 2);
-            }
+            modifiers(m->modifiers, depth + 1);
             break;
         }
+        case NodeKind::ModifierList:
+            line(n, depth, "ModifierList");
+            modifiers(static_cast<const ModifierListExpr*>(n)->modifiers, depth + 1);
+            break;
         case NodeKind::List: {
             auto* l = static_cast<const ListExpr*>(n);
             line(n, depth, fmt::format("List ({} items)", l->items.size()));
@@ -152,6 +153,15 @@ private:
             break;
         case NodeKind::Error: line(n, depth, "Error"); break;
         default: break;
+        }
+    }
+
+    void modifiers(std::span<const Modifier> modifiers, int depth) {
+        for (const Modifier& mod : modifiers) {
+            text(mod.range, depth,
+                 mod.op == ModifierOp::Splice ? std::string("Modifier list")
+                                              : fmt::format("Modifier {}", opSpelling(mod.op)));
+            node(mod.argument, depth + 1);
         }
     }
 

@@ -43,6 +43,21 @@ std::optional<std::string> plainText(const Value& value) {
 
 } // namespace
 
+std::string Interpreter::entityTypeName(const Value& entity) const {
+    if (entity.objectType != ObjectType::Count) return typeName(entity);
+    // A moved CSG result or group is named after what was moved.
+    const scene::Shape* moved = &scene_.entities[entity.index].shape;
+    while (auto* transform = std::get_if<scene::TransformNode>(moved)) {
+        moved = &scene_.entities[static_cast<size_t>(transform->child)].shape;
+    }
+    if (auto* csg = std::get_if<scene::CsgNode>(moved)) {
+        return csg->op == scene::CsgOp::Union        ? "Union"
+               : csg->op == scene::CsgOp::Difference ? "Difference"
+                                                     : "Intersection";
+    }
+    return std::holds_alternative<scene::GroupNode>(*moved) ? "Group" : typeName(entity);
+}
+
 std::string Interpreter::objectText(const Value& value) const {
     switch (value.kind) {
     case ValueKind::Macro: {
@@ -51,31 +66,21 @@ std::string Interpreter::objectText(const Value& value) const {
         return fmt::format("<macro {}:{}>", at.line, at.column);
     }
     case ValueKind::Builtin: return fmt::format("<function {}>", builtinFunctions()[value.index].name);
+    case ValueKind::Modifiers: {
+        const SourceRange& written = value.modifiers->range;
+        LineColumn at = compilation_.sources.file(written.file).lineColumn(written.begin);
+        return fmt::format("<modifiers {}:{}>", at.line, at.column);
+    }
     default: break;
     }
     // Objects: their type and where they were made.
     scene::SourceSpan where;
     std::string type = typeName(value);
     switch (value.kind) {
-    case ValueKind::Entity: {
+    case ValueKind::Entity:
         where = scene_.entities[value.index].source;
-        if (value.objectType == ObjectType::Count) {
-            // A moved CSG result or group is named after what was moved.
-            const scene::Shape* moved = &scene_.entities[value.index].shape;
-            while (auto* transform = std::get_if<scene::TransformNode>(moved)) {
-                moved = &scene_.entities[static_cast<size_t>(transform->child)].shape;
-            }
-            const scene::Shape& shape = *moved;
-            if (auto* csg = std::get_if<scene::CsgNode>(&shape)) {
-                type = csg->op == scene::CsgOp::Union        ? "Union"
-                       : csg->op == scene::CsgOp::Difference ? "Difference"
-                                                              : "Intersection";
-            } else if (std::holds_alternative<scene::GroupNode>(shape)) {
-                type = "Group";
-            }
-        }
+        type = entityTypeName(value);
         break;
-    }
     case ValueKind::Material: where = scene_.materials[value.index].source; break;
     case ValueKind::Texture: where = scene_.textures[value.index].source; break;
     case ValueKind::Light: where = lights_[value.index].source; break;

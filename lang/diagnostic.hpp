@@ -33,6 +33,8 @@ enum class WarningKind {
     ZeroSizeEntity,
     EmptyScene,
     DivisionByZero,
+    OutsideScene,
+    NoLights,
 };
 
 struct Diagnostic {

@@ -13,13 +13,27 @@ namespace crt::lang {
 
 namespace {
 
-void collectShapes(Node* node, std::set<uint32_t>& unary, std::set<uint32_t>& modifierClose,
-                   const SourceFile& file) {
-    if (node->kind == NodeKind::Unary) unary.insert(static_cast<UnaryExpr*>(node)->opRange.begin);
-    if (node->kind == NodeKind::Modify && node->range.end > 0 && file.text()[node->range.end - 1] == '>') {
-        modifierClose.insert(node->range.end - 1);
+/// What the formatter needs of the syntax tree, by token position.
+struct Shapes {
+    std::set<uint32_t> unary;         ///< unary operators
+    std::set<uint32_t> modifierClose; ///< the '>' closing a modifier list
+    std::set<uint32_t> modifierWord;  ///< `material` and `matrix` in a modifier list
+};
+
+void collectShapes(Node* node, Shapes& shapes, const SourceFile& file) {
+    if (node->kind == NodeKind::Unary)
+        shapes.unary.insert(static_cast<UnaryExpr*>(node)->opRange.begin);
+    std::span<Modifier> modifiers;
+    if (node->kind == NodeKind::Modify) modifiers = static_cast<ModifyExpr*>(node)->modifiers;
+    if (node->kind == NodeKind::ModifierList)
+        modifiers = static_cast<ModifierListExpr*>(node)->modifiers;
+    if (!modifiers.empty() && node->range.end > 0 && file.text()[node->range.end - 1] == '>') {
+        shapes.modifierClose.insert(node->range.end - 1);
     }
-    forEachChild(node, [&](Node* child) { collectShapes(child, unary, modifierClose, file); });
+    for (const Modifier& m : modifiers)
+        if (m.op == ModifierOp::Material || m.op == ModifierOp::Matrix)
+            shapes.modifierWord.insert(m.range.begin);
+    forEachChild(node, [&](Node* child) { collectShapes(child, shapes, file); });
 }
 
 bool isOpener(TokenKind k) {
@@ -53,6 +67,7 @@ struct Item {
     Token token;
     bool unary = false;
     bool modifierClose = false;
+    bool modifierWord = false; ///< `material` or `matrix` before its value: `<matrix [...]>`
 };
 
 /// The separator between two tokens on one line.
@@ -64,7 +79,9 @@ std::string_view spacing(const Item& prev, const Item& cur) {
         return "";
     }
     if (c == TokenKind::RParen || c == TokenKind::RBracket || c == TokenKind::Comma || cur.modifierClose) return "";
-    if ((c == TokenKind::LParen || c == TokenKind::LBracket) && endsOperand(p)) return ""; // a call or an index
+    if ((c == TokenKind::LParen || c == TokenKind::LBracket) && endsOperand(p) &&
+        !prev.modifierWord)
+        return ""; // a call or an index
     if (prev.unary) return (c == TokenKind::Minus && p == TokenKind::Minus) ? " " : ""; // never "--"
     return " ";
 }
@@ -74,15 +91,17 @@ std::string_view spacing(const Item& prev, const Item& cur) {
 std::vector<std::vector<Item>> itemsByLine(const SourceFile& file, const Script& script,
                                           const std::vector<Token>& tokens,
                                           const std::vector<Token>& comments) {
-    std::set<uint32_t> unary, modifierClose;
+    Shapes shapes;
     runOnLargeStack([&] { // expressions may nest tens of thousands deep
-        for (Node* item : script.items) collectShapes(item, unary, modifierClose, file);
+        for (Node* item : script.items) collectShapes(item, shapes, file);
     });
     std::vector<std::vector<Item>> lines(file.lineCount());
     auto addItem = [&](const Token& t) {
         uint32_t line = file.lineColumn(t.begin).line - 1;
-        lines[line].push_back({t, unary.count(t.begin) > 0,
-                               t.kind == TokenKind::Greater && modifierClose.count(t.begin) > 0});
+        lines[line].push_back(
+            {t, shapes.unary.count(t.begin) > 0,
+             t.kind == TokenKind::Greater && shapes.modifierClose.count(t.begin) > 0,
+             t.kind == TokenKind::Identifier && shapes.modifierWord.count(t.begin) > 0});
     };
     size_t c = 0;
     for (const Token& t : tokens) {

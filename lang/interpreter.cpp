@@ -1,6 +1,8 @@
 // Statements, variables, macro calls and includes.
 #include "interpreter_impl.hpp"
 
+#include "scene/entity_parts.hpp"
+
 #include "builtins.hpp"
 #include "large_stack.hpp"
 #include "parser.hpp"
@@ -203,7 +205,11 @@ Value Interpreter::exec(const Node* node) {
     case NodeKind::Assign: assign(static_cast<const AssignExpr*>(node)); return Value::none();
     default: {
         Value value = eval(static_cast<const Expr*>(node));
-        if (emitMode_ != EmitMode::None) emit(value, node);
+        if (emitMode_ != EmitMode::None) {
+            emit(value, node);
+        } else if (value.kind == ValueKind::Entity) {
+            leftOutsideScene(value, node);
+        }
         return value;
     }
     }
@@ -293,6 +299,23 @@ bool Interpreter::condition(const Expr* node, std::string_view what) {
                                       typeName(value)));
     }
     return value.b;
+}
+
+void Interpreter::leftOutsideScene(const Value& entity, const Node* statement) {
+    warnOnce(WarningKind::OutsideScene, statement->range,
+             fmt::format("this {} is not drawn: it is outside every Scene block; write it inside "
+                         "Scene {{ }}",
+                         entityTypeName(entity)));
+    // Its parts need no "never drawn" warning of their own.
+    std::vector<uint32_t> pending{entity.index};
+    while (!pending.empty()) {
+        const uint32_t index = pending.back();
+        pending.pop_back();
+        if (entityInfo_[index].outsideScene) continue;
+        entityInfo_[index].outsideScene = true;
+        scene::forEachPart(scene_.entities[index],
+                           [&](int32_t part) { pending.push_back(static_cast<uint32_t>(part)); });
+    }
 }
 
 void Interpreter::emit(const Value& value, const Node* where) {

@@ -34,6 +34,7 @@ struct EntityInfo {
     SourceRange range{};
     ObjectType type = ObjectType::Count; ///< Count for CSG, transforms and groups
     bool literal = false; ///< built by an object literal (so "never drawn" is worth saying)
+    bool outsideScene = false; ///< part of what a statement outside every Scene left (warned there)
 };
 static_assert(sizeof(EntityInfo) <= 16, "one per entity: keep it small");
 
@@ -50,6 +51,15 @@ struct DeferredError {
 };
 
 struct ObjectBuilder;
+
+/// A list of modifiers held as a value (`spin = <rotate v, material m>`), or read from one
+/// before it is applied.
+struct ModifierList {
+    std::vector<scene::Modifier> moves;
+    int32_t material = -1;       ///< given to the parts that have none; -1: none
+    SourceRange materialRange{}; ///< where the material was given
+    SourceRange range{};         ///< where the list was written
+};
 
 /// What a statement's value is used for.
 enum class EmitMode : uint8_t { None, Scene, Macro };
@@ -81,6 +91,8 @@ public:
     static constexpr size_t kTextItemsPerCall = 4096;
     /// The text of a macro, built-in or object: its kind and where it was made.
     std::string objectText(const Value& value) const;
+    /// "Sphere", or for a (moved) CSG result or group "Union", "Group" and so on.
+    std::string entityTypeName(const Value& entity) const;
     /// Counts `bytes` that evaluation is about to hold against --max-memory, and their cost
     /// in steps (copying them takes time), reporting an error at the running statement if
     /// either limit is passed. Call it before allocating, so that the limit holds.
@@ -109,6 +121,8 @@ private:
     void reserveLike(size_t entitiesBefore, size_t materialsBefore, uint64_t remaining);
     void emit(const Value& value, const Node* where);
     void draw(const Value& value, const Node* where);
+    /// An entity a statement outside every Scene block made and dropped: it is not drawn.
+    void leftOutsideScene(const Value& entity, const Node* statement);
     /// Appends the entities of a (nested) list in order; returns the first item that is
     /// neither an entity nor a list, or null.
     static const Value* flattenEntities(const Value& list, std::vector<Value>& out);
@@ -179,6 +193,11 @@ private:
     std::optional<RangeSequence> rangeSequence(const Expr* iterable);
     Value evalIndex(const IndexExpr* node);
     Value evalModify(const ModifyExpr* node);
+    Value evalModifierList(const ModifierListExpr* node);
+    /// The modifiers of `<…>` in order, lists given by name spliced in.
+    ModifierList evalModifiers(std::span<const Modifier> modifiers, SourceRange whole);
+    scene::Modifier evalMove(const Modifier& modifier);
+    scene::Modifier evalMatrix(const Modifier& modifier);
     Value evalList(const ListExpr* node);
     Value evalMacro(const MacroExpr* node);
     Value callMacro(const Closure* closure, const CallExpr* site, std::span<const Value> args);
@@ -218,7 +237,6 @@ private:
     void readMesh(const ObjectBuilder& b, const std::string& path);
     /// What the script may read, made from the options when first needed.
     const FileAccess& fileAccess();
-    int32_t defaultMaterial();
     int32_t addEntity(scene::EntityDesc entity, EntityInfo info);
     /// A warning reported once per construct, however often evaluation passes it.
     void warnOnce(WarningKind kind, SourceRange where, std::string message);
@@ -234,6 +252,10 @@ private:
     void dropUnreachable(const std::vector<bool>& keepEntity, const std::vector<bool>& keepMaterial,
                          const std::vector<bool>& keepTexture, const std::vector<bool>& keepBlend);
     void reportUnused();
+    /// Whether anything lights the scene: a light, ambient light or a material that glows.
+    bool sceneIsLit() const;
+    /// Where to say it is not: the `Settings` keyword, else the first `Scene`'s.
+    SourceRange unlitSceneRange() const;
     struct SpanCacheEntry {
         SourceRange range{~0u, 0, 0};
         scene::SourceSpan span;
@@ -269,6 +291,7 @@ private:
     std::deque<std::vector<Value>> lists_;
     std::deque<Closure> closures_;
     std::deque<Frame> frames_;
+    std::deque<ModifierList> modifierLists_;
 
     uint64_t randomState_ = 0;
     std::set<uint64_t> divisionsWarned_; ///< the '/' operators (file << 32 | offset) warned about
@@ -286,7 +309,6 @@ private:
     std::vector<LightInfo> lightInfo_;
     std::vector<scene::CameraDesc> cameras_;
     std::vector<scene::BackgroundDesc> backgrounds_;
-    int32_t defaultMaterial_ = -1;
     const SettingsStmt* settings_ = nullptr;
     /// What Settings names, linked into the scene by assembleScene.
     struct SettingsLinks {

@@ -17,9 +17,11 @@ public:
     /// Inline: the parser asks for every token through it.
     Token next() {
         Token token;
-        if (hasPending_) [[unlikely]] {
-            hasPending_ = false;
-            token = pending_;
+        if (pendingCount_ > 0) [[unlikely]] {
+            token = pending_[0];
+            pending_[0] = pending_[1];
+            pending_[1] = pending_[2];
+            --pendingCount_;
         } else {
             token = scan();
         }
@@ -31,9 +33,19 @@ public:
 
 private:
     Token scan();
-    /// A '<' opens a modifier list exactly when the next token is a modifier keyword; that
-    /// token is kept for the next call.
+    /// A '<' opens a modifier list when what follows can only be one: a modifier keyword,
+    /// `material` or `matrix` before an operand, or a name closed by '>' (`<spin>`) or
+    /// followed by ',' and a modifier (keyword, `material` or `matrix`). The tokens looked
+    /// at are kept for next().
     void classifyLess(Token& less);
+    /// The token `k` places after the last one returned, scanned now if need be.
+    const Token& peek(int k) {
+        while (pendingCount_ <= k) pending_[pendingCount_++] = scan();
+        return pending_[k];
+    }
+    std::string_view text(const Token& token) const {
+        return {begin_ + token.begin, static_cast<size_t>(token.end - token.begin)};
+    }
     Token scanString(const char* start);
     void reportInvalid(const char* start, const char* end);
     uint32_t offset(const char* p) const { return static_cast<uint32_t>(p - begin_); }
@@ -48,8 +60,8 @@ private:
     DiagnosticBag& diagnostics_;
     std::vector<Token>* comments_ = nullptr;
     bool lineStart_ = true;
-    bool hasPending_ = false;
-    Token pending_;
+    int pendingCount_ = 0;
+    Token pending_[3];
 };
 
 /// Lexes a whole file (for tests and tools): every token but the final EndOfFile.

@@ -204,14 +204,33 @@ Token Lexer::scan() {
     }
 }
 
+namespace {
+
+bool isModifierKeyword(TokenKind kind) {
+    return kind == TokenKind::KwScale || kind == TokenKind::KwTranslate || kind == TokenKind::KwRotate;
+}
+
+/// The modifiers that are words rather than keywords (they name attributes elsewhere).
+bool isNamedModifier(std::string_view word) { return word == "material" || word == "matrix"; }
+
+bool startsOperand(TokenKind kind) {
+    return kind == TokenKind::Identifier || kind == TokenKind::Name || kind == TokenKind::Integer ||
+           kind == TokenKind::Float || kind == TokenKind::LBracket || kind == TokenKind::LParen;
+}
+
+} // namespace
+
 void Lexer::classifyLess(Token& less) {
-    Token following = scan();
-    if (following.kind == TokenKind::KwScale || following.kind == TokenKind::KwTranslate ||
-        following.kind == TokenKind::KwRotate) {
-        less.kind = TokenKind::ModifierOpen;
+    const Token& first = peek(0);
+    bool opens = isModifierKeyword(first.kind);
+    if (!opens && first.kind == TokenKind::Identifier) {
+        const std::string_view word = text(first);
+        const TokenKind after = peek(1).kind;
+        opens = (isNamedModifier(word) && startsOperand(after)) || after == TokenKind::Greater ||
+                (after == TokenKind::Comma && (isModifierKeyword(peek(2).kind) ||
+                                               (peek(2).kind == TokenKind::Identifier && isNamedModifier(text(peek(2))))));
     }
-    pending_ = following;
-    hasPending_ = true;
+    if (opens) less.kind = TokenKind::ModifierOpen;
 }
 
 std::vector<Token> lexAll(const SourceFile& file, uint32_t fileIndex, DiagnosticBag& diagnostics,

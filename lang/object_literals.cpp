@@ -320,14 +320,6 @@ void Interpreter::warnOnce(WarningKind kind, SourceRange where, std::string mess
     }
 }
 
-int32_t Interpreter::defaultMaterial() {
-    if (defaultMaterial_ < 0) {
-        scene_.materials.emplace_back();
-        defaultMaterial_ = static_cast<int32_t>(scene_.materials.size() - 1);
-    }
-    return defaultMaterial_;
-}
-
 std::string Interpreter::findFile(const ObjectBuilder& b, std::string_view attribute,
                                   std::string_view what) {
     std::string name = b.text(attribute, std::string());
@@ -361,8 +353,7 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
 Value Interpreter::buildEntity(ObjectBuilder& b) {
     scene::Shape shape = b.info.solid ? solidShape(b) : surfaceShape(b);
     bool zeroSize = std::visit(ZeroSize{}, shape);
-    int32_t material = b.index("material", -1);
-    if (material < 0) material = defaultMaterial();
+    const int32_t material = b.index("material", -1);
     int32_t index =
         addEntity(scene::EntityDesc{std::move(shape), material, b.info.solid, span(b.range)},
                   EntityInfo{b.range, b.info.type, true});

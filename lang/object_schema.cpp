@@ -161,7 +161,12 @@ constexpr AttributeInfo kBackground[] = {
     {"angle", A::Float, false, "0", "Yaw of the panorama, radians."},
 };
 
-#define CRT_MATERIAL_ATTR {"material", A::Material, false, "Material {}", "The surface material."}
+#define CRT_MATERIAL_ATTR                                                                          \
+    {                                                                                              \
+        "material", A::Material, false, "Material {}",                                             \
+            "The surface material (without one: what an enclosing `<material m>` gives, else the " \
+            "default)."                                                                            \
+    }
 
 constexpr AttributeInfo kSphere[] = {
     {"center", A::Vec3, true, "", "Centre of the sphere."},

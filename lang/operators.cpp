@@ -3,6 +3,8 @@
 
 #include "builtins.hpp"
 
+#include <glm/matrix.hpp>
+
 #include <cmath>
 #include <limits>
 
@@ -27,6 +29,7 @@ std::string_view kindName(ValueKind kind) {
     case ValueKind::Texture: return "texture";
     case ValueKind::Macro: return "macro";
     case ValueKind::Builtin: return "function";
+    case ValueKind::Modifiers: return "modifiers";
     }
     return "value";
 }
@@ -121,6 +124,7 @@ bool scalarsEqual(const Value& a, const Value& b) {
     case ValueKind::Color:
         return a.v[0] == b.v[0] && a.v[1] == b.v[1] && a.v[2] == b.v[2] && a.v[3] == b.v[3];
     case ValueKind::Macro: return a.closure == b.closure;
+    case ValueKind::Modifiers: return a.modifiers == b.modifiers;
     default: return a.index == b.index && a.objectType == b.objectType; // objects: identity
     }
 }
@@ -166,6 +170,8 @@ Value Interpreter::eval(const Expr* node) {
     case NodeKind::Call: return evalCall(static_cast<const CallExpr*>(node));
     case NodeKind::Index: return evalIndex(static_cast<const IndexExpr*>(node));
     case NodeKind::Modify: return evalModify(static_cast<const ModifyExpr*>(node));
+    case NodeKind::ModifierList:
+        return evalModifierList(static_cast<const ModifierListExpr*>(node));
     case NodeKind::List: return evalList(static_cast<const ListExpr*>(node));
     case NodeKind::Object: return evalObject(static_cast<const ObjectExpr*>(node));
     case NodeKind::Macro: return evalMacro(static_cast<const MacroExpr*>(node));
@@ -449,39 +455,127 @@ Value Interpreter::csg(BinaryOp op, const Value& left, const Value& right, const
     return Value::object(ValueKind::Entity, ObjectType::Count, static_cast<uint32_t>(index));
 }
 
+scene::Modifier Interpreter::evalMove(const Modifier& m) {
+    Value arg = eval(m.argument);
+    scene::Modifier mod;
+    mod.kind = m.op == ModifierOp::Translate ? scene::ModifierKind::Translate
+               : m.op == ModifierOp::Rotate  ? scene::ModifierKind::Rotate
+                                             : scene::ModifierKind::Scale;
+    if (arg.kind == ValueKind::Vec3) {
+        mod.value = {arg.v[0], arg.v[1], arg.v[2]};
+    } else if (m.op == ModifierOp::Scale && arg.isNumber()) {
+        mod.value = glm::dvec3(arg.asDouble());
+    } else {
+        fail(m.argument->range,
+             fmt::format("'{}' takes a {}, not {}", opSpelling(m.op),
+                         m.op == ModifierOp::Scale ? "number or a vec3" : "vec3", typeName(arg)));
+    }
+    for (int k = 0; k < 3; ++k) {
+        if (!std::isfinite(mod.value[k])) {
+            fail(m.argument->range,
+                 fmt::format("'{}' has a component that is not finite", opSpelling(m.op)));
+        }
+        if (m.op == ModifierOp::Scale && mod.value[k] == 0.0) {
+            fail(m.argument->range, "'scale' by zero flattens the object; use a non-zero scale");
+        }
+    }
+    return mod;
+}
+
+scene::Modifier Interpreter::evalMatrix(const Modifier& m) {
+    Value arg = eval(m.argument);
+    constexpr std::string_view kShape =
+        "'matrix' takes a list of 12 numbers: where x, y and z go, then the offset";
+    if (arg.kind != ValueKind::List)
+        fail(m.argument->range, fmt::format("{}, not {}", kShape, typeName(arg)));
+    if (arg.list->size() != 12)
+        fail(m.argument->range, fmt::format("{}; this list has {}", kShape, arg.list->size()));
+    double numbers[12];
+    for (size_t k = 0; k < 12; ++k) {
+        const Value& item = (*arg.list)[k];
+        if (!item.isNumber())
+            fail(m.argument->range, fmt::format("{}; item {} is {}", kShape, k, typeName(item)));
+        numbers[k] = item.asDouble();
+        if (!std::isfinite(numbers[k]))
+            fail(m.argument->range, fmt::format("'matrix' item {} is not finite", k));
+    }
+    scene::Modifier mod;
+    mod.kind = scene::ModifierKind::Matrix;
+    for (int column = 0; column < 3; ++column)
+        mod.linear[column] =
+            glm::dvec3(numbers[3 * column], numbers[3 * column + 1], numbers[3 * column + 2]);
+    mod.value = glm::dvec3(numbers[9], numbers[10], numbers[11]);
+    const double determinant = glm::determinant(mod.linear);
+    if (!std::isnormal(determinant))
+        fail(m.argument->range,
+             "this 'matrix' flattens the object (its first nine numbers have no inverse)");
+    return mod;
+}
+
+ModifierList Interpreter::evalModifiers(std::span<const Modifier> modifiers, SourceRange whole) {
+    ModifierList list;
+    list.range = whole;
+    auto giveMaterial = [&](int32_t material, SourceRange where) {
+        if (list.material >= 0) {
+            Diagnostic& d = diagnostics_.error(where, "a second material in one list of modifiers");
+            d.notes.push_back({list.materialRange, "the first is given here"});
+            throw EvalError{};
+        }
+        list.material = material;
+        list.materialRange = where;
+    };
+    for (const Modifier& m : modifiers) {
+        switch (m.op) {
+        case ModifierOp::Translate:
+        case ModifierOp::Rotate:
+        case ModifierOp::Scale: list.moves.push_back(evalMove(m)); break;
+        case ModifierOp::Matrix: list.moves.push_back(evalMatrix(m)); break;
+        case ModifierOp::Material: {
+            Value arg = eval(m.argument);
+            if (arg.kind != ValueKind::Material)
+                fail(m.argument->range,
+                     fmt::format("'material' takes a material, not {}", typeName(arg)));
+            giveMaterial(static_cast<int32_t>(arg.index), m.range);
+            break;
+        }
+        case ModifierOp::Splice: {
+            Value arg = eval(m.argument);
+            if (arg.kind != ValueKind::Modifiers)
+                fail(m.argument->range,
+                     fmt::format("{} is not a list of modifiers; write <translate …>, <rotate …> "
+                                 "or <scale …> to move by a vector",
+                                 typeName(arg)));
+            const ModifierList& given = *arg.modifiers;
+            charge(given.moves.size() * sizeof(scene::Modifier));
+            list.moves.insert(list.moves.end(), given.moves.begin(), given.moves.end());
+            if (given.material >= 0) giveMaterial(given.material, m.range);
+            break;
+        }
+        }
+    }
+    return list;
+}
+
+Value Interpreter::evalModifierList(const ModifierListExpr* node) {
+    ModifierList list = evalModifiers(node->modifiers, node->range);
+    charge(sizeof(ModifierList) + list.moves.size() * sizeof(scene::Modifier));
+    Value value;
+    value.kind = ValueKind::Modifiers;
+    value.modifiers = &modifierLists_.emplace_back(std::move(list));
+    return value;
+}
+
 Value Interpreter::evalModify(const ModifyExpr* node) {
     Value target = eval(node->target);
     if (target.kind != ValueKind::Entity && target.kind != ValueKind::Texture) {
         fail(node->target->range,
              fmt::format("cannot apply modifiers to {}; only entities and textures move", typeName(target)));
     }
-    std::vector<scene::Modifier> modifiers;
-    for (const Modifier& m : node->modifiers) {
-        Value arg = eval(m.argument);
-        scene::Modifier mod;
-        mod.kind = m.op == ModifierOp::Translate ? scene::ModifierKind::Translate
-                   : m.op == ModifierOp::Rotate  ? scene::ModifierKind::Rotate
-                                                 : scene::ModifierKind::Scale;
-        if (arg.kind == ValueKind::Vec3) {
-            mod.value = {arg.v[0], arg.v[1], arg.v[2]};
-        } else if (m.op == ModifierOp::Scale && arg.isNumber()) {
-            mod.value = glm::dvec3(arg.asDouble());
-        } else {
-            fail(m.argument->range, fmt::format("'{}' takes a {}, not {}", opSpelling(m.op),
-                                                m.op == ModifierOp::Scale ? "number or a vec3" : "vec3",
-                                                typeName(arg)));
-        }
-        for (int k = 0; k < 3; ++k) {
-            if (!std::isfinite(mod.value[k])) {
-                fail(m.argument->range, fmt::format("'{}' has a component that is not finite", opSpelling(m.op)));
-            }
-            if (m.op == ModifierOp::Scale && mod.value[k] == 0.0) {
-                fail(m.argument->range, "'scale' by zero flattens the object; use a non-zero scale");
-            }
-        }
-        modifiers.push_back(mod);
-    }
+    ModifierList list = evalModifiers(node->modifiers, node->range);
+    std::vector<scene::Modifier>& modifiers = list.moves;
     if (target.kind == ValueKind::Texture) {
+        if (list.material >= 0)
+            fail(list.materialRange, "a texture takes no material; 'material' is for entities");
         scene::TextureDesc texture = scene_.textures[target.index];
         texture.modifiers.insert(texture.modifiers.end(), modifiers.begin(), modifiers.end());
         texture.source = span(node->range);
@@ -489,18 +583,22 @@ Value Interpreter::evalModify(const ModifyExpr* node) {
         return Value::object(ValueKind::Texture, target.objectType,
                              static_cast<uint32_t>(scene_.textures.size() - 1));
     }
-    // Modifying a transformed entity extends its list rather than nesting transforms.
+    // Modifying a transformed entity extends its list rather than nesting transforms; a
+    // material it gives already is nearer the parts, so it stays.
     int32_t child = static_cast<int32_t>(target.index);
+    int32_t material = list.material;
     if (auto* inner = std::get_if<scene::TransformNode>(&scene_.entities[target.index].shape)) {
         charge((inner->modifiers.size() + modifiers.size()) * sizeof(scene::Modifier));
         std::vector<scene::Modifier> combined = inner->modifiers;
         combined.insert(combined.end(), modifiers.begin(), modifiers.end());
         modifiers = std::move(combined);
         child = inner->child;
+        if (scene_.entities[target.index].material >= 0)
+            material = scene_.entities[target.index].material;
     }
     bool solid = scene_.entities[static_cast<size_t>(child)].solid;
-    int32_t index = addEntity(scene::EntityDesc{scene::TransformNode{child, std::move(modifiers)}, -1,
-                                                 solid, span(node->range)},
+    int32_t index = addEntity(scene::EntityDesc{scene::TransformNode{child, std::move(modifiers)},
+                                                material, solid, span(node->range)},
                               EntityInfo{node->range, target.objectType, false});
     return Value::object(ValueKind::Entity, target.objectType, static_cast<uint32_t>(index));
 }

@@ -65,4 +65,17 @@ inline Expr* makeCompoundAssign(ParseContext& ctx, BinaryOp op, Expr* target, So
     return makeAssign(ctx, target, makeBinary(ctx, op, read, opRange, value, whole), whole);
 }
 
+/// `material m` or `matrix [...]` in a modifier list; any other name before an operand is
+/// reported (a list of modifiers given by name stands alone: `<spin>`).
+inline Modifier makeNamedModifier(ParseContext& ctx, std::string_view name, SourceRange nameRange,
+                                  Expr* argument, SourceRange whole) {
+    if (name == "material") return Modifier{ModifierOp::Material, whole, argument};
+    if (name == "matrix") return Modifier{ModifierOp::Matrix, whole, argument};
+    ctx.diagnostics.error(
+        nameRange, fmt::format("'{}' is not a modifier; the modifiers are translate, rotate, "
+                               "scale, material and matrix, and lists of them by name",
+                               name));
+    return Modifier{ModifierOp::Splice, whole, argument};
+}
+
 } // namespace crt::lang::grammar

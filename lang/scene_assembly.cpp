@@ -154,7 +154,7 @@ void Interpreter::reportUnused() {
     std::vector<uint32_t> suspects;
     for (size_t i = 0; i < entityInfo_.size(); ++i) {
         const EntityInfo& info = entityInfo_[i];
-        if (!isMainLiteral(info) || reachable_[i]) continue;
+        if (!isMainLiteral(info) || reachable_[i] || info.outsideScene) continue;
         if (suspects.empty() || suspects.back() != info.range.begin) suspects.push_back(info.range.begin);
     }
     std::sort(suspects.begin(), suspects.end());
@@ -169,7 +169,7 @@ void Interpreter::reportUnused() {
             if (at == suspects.end() || *at != info.range.begin) continue;
             size_t k = static_cast<size_t>(at - suspects.begin());
             if (!firstValue[k]) firstValue[k] = &info;
-            if (reachable_[i]) used[k] = true;
+            if (reachable_[i] || info.outsideScene) used[k] = true;
         }
     }
     for (size_t k = 0; k < suspects.size(); ++k) {
@@ -192,10 +192,41 @@ void Interpreter::reportUnused() {
                              fmt::format("this {} does not shine: it is not in Settings.lights",
                                          objectInfo(info->type).name));
     }
-    if (scene_.drawn.empty()) {
+    const bool warnedOutside =
+        std::any_of(entityInfo_.begin(), entityInfo_.end(),
+                    [](const EntityInfo& info) { return info.outsideScene; });
+    if (scene_.drawn.empty() && !warnedOutside) {
         diagnostics_.warning(WarningKind::EmptyScene, {0, 0, 0},
                              "the script draws nothing; only the background will be rendered");
     }
+    if (!scene_.drawn.empty() && !sceneIsLit()) {
+        diagnostics_.warning(WarningKind::NoLights, unlitSceneRange(),
+                             "nothing lights the scene: it has no lights, no ambient light and "
+                             "nothing that glows; add a light to Settings { lights -> [...] }");
+    }
+}
+
+SourceRange Interpreter::unlitSceneRange() const {
+    // The keyword alone: the block may be long.
+    auto keyword = [](const Node* block, std::string_view word) {
+        return SourceRange{block->range.file, block->range.begin,
+                           block->range.begin + static_cast<uint32_t>(word.size())};
+    };
+    if (settings_) return keyword(settings_, "Settings");
+    for (const Node* item : compilation_.main.items)
+        if (item->kind == NodeKind::Scene) return keyword(item, "Scene");
+    return {0, 0, 0};
+}
+
+bool Interpreter::sceneIsLit() const {
+    const scene::Color& ambient = scene_.settings.ambient;
+    if (!scene_.lights.empty() || ambient.r > 0 || ambient.g > 0 || ambient.b > 0) return true;
+    // The materials left are those the drawn entities use.
+    return std::any_of(scene_.materials.begin(), scene_.materials.end(),
+                       [&](const scene::MaterialDesc& m) {
+                           const scene::Color& glow = scene_.finishOf(m).emission;
+                           return glow.r > 0 || glow.g > 0 || glow.b > 0;
+                       });
 }
 
 } // namespace crt::lang

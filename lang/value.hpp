@@ -12,6 +12,7 @@ namespace crt::lang {
 
 struct MacroExpr;
 struct Frame;
+struct ModifierList;
 
 enum class ValueKind : uint8_t {
     Unset, ///< a variable slot not yet assigned (never visible as a value)
@@ -31,6 +32,7 @@ enum class ValueKind : uint8_t {
     Texture,
     Macro,
     Builtin,
+    Modifiers, ///< a list of modifiers held as a value: `<rotate v, material m>`
 };
 
 struct Value;
@@ -58,6 +60,7 @@ struct Value {
         const std::string* s;
         const std::vector<Value>* list;
         const Closure* closure;
+        const ModifierList* modifiers;
         uint32_t index; ///< objects: index into their pool; builtins: table index
     };
 

@@ -183,7 +183,7 @@ private:
     }
 
     void modifiers() {
-        for (std::string_view m : {"translate", "rotate", "scale"}) {
+        for (std::string_view m : {"translate", "rotate", "scale", "material", "matrix"}) {
             add({std::string(m), CompletionKind::Keyword, "modifier", "", std::string(m) + " ", false, "0"});
         }
     }

@@ -19,6 +19,8 @@ std::string_view warningCode(WarningKind kind) {
     case WarningKind::ZeroSizeEntity: return "zero-size-entity";
     case WarningKind::EmptyScene: return "empty-scene";
     case WarningKind::DivisionByZero: return "division-by-zero";
+    case WarningKind::OutsideScene: return "outside-scene";
+    case WarningKind::NoLights: return "no-lights";
     }
     return "";
 }

@@ -55,6 +55,9 @@ std::optional<SemanticToken> classify(const Analysis& a, size_t index) {
         if (index + 1 < a.tokens.size() && a.tokens[index + 1].kind == TokenKind::Arrow) {
             return SemanticToken{range, TokenType::Property};
         }
+        // `<material m>`, `<matrix [...]>`: words of the modifier list where no name is meant.
+        if (a.text(t) == "material" || a.text(t) == "matrix")
+            return SemanticToken{range, TokenType::Keyword};
         if (auto slot = findPreludeSlot(a.text(t))) {
             bool function = *slot < preludeSlotOfT();
             return SemanticToken{range, function ? TokenType::Function : TokenType::Variable,

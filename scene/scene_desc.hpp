@@ -6,6 +6,7 @@
 
 #include "scene/obj_mesh.hpp"
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include <algorithm>
@@ -35,12 +36,14 @@ struct Color {
     bool operator==(const Color&) const = default;
 };
 
-enum class ModifierKind : uint8_t { Translate, Rotate, Scale };
+enum class ModifierKind : uint8_t { Translate, Rotate, Scale, Matrix };
 
-/// One modifier of `<translate v, rotate v, scale s>`, applied about the world origin.
+/// One modifier of `<translate v, rotate v, scale s, matrix m>`, applied about the world origin.
 struct Modifier {
     ModifierKind kind = ModifierKind::Translate;
-    glm::dvec3 value{0.0}; ///< a uniform scale s is stored as (s, s, s)
+    glm::dvec3 value{0.0}; ///< a uniform scale s is stored as (s, s, s); Matrix: the offset
+    /// Matrix: the linear part; its columns are where x, y and z go (POV-Ray's rows).
+    glm::dmat3 linear{1.0};
 };
 
 enum class TextureKind : uint8_t {
@@ -227,7 +230,7 @@ struct MeshShape {
 enum class CsgOp : uint8_t { Union, Difference, Intersection };
 /// A CSG combination of two entities (each a solid or a group of solids).
 struct CsgNode { CsgOp op = CsgOp::Union; int32_t left = -1; int32_t right = -1; };
-/// An entity moved by modifiers.
+/// An entity moved by modifiers (and maybe given a material: EntityDesc::material).
 struct TransformNode { int32_t child = -1; std::vector<Modifier> modifiers; };
 /// What a macro emitting several entities returns: drawn as its members; in CSG, their union.
 struct GroupNode { std::vector<int32_t> members; };
@@ -239,7 +242,10 @@ using Shape = std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, Con
 /// A node of the entity graph. Nodes may be shared (an entity drawn twice is one node).
 struct EntityDesc {
     Shape shape;
-    int32_t material = -1; ///< index into materials; -1 for CSG, transform and group nodes
+    /// Index into materials; -1: none of its own. A transform node's material is given to
+    /// the parts below it that have none (the nearest such node's); a part that ends with
+    /// none is drawn with the default material. CSG and group nodes have none.
+    int32_t material = -1;
     bool solid = true;     ///< usable as a CSG operand (and inside/outside is defined)
     SourceSpan source;
 };
@@ -355,7 +361,7 @@ struct RenderLimits {
 
 /// The evaluated scene.
 struct SceneDesc {
-    static constexpr int kSchemaVersion = 2;
+    static constexpr int kSchemaVersion = 3;
 
     std::vector<std::string> files; ///< script paths, indexed by SourceSpan::file
     SettingsDesc settings;

@@ -18,6 +18,15 @@ Json source(const SourceSpan& s) {
 Json modifiers(const std::vector<Modifier>& mods) {
     Json out = Json::array();
     for (const Modifier& m : mods) {
+        if (m.kind == ModifierKind::Matrix) {
+            // POV-Ray's twelve numbers: where x, y and z go, then the offset.
+            Json numbers = Json::array();
+            for (int column = 0; column < 3; ++column)
+                for (int row = 0; row < 3; ++row) numbers.push_back(m.linear[column][row]);
+            for (int k = 0; k < 3; ++k) numbers.push_back(m.value[k]);
+            out.push_back(Json{{"matrix", numbers}});
+            continue;
+        }
         const char* kind = m.kind == ModifierKind::Translate ? "translate"
                            : m.kind == ModifierKind::Rotate  ? "rotate"
                                                                 : "scale";

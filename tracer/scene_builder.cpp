@@ -49,6 +49,14 @@ private:
     struct Operand {
         int32_t entity;
         Transform transform;
+        int32_t material = -1; ///< given by a transform above to the parts that have none
+
+        /// Where a transform node leads: its child, moved, maybe with a material to give.
+        Operand below(const scene::EntityDesc& node, const scene::TransformNode& t) const {
+            return {t.child, transform.compose(Transform::fromModifiers(t.modifiers)),
+                    node.material >= 0 ? node.material : material};
+        }
+        Operand part(int32_t child) const { return {child, transform, material}; }
     };
 
     /// Draws an entity: groups and unions are drawn as their members (a union keeps every
@@ -60,26 +68,30 @@ private:
             pending.pop_back();
             const scene::EntityDesc& e = desc_.entities[op.entity];
             if (auto* t = std::get_if<scene::TransformNode>(&e.shape)) {
-                pending.push_back({t->child, op.transform.compose(Transform::fromModifiers(t->modifiers))});
+                pending.push_back(op.below(e, *t));
             } else if (auto* g = std::get_if<scene::GroupNode>(&e.shape)) {
-                for (auto it = g->members.rbegin(); it != g->members.rend(); ++it) pending.push_back({*it, op.transform});
+                for (auto it = g->members.rbegin(); it != g->members.rend(); ++it)
+                    pending.push_back(op.part(*it));
             } else if (auto* c = std::get_if<scene::CsgNode>(&e.shape); c && c->op == scene::CsgOp::Union) {
-                pending.push_back({c->right, op.transform});
-                pending.push_back({c->left, op.transform});
+                pending.push_back(op.part(c->right));
+                pending.push_back(op.part(c->left));
             } else if (std::holds_alternative<scene::CsgNode>(e.shape)) {
                 int32_t node = addCsg(op);
                 if (node >= 0) scene_.objects.push_back(~node);
             } else if (auto* m = std::get_if<scene::MeshShape>(&e.shape)) {
-                if (!addMesh(*m, op.entity, op.transform)) return false;
+                if (!addMesh(*m, op)) return false;
             } else {
-                int32_t p = addPrimitive(op.entity, op.transform);
+                int32_t p = addPrimitive(op);
                 if (p >= 0) scene_.objects.push_back(p);
             }
         }
         return true;
     }
 
-    int32_t materialOf(const scene::EntityDesc& e) const { return e.material >= 0 ? e.material : defaultMaterial_; }
+    int32_t materialOf(const Operand& op) const {
+        const int32_t own = desc_.entities[op.entity].material;
+        return own >= 0 ? own : op.material >= 0 ? op.material : defaultMaterial_;
+    }
 
     int32_t addTransform(const Transform& toWorld) {
         if (toWorld.isIdentity()) return -1;
@@ -92,17 +104,17 @@ private:
         return static_cast<int32_t>(scene_.transforms.size() - 1);
     }
 
-    int32_t addPrimitive(int32_t entity, const Transform& toWorld) {
-        const scene::EntityDesc& e = desc_.entities[entity];
-        std::optional<Geometry> geometry = makeGeometry(e.shape);
+    int32_t addPrimitive(const Operand& op) {
+        std::optional<Geometry> geometry = makeGeometry(desc_.entities[op.entity].shape);
         if (!geometry) return -1;
-        scene_.primitives.push_back({std::move(*geometry), addTransform(toWorld), materialOf(e)});
-        scene_.primitiveEntities.push_back(entity);
+        scene_.primitives.push_back(
+            {std::move(*geometry), addTransform(op.transform), materialOf(op)});
+        scene_.primitiveEntities.push_back(op.entity);
         return static_cast<int32_t>(scene_.primitives.size() - 1);
     }
 
-    bool addMesh(const scene::MeshShape& mesh, int32_t entity, const Transform& toWorld) {
-        const scene::EntityDesc& e = desc_.entities[entity];
+    bool addMesh(const scene::MeshShape& mesh, const Operand& op) {
+        const scene::EntityDesc& e = desc_.entities[op.entity];
         // The front end read the script's meshes; a description built otherwise names files.
         const std::string& path = scene::fileToOpen(mesh.resolvedFile, mesh.file);
         const auto& known = desc_.meshes.contains(path) ? desc_.meshes : meshes_;
@@ -123,10 +135,11 @@ private:
                                  where, where.empty() ? "" : ": error: ", limit, triangles, path);
             return false;
         }
-        int32_t transform = addTransform(toWorld);
+        const int32_t transform = addTransform(op.transform);
+        const int32_t material = materialOf(op);
         for (size_t i = 0; i < triangles; ++i) {
-            scene_.primitives.push_back({MeshTriangleGeometry(data, i), transform, materialOf(e)});
-            scene_.primitiveEntities.push_back(entity);
+            scene_.primitives.push_back({MeshTriangleGeometry(data, i), transform, material});
+            scene_.primitiveEntities.push_back(op.entity);
             scene_.objects.push_back(static_cast<int32_t>(scene_.primitives.size() - 1));
         }
         return true;
@@ -140,12 +153,12 @@ private:
             pending.pop_back();
             const scene::EntityDesc& e = desc_.entities[o.entity];
             if (auto* t = std::get_if<scene::TransformNode>(&e.shape)) {
-                pending.push_back({t->child, o.transform.compose(Transform::fromModifiers(t->modifiers))});
+                pending.push_back(o.below(e, *t));
             } else if (auto* g = std::get_if<scene::GroupNode>(&e.shape); g && op == scene::CsgOp::Union) {
-                for (int32_t m : g->members) pending.push_back({m, o.transform});
+                for (int32_t m : g->members) pending.push_back(o.part(m));
             } else if (auto* c = std::get_if<scene::CsgNode>(&e.shape); c && c->op == op) {
-                pending.push_back({c->right, o.transform});
-                pending.push_back({c->left, o.transform});
+                pending.push_back(o.part(c->right));
+                pending.push_back(o.part(c->left));
             } else {
                 operands.push_back(std::move(o));
             }
@@ -157,10 +170,10 @@ private:
     int32_t addCsg(const Operand& operand) {
         const scene::EntityDesc& e = desc_.entities[operand.entity];
         if (auto* t = std::get_if<scene::TransformNode>(&e.shape))
-            return addCsg({t->child, operand.transform.compose(Transform::fromModifiers(t->modifiers))});
+            return addCsg(operand.below(e, *t));
         const scene::CsgNode* c = std::get_if<scene::CsgNode>(&e.shape);
         if (!c && !std::holds_alternative<scene::GroupNode>(e.shape)) {
-            int32_t p = addPrimitive(operand.entity, operand.transform);
+            int32_t p = addPrimitive(operand);
             if (p < 0) return -1;
             CsgTreeNode leaf;
             leaf.primitive = p;
@@ -177,10 +190,10 @@ private:
             while (true) {
                 const scene::EntityDesc& be = desc_.entities[base.entity];
                 if (auto* t = std::get_if<scene::TransformNode>(&be.shape)) {
-                    base = {t->child, base.transform.compose(Transform::fromModifiers(t->modifiers))};
+                    base = base.below(be, *t);
                 } else if (auto* d = std::get_if<scene::CsgNode>(&be.shape); d && d->op == scene::CsgOp::Difference) {
-                    collectChain({d->right, base.transform}, scene::CsgOp::Union, subtracted);
-                    base = {d->left, base.transform};
+                    collectChain(base.part(d->right), scene::CsgOp::Union, subtracted);
+                    base = base.part(d->left);
                 } else {
                     break;
                 }

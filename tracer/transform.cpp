@@ -44,6 +44,7 @@ Transform Transform::fromModifiers(const std::vector<scene::Modifier>& modifiers
             step = Transform(r, Vec3(0.0));
             break;
         }
+        case scene::ModifierKind::Matrix: step = Transform(m.linear, m.value); break;
         }
         result = step.compose(result);
     }

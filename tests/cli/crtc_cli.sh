@@ -11,6 +11,7 @@ source "$(dirname "$0")/expect.sh"
 cat >"$work/good.crt" <<'CRT'
 s = Sphere { center -> vec3(0, 0, 0) radius -> 1 }
 Scene { s }
+Settings { ambient -> rgb(0.2, 0.2, 0.2) }
 CRT
 cat >"$work/bad.crt" <<'CRT'
 s = Sphere { center -> vec3(0, 0, 0) radius -> "one" }
@@ -59,7 +60,7 @@ expect_status 1 "the step limit" "$crtc" --check --max-steps 1000 "$work/loop.cr
 expect_text "$work/err" "exceeded 1000 steps" "step limit message"
 
 expect_status 0 "--dump-scene" "$crtc" --dump-scene "$work/good.crt"
-expect_text "$work/out" '"schema": 2' "scene JSON has a schema version"
+expect_text "$work/out" '"schema": 3' "scene JSON has a schema version"
 expect_text "$work/out" '"type": "Sphere"' "scene JSON has the sphere"
 expect_status 0 "--dump-ast" "$crtc" --dump-ast "$work/good.crt"
 expect_text "$work/out" "Object Sphere <1:5-1:51>" "AST dump shows the object and its range"
@@ -88,7 +89,7 @@ expect_info() { # image pattern description: oiiotool's header summary of the im
 }
 mkdir -p "$work/scenes" "$work/images" "$work/elsewhere"
 cat >"$work/scenes/tiny.crt" <<'CRT'
-Settings { width -> 32 height -> 24 }
+Settings { width -> 32 height -> 24 ambient -> rgb(0.2, 0.2, 0.2) }
 Scene { Sphere { center -> vec3(0, 0, 1) radius -> 0.5 } }
 CRT
 crtc_path=$(cd "$(dirname "$crtc")" && pwd)/$(basename "$crtc")

@@ -186,8 +186,9 @@ json Session::pick(double fx, double fy) const {
                    {"location", spanLocation(scene, entity.source)},
                    {"point", {found->point.x, found->point.y, found->point.z}},
                    {"distance", found->distance}};
-    if (entity.material >= 0)
-        answer["material"] = spanLocation(scene, scene.materials[static_cast<size_t>(entity.material)].source);
+    if (found->material >= 0)
+        answer["material"] =
+            spanLocation(scene, scene.materials[static_cast<size_t>(found->material)].source);
     // The entity drawn, when the surface is part of something larger built elsewhere (a CSG,
     // a macro's group).
     const int32_t root = drawnRootOf(scene, found->entity);

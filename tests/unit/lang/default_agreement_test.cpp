@@ -117,6 +117,9 @@ constexpr std::pair<ObjectType, std::string_view> kRuleDefaults[] = {
 };
 
 bool isRuleDefault(ObjectType type, std::string_view attribute) {
+    // An entity's material: none of its own, so that a <material m> around it can give one;
+    // drawn as Material {} otherwise (tests/unit/tracer/render/given_material_test.cpp).
+    if (attribute == "material" && objectInfo(type).category == ObjectCategory::Entity) return true;
     for (auto [t, name] : kRuleDefaults) {
         if (t == type && name == attribute) return true;
     }

@@ -124,3 +124,33 @@ TEST_CASE("the 2015 aperture shape \"uniform\" builds the same camera as \"circl
         CHECK(uniform.aperture == circle.aperture);
     }
 }
+
+namespace {
+
+bool warnsNoLights(const std::string& text) {
+    Compilation c = compileScript(text);
+    for (const Diagnostic& d : c.diagnostics.items())
+        if (d.warning == WarningKind::NoLights) return true;
+    return false;
+}
+
+} // namespace
+
+TEST_CASE("a scene warns of no lights only when nothing lights it", "[scene]") {
+    const std::string ball = "Scene { Sphere { center -> vec3(0, 0, 0) radius -> 1 @ } }\n";
+    auto with = [&](const std::string& settings, const std::string& attributes) {
+        std::string text = settings + ball;
+        return text.replace(text.find('@'), 1, attributes);
+    };
+    CHECK(warnsNoLights(with("", "")));
+    CHECK(warnsNoLights(with("Settings { width -> 100 }\n", "")));
+    CHECK_FALSE(warnsNoLights(with(
+        "Settings { lights -> [PointLight { origin -> vec3(0, 5, 0) color -> rgb(1, 1, 1) }] }\n",
+        "")));
+    CHECK_FALSE(warnsNoLights(with("Settings { ambient -> rgb(0.2, 0.2, 0.2) }\n", "")));
+    CHECK_FALSE(warnsNoLights(with("", "material -> Material { emission -> rgb(1, 0.5, 0) }")));
+    // A glowing material only counts where it is drawn.
+    CHECK(warnsNoLights("glow = Material { emission -> rgb(1, 1, 1) }\n" + with("", "")));
+    // Nothing drawn: the empty scene says so instead.
+    CHECK_FALSE(warnsNoLights("x = 1\n"));
+}

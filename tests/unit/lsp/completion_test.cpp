@@ -156,7 +156,9 @@ TEST_CASE("modifiers after '<'", "[completion]") {
     CHECK(has(list, "translate"));
     CHECK(has(list, "rotate"));
     CHECK(has(list, "scale"));
-    CHECK(list.items.size() == 3);
+    CHECK(has(list, "material"));
+    CHECK(has(list, "matrix"));
+    CHECK(list.items.size() == 5);
 }
 
 TEST_CASE("nothing inside comments", "[completion]") {

@@ -25,7 +25,11 @@ TEST_CASE("an error inside an included file is shown at the include", "[diagnost
 
 TEST_CASE("warnings carry their code and notes", "[diagnostics]") {
     crt::lang::EvalOptions options;
-    auto c = crt::lang::compile("w.crt", "unused = 1\nScene { Sphere { center -> vec3(0, 0, 0) radius -> 1 radius -> 2 } }\n", options);
+    auto c = crt::lang::compile(
+        "w.crt",
+        "unused = 1\nScene { Sphere { center -> vec3(0, 0, 0) radius -> 1 radius -> 2 } }\n"
+        "Settings { ambient -> rgb(0.2, 0.2, 0.2) }\n",
+        options);
     auto diagnostics = documentDiagnostics(c);
     REQUIRE(diagnostics.size() == 2);
     CHECK(diagnostics[0].code == "duplicate-attribute");

@@ -54,6 +54,14 @@ TEST_CASE("hover on a variable shows its type and evaluated value", "[hover]") {
     CHECK_THAT(size->markdown, Contains("(parameter) size"));
 }
 
+TEST_CASE("hover on a list of modifiers held in a variable says so", "[hover]") {
+    Annotations code("sp@in = <rotate vec3(0, 30, 0), translate vec3(1, 0, 0)>");
+    auto a = analyzeCode(code.code);
+    auto h = hover(*a, code.point(), nullptr);
+    REQUIRE(h);
+    CHECK_THAT(h->markdown, Contains("(variable) spin: modifiers"));
+}
+
 TEST_CASE("hover values come from a real evaluation", "[hover]") {
     crt::lang::EvalOptions options;
     options.keepGlobalValues = true;

@@ -70,3 +70,20 @@ TEST_CASE("semantic tokens of a range hold only that range", "[semantic]") {
     CHECK(textOf(*a, tokens[0].range) == "b");
     CHECK(textOf(*a, tokens[2].range) == "2");
 }
+
+TEST_CASE("semantic tokens: material and matrix in a modifier list are keywords, a list by name a "
+          "variable",
+          "[semantic]") {
+    Annotations code(R"(m = Material { $attr«material» -> 1 }
+$def«spin» = <rotate vec3(0, 30, 0), $word«material» m>
+s = Sphere { center -> vec3(0, 0, 0) radius -> 1 } <$use«spin», $word2«matrix» [1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0]>
+)");
+    auto a = analyzeCode(code.code);
+    auto tokens = semanticTokens(*a);
+    CHECK(tokenAt(tokens, code.range("attr")).first == TokenType::Property);
+    CHECK(tokenAt(tokens, code.range("word")).first == TokenType::Keyword);
+    CHECK(tokenAt(tokens, code.range("word2")).first == TokenType::Keyword);
+    CHECK(tokenAt(tokens, code.range("def")) ==
+          std::pair{TokenType::Variable, uint32_t{ModDeclaration | ModDefinition}});
+    CHECK(tokenAt(tokens, code.range("use")) == std::pair{TokenType::Variable, uint32_t{0}});
+}

@@ -18,12 +18,11 @@ public:
         desc.materials.push_back({m.color, desc.internFinish(m), {}});
         return static_cast<int32_t>(desc.materials.size() - 1);
     }
+    /// `material` -1: none of its own (drawn with the default one unless a transform gives one).
     int32_t entity(scene::Shape shape, int32_t material = -1, bool solid = true) {
         scene::EntityDesc e;
         e.shape = std::move(shape);
-        bool composite = std::holds_alternative<scene::CsgNode>(e.shape) || std::holds_alternative<scene::TransformNode>(e.shape) ||
-                         std::holds_alternative<scene::GroupNode>(e.shape);
-        e.material = composite ? -1 : (material >= 0 ? material : defaultMaterial());
+        e.material = material;
         e.solid = solid;
         desc.entities.push_back(std::move(e));
         return static_cast<int32_t>(desc.entities.size() - 1);
@@ -32,8 +31,10 @@ public:
     int32_t box(glm::dvec3 a, glm::dvec3 b, int32_t m = -1) { return entity(scene::BoxShape{a, b}, m); }
     int32_t plane(glm::dvec3 normal, glm::dvec3 position, int32_t m = -1) { return entity(scene::PlaneShape{normal, position}, m); }
     int32_t csg(scene::CsgOp op, int32_t left, int32_t right) { return entity(scene::CsgNode{op, left, right}); }
-    int32_t transformed(int32_t child, std::vector<scene::Modifier> modifiers) {
-        return entity(scene::TransformNode{child, std::move(modifiers)});
+    /// `material`: given to the parts of `child` that have none.
+    int32_t transformed(int32_t child, std::vector<scene::Modifier> modifiers,
+                        int32_t material = -1) {
+        return entity(scene::TransformNode{child, std::move(modifiers)}, material);
     }
     void draw(int32_t e) { desc.drawn.push_back(e); }
     int32_t colored(double r, double g, double b) {
@@ -41,13 +42,6 @@ public:
         m.color = scene::Color{r, g, b, 1};
         return material(m);
     }
-
-private:
-    int32_t defaultMaterial() {
-        if (default_ < 0) default_ = material(ShadingMaterial{});
-        return default_;
-    }
-    int32_t default_ = -1;
 };
 
 inline scene::Modifier translate(glm::dvec3 v) { return {scene::ModifierKind::Translate, v}; }

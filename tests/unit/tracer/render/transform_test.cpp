@@ -9,6 +9,7 @@
 
 using namespace crt::tracer;
 using namespace crt::tracer::test;
+namespace scene = crt::scene;
 
 namespace {
 
@@ -60,4 +61,18 @@ TEST_CASE("Normals stay perpendicular under non-uniform scale", "[transform]") {
         CHECK(largest > 0);
         CHECK(largest < 1e-12);
     }
+}
+
+TEST_CASE("A matrix modifier maps x, y and z to its columns and adds its offset, in order with the "
+          "others",
+          "[transform]") {
+    scene::Modifier shear{scene::ModifierKind::Matrix, Vec3(0.25, -0.1, 0)};
+    shear.linear = glm::dmat3(Vec3(1, 0.4, 0), Vec3(0.6, 1, 0), Vec3(0, 0, 1));
+    const Transform t = Transform::fromModifiers({shear});
+    requireNear(t.point(Vec3(1, 0, 0)), Vec3(1.25, 0.3, 0));
+    requireNear(t.point(Vec3(0, 1, 0)), Vec3(0.85, 0.9, 0));
+    requireNear(t.inverse().point(t.point(Vec3(0.3, -2, 5))), Vec3(0.3, -2, 5));
+    // After a translation: the matrix moves the translated point.
+    requireNear(Transform::fromModifiers({translate(Vec3(0, 1, 0)), shear}).point(Vec3(0)),
+                Vec3(0.85, 0.9, 0));
 }
