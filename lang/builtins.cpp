@@ -22,6 +22,7 @@ namespace {
 std::optional<std::string> plainText(const Value& value) {
     switch (value.kind) {
     case ValueKind::Unset:
+    case ValueKind::Poisoned:
     case ValueKind::None: return "none";
     case ValueKind::Int: return fmt::format("{}", value.i);
     case ValueKind::Float: return formatFloat(value.f);

@@ -43,6 +43,11 @@ void Interpreter::fail(SourceRange where, std::string message) {
     throw EvalError{};
 }
 
+void Interpreter::failAtLimit(SourceRange where, std::string message) {
+    stopped_ = true;
+    fail(where, std::move(message));
+}
+
 const std::string* Interpreter::newString(std::string text) {
     charge(sizeof(std::string) + text.capacity());
     return &strings_.emplace_back(std::move(text));
@@ -55,10 +60,10 @@ const std::vector<Value>* Interpreter::newList(std::vector<Value> items) {
 
 void Interpreter::checkRoom(uint64_t bytes) {
     if (bytes > options_.limits.maxMemory - std::min(memoryUsed_, options_.limits.maxMemory)) {
-        fail(statement_ ? statement_->range : SourceRange{},
-             fmt::format("evaluation needs more than {} MiB of memory; raise the limit with "
-                         "--max-memory",
-                         options_.limits.maxMemory >> 20));
+        failAtLimit(statement_ ? statement_->range : SourceRange{},
+                    fmt::format("evaluation needs more than {} MiB of memory; raise the limit with "
+                                "--max-memory",
+                                options_.limits.maxMemory >> 20));
     }
 }
 
@@ -73,12 +78,14 @@ void Interpreter::charge(uint64_t bytes) {
 void Interpreter::reportOutOfMemory() {
     const SourceRange where = statement_ ? statement_->range : SourceRange{};
     diagnostics_.error(where, "out of memory while evaluating this statement");
+    stopped_ = true;
 }
 
 void Interpreter::nestedTooDeep(const Node* node) {
-    fail(node->range, fmt::format("expressions, blocks and macro calls nested deeper than {} "
-                                  "levels",
-                                  maxNesting_));
+    failAtLimit(node->range,
+                fmt::format("expressions, blocks and macro calls nested deeper than {} "
+                            "levels",
+                            maxNesting_));
 }
 
 uint64_t Interpreter::nextRandom() {
@@ -101,12 +108,12 @@ SourceRange Interpreter::argRange(const CallExpr* site, size_t index) const {
 
 void Interpreter::checkSteps(SourceRange where) {
     if (steps_ > options_.limits.maxSteps) {
-        fail(where, fmt::format("evaluation exceeded {} steps (loop iterations and macro "
-                                "calls); raise the limit with --max-steps",
-                                options_.limits.maxSteps));
+        failAtLimit(where, fmt::format("evaluation exceeded {} steps (loop iterations and macro "
+                                       "calls); raise the limit with --max-steps",
+                                       options_.limits.maxSteps));
     }
     if (options_.interrupt && options_.interrupt()) {
-        fail(where, "evaluation was stopped before it finished (time budget exceeded)");
+        failAtLimit(where, "evaluation was stopped before it finished (time budget exceeded)");
     }
     nextStepCheck_ = nextCheckAfter(steps_);
 }
@@ -134,11 +141,14 @@ void Interpreter::evaluateResolved() {
     includeStack_.push_back(canonical.string());
     globalValues_.resize(globals_.size());
     try {
-        execStatements(compilation_.main.items);
-        assembleScene();
-        reportUnused();
+        execRecovering(compilation_.main.items);
+        // After an error, what is unused or unlit is most likely so because of it.
+        if (!diagnostics_.hasErrors()) {
+            assembleScene();
+            reportUnused();
+        }
         if (options_.keepGlobalValues) keepGlobalValues(); // str() of objects reads scene_
-        compilation_.scene = std::move(scene_);
+        if (!diagnostics_.hasErrors()) compilation_.scene = std::move(scene_);
     } catch (const EvalError&) {
         // reported already
         if (options_.keepGlobalValues) keepGlobalValues();
@@ -151,7 +161,7 @@ void Interpreter::keepGlobalValues() {
     constexpr size_t kMaxText = 160; // a hover line, not a dump of a huge list
     for (uint32_t slot = 0; slot < globals_.size() && slot < globalValues_.size(); ++slot) {
         const Value& value = globalValues_[slot];
-        if (value.kind == ValueKind::Unset) continue;
+        if (value.kind == ValueKind::Unset || value.kind == ValueKind::Poisoned) continue;
         std::string text;
         if (value.kind == ValueKind::List && value.list->size() > 32) {
             text = fmt::format("a list of {} values", value.list->size());
@@ -288,8 +298,48 @@ void Interpreter::reserveLike(size_t entitiesBefore, size_t materialsBefore, uin
 void Interpreter::execScene(const SceneStmt* node) {
     EmitMode savedMode = emitMode_;
     emitMode_ = EmitMode::Scene;
-    execStatements(node->statements);
+    execRecovering(node->statements);
     emitMode_ = savedMode;
+}
+
+void Interpreter::execRecovering(std::span<Node* const> statements) {
+    const Node* enclosing = statement_;
+    for (const Node* statement : statements) {
+        statement_ = statement;
+        try {
+            exec(statement);
+        } catch (const EvalError&) {
+            if (stopped_) throw;
+            poisonAssigned(statement);
+        }
+    }
+    statement_ = enclosing;
+}
+
+void Interpreter::poisonAssigned(const Node* failed) {
+    auto poison = [&](const AssignExpr* assign, bool always) {
+        const Resolution& r = assign->resolution;
+        if (r.binding != Binding::Global) return;
+        Value& slot = globalValues_[r.slot];
+        if (always || slot.kind == ValueKind::Unset) slot.kind = ValueKind::Poisoned;
+    };
+    if (failed->kind == NodeKind::Include) {
+        // What the file would have defined is unknown: none of the names still unset is
+        // reported again.
+        for (Value& slot : globalValues_)
+            if (slot.kind == ValueKind::Unset) slot.kind = ValueKind::Poisoned;
+        return;
+    }
+    if (failed->kind == NodeKind::Assign) poison(static_cast<const AssignExpr*>(failed), true);
+    // Assignments inside a failed loop or if that never ran (a macro's are its own).
+    std::vector<const Node*> pending{failed};
+    while (!pending.empty()) {
+        const Node* node = pending.back();
+        pending.pop_back();
+        if (node->kind == NodeKind::Macro) continue;
+        if (node->kind == NodeKind::Assign) poison(static_cast<const AssignExpr*>(node), false);
+        forEachChild(const_cast<Node*>(node), [&](Node* child) { pending.push_back(child); });
+    }
 }
 
 bool Interpreter::condition(const Expr* node, std::string_view what) {
@@ -358,11 +408,12 @@ void Interpreter::draw(const Value& value, const Node* where) {
     case ValueKind::Entity:
         primitivesDrawn_ = scene::saturatingAdd(primitivesDrawn_, primitiveCounts_[value.index]);
         if (primitivesDrawn_ > options_.limits.render.maxPrimitives) {
-            fail(where->range,
-                 fmt::format("the scene draws more than {} primitives (CSG operands and group "
-                             "members count each time they are used); raise the limit with "
-                             "--max-primitives",
-                             options_.limits.render.maxPrimitives));
+            failAtLimit(
+                where->range,
+                fmt::format("the scene draws more than {} primitives (CSG operands and group "
+                            "members count each time they are used); raise the limit with "
+                            "--max-primitives",
+                            options_.limits.render.maxPrimitives));
         }
         scene_.drawn.push_back(static_cast<int32_t>(value.index));
         return;
@@ -457,10 +508,18 @@ void Interpreter::execInclude(const IncludeStmt* node) {
     EmitMode savedMode = emitMode_;
     std::vector<Value>* savedEmitted = emitted_;
     if (emitMode_ == EmitMode::Macro) emitMode_ = EmitMode::None;
-    execStatements(script.items);
-    emitMode_ = savedMode;
-    emitted_ = savedEmitted;
-    includeStack_.pop_back();
+    auto leave = [&] {
+        emitMode_ = savedMode;
+        emitted_ = savedEmitted;
+        includeStack_.pop_back();
+    };
+    try {
+        execStatements(script.items);
+    } catch (const EvalError&) {
+        leave();
+        throw;
+    }
+    leave();
 }
 
 // ---------------------------------------------------------------- variables
@@ -480,12 +539,15 @@ Value Interpreter::evalVar(const VarExpr* node) {
     }
     case Binding::Unresolved: break;
     }
-    if (!slot || slot->kind == ValueKind::Unset) unboundVariable(node);
+    if (!slot || slot->kind <= ValueKind::Poisoned) unboundVariable(node);
     return *slot;
 }
 
 void Interpreter::unboundVariable(const VarExpr* node) {
     const Resolution& r = node->resolution;
+    if (r.binding == Binding::Global && globalValues_[r.slot].kind == ValueKind::Poisoned) {
+        throw EvalError{}; // its error is reported where it was made
+    }
     const GlobalTable::Entry* entry = globals_.find(node->name);
     if (r.binding == Binding::Local || r.binding == Binding::Enclosing || (entry && entry->assigned)) {
         fail(node->range, fmt::format("variable '{}' is read before it is assigned", node->name));
@@ -525,9 +587,10 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
     }
     step(site->range);
     if (depth_ >= options_.limits.maxDepth) {
-        fail(site->range, fmt::format("macro calls nested deeper than {}; raise the limit with "
-                                      "--max-depth",
-                                      options_.limits.maxDepth));
+        failAtLimit(site->range,
+                    fmt::format("macro calls nested deeper than {}; raise the limit with "
+                                "--max-depth",
+                                options_.limits.maxDepth));
     }
 
     // Save the caller's frame; stack frames are found again by offset after the call,
@@ -565,6 +628,17 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
     Value last = Value::none();
     const auto& statements = macro->body->statements;
     const Node* callingStatement = statement_;
+    const size_t diagnosticsBefore = diagnostics_.items().size();
+    auto leave = [&] {
+        statement_ = callingStatement;
+        --depth_;
+        if (!macro->capturesFrame) stack_.resize(base);
+        locals_ = savedOnStack ? stack_.data() + savedBase : savedLocals;
+        heapFrame_ = savedHeapFrame;
+        enclosing_ = savedEnclosing;
+        emitMode_ = savedMode;
+        emitted_ = savedEmitted;
+    };
     try {
         for (size_t i = 0; i < statements.size(); ++i) {
             statement_ = statements[i];
@@ -575,25 +649,27 @@ Value Interpreter::callMacro(const Closure* closure, const CallExpr* site,
             }
         }
     } catch (const EvalError&) {
-        // Every run-time error inside a macro gets a note at each call site of the chain,
-        // innermost first, whichever code raised it.
-        addCallNote(diagnostics_.items().back(), {site->range, "in the macro called here"});
+        noteCallSite(diagnosticsBefore, site);
+        leave();
         throw;
     } catch (const std::bad_alloc&) {
         reportOutOfMemory();
-        addCallNote(diagnostics_.items().back(), {site->range, "in the macro called here"});
+        noteCallSite(diagnosticsBefore, site);
+        leave();
         throw EvalError{};
     }
-    statement_ = callingStatement;
-
-    --depth_;
-    if (!macro->capturesFrame) stack_.resize(base);
-    locals_ = savedOnStack ? stack_.data() + savedBase : savedLocals;
-    heapFrame_ = savedHeapFrame;
-    enclosing_ = savedEnclosing;
-    emitMode_ = savedMode;
-    emitted_ = savedEmitted;
+    leave();
     return macroResult(emitted, last, site);
+}
+
+void Interpreter::noteCallSite(size_t diagnosticsBefore, const CallExpr* site) {
+    // Every run-time error inside a macro gets a note at each call site of the chain,
+    // innermost first, whichever code raised it.
+    std::vector<Diagnostic>& items = diagnostics_.items();
+    for (size_t i = diagnosticsBefore; i < items.size(); ++i) {
+        if (items[i].severity == Severity::Error)
+            addCallNote(items[i], {site->range, "in the macro called here"});
+    }
 }
 
 Value Interpreter::macroResult(const std::vector<Value>& emitted, const Value& last, const CallExpr* site) {

@@ -26,7 +26,9 @@ namespace crt::lang {
 /// proportion to its size, and the step limit and the time budget must see it.
 inline constexpr uint64_t kBytesPerStep = 1024;
 
-/// Thrown after a run-time error has been reported; evaluation stops at the first one.
+/// Thrown after a run-time error has been reported (or, leaving a statement that read a
+/// poisoned variable, with none to report). The statement is abandoned and evaluation goes on
+/// with the next top-level or Scene statement, unless a limit was reached.
 struct EvalError {};
 
 /// Per-entity facts the scene description does not carry, for warnings and str().
@@ -75,6 +77,9 @@ public:
 
     // --- services for built-ins and object builders ---
     [[noreturn, gnu::cold, gnu::noinline]] void fail(SourceRange where, std::string message);
+    /// fail() for a limit reached (steps, memory, nesting, entities, ...): the evaluation ends
+    /// there, rather than go on with the next statement.
+    [[noreturn, gnu::cold, gnu::noinline]] void failAtLimit(SourceRange where, std::string message);
     const std::string* newString(std::string text);
     const std::vector<Value>* newList(std::vector<Value> items);
     uint64_t nextRandom();
@@ -111,6 +116,12 @@ private:
 
     // statements
     void execStatements(std::span<Node* const> statements);
+    /// Runs the main script's and the Scene blocks' statements each on its own: an error
+    /// abandons its statement (poisonAssigned) and the next one runs, so that one evaluation
+    /// reports every error it can. Limits still end it.
+    void execRecovering(std::span<Node* const> statements);
+    /// After `failed` was abandoned: the variables it would have set read as poisoned.
+    void poisonAssigned(const Node* failed);
     Value exec(const Node* node);
     void execInclude(const IncludeStmt* node);
     void execSettings(const SettingsStmt* node);
@@ -201,6 +212,8 @@ private:
     Value evalList(const ListExpr* node);
     Value evalMacro(const MacroExpr* node);
     Value callMacro(const Closure* closure, const CallExpr* site, std::span<const Value> args);
+    /// Adds "in the macro called here" to the errors reported since `diagnosticsBefore`.
+    void noteCallSite(size_t diagnosticsBefore, const CallExpr* site);
     /// What a macro call returns: what it emitted (one entity, or a group of several), else
     /// the value of its last expression statement.
     Value macroResult(const std::vector<Value>& emitted, const Value& last, const CallExpr* site);
@@ -225,8 +238,8 @@ private:
     Value buildLight(const ObjectBuilder& b);
     Value buildBackground(const ObjectBuilder& b);
     Value buildTexture(ObjectBuilder& b);
-    /// Fills scene_.settings; keeps what it names for assembleScene to link, and the first
-    /// value out of its range in settingsProblem_.
+    /// Fills scene_.settings; keeps what it names for assembleScene to link, and every value
+    /// out of its range in settingsProblems_.
     void buildSettings(const ObjectBuilder& b);
     /// Remembers the camera, lights and background Settings names, for linkSettings.
     void recordSettingsLinks(const ObjectBuilder& b);
@@ -246,6 +259,8 @@ private:
     void assembleScene();
     /// Puts the camera, lights and background Settings names into the scene.
     void linkSettings();
+    /// Reports the Settings values out of their range, in source order.
+    void assembleSettingsProblems();
     /// Keeps only the entities, materials and textures the drawn entities reach.
     void keepReachable();
     /// Removes the entities, materials and textures not marked, renumbering references.
@@ -281,6 +296,7 @@ private:
     /// The innermost statement running: where limits and running out of memory are reported.
     const Node* statement_ = nullptr;
     uint64_t steps_ = 0;
+    bool stopped_ = false;       ///< a limit was reached: no statement runs after the one running
     uint64_t nextStepCheck_ = 0; ///< when step() next calls checkSteps (set by the constructor)
 
     EmitMode emitMode_ = EmitMode::None;
@@ -317,7 +333,7 @@ private:
         std::optional<Value> background;            ///< a Background or a color
         SourceRange backgroundRange{};
     } settingsLinks_;
-    std::optional<DeferredError> settingsProblem_;
+    std::vector<DeferredError> settingsProblems_;
 
     // include bookkeeping
     std::vector<std::string> includedFiles_; ///< canonical paths, in order

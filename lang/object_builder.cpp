@@ -41,21 +41,34 @@ std::string_view placeholder(AttrType type) {
 } // namespace
 
 void ObjectBuilder::evaluate(std::span<const Attribute> attributes) {
+    // An attribute whose value fails is poisoned and the next one is read, so that every
+    // wrong attribute is reported; the object is then not built.
+    uint32_t poisonedMask = 0;
     for (const Attribute& a : attributes) {
-        Value v = in.eval(a.value);
-        if (a.slot < 0) continue; // reported by the resolver
-        check(a, v);
-        const auto slot = static_cast<size_t>(a.slot);
-        new (&values[slot].value) Value(v);
-        if (!isGiven(slot)) {
-            givenSlots.push_back(static_cast<uint8_t>(slot));
-            givenMask |= 1u << slot;
+        try {
+            Value v = in.eval(a.value);
+            if (a.slot < 0) continue; // reported by the resolver
+            check(a, v);
+            const auto slot = static_cast<size_t>(a.slot);
+            new (&values[slot].value) Value(v);
+            if (!isGiven(slot)) {
+                givenSlots.push_back(static_cast<uint8_t>(slot));
+                givenMask |= 1u << slot;
+            }
+            given[slot] = &a;
+        } catch (const EvalError&) {
+            if (in.stopped_) throw;
+            if (a.slot >= 0) poisonedMask |= 1u << a.slot;
         }
-        given[slot] = &a;
     }
+    bool complete = poisonedMask == 0;
     for (size_t i = 0; i < info.attributes.size(); ++i) {
-        if (info.attributes[i].required && !isGiven(i)) missing(info.attributes[i]);
+        if (info.attributes[i].required && !isGiven(i) && !((poisonedMask >> i) & 1u)) {
+            missing(info.attributes[i]);
+            complete = false;
+        }
     }
+    if (!complete) throw EvalError{};
 }
 
 void ObjectBuilder::missing(const AttributeInfo& attr) {
@@ -64,7 +77,6 @@ void ObjectBuilder::missing(const AttributeInfo& attr) {
     uint32_t closing = range.end > range.begin ? range.end - 1 : range.end;
     d.fixits.push_back({{range.file, closing, closing},
                         fmt::format("{} -> {} ", attr.name, placeholder(attr.type))});
-    throw EvalError{};
 }
 
 void ObjectBuilder::wrongType(const Attribute& a, const Value& v, std::string_view wanted) {

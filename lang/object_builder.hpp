@@ -52,7 +52,8 @@ struct ObjectBuilder {
 
     bool isGiven(size_t slot) const { return (givenMask >> slot) & 1u; }
 
-    /// Evaluates and checks every attribute, then reports the first required one missing.
+    /// Evaluates and checks every attribute, then reports each required one missing; throws
+    /// EvalError after all of them if any failed or is missing.
     void evaluate(std::span<const Attribute> attributes);
 
     // --- reading ---
@@ -159,7 +160,7 @@ struct ObjectBuilder {
     void checkChoice(const Attribute& a, const Value& v, const AttributeInfo& attr);
     void checkMap(const Attribute& a, const Value& v, AttrType type);
     void checkMaterialList(const Attribute& a, const Value& v);
-    [[noreturn]] void missing(const AttributeInfo& attr);
+    void missing(const AttributeInfo& attr);
     [[noreturn]] void wrongType(const Attribute& a, const Value& v, std::string_view wanted);
     [[noreturn]] void floatForInt(const Attribute& a, const Value& v, std::string_view wanted);
     void finite(const Attribute& a, const Value& v, int components);

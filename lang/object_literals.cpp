@@ -295,9 +295,10 @@ scene::SourceSpan Interpreter::span(SourceRange range) const {
 int32_t Interpreter::addEntity(scene::EntityDesc entity, EntityInfo info) {
     const Limits& limits = options_.limits;
     if (scene_.entities.size() >= limits.maxEntities) {
-        fail(info.range, fmt::format("the script builds more than {} entities (drawn or not); raise "
-                                     "the limit with --max-entities",
-                                     limits.maxEntities));
+        failAtLimit(info.range,
+                    fmt::format("the script builds more than {} entities (drawn or not); raise "
+                                "the limit with --max-entities",
+                                limits.maxEntities));
     }
     // Counted now, from the parts' counts, so that a shared entity doubled in a loop stops
     // here rather than when the renderer expands it.
@@ -671,7 +672,15 @@ void Interpreter::execSettings(const SettingsStmt* node) {
     }
     settings_ = node;
     ObjectBuilder b{*this, objectInfo(ObjectType::Settings), node->range, keyword};
-    b.evaluate(node->attributes);
+    try {
+        b.evaluate(node->attributes);
+    } catch (const EvalError&) {
+        // The values that could be read are still checked, so that each bad one is reported.
+        if (stopped_) throw;
+        buildSettings(b);
+        assembleSettingsProblems();
+        throw;
+    }
     buildSettings(b);
 }
 
@@ -679,7 +688,7 @@ void Interpreter::buildSettings(const ObjectBuilder& b) {
     // A value out of its range is reported once the whole script has run (docs/language.md,
     // "Settings"), so what the statements after Settings print and warn does not depend on it.
     auto problem = [&](std::string_view name, std::string message) {
-        if (!settingsProblem_) settingsProblem_ = DeferredError{b.where(name), std::move(message)};
+        settingsProblems_.push_back(DeferredError{b.where(name), std::move(message)});
     };
     auto ranged = [&](std::string_view name, int absent, int64_t minimum, int64_t maximum) {
         int64_t v = b.integer(name, absent);

@@ -13,6 +13,7 @@ namespace crt::lang {
 std::string_view kindName(ValueKind kind) {
     switch (kind) {
     case ValueKind::Unset: return "unset";
+    case ValueKind::Poisoned: return "error";
     case ValueKind::None: return "none";
     case ValueKind::Int: return "int";
     case ValueKind::Float: return "float";

@@ -59,7 +59,8 @@ void Interpreter::assembleScene() {
         // Without a Settings statement its defaults still have to fit the limits (--max-size).
         buildSettings(ObjectBuilder{*this, objectInfo(ObjectType::Settings), {0, 0, 0}, {0, 0, 0}});
     }
-    if (settingsProblem_) fail(settingsProblem_->where, settingsProblem_->message);
+    assembleSettingsProblems();
+    if (diagnostics_.hasErrors()) throw EvalError{};
     linkSettings();
     keepReachable();
     for (uint32_t i = 0; i < compilation_.sources.fileCount(); ++i) {
@@ -69,6 +70,16 @@ void Interpreter::assembleScene() {
     scene_.frame = options_.frame;
     scene_.frameCount = options_.frameCount;
     scene_.limits = options_.limits.render;
+}
+
+void Interpreter::assembleSettingsProblems() {
+    std::stable_sort(settingsProblems_.begin(), settingsProblems_.end(),
+                     [](const DeferredError& a, const DeferredError& b) {
+                         return a.where.begin < b.where.begin;
+                     });
+    for (DeferredError& problem : settingsProblems_)
+        diagnostics_.error(problem.where, std::move(problem.message));
+    settingsProblems_.clear();
 }
 
 void Interpreter::linkSettings() {

@@ -15,7 +15,9 @@ struct Frame;
 struct ModifierList;
 
 enum class ValueKind : uint8_t {
-    Unset, ///< a variable slot not yet assigned (never visible as a value)
+    Unset,    ///< a variable slot not yet assigned (never visible as a value)
+    Poisoned, ///< a variable whose value could not be made (the error is reported): reading it
+              ///< abandons the statement, with no further error
     None,
     Int,
     Float,

@@ -240,7 +240,7 @@ failure() {
     expect_text "$work/err" "evaluation failed on purpose" "its message is shown"
     [ ! -e "$work/out.png" ] || fail "an image was written although rank 1 failed"
     # A script error: every rank fails alike, and its diagnostic is printed once.
-    printf 'Settings { width -> 8 height -> 8 }\nScene { Sphere { radius -> nope } }\n' >"$work/bad.crt"
+    printf 'Settings { width -> 8 height -> 8 }\nScene { Sphere { center -> vec3(0, 0, 0) radius -> nope } }\n' >"$work/bad.crt"
     expect_status 1 "a script error" mpi 2 "$work/bad.crt" -o "$work/out.png"
     [ "$(grep -c "bad.crt:2:" "$work/err")" = 1 ] || fail "the script's error was not printed once: $(cat "$work/err")"
     # Ranks that read different scripts (same name, another folder each) refuse to render.
