@@ -59,7 +59,10 @@ class DiagnosticBag {
 public:
     Diagnostic& error(SourceRange range, std::string message);
     Diagnostic& warning(WarningKind kind, SourceRange range, std::string message);
-    void add(Diagnostic diagnostic) { items_.push_back(std::move(diagnostic)); }
+    void add(Diagnostic diagnostic) {
+        if (diagnostic.severity == Severity::Error) ++errorCount_;
+        items_.push_back(std::move(diagnostic));
+    }
 
     const std::vector<Diagnostic>& items() const { return items_; }
     std::vector<Diagnostic>& items() { return items_; }

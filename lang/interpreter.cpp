@@ -10,6 +10,7 @@
 #include "terminal_text.hpp"
 #include "value_format.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -695,7 +696,23 @@ Compilation compile(std::string path, std::string text, const EvalOptions& optio
     c.sources.add(std::move(path), std::move(text));
     runOnLargeStack([&] {
         c.main = parse(c.sources.file(0), 0, *c.arena, c.diagnostics, &c.comments);
-        if (c.diagnostics.hasErrors()) return; // a script with syntax errors is not evaluated
+        if (c.diagnostics.hasErrors()) {
+            // Not evaluated; but its names are resolved on what the parser recovered, so that
+            // an unknown attribute or type is reported with the syntax errors. (Its warnings
+            // would be about what the broken statements hid.)
+            DiagnosticBag names;
+            resolve(c.main, c.globals, names, true);
+            for (Diagnostic& d : names.items())
+                if (d.severity == Severity::Error) c.diagnostics.add(std::move(d));
+            // All of them in source order.
+            std::vector<Diagnostic>& items = c.diagnostics.items();
+            std::stable_sort(items.begin(), items.end(),
+                             [](const Diagnostic& a, const Diagnostic& b) {
+                                 return std::pair(a.range.file, a.range.begin) <
+                                        std::pair(b.range.file, b.range.begin);
+                             });
+            return;
+        }
         Interpreter(c, options).run(evaluate);
     });
     return c;

@@ -362,6 +362,30 @@ void povRayBlockNote(const ParseContext& ctx, Diagnostic& d) {
     d.fixits.push_back({range, capitalised});
 }
 
+/// The object type named before the '{' `opener`, or Count.
+ObjectType objectOpenedBy(const ParseContext& ctx, const Token& opener) {
+    std::string_view before = ctx.file.text().substr(0, opener.begin);
+    while (!before.empty() && (before.back() == ' ' || before.back() == '\t'))
+        before.remove_suffix(1);
+    size_t start = before.size();
+    while (start > 0 && std::isalnum(static_cast<unsigned char>(before[start - 1]))) --start;
+    return findObjectType(before.substr(start));
+}
+
+/// `name = …` first on its line inside an object opened on an earlier line, `name` being no
+/// attribute of it: the object's '}' was forgotten before the line.
+bool assignmentAfterUnclosedObject(const ParseContext& ctx, const Token& found,
+                                   const Token* opener) {
+    const Token& name = ctx.previousToken;
+    if (found.kind != TokenKind::Assign || name.kind != TokenKind::Identifier || !name.atLineStart)
+        return false;
+    if (!opener || opener->kind != TokenKind::LBrace) return false;
+    if (ctx.file.lineColumn(opener->begin).line == ctx.file.lineColumn(name.begin).line)
+        return false;
+    const ObjectType type = objectOpenedBy(ctx, *opener);
+    return type == ObjectType::Count || findAttribute(objectInfo(type), ctx.text(name)) < 0;
+}
+
 } // namespace
 
 void Parser::report_syntax_error(const context& yyctx) const {
@@ -408,6 +432,27 @@ void Parser::report_syntax_error(const context& yyctx) const {
                            found.kind == TokenKind::KwInclude;
     bool missingBrace = found.begin != ctx.lastResumedAt && found.atLineStart && topLevelKeyword && expectsBrace;
     const Token* opener = innermostOpenBracket(ctx, found);
+    const bool objectLeftOpen = assignmentAfterUnclosedObject(ctx, found, opener);
+    if (objectLeftOpen) {
+        // One error, at the line the '}' should have come before; the object is closed there.
+        const Token name = ctx.previousToken;
+        if (name.begin != ctx.lastReportedAt) {
+            ctx.lastReportedAt = name.begin;
+            Diagnostic& d = ctx.diagnostics.error(
+                ctx.range(name.begin, found.end),
+                fmt::format(
+                    "'{} =' cannot stand among the attributes of this '{{'; is a '}}' missing "
+                    "before it?",
+                    ctx.text(name)));
+            d.notes.push_back({ctx.range(opener->begin, opener->end), "the '{' left open"});
+        }
+        ctx.recovering = true;
+        ctx.lastResumedAt = name.begin;
+        ctx.queued = {Token{TokenKind::RBrace, name.begin, name.begin, false}, name, found};
+        ctx.openBrackets.pop_back(); // the '}' supplied closes it
+        ctx.skipping = false;
+        return;
+    }
     if (found.kind == TokenKind::EndOfFile) {
         // Point at the end of the last line with something on it, not at an empty last line.
         where = ctx.range(ctx.lastTokenEnd, ctx.lastTokenEnd);
@@ -432,7 +477,11 @@ void Parser::report_syntax_error(const context& yyctx) const {
             d.message += "; attributes are written 'name -> value'";
             d.fixits.push_back({where, "->"});
         }
-        if (missingBrace) d.message += "; is a '}' missing before it?";
+        if (missingBrace) {
+            d.message += "; is a '}' missing before it?";
+            if (opener && opener->kind == TokenKind::LBrace && d.notes.empty())
+                d.notes.push_back({ctx.range(opener->begin, opener->end), "the '{' left open"});
+        }
     }
     // Skip the rest of the broken statement unless the parser can resume right here (and
     // has not already tried to resume at this very token).
@@ -440,6 +489,10 @@ void Parser::report_syntax_error(const context& yyctx) const {
     if (missingBrace) {
         ctx.lastResumedAt = found.begin;
         ctx.queued = {Token{TokenKind::RBrace, found.begin, found.begin, false}, found};
+        if (opener && opener->kind == TokenKind::LBrace) {
+            // The '}' supplied closes it (the brackets after it are not lexed yet).
+            ctx.openBrackets.erase(ctx.openBrackets.begin() + (opener - ctx.openBrackets.data()));
+        }
         ctx.skipping = false;
     } else if (isResumePoint(found) && found.begin != ctx.lastResumedAt &&
                found.kind != TokenKind::LParenLine && found.kind != TokenKind::LBracketLine) {

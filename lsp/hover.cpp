@@ -66,6 +66,22 @@ std::string literalSummary(const Analysis& a, const Expr* value, const SourceFil
     return flat;
 }
 
+/// A name nothing binds, in the script or the files it includes: said so, with the nearest
+/// name that is bound.
+std::string undefinedHover(const Analysis& a, const Symbol& undefined) {
+    std::vector<std::string_view> bound;
+    for (const Symbol& s : a.symbols)
+        if (s.definition || s.external >= 0 || s.builtin()) bound.push_back(s.name);
+    for (const BuiltinInfo& info : builtinFunctions()) bound.push_back(info.name);
+    std::string text =
+        fmt::format("```crt\n{}\n```\nUndefined: nothing in the script or the files it "
+                    "includes assigns `{}`.",
+                    undefined.name, undefined.name);
+    if (std::string nearest = closestMatch(undefined.name, bound); !nearest.empty())
+        text += fmt::format(" Did you mean `{}`?", nearest);
+    return text;
+}
+
 std::string symbolHover(const Analysis& a, const Symbol& s, const GlobalValues* values) {
     if (s.builtin()) {
         for (const BuiltinInfo& info : builtinFunctions()) {
@@ -75,6 +91,7 @@ std::string symbolHover(const Analysis& a, const Symbol& s, const GlobalValues* 
         if (s.name == "clock") return "```crt\nclock\n```\nThe animation's progress from 0.0 to 1.0 (`t / (N - 1)`).";
         return fmt::format("built-in `{}`", s.name);
     }
+    if (!s.definition && s.external < 0) return undefinedHover(a, s);
     std::string type = staticType(s.value);
     std::string text = fmt::format("```crt\n({}) {}{}\n```", kindWord(s.kind), s.name,
                                    type.empty() ? std::string() : ": " + type);

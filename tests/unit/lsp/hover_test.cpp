@@ -54,6 +54,25 @@ TEST_CASE("hover on a variable shows its type and evaluated value", "[hover]") {
     CHECK_THAT(size->markdown, Contains("(parameter) size"));
 }
 
+TEST_CASE("hover on an undefined name says so, with the nearest defined name", "[hover]") {
+    Annotations code("radius = 2\nball = Sphere { center -> vec3(0, 0, 0) radius -> rad@ios }\nx = "
+                     "zz@zq\nScene { ball }");
+    auto a = analyzeCode(code.code);
+    auto h = hover(*a, code.points()[0], nullptr);
+    REQUIRE(h);
+    CHECK_THAT(h->markdown,
+               Contains("Undefined") && Contains("`radios`") && Contains("Did you mean `radius`?"));
+    auto far = hover(*a, code.points()[1], nullptr);
+    REQUIRE(far);
+    CHECK_THAT(far->markdown, Contains("Undefined") && !Contains("Did you mean"));
+    // A defined name is not.
+    Annotations defined("radius = 2\nx = rad@ius");
+    auto b = analyzeCode(defined.code);
+    auto d = hover(*b, defined.point(), nullptr);
+    REQUIRE(d);
+    CHECK_THAT(d->markdown, !Contains("Undefined"));
+}
+
 TEST_CASE("hover on a list of modifiers held in a variable says so", "[hover]") {
     Annotations code("sp@in = <rotate vec3(0, 30, 0), translate vec3(1, 0, 0)>");
     auto a = analyzeCode(code.code);
