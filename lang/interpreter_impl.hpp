@@ -239,7 +239,7 @@ private:
     Value buildBackground(const ObjectBuilder& b);
     Value buildTexture(ObjectBuilder& b);
     /// Fills scene_.settings; keeps what it names for assembleScene to link, and every value
-    /// out of its range in settingsProblems_.
+    /// out of its range in settingsProblems_ (for reportSettingsProblems).
     void buildSettings(const ObjectBuilder& b);
     /// Remembers the camera, lights and background Settings names, for linkSettings.
     void recordSettingsLinks(const ObjectBuilder& b);
@@ -259,8 +259,8 @@ private:
     void assembleScene();
     /// Puts the camera, lights and background Settings names into the scene.
     void linkSettings();
-    /// Reports the Settings values out of their range, in source order.
-    void assembleSettingsProblems();
+    /// Reports the Settings values buildSettings found out of their range.
+    void reportSettingsProblems();
     /// Keeps only the entities, materials and textures the drawn entities reach.
     void keepReachable();
     /// Removes the entities, materials and textures not marked, renumbering references.

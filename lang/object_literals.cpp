@@ -672,21 +672,28 @@ void Interpreter::execSettings(const SettingsStmt* node) {
     }
     settings_ = node;
     ObjectBuilder b{*this, objectInfo(ObjectType::Settings), node->range, keyword};
+    const size_t diagnosticsBefore = diagnostics_.items().size();
+    bool complete = true;
     try {
         b.evaluate(node->attributes);
     } catch (const EvalError&) {
-        // The values that could be read are still checked, so that each bad one is reported.
         if (stopped_) throw;
-        buildSettings(b);
-        assembleSettingsProblems();
-        throw;
+        complete = false; // the values that could be read are still checked
     }
     buildSettings(b);
+    if (!settingsProblems_.empty()) complete = false;
+    reportSettingsProblems();
+    if (!complete) {
+        // Each bad value in the order written, whichever check found it.
+        std::vector<Diagnostic>& items = diagnostics_.items();
+        std::stable_sort(
+            items.begin() + static_cast<std::ptrdiff_t>(diagnosticsBefore), items.end(),
+            [](const Diagnostic& x, const Diagnostic& y) { return x.range.begin < y.range.begin; });
+        throw EvalError{};
+    }
 }
 
 void Interpreter::buildSettings(const ObjectBuilder& b) {
-    // A value out of its range is reported once the whole script has run (docs/language.md,
-    // "Settings"), so what the statements after Settings print and warn does not depend on it.
     auto problem = [&](std::string_view name, std::string message) {
         settingsProblems_.push_back(DeferredError{b.where(name), std::move(message)});
     };

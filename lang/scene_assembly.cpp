@@ -59,7 +59,7 @@ void Interpreter::assembleScene() {
         // Without a Settings statement its defaults still have to fit the limits (--max-size).
         buildSettings(ObjectBuilder{*this, objectInfo(ObjectType::Settings), {0, 0, 0}, {0, 0, 0}});
     }
-    assembleSettingsProblems();
+    reportSettingsProblems();
     if (diagnostics_.hasErrors()) throw EvalError{};
     linkSettings();
     keepReachable();
@@ -72,11 +72,7 @@ void Interpreter::assembleScene() {
     scene_.limits = options_.limits.render;
 }
 
-void Interpreter::assembleSettingsProblems() {
-    std::stable_sort(settingsProblems_.begin(), settingsProblems_.end(),
-                     [](const DeferredError& a, const DeferredError& b) {
-                         return a.where.begin < b.where.begin;
-                     });
+void Interpreter::reportSettingsProblems() {
     for (DeferredError& problem : settingsProblems_)
         diagnostics_.error(problem.where, std::move(problem.message));
     settingsProblems_.clear();
