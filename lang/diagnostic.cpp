@@ -19,6 +19,14 @@ Diagnostic& DiagnosticBag::warning(WarningKind kind, SourceRange range, std::str
     return items_.back();
 }
 
+void DiagnosticBag::sortByPosition(size_t first) {
+    std::stable_sort(items_.begin() + static_cast<std::ptrdiff_t>(first), items_.end(),
+                     [](const Diagnostic& a, const Diagnostic& b) {
+                         return std::pair(a.range.file, a.range.begin) <
+                                std::pair(b.range.file, b.range.begin);
+                     });
+}
+
 void DiagnosticBag::promoteWarnings() {
     for (Diagnostic& d : items_) {
         if (d.severity == Severity::Warning) {

@@ -70,6 +70,8 @@ public:
     size_t errorCount() const { return errorCount_; }
     /// Turns every warning into an error (-Werror).
     void promoteWarnings();
+    /// Puts the diagnostics from index `first` on in source order (file, then offset).
+    void sortByPosition(size_t first = 0);
 
 private:
     std::vector<Diagnostic> items_;

@@ -704,13 +704,7 @@ Compilation compile(std::string path, std::string text, const EvalOptions& optio
             resolve(c.main, c.globals, names, true);
             for (Diagnostic& d : names.items())
                 if (d.severity == Severity::Error) c.diagnostics.add(std::move(d));
-            // All of them in source order.
-            std::vector<Diagnostic>& items = c.diagnostics.items();
-            std::stable_sort(items.begin(), items.end(),
-                             [](const Diagnostic& a, const Diagnostic& b) {
-                                 return std::pair(a.range.file, a.range.begin) <
-                                        std::pair(b.range.file, b.range.begin);
-                             });
+            c.diagnostics.sortByPosition(); // all of them in source order
             return;
         }
         Interpreter(c, options).run(evaluate);

@@ -684,11 +684,7 @@ void Interpreter::execSettings(const SettingsStmt* node) {
     if (!settingsProblems_.empty()) complete = false;
     reportSettingsProblems();
     if (!complete) {
-        // Each bad value in the order written, whichever check found it.
-        std::vector<Diagnostic>& items = diagnostics_.items();
-        std::stable_sort(
-            items.begin() + static_cast<std::ptrdiff_t>(diagnosticsBefore), items.end(),
-            [](const Diagnostic& x, const Diagnostic& y) { return x.range.begin < y.range.begin; });
+        diagnostics_.sortByPosition(diagnosticsBefore); // in the order written, whichever check found it
         throw EvalError{};
     }
 }

@@ -15,8 +15,8 @@ namespace crt::tracer {
 struct PickResult {
     bool hit = false;
     int32_t entity = -1; ///< the SceneDesc entity of the surface (a primitive, not a CSG node)
-    int32_t material =
-        -1; ///< the SceneDesc material it is drawn with (its own or given); -1: the default
+    /// The SceneDesc material it is drawn with (its own or given); -1: the default.
+    int32_t material = -1;
     double distance = 0; ///< along the ray, in world units per unit of ray direction
     glm::dvec3 point{0.0};
 };
