@@ -25,6 +25,7 @@ enum class NodeKind : uint8_t {
     Ternary,
     Call,
     Index,
+    Component,
     Modify,
     ModifierList,
     List,
@@ -119,6 +120,13 @@ struct CallExpr : Expr {
 struct IndexExpr : Expr {
     Expr* object;
     Expr* index;
+};
+
+/// `v.x`, `c.r`: one component of a vector or colour.
+struct ComponentExpr : Expr {
+    Expr* object;
+    std::string_view name;
+    SourceRange nameRange;
 };
 
 struct Modifier {
@@ -243,6 +251,7 @@ template <typename F> void forEachChild(Node* node, F&& visit) {
         visit(static_cast<IndexExpr*>(node)->object);
         visit(static_cast<IndexExpr*>(node)->index);
         break;
+    case NodeKind::Component: visit(static_cast<ComponentExpr*>(node)->object); break;
     case NodeKind::Modify:
         visit(static_cast<ModifyExpr*>(node)->target);
         for (Modifier& m : static_cast<ModifyExpr*>(node)->modifiers) visit(m.argument);

@@ -73,6 +73,12 @@ private:
             node(i->index, depth + 1);
             break;
         }
+        case NodeKind::Component: {
+            auto* c = static_cast<const ComponentExpr*>(n);
+            line(n, depth, fmt::format("Component {}", c->name));
+            node(c->object, depth + 1);
+            break;
+        }
         case NodeKind::Modify: {
             auto* m = static_cast<const ModifyExpr*>(n);
             line(n, depth, "Modify");

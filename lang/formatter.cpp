@@ -79,6 +79,7 @@ std::string_view spacing(const Item& prev, const Item& cur) {
         return "";
     }
     if (c == TokenKind::RParen || c == TokenKind::RBracket || c == TokenKind::Comma || cur.modifierClose) return "";
+    if (p == TokenKind::Dot || c == TokenKind::Dot) return ""; // a component: `v.x`
     if ((c == TokenKind::LParen || c == TokenKind::LBracket) && endsOperand(p) &&
         !prev.modifierWord)
         return ""; // a call or an index

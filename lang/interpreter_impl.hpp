@@ -203,6 +203,9 @@ private:
     /// For `for … in range(…)` with the built-in range: its numbers, without the list.
     std::optional<RangeSequence> rangeSequence(const Expr* iterable);
     Value evalIndex(const IndexExpr* node);
+    Value evalComponent(const ComponentExpr* node);
+    Value joinLists(const std::vector<Value>& a, const std::vector<Value>& b,
+                    const BinaryExpr* node);
     Value evalModify(const ModifyExpr* node);
     Value evalModifierList(const ModifierListExpr* node);
     /// The modifiers of `<…>` in order, lists given by name spliced in.

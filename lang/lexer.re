@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include <cctype>
 
 namespace crt::lang {
 
@@ -33,9 +32,6 @@ void Lexer::reportInvalid(const char* start, const char* end) {
         diagnostics_.error(range(start, end),
                            "unexpected character ';'; statements need no terminator")
             .fixits.push_back({range(start, end), ""});
-    } else if (text == "." && end < end_ && std::isalpha(static_cast<unsigned char>(*end))) {
-        diagnostics_.error(range(start, end), "unexpected character '.'; components are not read with "
-                                              "'.': dot(v, vec3(1, 0, 0)) is v's x");
     } else {
         diagnostics_.error(range(start, end), fmt::format("unexpected character '{}'", text));
     }
@@ -181,6 +177,7 @@ Token Lexer::scan() {
         "||" { return make(TokenKind::OrOr); }
         "?"  { return make(TokenKind::Question); }
         ":"  { return make(TokenKind::Colon); }
+        "."  { return make(TokenKind::Dot); }
 
         "#" [a-z]+ {
             // POV-Ray's directives (#declare x = 1, #include "f.inc", #macro …): one error
@@ -300,6 +297,7 @@ std::string_view tokenDescription(TokenKind kind) {
     case TokenKind::OrOr: return "'||'";
     case TokenKind::Question: return "'?'";
     case TokenKind::Colon: return "':'";
+    case TokenKind::Dot: return "'.'";
     case TokenKind::Comment: return "comment";
     }
     return "token";

@@ -170,6 +170,7 @@ Value Interpreter::eval(const Expr* node) {
     case NodeKind::Ternary: return evalTernary(static_cast<const TernaryExpr*>(node));
     case NodeKind::Call: return evalCall(static_cast<const CallExpr*>(node));
     case NodeKind::Index: return evalIndex(static_cast<const IndexExpr*>(node));
+    case NodeKind::Component: return evalComponent(static_cast<const ComponentExpr*>(node));
     case NodeKind::Modify: return evalModify(static_cast<const ModifyExpr*>(node));
     case NodeKind::ModifierList:
         return evalModifierList(static_cast<const ModifierListExpr*>(node));
@@ -344,7 +345,7 @@ Value Interpreter::binaryOnNumbers(const BinaryExpr* node, const Value& a, const
     fail(node->opRange, operandError(opSpelling(op), a, b));
 }
 
-/// Equality of any two values of one type, string concatenation, CSG and vector arithmetic.
+/// Equality of any two values of one type, joining strings and lists, CSG and vector arithmetic.
 Value Interpreter::binaryOnNonNumbers(const BinaryExpr* node, const Value& a, const Value& b) {
     BinaryOp op = node->op;
     if (a.kind == ValueKind::None || b.kind == ValueKind::None) {
@@ -365,6 +366,8 @@ Value Interpreter::binaryOnNonNumbers(const BinaryExpr* node, const Value& a, co
             }(a.kind == ValueKind::String ? b : a);
             if (printable) return concatenate(a, b);
         }
+        if (a.kind == ValueKind::List && b.kind == ValueKind::List)
+            return joinLists(*a.list, *b.list, node);
         [[fallthrough]];
     case BinaryOp::Sub:
         if (a.kind == ValueKind::Entity && b.kind == ValueKind::Entity) return csg(op, a, b, node);
@@ -401,6 +404,23 @@ Value Interpreter::concatenate(const Value& a, const Value& b) {
     return Value::string(newString(std::move(text)));
 }
 
+Value Interpreter::joinLists(const std::vector<Value>& a, const std::vector<Value>& b,
+                             const BinaryExpr* node) {
+    const size_t length = a.size() + b.size();
+    if (length > options_.limits.maxEntities) {
+        fail(node->opRange,
+             fmt::format("joining makes a list longer than {} items; raise the limit with "
+                         "--max-entities",
+                         options_.limits.maxEntities));
+    }
+    checkRoom(length * sizeof(Value)); // before the copy, as for strings
+    std::vector<Value> items;
+    items.reserve(length);
+    items.insert(items.end(), a.begin(), a.end());
+    items.insert(items.end(), b.begin(), b.end());
+    return Value::listOf(newList(std::move(items)));
+}
+
 Value Interpreter::evalIndex(const IndexExpr* node) {
     Value object = eval(node->object);
     Value index = eval(node->index);
@@ -419,6 +439,28 @@ Value Interpreter::evalIndex(const IndexExpr* node) {
                                              index.i, length));
     }
     return (*object.list)[static_cast<size_t>(index.i)];
+}
+
+Value Interpreter::evalComponent(const ComponentExpr* node) {
+    Value object = eval(node->object);
+    const std::string_view names = object.kind == ValueKind::Vec3    ? "xyz"
+                                   : object.kind == ValueKind::Color ? "rgba"
+                                                                     : "";
+    if (names.empty()) {
+        fail(node->object->range,
+             fmt::format("cannot read the component '{}' of {}; only a vec3 (x, y, z) "
+                         "and a colour (r, g, b, a) have components",
+                         node->name, typeName(object)));
+    }
+    const size_t index =
+        node->name.size() == 1 ? names.find(node->name[0]) : std::string_view::npos;
+    if (index == std::string_view::npos) {
+        fail(node->nameRange,
+             fmt::format("{} has no component '{}'; its components are {}", typeName(object),
+                         node->name,
+                         object.kind == ValueKind::Vec3 ? "x, y and z" : "r, g, b and a"));
+    }
+    return Value::number(object.v[index]);
 }
 
 Value Interpreter::evalList(const ListExpr* node) {

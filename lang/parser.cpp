@@ -267,6 +267,7 @@ int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseCo
     case TokenKind::OrOr: return T::TOK_OR;
     case TokenKind::Question: return T::TOK_QUESTION;
     case TokenKind::Colon: return T::TOK_COLON;
+    case TokenKind::Dot: return T::TOK_DOT;
     case TokenKind::Comment: break;
     }
     return T::TOK_END;

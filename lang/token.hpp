@@ -65,6 +65,7 @@ enum class TokenKind : uint8_t {
     OrOr,
     Question,
     Colon,
+    Dot,     ///< '.' before a component's name: `v.x`
     Comment, ///< only reported to a comment observer, never to the parser
 };
 

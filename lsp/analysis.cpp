@@ -445,6 +445,7 @@ std::string staticType(const Expr* value, int depth) {
     }
     case NodeKind::Modify: return staticType(static_cast<const ModifyExpr*>(value)->target, depth - 1);
     case NodeKind::ModifierList: return "modifiers";
+    case NodeKind::Component: return "float";
     case NodeKind::Call: {
         auto* call = static_cast<const CallExpr*>(value);
         if (call->callee->kind != NodeKind::Var) return "";

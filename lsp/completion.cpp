@@ -166,6 +166,10 @@ private:
             includeFiles(true);
             return;
         }
+        if (prevKind == TokenKind::Dot) {
+            components(prev);
+            return;
+        }
         if (prevKind == TokenKind::ModifierOpen || prevKind == TokenKind::Less ||
             (prevKind == TokenKind::Comma && inModifierList(prev))) {
             modifiers();
@@ -180,6 +184,23 @@ private:
         bool statementStart = prev < 0 || prevKind == TokenKind::LBrace || prevKind == TokenKind::RBrace ||
                               (isValueEnd(prevKind) && !enclosing.inBrackets);
         expressions(statementStart);
+    }
+
+    /// After `v.`: the components of a vec3, of a colour, or (type unknown) of both.
+    void components(int dot) {
+        std::string type;
+        if (dot > 0 && kindOf(dot - 1) == TokenKind::Identifier) {
+            const Symbol* s = names_.lookup(a_.text(token(dot - 1)), namesOffset_);
+            if (s) type = staticType(s->value);
+        }
+        if (type != "colour")
+            for (std::string_view c : {"x", "y", "z"})
+                add({std::string(c), CompletionKind::Property, "vec3 component", "", std::string(c),
+                     false, "0"});
+        if (type != "vec3")
+            for (std::string_view c : {"r", "g", "b", "a"})
+                add({std::string(c), CompletionKind::Property, "colour component", "",
+                     std::string(c), false, "1"});
     }
 
     void modifiers() {

@@ -129,6 +129,18 @@ std::string_view keywordDoc(TokenKind kind) {
     }
 }
 
+/// `v.x`, `c.r`: what a component's name reads.
+std::string_view componentDoc(std::string_view name) {
+    if (name == "x") return "`v.x`: the x component of a vec3 (a float).";
+    if (name == "y") return "`v.y`: the y component of a vec3 (a float).";
+    if (name == "z") return "`v.z`: the z component of a vec3 (a float).";
+    if (name == "r") return "`c.r`: the red component of a colour (a float).";
+    if (name == "g") return "`c.g`: the green component of a colour (a float).";
+    if (name == "b") return "`c.b`: the blue component of a colour (a float).";
+    if (name == "a") return "`c.a`: the alpha of a colour (a float; 1 is opaque).";
+    return "";
+}
+
 } // namespace
 
 std::optional<Hover> hover(const Analysis& a, uint32_t offset, const GlobalValues* values) {
@@ -151,6 +163,11 @@ std::optional<Hover> hover(const Analysis& a, uint32_t offset, const GlobalValue
     }
     if (const Occurrence* o = a.occurrenceAt(offset); o && o->range.begin == t.begin) {
         return Hover{range, symbolHover(a, a.symbols[o->symbol], values)};
+    }
+    if (index > 0 && a.tokens[static_cast<size_t>(index) - 1].kind == TokenKind::Dot) {
+        if (std::string_view doc = componentDoc(a.text(t)); !doc.empty())
+            return Hover{range, std::string(doc)};
+        return std::nullopt;
     }
     // An attribute the parser could not keep (a broken object): its object from the tokens.
     if (static_cast<size_t>(index) + 1 < a.tokens.size() && a.tokens[static_cast<size_t>(index) + 1].kind == TokenKind::Arrow) {

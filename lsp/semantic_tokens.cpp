@@ -55,6 +55,9 @@ std::optional<SemanticToken> classify(const Analysis& a, size_t index) {
         if (index + 1 < a.tokens.size() && a.tokens[index + 1].kind == TokenKind::Arrow) {
             return SemanticToken{range, TokenType::Property};
         }
+        // `v.x`: a component's name.
+        if (index > 0 && a.tokens[index - 1].kind == TokenKind::Dot)
+            return SemanticToken{range, TokenType::Property};
         // `<material m>`, `<matrix [...]>`: words of the modifier list where no name is meant.
         if (a.text(t) == "material" || a.text(t) == "matrix")
             return SemanticToken{range, TokenType::Keyword};

@@ -134,6 +134,13 @@ TEST_CASE("lexer: a float is not followed by a second dot") {
     CHECK(l.texts() == std::vector<std::string>{"1.2", ".3"});
 }
 
+TEST_CASE("lexer: a dot after a name reads a component; a dot before digits starts a float") {
+    Lexed l = lex("v.x v .5 (v).z");
+    CHECK(l.diagnostics.empty());
+    CHECK(l.kinds() == std::vector<K>{K::Identifier, K::Dot, K::Identifier, K::Identifier, K::Float,
+                                      K::LParen, K::Identifier, K::RParen, K::Dot, K::Identifier});
+}
+
 TEST_CASE("lexer: strings with every escape") {
     CHECK(single(R"("")") == K::String);
     CHECK(single(R"("sky.jpg")") == K::String);
@@ -178,6 +185,7 @@ TEST_CASE("lexer: every punctuation token") {
     CHECK(single("||") == K::OrOr);
     CHECK(single("?") == K::Question);
     CHECK(single(":") == K::Colon);
+    CHECK(single(".") == K::Dot);
     // '(' and '[' first in the file are at a line start.
     CHECK(single("(") == K::LParenLine);
     CHECK(single("[") == K::LBracketLine);
@@ -362,7 +370,7 @@ TEST_CASE("lexer: ranges after multi-byte text count bytes") {
 }
 
 TEST_CASE("lexer: a bad character is one error, and lexing goes on") {
-    for (std::string bad : {"@", "#", "$", "&", "|", "~", "`", ".", "'", "\\"}) {
+    for (std::string bad : {"@", "#", "$", "&", "|", "~", "`", "'", "\\"}) {
         INFO("character " << bad);
         Lexed l = lex("a " + bad + " b");
         REQUIRE(l.diagnostics.size() == 1);

@@ -177,3 +177,13 @@ TEST_CASE("a name bound nowhere, such as the word being typed, is not offered", 
     CHECK(has(list, "size"));
     CHECK(!has(list, "si"));
 }
+
+TEST_CASE("components after '.': a vec3's, a colour's, or both when the type is unknown",
+          "[completion]") {
+    auto vector = completeAt("v = vec3(1, 2, 3)\nx = v.@");
+    CHECK(labels(vector) == std::vector<std::string>{"x", "y", "z"});
+    auto colour = completeAt("c = rgb(1, 0, 0)\nx = c.@");
+    CHECK(labels(colour) == std::vector<std::string>{"r", "g", "b", "a"});
+    auto unknown = completeAt("m = Macro (p) { p.@ }");
+    CHECK(unknown.items.size() == 7);
+}

@@ -157,3 +157,15 @@ TEST_CASE("hover on a material map's and a Layered's attributes and types", "[ho
     REQUIRE(layered);
     CHECK_THAT(layered->markdown, Contains("Layered"));
 }
+
+TEST_CASE("hover on a component says what it reads; a component expression is a float", "[hover]") {
+    Annotations code("c = rgb(1, 0, 0)\nx = c.@a\ny = c.r\nz = @y");
+    auto a = analyzeCode(code.code);
+    auto h = hover(*a, code.points()[0], nullptr);
+    REQUIRE(h);
+    CHECK(textOf(*a, h->range) == "a");
+    CHECK_THAT(h->markdown, Contains("alpha of a colour"));
+    auto y = hover(*a, code.points()[1], nullptr);
+    REQUIRE(y);
+    CHECK_THAT(y->markdown, Contains("y: float"));
+}

@@ -87,3 +87,12 @@ s = Sphere { center -> vec3(0, 0, 0) radius -> 1 } <$use«spin», $word2«matrix
           std::pair{TokenType::Variable, uint32_t{ModDeclaration | ModDefinition}});
     CHECK(tokenAt(tokens, code.range("use")) == std::pair{TokenType::Variable, uint32_t{0}});
 }
+
+TEST_CASE("semantic tokens: a component's name is a property, its vector a variable",
+          "[semantic]") {
+    Annotations code("v = vec3(1, 2, 3)\nx = $v«v».$c«z»\n");
+    auto a = analyzeCode(code.code);
+    auto tokens = semanticTokens(*a);
+    CHECK(tokenAt(tokens, code.range("v")).first == TokenType::Variable);
+    CHECK(tokenAt(tokens, code.range("c")).first == TokenType::Property);
+}
