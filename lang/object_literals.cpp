@@ -418,6 +418,19 @@ scene::Shape Interpreter::solidShape(ObjectBuilder& b) {
         s.open = b.flag("open", s.open);
         return s;
     }
+    case ObjectType::Superellipsoid: {
+        scene::SuperellipsoidShape s;
+        for (std::string_view exponent : {"e", "n"}) {
+            if (b.get(exponent) && !(b.number(exponent, 1) > 0)) {
+                fail(b.where(exponent),
+                     fmt::format("the exponent '{}' of a Superellipsoid must be positive",
+                                 exponent));
+            }
+        }
+        s.e = b.number("e", s.e);
+        s.n = b.number("n", s.n);
+        return s;
+    }
     case ObjectType::Torus:
     default: {
         scene::TorusShape s;

@@ -4,6 +4,7 @@
 #include "scene/scene_desc.hpp"
 
 #include <array>
+#include <vector>
 
 namespace crt::lang {
 namespace {
@@ -205,6 +206,13 @@ constexpr AttributeInfo kTorus[] = {
     {"axis", A::Vec3, false, "vec3(0,1,0)", "Axis of the ring."},
     CRT_MATERIAL_ATTR,
 };
+constexpr AttributeInfo kSuperellipsoid[] = {
+    {"e", A::Float, false, "1",
+     "Exponent across z (east-west): toward 0 square, 1 round, above 2 pinched."},
+    {"n", A::Float, false, "1",
+     "Exponent along z (north-south): toward 0 square, 1 round, above 2 pinched."},
+    CRT_MATERIAL_ATTR,
+};
 constexpr AttributeInfo kDisc[] = {
     {"center", A::Vec3, true, "", "Centre."},
     {"normal", A::Vec3, true, "", "Normal."},
@@ -379,6 +387,10 @@ constexpr ObjectInfo kObjects[] = {
     {T::Cylinder, "Cylinder", C::Entity, true, "A cylinder between two points (solid).", kCylinder},
     {T::Cone, "Cone", C::Entity, true, "A cone or truncated cone (solid).", kCone},
     {T::Torus, "Torus", C::Entity, true, "A torus (solid).", kTorus},
+    {T::Superellipsoid, "Superellipsoid", C::Entity, true,
+     "POV-Ray's superellipsoid in the cube from -1 to 1 (solid): a sphere, a rounded box, a "
+     "cylinder or a star; move and size it with modifiers.",
+     kSuperellipsoid},
     {T::Disc, "Disc", C::Entity, false, "A flat disc, optionally with a hole.", kDisc},
     {T::Quad, "Quad", C::Entity, false, "A flat parallelogram.", kQuad},
     {T::Triangle, "Triangle", C::Entity, false, "A triangle.", kTriangle},
@@ -460,6 +472,18 @@ int findAttribute(const ObjectInfo& info, std::string_view name) {
 }
 
 std::span<const ObjectInfo> allObjectTypes() { return kObjects; }
+
+std::string solidTypeList() {
+    std::vector<std::string_view> names;
+    for (const ObjectInfo& info : kObjects)
+        if (info.category == ObjectCategory::Entity && info.solid) names.push_back(info.name);
+    std::string list;
+    for (size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) list += i + 1 == names.size() ? " and " : ", ";
+        list += names[i];
+    }
+    return list;
+}
 
 bool isBumpTexture(ObjectType type) {
     return type == ObjectType::NoiseBump || type == ObjectType::ImageBump ||

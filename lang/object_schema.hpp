@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace crt::lang {
@@ -27,6 +28,7 @@ enum class ObjectType : uint8_t {
     Cylinder,
     Cone,
     Torus,
+    Superellipsoid,
     Disc,
     Quad,
     Triangle,
@@ -119,6 +121,8 @@ ObjectType findObjectType(std::string_view name);
 /// Index of attribute `name` in `info.attributes`, or -1 (synonyms map to their canonical).
 int findAttribute(const ObjectInfo& info, std::string_view name);
 std::span<const ObjectInfo> allObjectTypes();
+/// The solid entity types in order, for messages: "Sphere, Box, … and Superellipsoid".
+std::string solidTypeList();
 /// Whether `type` is a bump texture (Bump, NoiseBump, ImageBump): one for `Material.bump`.
 bool isBumpTexture(ObjectType type);
 /// Whether `type` gives a colour (a pattern or Image): one for `Material.texture`.

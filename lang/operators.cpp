@@ -483,8 +483,8 @@ Value Interpreter::csg(BinaryOp op, const Value& left, const Value& right, const
         if (!scene_.entities[operand->index].solid) {
             const Expr* where = operand == &left ? node->left : node->right;
             fail(where->range, fmt::format("{} is not a solid, so it cannot be used in CSG ('{}'); "
-                                           "solids are Sphere, Box, Plane, Cylinder, Cone and Torus",
-                                           typeName(*operand), opSpelling(op)));
+                                           "solids are {}",
+                                           typeName(*operand), opSpelling(op), solidTypeList()));
         }
     }
     scene::CsgNode csg;

@@ -222,6 +222,11 @@ struct TorusShape { glm::dvec3 center{0.0}; double major = 0; double minor = 0; 
 struct DiscShape { glm::dvec3 center{0.0}; glm::dvec3 normal{0, 1, 0}; double radius = 0; double hole = 0; };
 struct QuadShape { glm::dvec3 corner{0.0}; glm::dvec3 edgeA{0.0}; glm::dvec3 edgeB{0.0}; };
 struct TriangleShape { glm::dvec3 a{0.0}; glm::dvec3 b{0.0}; glm::dvec3 c{0.0}; };
+/// POV-Ray's superellipsoid in the cube [-1, 1]³: e the exponent across z, n along it.
+struct SuperellipsoidShape {
+    double e = 1;
+    double n = 1;
+};
 struct MeshShape {
     std::string file;         ///< as written in the script
     std::string resolvedFile; ///< the path found on disk, or "" if not found
@@ -236,8 +241,8 @@ struct TransformNode { int32_t child = -1; std::vector<Modifier> modifiers; };
 struct GroupNode { std::vector<int32_t> members; };
 
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape,
-                           DiscShape, QuadShape, TriangleShape, MeshShape, CsgNode, TransformNode,
-                           GroupNode>;
+                           DiscShape, QuadShape, TriangleShape, SuperellipsoidShape, MeshShape,
+                           CsgNode, TransformNode, GroupNode>;
 
 /// A node of the entity graph. Nodes may be shared (an entity drawn twice is one node).
 struct EntityDesc {

@@ -93,6 +93,11 @@ struct ShapeJson {
         out["b"] = vec(s.b);
         out["c"] = vec(s.c);
     }
+    void operator()(const SuperellipsoidShape& s) {
+        out["type"] = "Superellipsoid";
+        out["e"] = s.e;
+        out["n"] = s.n;
+    }
     void operator()(const MeshShape& s) {
         out["type"] = "Mesh";
         out["file"] = s.file;

@@ -81,7 +81,8 @@ inline TempObjFile octahedronFile(const std::string& name) {
 
 /// Every primitive users build, on a reflective floor in front of a mirror quad: box (resting
 /// on the floor), cylinder, cone, torus, disc, triangle, a mesh and a rotated box (both placed
-/// by modifiers), and a box with a spherical dent (CSG). `meshFile` is octahedronFile's.
+/// by modifiers), a superellipsoid (also placed by modifiers) and a box with a spherical dent
+/// (CSG). `meshFile` is octahedronFile's.
 inline scene::SceneDesc primitivesScene(const Placement& at, int width, int height,
                                         const std::string& meshFile) {
     using test::rotate, test::translate;
@@ -116,6 +117,10 @@ inline scene::SceneDesc primitivesScene(const Placement& at, int width, int heig
     int32_t cube = m.box(DVec3(-0.3), DVec3(0.3), mat(0.4, 0.7, 0.7));
     m.draw(m.transformed(
         cube, {rotate({0, 30, 0}), translate({-2.2, 0.3, -1.5}), toWorld[0], toWorld[1]}));
+    // A superellipsoid with a pinched (star-shaped) profile, placed by modifiers like the cube.
+    int32_t star = m.entity(scene::SuperellipsoidShape{0.4, 2.6}, mat(0.9, 0.6, 0.3, 0.2));
+    m.draw(m.transformed(star, {test::scale(DVec3(0.4)), rotate({20, 30, 0}),
+                                translate({0.3, 0.45, -2.9}), toWorld[0], toWorld[1]}));
     int32_t block = m.box(at.at({0.8, 0, -1.8}), at.at({1.6, 0.8, -1.0}), mat(0.8, 0.8, 0.8));
     int32_t dent = m.sphere(at.at({1.2, 0.8, -1.4}), s * 0.45, mat(0.9, 0.3, 0.3));
     m.draw(m.csg(scene::CsgOp::Difference, block, dent));

@@ -36,6 +36,7 @@ bool isBoundedConvex(const Geometry& geometry) {
     if (std::holds_alternative<SphereGeometry>(geometry) || std::holds_alternative<BoxGeometry>(geometry)) return true;
     if (auto* c = std::get_if<CylinderGeometry>(&geometry)) return c->solid();
     if (auto* c = std::get_if<ConeGeometry>(&geometry)) return c->solid();
+    if (auto* s = std::get_if<SuperellipsoidGeometry>(&geometry)) return s->convex();
     return false;
 }
 
@@ -73,6 +74,8 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape) {
                 return Geometry(QuadGeometry(s));
             else if constexpr (std::is_same_v<S, scene::TriangleShape>)
                 return Geometry(TriangleGeometry(s));
+            else if constexpr (std::is_same_v<S, scene::SuperellipsoidShape>)
+                return Geometry(SuperellipsoidGeometry(s));
             else
                 return std::nullopt; // scene::MeshShape, scene::CsgNode, scene::TransformNode, scene::GroupNode
         },

@@ -9,6 +9,7 @@
 #include "tracer/geometry/plane.hpp"
 #include "tracer/geometry/quad.hpp"
 #include "tracer/geometry/sphere.hpp"
+#include "tracer/geometry/superellipsoid.hpp"
 #include "tracer/geometry/torus.hpp"
 #include "tracer/geometry/triangle.hpp"
 
@@ -18,9 +19,9 @@
 namespace crt::tracer {
 
 /// One primitive in its object space.
-using Geometry =
-    std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry, ConeGeometry,
-                 TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshTriangleGeometry>;
+using Geometry = std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry,
+                              ConeGeometry, TorusGeometry, DiscGeometry, QuadGeometry,
+                              TriangleGeometry, MeshTriangleGeometry, SuperellipsoidGeometry>;
 
 /// Object-space bounds (Bounds3::everything() for a plane, empty for a degenerate shape).
 Bounds3 geometryBounds(const Geometry& geometry);

@@ -75,6 +75,33 @@ inline double angleCoordinate(double y, double x) {
     return a < 1 ? a : 0; // −tiny + 1 rounds to 1
 }
 
+/// A function's value and its derivative at one point.
+struct ValueAndSlope {
+    double value, slope;
+};
+
+/// A root of f in [lo, hi], where f(lo) and f(hi) differ in sign (negative against
+/// non-negative); `f` returns f and f' at a point. Newton steps, replaced by bisection
+/// whenever they would leave the bracket, so it always converges, quadratically once close.
+/// The tolerance is absolute: callers scale their coordinates to about 1.
+template <class F> double bracketedRoot(const F& f, double lo, double hi, bool negativeAtLo) {
+    constexpr double kTolerance = 0x1p-51;
+    double x = 0.5 * (lo + hi);
+    for (int i = 0; i < 128; ++i) {
+        const ValueAndSlope fx = f(x);
+        if (fx.value == 0) return x;
+        if ((fx.value < 0) == negativeAtLo)
+            lo = x;
+        else
+            hi = x;
+        double next = x - fx.value / fx.slope;
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        if (std::abs(next - x) <= kTolerance || hi - lo <= kTolerance) return next;
+        x = next;
+    }
+    return x;
+}
+
 inline double clamp01(double x) {
     return std::clamp(x, 0.0, 1.0);
 }

@@ -22,9 +22,10 @@ struct Crossing {
     uint32_t part;
 };
 
-/// At most four crossings: a torus has four, every other primitive fewer.
+/// At most eight crossings: a torus has four, a star-shaped superellipsoid up to six, every
+/// other primitive two or fewer.
 struct CrossingList {
-    static constexpr int kCapacity = 4;
+    static constexpr int kCapacity = 8;
     Crossing items[kCapacity];
     int count = 0;
     /// Whether the line is inside the solid before its first crossing (a half-space can

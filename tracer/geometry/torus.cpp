@@ -3,33 +3,6 @@
 
 namespace crt::tracer {
 
-namespace {
-
-/// A root of f in [lo, hi], where f(lo) and f(hi) differ in sign (negative against
-/// non-negative): Newton steps, replaced by bisection whenever they would leave the bracket,
-/// so it always converges, quadratically once close. Coordinates are scaled to about 1,
-/// hence the absolute tolerance.
-template <class F, class DF>
-double bracketedRoot(const F& f, const DF& df, double lo, double hi, bool negativeAtLo) {
-    constexpr double kTolerance = 0x1p-51;
-    double x = 0.5 * (lo + hi);
-    for (int i = 0; i < 128; ++i) {
-        double fx = f(x);
-        if (fx == 0) return x;
-        if ((fx < 0) == negativeAtLo)
-            lo = x;
-        else
-            hi = x;
-        double next = x - fx / df(x);
-        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-        if (std::abs(next - x) <= kTolerance || hi - lo <= kTolerance) return next;
-        x = next;
-    }
-    return x;
-}
-
-} // namespace
-
 TorusGeometry::TorusGeometry(const scene::TorusShape& desc) : center_(desc.center) {
     double len = glm::length(desc.axis);
     major_ = desc.major > 0 ? desc.major : 0;
@@ -112,7 +85,11 @@ void TorusGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     for (int i = 0; i + 1 < nSplit; ++i) {
         double fa = dF(split[i]), fb = dF(split[i + 1]);
         if ((fa < 0) != (fb < 0))
-            points[nPoints++] = bracketedRoot(dF, ddF, split[i], split[i + 1], fa < 0);
+            points[nPoints++] = bracketedRoot(
+                [&](double s) {
+                    return ValueAndSlope{dF(s), ddF(s)};
+                },
+                split[i], split[i + 1], fa < 0);
     }
     points[nPoints++] = L;
 
@@ -121,7 +98,12 @@ void TorusGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     for (int i = 0; i + 1 < nPoints; ++i) {
         bool insideAfter = i + 2 < nPoints && tube(points[i + 1]) < 0;
         if (insideBefore != insideAfter)
-            out.add(tc + bracketedRoot(tube, dTube, points[i], points[i + 1], insideBefore) * toT,
+            out.add(tc + bracketedRoot(
+                             [&](double s) {
+                                 return ValueAndSlope{tube(s), dTube(s)};
+                             },
+                             points[i], points[i + 1], insideBefore) *
+                             toT,
                     0);
         insideBefore = insideAfter;
     }

@@ -62,6 +62,7 @@ constexpr Usage kUsages[] = {
     {ObjectType::Cone,
      "Scene { Cone { base -> vec3(0, 0, 0) baseradius -> 1 top -> vec3(0, 1, 0) @ } }"},
     {ObjectType::Torus, "Scene { Torus { center -> vec3(0, 0, 0) major -> 2 minor -> 0.5 @ } }"},
+    {ObjectType::Superellipsoid, "Scene { Superellipsoid { @ } }"},
     {ObjectType::Disc,
      "Scene { Disc { center -> vec3(0, 0, 0) normal -> vec3(0, 1, 0) radius -> 1 @ } }"},
     {ObjectType::Quad,

@@ -15,6 +15,8 @@ TEST_CASE("geometry: makeGeometry covers the plain shapes only") {
     CHECK(std::holds_alternative<DiscGeometry>(*makeGeometry(scene::DiscShape{})));
     CHECK(std::holds_alternative<QuadGeometry>(*makeGeometry(scene::QuadShape{})));
     CHECK(std::holds_alternative<TriangleGeometry>(*makeGeometry(scene::TriangleShape{})));
+    CHECK(std::holds_alternative<SuperellipsoidGeometry>(
+        *makeGeometry(scene::SuperellipsoidShape{})));
     CHECK_FALSE(makeGeometry(scene::MeshShape{"a.obj", ""}));
     CHECK_FALSE(makeGeometry(scene::CsgNode{}));
     CHECK_FALSE(makeGeometry(scene::TransformNode{}));
@@ -33,6 +35,7 @@ TEST_CASE("geometry: solidity follows the spec") {
     CHECK_FALSE(isSolid(*makeGeometry(scene::DiscShape{})));
     CHECK_FALSE(isSolid(*makeGeometry(scene::QuadShape{})));
     CHECK_FALSE(isSolid(*makeGeometry(scene::TriangleShape{})));
+    CHECK(isSolid(*makeGeometry(scene::SuperellipsoidShape{})));
     auto mesh = std::make_shared<MeshData>();
     CHECK_FALSE(isSolid(Geometry(MeshTriangleGeometry(mesh, 0))));
 }
@@ -86,6 +89,8 @@ TEST_CASE("geometry: every primitive's bounds contain its random hits") {
     shapes.push_back(*makeGeometry(scene::DiscShape{{0, 1, 0}, {1, 1, 1}, 2, 0.5}));
     shapes.push_back(*makeGeometry(scene::QuadShape{{0, 0, 0}, {1, 2, 0}, {0, 1, 3}}));
     shapes.push_back(*makeGeometry(scene::TriangleShape{{0, 0, 0}, {1, 2, 0}, {0, 1, 3}}));
+    shapes.push_back(*makeGeometry(scene::SuperellipsoidShape{0.05, 0.05}));
+    shapes.push_back(*makeGeometry(scene::SuperellipsoidShape{3, 0.2}));
     for (const Geometry& g : shapes) {
         Bounds3 b = geometryBounds(g);
         REQUIRE(b.finite());
@@ -118,6 +123,7 @@ TEST_CASE("geometry: no direction or degenerate shapes give no crossings and no 
     shapes.push_back(*makeGeometry(scene::DiscShape{{0, 0, 0}, {0, 1, 0}, 1, 0}));
     shapes.push_back(*makeGeometry(scene::QuadShape{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}));
     shapes.push_back(*makeGeometry(scene::TriangleShape{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}}));
+    shapes.push_back(*makeGeometry(scene::SuperellipsoidShape{0.5, 3}));
     for (const Geometry& g : shapes) {
         CrossingList list;
         crossLine(g, {{0, 0, 0}, {0, 0, 0}}, list);
@@ -133,6 +139,7 @@ TEST_CASE("geometry: no direction or degenerate shapes give no crossings and no 
     degenerate.push_back(*makeGeometry(scene::DiscShape{{0, 0, 0}, {0, 0, 0}, 1, 0}));
     degenerate.push_back(*makeGeometry(scene::QuadShape{{0, 0, 0}, {0, 0, 0}, {0, 0, 1}}));
     degenerate.push_back(*makeGeometry(scene::TriangleShape{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}));
+    degenerate.push_back(*makeGeometry(scene::SuperellipsoidShape{0, 1}));
     Random rng(52);
     for (const Geometry& g : degenerate) {
         for (int i = 0; i < 200; ++i) {
