@@ -51,11 +51,8 @@ std::string Interpreter::entityTypeName(const Value& entity) const {
     while (auto* transform = std::get_if<scene::TransformNode>(moved)) {
         moved = &scene_.entities[static_cast<size_t>(transform->child)].shape;
     }
-    if (auto* csg = std::get_if<scene::CsgNode>(moved)) {
-        return csg->op == scene::CsgOp::Union        ? "Union"
-               : csg->op == scene::CsgOp::Difference ? "Difference"
-                                                     : "Intersection";
-    }
+    if (auto* csg = std::get_if<scene::CsgNode>(moved)) return scene::csgOpName(csg->op);
+    if (std::holds_alternative<scene::InverseNode>(*moved)) return "Inverse";
     return std::holds_alternative<scene::GroupNode>(*moved) ? "Group" : typeName(entity);
 }
 

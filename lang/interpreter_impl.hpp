@@ -234,6 +234,8 @@ private:
     // objects (object_literals.cpp): each category's description from checked attributes
     Value evalObject(const ObjectExpr* node);
     Value buildEntity(ObjectBuilder& b);
+    /// Merge and Inverse: entities made of other entities.
+    Value buildCombination(ObjectBuilder& b);
     scene::Shape solidShape(ObjectBuilder& b);
     scene::Shape surfaceShape(ObjectBuilder& b);
     Value buildMaterial(const ObjectBuilder& b);

@@ -131,6 +131,10 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
     case AttrType::ColorMap:
     case AttrType::MaterialMap: checkMap(a, v, attr.type); return;
     case AttrType::MaterialList: checkMaterialList(a, v); return;
+    case AttrType::Solid:
+        if (!isSolid(v)) wrongType(a, v, fmt::format("a solid ({})", solidTypeList()));
+        return;
+    case AttrType::SolidList: checkSolidList(a, v); return;
     case AttrType::Turbulence:
         if (v.kind == ValueKind::Vec3) {
             finite(a, v, 3);
@@ -197,6 +201,24 @@ void ObjectBuilder::checkMaterialList(const Attribute& a, const Value& v) {
         if (layer.kind != ValueKind::Material) {
             in.fail(itemRange(a.value, i),
                     fmt::format("layer {} must be a material, not {}", i + 1, typeName(layer)));
+        }
+    }
+}
+
+bool ObjectBuilder::isSolid(const Value& v) const {
+    return v.kind == ValueKind::Entity && in.scene_.entities[v.index].solid;
+}
+
+void ObjectBuilder::checkSolidList(const Attribute& a, const Value& v) {
+    if (v.kind != ValueKind::List) wrongType(a, v, "a list of solids");
+    if (v.list->empty())
+        in.fail(a.value->range, fmt::format("a {} needs at least one solid", info.name));
+    for (size_t i = 0; i < v.list->size(); ++i) {
+        const Value& item = (*v.list)[i];
+        if (!isSolid(item)) {
+            in.fail(itemRange(a.value, i),
+                    fmt::format("item {} of '{}' must be a solid ({}), not {}", i + 1, a.name,
+                                solidTypeList(), typeName(item)));
         }
     }
 }

@@ -160,6 +160,8 @@ struct ObjectBuilder {
     void checkChoice(const Attribute& a, const Value& v, const AttributeInfo& attr);
     void checkMap(const Attribute& a, const Value& v, AttrType type);
     void checkMaterialList(const Attribute& a, const Value& v);
+    void checkSolidList(const Attribute& a, const Value& v);
+    bool isSolid(const Value& v) const;
     void missing(const AttributeInfo& attr);
     [[noreturn]] void wrongType(const Attribute& a, const Value& v, std::string_view wanted);
     [[noreturn]] void floatForInt(const Attribute& a, const Value& v, std::string_view wanted);

@@ -352,6 +352,8 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
 }
 
 Value Interpreter::buildEntity(ObjectBuilder& b) {
+    if (b.info.type == ObjectType::Merge || b.info.type == ObjectType::Inverse)
+        return buildCombination(b);
     scene::Shape shape = b.info.solid ? solidShape(b) : surfaceShape(b);
     bool zeroSize = std::visit(ZeroSize{}, shape);
     const int32_t material = b.index("material", -1);
@@ -362,6 +364,31 @@ Value Interpreter::buildEntity(ObjectBuilder& b) {
     if (zeroSize && !animated_) {
         warnOnce(WarningKind::ZeroSizeEntity, b.typeRange,
                  fmt::format("this {} has zero size and draws nothing", b.info.name));
+    }
+    return Value::object(ValueKind::Entity, b.info.type, static_cast<uint32_t>(index));
+}
+
+Value Interpreter::buildCombination(ObjectBuilder& b) {
+    const EntityInfo info{b.range, b.info.type, true};
+    auto add = [&](scene::Shape shape) {
+        return addEntity(scene::EntityDesc{std::move(shape), -1, true, span(b.range)}, info);
+    };
+    int32_t index;
+    if (b.info.type == ObjectType::Inverse) {
+        index = add(scene::InverseNode{b.index("object", -1)});
+    } else {
+        // A chain of merges; one object merges with itself, so that the result is a Merge still.
+        const std::vector<Value>& objects = *b.get("objects")->list;
+        index = static_cast<int32_t>(objects[0].index);
+        for (size_t i = objects.size() > 1 ? 1 : 0; i < objects.size(); ++i)
+            index = add(
+                scene::CsgNode{scene::CsgOp::Merge, index, static_cast<int32_t>(objects[i].index)});
+    }
+    // Its own material is given to the parts without one, as `<material m>` gives it.
+    if (const int32_t material = b.index("material", -1); material >= 0) {
+        index = addEntity(
+            scene::EntityDesc{scene::TransformNode{index, {}}, material, true, span(b.range)},
+            info);
     }
     return Value::object(ValueKind::Entity, b.info.type, static_cast<uint32_t>(index));
 }

@@ -213,6 +213,15 @@ constexpr AttributeInfo kSuperellipsoid[] = {
      "Exponent along z (north-south): toward 0 square, 1 round, above 2 pinched."},
     CRT_MATERIAL_ATTR,
 };
+constexpr AttributeInfo kMerge[] = {
+    {"objects", A::SolidList, true, "",
+     "The solids to join; the surfaces inside the result are left out."},
+    CRT_MATERIAL_ATTR,
+};
+constexpr AttributeInfo kInverse[] = {
+    {"object", A::Solid, true, "", "The solid whose outside this is."},
+    CRT_MATERIAL_ATTR,
+};
 constexpr AttributeInfo kDisc[] = {
     {"center", A::Vec3, true, "", "Centre."},
     {"normal", A::Vec3, true, "", "Normal."},
@@ -391,6 +400,12 @@ constexpr ObjectInfo kObjects[] = {
      "POV-Ray's superellipsoid in the cube from -1 to 1 (solid): a sphere, a rounded box, a "
      "cylinder or a star; move and size it with modifiers.",
      kSuperellipsoid},
+    {T::Merge, "Merge", C::Entity, true,
+     "A union of solids without the surfaces inside it (POV-Ray's merge): for glass and "
+     "anything seen through.",
+     kMerge},
+    {T::Inverse, "Inverse", C::Entity, true,
+     "Everything outside a solid (POV-Ray's inverse): its surface, facing inward.", kInverse},
     {T::Disc, "Disc", C::Entity, false, "A flat disc, optionally with a hole.", kDisc},
     {T::Quad, "Quad", C::Entity, false, "A flat parallelogram.", kQuad},
     {T::Triangle, "Triangle", C::Entity, false, "A triangle.", kTriangle},
@@ -515,6 +530,8 @@ std::string_view attrTypeName(AttrType type) {
     case A::Turbulence: return "float or vec3";
     case A::MaterialMap: return "material map";
     case A::MaterialList: return "list of materials";
+    case A::Solid: return "solid";
+    case A::SolidList: return "list of solids";
     }
     return "value";
 }

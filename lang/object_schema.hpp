@@ -29,6 +29,8 @@ enum class ObjectType : uint8_t {
     Cone,
     Torus,
     Superellipsoid,
+    Merge,
+    Inverse,
     Disc,
     Quad,
     Triangle,
@@ -92,6 +94,8 @@ enum class AttrType : uint8_t {
     Turbulence,   ///< a float (the same on every axis) or a vec3
     MaterialMap,  ///< a list of [value, material] pairs
     MaterialList, ///< a list of materials
+    Solid,        ///< an entity usable in CSG
+    SolidList,    ///< a list of at least one such entity
 };
 
 struct AttributeInfo {

@@ -83,6 +83,7 @@ bool objectFits(AttrType type, const ObjectInfo& info) {
     case AttrType::Background: return info.type == ObjectType::Background;
     case AttrType::Texture: return isColorTexture(info.type);
     case AttrType::Bump: return isBumpTexture(info.type);
+    case AttrType::Solid: return info.category == ObjectCategory::Entity && info.solid;
     default: return false;
     }
 }
@@ -103,12 +104,14 @@ int typeFit(AttrType want, const std::string& type) {
         if (type == "colour") return 0;
         [[fallthrough]];
     case AttrType::Material: case AttrType::Camera: case AttrType::Texture: case AttrType::Bump:
+    case AttrType::Solid:
         return object != ObjectType::Count && objectFits(want, objectInfo(object)) ? 0 : -1;
     case AttrType::Gamma: return type == "float" || type == "int" || type == "string" ? 0 : -1;
     case AttrType::Aperture: return type == "int" || type == "string" ? 0 : -1;
     case AttrType::ColorMap:
     case AttrType::MaterialMap:
-    case AttrType::MaterialList: return type == "list" ? 0 : -1;
+    case AttrType::MaterialList:
+    case AttrType::SolidList: return type == "list" ? 0 : -1;
     case AttrType::Turbulence: return type == "float" || type == "int" || type == "vec3" ? 0 : -1;
     }
     return 1;

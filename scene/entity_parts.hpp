@@ -7,8 +7,8 @@
 
 namespace crt::scene {
 
-/// Calls `visit` on every entity index `entity` refers to: CSG operands, a transform's
-/// child, a group's members (references into `entity`, writable when it is).
+/// Calls `visit` on every entity index `entity` refers to: CSG operands, a transform's or an
+/// inverse's child, a group's members (references into `entity`, writable when it is).
 template <typename Entity, typename F> void forEachPart(Entity& entity, F&& visit) {
     if (auto* csg = std::get_if<CsgNode>(&entity.shape)) {
         visit(csg->left);
@@ -17,6 +17,8 @@ template <typename Entity, typename F> void forEachPart(Entity& entity, F&& visi
         visit(transform->child);
     } else if (auto* group = std::get_if<GroupNode>(&entity.shape)) {
         for (auto& member : group->members) visit(member);
+    } else if (auto* inverse = std::get_if<InverseNode>(&entity.shape)) {
+        visit(inverse->child);
     }
 }
 

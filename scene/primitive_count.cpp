@@ -15,7 +15,8 @@ uint64_t primitivesOf(const EntityDesc& entity, std::span<const uint64_t> earlie
     }
     const bool combines = std::holds_alternative<CsgNode>(entity.shape) ||
                           std::holds_alternative<TransformNode>(entity.shape) ||
-                          std::holds_alternative<GroupNode>(entity.shape);
+                          std::holds_alternative<GroupNode>(entity.shape) ||
+                          std::holds_alternative<InverseNode>(entity.shape);
     if (!combines) return 1;
     uint64_t count = 0;
     forEachPart(entity, [&](int32_t part) {

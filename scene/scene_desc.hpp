@@ -232,9 +232,14 @@ struct MeshShape {
     std::string resolvedFile; ///< the path found on disk, or "" if not found
 };
 
-enum class CsgOp : uint8_t { Union, Difference, Intersection };
+/// Merge: a union without the surfaces that lie inside it (POV-Ray's merge, for glass).
+enum class CsgOp : uint8_t { Union, Difference, Intersection, Merge };
 /// A CSG combination of two entities (each a solid or a group of solids).
 struct CsgNode { CsgOp op = CsgOp::Union; int32_t left = -1; int32_t right = -1; };
+/// The complement of a solid: everything outside it, bounded by its surface facing inward.
+struct InverseNode {
+    int32_t child = -1;
+};
 /// An entity moved by modifiers (and maybe given a material: EntityDesc::material).
 struct TransformNode { int32_t child = -1; std::vector<Modifier> modifiers; };
 /// What a macro emitting several entities returns: drawn as its members; in CSG, their union.
@@ -242,7 +247,18 @@ struct GroupNode { std::vector<int32_t> members; };
 
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape,
                            DiscShape, QuadShape, TriangleShape, SuperellipsoidShape, MeshShape,
-                           CsgNode, TransformNode, GroupNode>;
+                           CsgNode, TransformNode, GroupNode, InverseNode>;
+
+/// The name of a CSG operation as scripts and the scene JSON spell its result: "Union" …
+inline const char* csgOpName(CsgOp op) {
+    switch (op) {
+    case CsgOp::Union: return "Union";
+    case CsgOp::Difference: return "Difference";
+    case CsgOp::Intersection: return "Intersection";
+    case CsgOp::Merge: return "Merge";
+    }
+    return "?";
+}
 
 /// A node of the entity graph. Nodes may be shared (an entity drawn twice is one node).
 struct EntityDesc {

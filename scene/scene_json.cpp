@@ -104,7 +104,7 @@ struct ShapeJson {
         out["resolvedFile"] = s.resolvedFile;
     }
     void operator()(const CsgNode& s) {
-        out["type"] = s.op == CsgOp::Union ? "Union" : s.op == CsgOp::Difference ? "Difference" : "Intersection";
+        out["type"] = csgOpName(s.op);
         out["left"] = s.left;
         out["right"] = s.right;
     }
@@ -116,6 +116,10 @@ struct ShapeJson {
     void operator()(const GroupNode& s) {
         out["type"] = "Group";
         out["members"] = s.members;
+    }
+    void operator()(const InverseNode& s) {
+        out["type"] = "Inverse";
+        out["child"] = s.child;
     }
 };
 

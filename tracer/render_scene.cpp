@@ -9,10 +9,12 @@ namespace {
 
 bool insideOf(CsgNodeKind kind, bool left, bool right) {
     switch (kind) {
-    case CsgNodeKind::Union: return left || right;
+    case CsgNodeKind::Union:
+    case CsgNodeKind::Merge: return left || right;
     case CsgNodeKind::Difference: return left && !right;
     case CsgNodeKind::Intersection: return left && right;
-    case CsgNodeKind::Leaf: break;
+    case CsgNodeKind::Leaf:
+    case CsgNodeKind::Inverse: break;
     }
     return left;
 }
@@ -48,12 +50,24 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const CsgRay& q, QueryScratch&
         if (c.testBounds && !q.boxRay.hits(c.bounds, -kInfinity, kInfinity)) return false;
         return csgCrossings(child, q, scratch, stats);
     };
+    if (node.kind == CsgNodeKind::Inverse) {
+        // The same surface, bounding the outside: every crossing enters where it left.
+        if (node.left < 0) return true;
+        const size_t start = out.size();
+        const bool inChild = operand(node.left);
+        for (size_t k = start; k < out.size(); ++k) {
+            out[k].insideAfter = !out[k].insideAfter;
+            out[k].flipNormal = !out[k].flipNormal;
+        }
+        return !inChild;
+    }
     size_t leftStart = out.size();
     bool inLeft = operand(node.left);
     size_t rightStart = out.size();
     // A difference or intersection whose left operand the line never enters is empty on
     // it: the right operand need not be asked (a carving tool the ray only meets outside).
-    if (node.kind != CsgNodeKind::Union && rightStart == leftStart && !inLeft) return false;
+    const bool joins = node.kind == CsgNodeKind::Union || node.kind == CsgNodeKind::Merge;
+    if (!joins && rightStart == leftStart && !inLeft) return false;
     bool inRight = operand(node.right);
     size_t rightEnd = out.size();
     bool state = insideOf(node.kind, inLeft, inRight);
@@ -80,7 +94,8 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const CsgRay& q, QueryScratch&
             c.insideAfter = next;
             if (fromRight && node.kind == CsgNodeKind::Difference) c.flipNormal = !c.flipNormal;
             out.push_back(c);
-        } else if (inLeft == leftBefore && inLeft && (node.kind == CsgNodeKind::Intersection) == inRight) {
+        } else if (node.kind != CsgNodeKind::Merge && inLeft == leftBefore && inLeft &&
+                   (node.kind == CsgNodeKind::Intersection) == inRight) {
             // Interior surfaces of a union operand stay visible where the result is solid.
             for (size_t k = groupLeft; k < i; ++k)
                 if (out[k].insideAfter) out.push_back({out[k].t, out[k].primitive, out[k].part, next, out[k].flipNormal});

@@ -27,7 +27,9 @@ struct TransformPair {
     Transform toObject;
 };
 
-enum class CsgNodeKind : uint8_t { Leaf, Union, Difference, Intersection };
+/// Merge: a union that keeps only its outer surface. Inverse: the complement of `left`
+/// (everything when left is -1, the inverse of nothing).
+enum class CsgNodeKind : uint8_t { Leaf, Union, Difference, Intersection, Merge, Inverse };
 
 /// A node of a flattened CSG tree; a leaf refers to a primitive.
 struct CsgTreeNode {

@@ -75,7 +75,8 @@ private:
             } else if (auto* c = std::get_if<scene::CsgNode>(&e.shape); c && c->op == scene::CsgOp::Union) {
                 pending.push_back(op.part(c->right));
                 pending.push_back(op.part(c->left));
-            } else if (std::holds_alternative<scene::CsgNode>(e.shape)) {
+            } else if (std::holds_alternative<scene::CsgNode>(e.shape) ||
+                       std::holds_alternative<scene::InverseNode>(e.shape)) {
                 int32_t node = addCsg(op);
                 if (node >= 0) scene_.objects.push_back(~node);
             } else if (auto* m = std::get_if<scene::MeshShape>(&e.shape)) {
@@ -154,7 +155,8 @@ private:
             const scene::EntityDesc& e = desc_.entities[o.entity];
             if (auto* t = std::get_if<scene::TransformNode>(&e.shape)) {
                 pending.push_back(o.below(e, *t));
-            } else if (auto* g = std::get_if<scene::GroupNode>(&e.shape); g && op == scene::CsgOp::Union) {
+            } else if (auto* g = std::get_if<scene::GroupNode>(&e.shape);
+                       g && (op == scene::CsgOp::Union || op == scene::CsgOp::Merge)) {
                 for (int32_t m : g->members) pending.push_back(o.part(m));
             } else if (auto* c = std::get_if<scene::CsgNode>(&e.shape); c && c->op == op) {
                 pending.push_back(o.part(c->right));
@@ -171,6 +173,14 @@ private:
         const scene::EntityDesc& e = desc_.entities[operand.entity];
         if (auto* t = std::get_if<scene::TransformNode>(&e.shape))
             return addCsg(operand.below(e, *t));
+        if (auto* inverse = std::get_if<scene::InverseNode>(&e.shape)) {
+            CsgTreeNode node;
+            node.kind = CsgNodeKind::Inverse;
+            node.left = addCsg(operand.part(inverse->child));
+            node.bounds = Bounds3::everything();
+            scene_.csgNodes.push_back(node);
+            return static_cast<int32_t>(scene_.csgNodes.size() - 1);
+        }
         const scene::CsgNode* c = std::get_if<scene::CsgNode>(&e.shape);
         if (!c && !std::holds_alternative<scene::GroupNode>(e.shape)) {
             int32_t p = addPrimitive(operand);
@@ -205,7 +215,9 @@ private:
         std::vector<Operand> operands;
         scene::CsgOp op = c ? c->op : scene::CsgOp::Union;
         collectChain(operand, op, operands);
-        return addBalanced(operands, op == scene::CsgOp::Intersection ? CsgNodeKind::Intersection : CsgNodeKind::Union);
+        return addBalanced(operands, op == scene::CsgOp::Intersection ? CsgNodeKind::Intersection
+                                     : op == scene::CsgOp::Merge      ? CsgNodeKind::Merge
+                                                                      : CsgNodeKind::Union);
     }
 
     int32_t addBalanced(std::vector<Operand>& operands, CsgNodeKind kind) {
@@ -245,7 +257,8 @@ private:
     }
 
     int32_t combine(CsgNodeKind kind, int32_t left, int32_t right) {
-        if (left < 0) return kind == CsgNodeKind::Union ? right : -1;
+        const bool joins = kind == CsgNodeKind::Union || kind == CsgNodeKind::Merge;
+        if (left < 0) return joins ? right : -1;
         if (right < 0) return kind == CsgNodeKind::Intersection ? -1 : left;
         CsgTreeNode node;
         node.kind = kind;
@@ -253,7 +266,8 @@ private:
         node.right = right;
         const Bounds3& a = scene_.csgNodes[left].bounds;
         const Bounds3& b = scene_.csgNodes[right].bounds;
-        if (kind == CsgNodeKind::Union) node.bounds = unionOf(a, b);
+        if (joins)
+            node.bounds = unionOf(a, b);
         else if (kind == CsgNodeKind::Difference) node.bounds = a;
         else node.bounds = {glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)};
         node.testBounds = kind != CsgNodeKind::Difference && node.bounds.finite();

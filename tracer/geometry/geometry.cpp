@@ -77,7 +77,7 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape) {
             else if constexpr (std::is_same_v<S, scene::SuperellipsoidShape>)
                 return Geometry(SuperellipsoidGeometry(s));
             else
-                return std::nullopt; // scene::MeshShape, scene::CsgNode, scene::TransformNode, scene::GroupNode
+                return std::nullopt; // meshes, CSG, transforms, groups and inverses
         },
         shape);
 }

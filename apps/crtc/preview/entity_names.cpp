@@ -23,12 +23,14 @@ std::string entityKind(const scene::EntityDesc& entity) {
         "Mesh",
         "CSG",
         "transformed entity",
-        "group"};
+        "group",
+        "inverse"};
     if (auto* csg = std::get_if<scene::CsgNode>(&entity.shape)) {
         switch (csg->op) {
         case scene::CsgOp::Union: return "union";
         case scene::CsgOp::Difference: return "difference";
         case scene::CsgOp::Intersection: return "intersection";
+        case scene::CsgOp::Merge: return "merge";
         }
     }
     return kNames[entity.shape.index()];

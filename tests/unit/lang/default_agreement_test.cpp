@@ -63,6 +63,8 @@ constexpr Usage kUsages[] = {
      "Scene { Cone { base -> vec3(0, 0, 0) baseradius -> 1 top -> vec3(0, 1, 0) @ } }"},
     {ObjectType::Torus, "Scene { Torus { center -> vec3(0, 0, 0) major -> 2 minor -> 0.5 @ } }"},
     {ObjectType::Superellipsoid, "Scene { Superellipsoid { @ } }"},
+    {ObjectType::Merge, "Scene { Merge { objects -> [Superellipsoid {}] @ } }"},
+    {ObjectType::Inverse, "Scene { Inverse { object -> Superellipsoid {} @ } }"},
     {ObjectType::Disc,
      "Scene { Disc { center -> vec3(0, 0, 0) normal -> vec3(0, 1, 0) radius -> 1 @ } }"},
     {ObjectType::Quad,
@@ -216,7 +218,9 @@ std::string otherValue(const AttributeInfo& attr) {
     case AttrType::Texture:
     case AttrType::Bump:
     case AttrType::MaterialMap:
-    case AttrType::MaterialList: return ""; // required: no default to differ from
+    case AttrType::MaterialList:
+    case AttrType::Solid:
+    case AttrType::SolidList: return ""; // required: no default to differ from
     }
     return "";
 }

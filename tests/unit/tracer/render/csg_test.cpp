@@ -79,6 +79,66 @@ TEST_CASE("CSG union keeps its interior surfaces", "[csg]") {
     CHECK(probe.crossings({Vec3(-5, 0, 0), Vec3(1, 0, 0)}) == 4);
 }
 
+TEST_CASE("CSG merge keeps only the outer surface, drawn alone or inside other CSG", "[csg]") {
+    SceneMaker m;
+    int32_t a = m.sphere(Vec3(-0.5, 0, 0), 1);
+    int32_t b = m.sphere(Vec3(0.5, 0, 0), 1);
+    int32_t c = m.sphere(Vec3(2.0, 0, 0), 0.25); // apart from both: its surface stays
+    int32_t merged = m.csg(scene::CsgOp::Merge, m.csg(scene::CsgOp::Merge, a, b), c);
+    m.draw(merged);
+    Probe probe(m.desc);
+    CHECK(probe.crossings({Vec3(-5, 0, 0), Vec3(1, 0, 0)}) == 4); // -1.5, 1.5, then c's two
+    Hit hit;
+    // A line through b only, missing a, still meets the merge.
+    REQUIRE(probe.hit({Vec3(1.2, -5, 0), Vec3(0, 1, 0)}, hit));
+    CHECK(hit.t == Approx(5 - std::sqrt(1 - 0.7 * 0.7)));
+    // From inside the overlap: the first surface is the far side of the merge, not b's inside.
+    REQUIRE(probe.hit({Vec3(0, 0, 0), Vec3(1, 0, 0)}, hit));
+    CHECK(hit.t == Approx(1.5));
+
+    SceneMaker n;
+    int32_t box = n.box(Vec3(-3, -3, -3), Vec3(3, 3, -2.5));
+    int32_t pair =
+        n.csg(scene::CsgOp::Merge, n.sphere(Vec3(-0.5, 0, 0), 1), n.sphere(Vec3(0.5, 0, 0), 1));
+    n.draw(n.csg(scene::CsgOp::Difference, pair, box));
+    Probe nested(n.desc);
+    CHECK(nested.crossings({Vec3(-5, 0, 0), Vec3(1, 0, 0)}) == 2);
+}
+
+TEST_CASE("CSG inverse: the outside of a solid, bounded by its surface facing inward", "[csg]") {
+    SceneMaker m;
+    int32_t box = m.box(Vec3(-1), Vec3(1));
+    int32_t ball = m.sphere(Vec3(1, 0, 0), 0.5);
+    // box ^ inverse(ball) is box − ball.
+    m.draw(m.csg(scene::CsgOp::Intersection, box, m.entity(scene::InverseNode{ball})));
+    Probe probe(m.desc);
+    Hit hit;
+    const Ray ray{Vec3(5, 0, 0), Vec3(-1, 0, 0)};
+    REQUIRE(probe.hit(ray, hit));
+    CHECK(hit.t == Approx(4.5));
+    SurfaceInteraction si = probe.scene->interaction(ray, hit);
+    CHECK(si.normal.x == Approx(1)); // toward the ray: out of the result, into the ball
+    CHECK(probe.crossings(ray) == 2);
+
+    // Drawn alone, an inverse shows its solid's surface with the normals turned inward.
+    SceneMaker alone;
+    alone.draw(alone.entity(scene::InverseNode{alone.sphere(Vec3(0), 1)}));
+    Probe lone(alone.desc);
+    const Ray in{Vec3(0, 0, -5), Vec3(0, 0, 1)};
+    REQUIRE(lone.hit(in, hit));
+    CHECK(hit.t == Approx(4));
+    CHECK(lone.scene->interaction(in, hit).normal.z == Approx(1));
+    // The inverse of nothing is all space: no surface, and an intersection with it is unchanged.
+    SceneMaker none;
+    int32_t empty = none.csg(scene::CsgOp::Intersection, none.sphere(Vec3(-3, 0, 0), 1),
+                             none.sphere(Vec3(3, 0, 0), 1));
+    none.draw(none.csg(scene::CsgOp::Intersection, none.box(Vec3(-1), Vec3(1)),
+                       none.entity(scene::InverseNode{empty})));
+    Probe all(none.desc);
+    REQUIRE(all.hit({Vec3(-5, 0, 0), Vec3(1, 0, 0)}, hit));
+    CHECK(hit.t == Approx(4));
+}
+
 TEST_CASE("CSG: coincident faces leave no slivers, even through different transforms", "[csg]") {
     SceneMaker m;
     int32_t outer = m.box(Vec3(-1), Vec3(1));
