@@ -90,6 +90,9 @@ struct ZeroSize {
     bool operator()(const scene::TriangleShape& s) const {
         return glm::length(glm::cross(s.b - s.a, s.c - s.a)) == 0;
     }
+    bool operator()(const scene::SmoothTriangleShape& s) const {
+        return glm::length(glm::cross(s.b - s.a, s.c - s.a)) == 0;
+    }
     bool operator()(const auto&) const { return false; } // planes and meshes
 };
 
@@ -501,6 +504,18 @@ scene::Shape Interpreter::surfaceShape(ObjectBuilder& b) {
         s.a = b.vec("a", s.a);
         s.b = b.vec("b", s.b);
         s.c = b.vec("c", s.c);
+        return s;
+    }
+    case ObjectType::SmoothTriangle: {
+        scene::SmoothTriangleShape s;
+        for (std::string_view normal : {"na", "nb", "nc"})
+            b.nonZeroVector(normal, "each corner needs a direction");
+        s.a = b.vec("a", s.a);
+        s.b = b.vec("b", s.b);
+        s.c = b.vec("c", s.c);
+        s.na = b.vec("na", s.na);
+        s.nb = b.vec("nb", s.nb);
+        s.nc = b.vec("nc", s.nc);
         return s;
     }
     case ObjectType::Mesh:

@@ -241,6 +241,15 @@ constexpr AttributeInfo kTriangle[] = {
     {"c", A::Vec3, true, "", "Third vertex."},
     CRT_MATERIAL_ATTR,
 };
+constexpr AttributeInfo kSmoothTriangle[] = {
+    {"a", A::Vec3, true, "", "First vertex."},
+    {"b", A::Vec3, true, "", "Second vertex."},
+    {"c", A::Vec3, true, "", "Third vertex."},
+    {"na", A::Vec3, true, "", "Normal at a."},
+    {"nb", A::Vec3, true, "", "Normal at b."},
+    {"nc", A::Vec3, true, "", "Normal at c."},
+    CRT_MATERIAL_ATTR,
+};
 constexpr AttributeInfo kMesh[] = {
     {"file", A::String, true, "", "A Wavefront OBJ file."},
     CRT_MATERIAL_ATTR,
@@ -409,6 +418,9 @@ constexpr ObjectInfo kObjects[] = {
     {T::Disc, "Disc", C::Entity, false, "A flat disc, optionally with a hole.", kDisc},
     {T::Quad, "Quad", C::Entity, false, "A flat parallelogram.", kQuad},
     {T::Triangle, "Triangle", C::Entity, false, "A triangle.", kTriangle},
+    {T::SmoothTriangle, "SmoothTriangle", C::Entity, false,
+     "A triangle shaded with normals interpolated from its corners' (POV-Ray's smooth_triangle).",
+     kSmoothTriangle},
     {T::Mesh, "Mesh", C::Entity, false, "A triangle mesh from a Wavefront OBJ file.", kMesh},
     {T::Checker, "Checker", C::Texture, false, "A 3D checker pattern.", kChecker},
     {T::Stripes, "Stripes", C::Texture, false, "Stripes across an axis.", kStripes},

@@ -34,6 +34,7 @@ enum class ObjectType : uint8_t {
     Disc,
     Quad,
     Triangle,
+    SmoothTriangle,
     Mesh,
     Checker,
     Stripes,

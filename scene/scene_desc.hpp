@@ -222,6 +222,11 @@ struct TorusShape { glm::dvec3 center{0.0}; double major = 0; double minor = 0; 
 struct DiscShape { glm::dvec3 center{0.0}; glm::dvec3 normal{0, 1, 0}; double radius = 0; double hole = 0; };
 struct QuadShape { glm::dvec3 corner{0.0}; glm::dvec3 edgeA{0.0}; glm::dvec3 edgeB{0.0}; };
 struct TriangleShape { glm::dvec3 a{0.0}; glm::dvec3 b{0.0}; glm::dvec3 c{0.0}; };
+/// A triangle whose shading normal is interpolated from one at each corner.
+struct SmoothTriangleShape {
+    glm::dvec3 a{0.0}, b{0.0}, c{0.0};
+    glm::dvec3 na{0, 1, 0}, nb{0, 1, 0}, nc{0, 1, 0};
+};
 /// POV-Ray's superellipsoid in the cube [-1, 1]³: e the exponent across z, n along it.
 struct SuperellipsoidShape {
     double e = 1;
@@ -245,9 +250,10 @@ struct TransformNode { int32_t child = -1; std::vector<Modifier> modifiers; };
 /// What a macro emitting several entities returns: drawn as its members; in CSG, their union.
 struct GroupNode { std::vector<int32_t> members; };
 
-using Shape = std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape,
-                           DiscShape, QuadShape, TriangleShape, SuperellipsoidShape, MeshShape,
-                           CsgNode, TransformNode, GroupNode, InverseNode>;
+using Shape =
+    std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape, DiscShape,
+                 QuadShape, TriangleShape, SmoothTriangleShape, SuperellipsoidShape, MeshShape,
+                 CsgNode, TransformNode, GroupNode, InverseNode>;
 
 /// The name of a CSG operation as scripts and the scene JSON spell its result: "Union" …
 inline const char* csgOpName(CsgOp op) {

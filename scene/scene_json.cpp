@@ -93,6 +93,15 @@ struct ShapeJson {
         out["b"] = vec(s.b);
         out["c"] = vec(s.c);
     }
+    void operator()(const SmoothTriangleShape& s) {
+        out["type"] = "SmoothTriangle";
+        out["a"] = vec(s.a);
+        out["b"] = vec(s.b);
+        out["c"] = vec(s.c);
+        out["na"] = vec(s.na);
+        out["nb"] = vec(s.nb);
+        out["nc"] = vec(s.nc);
+    }
     void operator()(const SuperellipsoidShape& s) {
         out["type"] = "Superellipsoid";
         out["e"] = s.e;

@@ -62,6 +62,9 @@ constexpr Usage kUsages[] = {
     {ObjectType::Cone,
      "Scene { Cone { base -> vec3(0, 0, 0) baseradius -> 1 top -> vec3(0, 1, 0) @ } }"},
     {ObjectType::Torus, "Scene { Torus { center -> vec3(0, 0, 0) major -> 2 minor -> 0.5 @ } }"},
+    {ObjectType::SmoothTriangle,
+     "Scene { SmoothTriangle { a -> vec3(0, 0, 0) b -> vec3(1, 0, 0) c -> vec3(0, 0, 1) "
+     "na -> vec3(0, 1, 0) nb -> vec3(0, 1, 0) nc -> vec3(0, 1, 0) @ } }"},
     {ObjectType::Superellipsoid, "Scene { Superellipsoid { @ } }"},
     {ObjectType::Merge, "Scene { Merge { objects -> [Superellipsoid {}] @ } }"},
     {ObjectType::Inverse, "Scene { Inverse { object -> Superellipsoid {} @ } }"},

@@ -23,6 +23,26 @@ TEST_CASE("geometry: makeGeometry covers the plain shapes only") {
     CHECK_FALSE(makeGeometry(scene::GroupNode{}));
 }
 
+TEST_CASE(
+    "geometry: a smooth triangle interpolates its corners' directions, whatever their length") {
+    scene::SmoothTriangleShape s{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, -1}, {3, 0, 0}, {0, 1, 0}};
+    Geometry g = *makeGeometry(s);
+    CHECK(isFlat(g));
+    CHECK_FALSE(isSolid(g));
+    Ray ray{{0.5, 0.25, -3}, {0, 0, 1}};
+    CrossingList list;
+    crossLine(g, ray, list);
+    REQUIRE(list.count == 1);
+    SurfacePoint sp = surfaceAt(g, ray, list.items[0]);
+    // Barycentric weights 0.25, 0.5, 0.25 of the unit corner normals.
+    const Vec3 expected = glm::normalize(Vec3(0.5, 0.25, -0.25));
+    CHECK(sp.shadingNormal.x == Approx(expected.x));
+    CHECK(sp.shadingNormal.y == Approx(expected.y));
+    CHECK(sp.shadingNormal.z == Approx(expected.z));
+    CHECK(sp.normal.z == Approx(-1)); // the face turned toward the corner normals' side
+    CHECK(sp.uv.x == Approx(0.5));
+}
+
 TEST_CASE("geometry: solidity follows the spec") {
     CHECK(isSolid(*makeGeometry(scene::SphereShape{{0, 0, 0}, 1})));
     CHECK(isSolid(*makeGeometry(scene::BoxShape{})));
