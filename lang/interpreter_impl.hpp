@@ -238,6 +238,7 @@ private:
     Value buildCombination(ObjectBuilder& b);
     scene::Shape solidShape(ObjectBuilder& b);
     scene::Shape surfaceShape(ObjectBuilder& b);
+    scene::Shape polygonShape(ObjectBuilder& b);
     Value buildMaterial(const ObjectBuilder& b);
     Value buildCamera(ObjectBuilder& b);
     Value buildLight(const ObjectBuilder& b);

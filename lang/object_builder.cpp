@@ -8,6 +8,14 @@ namespace crt::lang {
 
 namespace fs = std::filesystem;
 
+SourceRange itemRange(const Expr* value, size_t index) {
+    if (value->kind == NodeKind::List) {
+        auto* list = static_cast<const ListExpr*>(value);
+        if (index < list->items.size()) return list->items[index]->range;
+    }
+    return value->range;
+}
+
 namespace {
 
 bool equalsIgnoringCase(std::string_view a, std::string_view b) {
@@ -15,16 +23,6 @@ bool equalsIgnoringCase(std::string_view a, std::string_view b) {
                return std::tolower(static_cast<unsigned char>(x)) ==
                       std::tolower(static_cast<unsigned char>(y));
            });
-}
-
-/// Where item `index` of a list attribute is written: the item itself when the value is a
-/// list literal, else the whole value.
-SourceRange itemRange(const Expr* value, size_t index) {
-    if (value->kind == NodeKind::List) {
-        auto* list = static_cast<const ListExpr*>(value);
-        if (index < list->items.size()) return list->items[index]->range;
-    }
-    return value->range;
 }
 
 /// What the fix-it for a missing attribute of this type writes.
@@ -135,6 +133,20 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
         if (!isSolid(v)) wrongType(a, v, fmt::format("a solid ({})", solidTypeList()));
         return;
     case AttrType::SolidList: checkSolidList(a, v); return;
+    case AttrType::PointList:
+        if (v.kind != ValueKind::List) wrongType(a, v, "a list of vec3");
+        for (size_t i = 0; i < v.list->size(); ++i) {
+            const Value& point = (*v.list)[i];
+            if (point.kind != ValueKind::Vec3) {
+                in.fail(itemRange(a.value, i), fmt::format("item {} of '{}' must be a vec3, not {}",
+                                                           i + 1, a.name, typeName(point)));
+            }
+            for (int k = 0; k < 3; ++k)
+                if (!std::isfinite(point.v[k]))
+                    in.fail(itemRange(a.value, i),
+                            fmt::format("item {} of '{}' is not finite", i + 1, a.name));
+        }
+        return;
     case AttrType::Turbulence:
         if (v.kind == ValueKind::Vec3) {
             finite(a, v, 3);

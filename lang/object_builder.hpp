@@ -15,6 +15,10 @@
 
 namespace crt::lang {
 
+/// Where item `index` of a list attribute is written: the item itself when the value is a
+/// list literal, else the whole value.
+SourceRange itemRange(const Expr* value, size_t index);
+
 /// A short list of attribute slots, kept on the stack.
 struct SmallSlots {
     std::array<uint8_t, kMaxAttributes> items;
@@ -77,6 +81,11 @@ struct ObjectBuilder {
     SourceRange where(std::string_view name) const {
         int s = slot(name);
         return s >= 0 ? given[static_cast<size_t>(s)]->value->range : typeRange;
+    }
+    /// Where item `index` of list attribute `name` is written (the type name when absent).
+    SourceRange whereItem(std::string_view name, size_t index) const {
+        int s = slot(name);
+        return s >= 0 ? itemRange(given[static_cast<size_t>(s)]->value, index) : typeRange;
     }
     double number(std::string_view name, double absent) const {
         const Value* v = get(name);

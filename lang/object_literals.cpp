@@ -1,6 +1,7 @@
 // Object literals and the Settings statement (spec §5): the scene description entries they
 // build from their checked attributes.
 #include "object_builder.hpp"
+#include "scene/polygon_loops.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -89,6 +90,10 @@ struct ZeroSize {
     }
     bool operator()(const scene::TriangleShape& s) const {
         return glm::length(glm::cross(s.b - s.a, s.c - s.a)) == 0;
+    }
+    bool operator()(const scene::PolygonShape& s) const {
+        const auto loops = scene::polygonLoops(s.points);
+        return loops.empty() || glm::length(scene::newellNormal(loops.front())) == 0;
     }
     bool operator()(const scene::SmoothTriangleShape& s) const {
         return glm::length(glm::cross(s.b - s.a, s.c - s.a)) == 0;
@@ -476,6 +481,40 @@ scene::Shape Interpreter::solidShape(ObjectBuilder& b) {
     }
 }
 
+/// The points of a Polygon: at least three, each loop of at least three, all in the plane of
+/// the first loop (to a relative 1e-9 of the polygon's size, far above rounding).
+scene::Shape Interpreter::polygonShape(ObjectBuilder& b) {
+    scene::PolygonShape s;
+    for (const Value& p : *b.get("points")->list) s.points.push_back({p.v[0], p.v[1], p.v[2]});
+    const auto loops = scene::polygonLoops(s.points);
+    for (size_t i = 0; i < loops.size(); ++i) {
+        if (loops[i].size() < 3) {
+            fail(b.where("points"),
+                 loops.size() == 1
+                     ? fmt::format("a Polygon needs at least 3 points, not {}", loops[i].size())
+                     : fmt::format("loop {} of this Polygon has {} points; a loop needs at least 3",
+                                   i + 1, loops[i].size()));
+        }
+    }
+    const glm::dvec3 normal = scene::newellNormal(loops.front());
+    const double area = glm::length(normal);
+    if (area == 0) return s; // no plane: zero size, warned as such
+    double size = 0;
+    for (const glm::dvec3& p : s.points)
+        size = std::max(size, glm::length(p - loops.front().front()));
+    for (size_t i = 0; i < s.points.size(); ++i) {
+        const double off = std::abs(glm::dot(normal / area, s.points[i] - loops.front().front()));
+        if (off > 1e-9 * size) {
+            fail(b.whereItem("points", i),
+                 fmt::format(
+                     "the points of this Polygon do not lie in one plane: point {} is {:.3g} "
+                     "off the plane that fits its first loop",
+                     i + 1, off));
+        }
+    }
+    return s;
+}
+
 scene::Shape Interpreter::surfaceShape(ObjectBuilder& b) {
     switch (b.info.type) {
     case ObjectType::Disc: {
@@ -506,6 +545,7 @@ scene::Shape Interpreter::surfaceShape(ObjectBuilder& b) {
         s.c = b.vec("c", s.c);
         return s;
     }
+    case ObjectType::Polygon: return polygonShape(b);
     case ObjectType::SmoothTriangle: {
         scene::SmoothTriangleShape s;
         for (std::string_view normal : {"na", "nb", "nc"})

@@ -250,6 +250,12 @@ constexpr AttributeInfo kSmoothTriangle[] = {
     {"nc", A::Vec3, true, "", "Normal at c."},
     CRT_MATERIAL_ATTR,
 };
+constexpr AttributeInfo kPolygon[] = {
+    {"points", A::PointList, true, "",
+     "The corners, in one plane; repeating a loop's first point closes it and starts the next "
+     "(holes by the even-odd rule)."},
+    CRT_MATERIAL_ATTR,
+};
 constexpr AttributeInfo kMesh[] = {
     {"file", A::String, true, "", "A Wavefront OBJ file."},
     CRT_MATERIAL_ATTR,
@@ -421,6 +427,8 @@ constexpr ObjectInfo kObjects[] = {
     {T::SmoothTriangle, "SmoothTriangle", C::Entity, false,
      "A triangle shaded with normals interpolated from its corners' (POV-Ray's smooth_triangle).",
      kSmoothTriangle},
+    {T::Polygon, "Polygon", C::Entity, false, "A flat polygon, with holes (POV-Ray's polygon).",
+     kPolygon},
     {T::Mesh, "Mesh", C::Entity, false, "A triangle mesh from a Wavefront OBJ file.", kMesh},
     {T::Checker, "Checker", C::Texture, false, "A 3D checker pattern.", kChecker},
     {T::Stripes, "Stripes", C::Texture, false, "Stripes across an axis.", kStripes},
@@ -544,6 +552,7 @@ std::string_view attrTypeName(AttrType type) {
     case A::MaterialList: return "list of materials";
     case A::Solid: return "solid";
     case A::SolidList: return "list of solids";
+    case A::PointList: return "list of vec3";
     }
     return "value";
 }

@@ -35,6 +35,7 @@ enum class ObjectType : uint8_t {
     Quad,
     Triangle,
     SmoothTriangle,
+    Polygon,
     Mesh,
     Checker,
     Stripes,
@@ -97,6 +98,7 @@ enum class AttrType : uint8_t {
     MaterialList, ///< a list of materials
     Solid,        ///< an entity usable in CSG
     SolidList,    ///< a list of at least one such entity
+    PointList,    ///< a list of vec3, every component finite
 };
 
 struct AttributeInfo {

@@ -111,7 +111,8 @@ int typeFit(AttrType want, const std::string& type) {
     case AttrType::ColorMap:
     case AttrType::MaterialMap:
     case AttrType::MaterialList:
-    case AttrType::SolidList: return type == "list" ? 0 : -1;
+    case AttrType::SolidList:
+    case AttrType::PointList: return type == "list" ? 0 : -1;
     case AttrType::Turbulence: return type == "float" || type == "int" || type == "vec3" ? 0 : -1;
     }
     return 1;

@@ -222,6 +222,11 @@ struct TorusShape { glm::dvec3 center{0.0}; double major = 0; double minor = 0; 
 struct DiscShape { glm::dvec3 center{0.0}; glm::dvec3 normal{0, 1, 0}; double radius = 0; double hole = 0; };
 struct QuadShape { glm::dvec3 corner{0.0}; glm::dvec3 edgeA{0.0}; glm::dvec3 edgeB{0.0}; };
 struct TriangleShape { glm::dvec3 a{0.0}; glm::dvec3 b{0.0}; glm::dvec3 c{0.0}; };
+/// POV-Ray's polygon: points in one plane, loops closed by repeating their first point
+/// (scene/polygon_loops.hpp), holes by the even-odd rule.
+struct PolygonShape {
+    std::vector<glm::dvec3> points;
+};
 /// A triangle whose shading normal is interpolated from one at each corner.
 struct SmoothTriangleShape {
     glm::dvec3 a{0.0}, b{0.0}, c{0.0};
@@ -252,8 +257,8 @@ struct GroupNode { std::vector<int32_t> members; };
 
 using Shape =
     std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape, DiscShape,
-                 QuadShape, TriangleShape, SmoothTriangleShape, SuperellipsoidShape, MeshShape,
-                 CsgNode, TransformNode, GroupNode, InverseNode>;
+                 QuadShape, TriangleShape, SmoothTriangleShape, PolygonShape, SuperellipsoidShape,
+                 MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
 
 /// The name of a CSG operation as scripts and the scene JSON spell its result: "Union" …
 inline const char* csgOpName(CsgOp op) {

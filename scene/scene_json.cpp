@@ -93,6 +93,12 @@ struct ShapeJson {
         out["b"] = vec(s.b);
         out["c"] = vec(s.c);
     }
+    void operator()(const PolygonShape& s) {
+        out["type"] = "Polygon";
+        Json points = Json::array();
+        for (const glm::dvec3& p : s.points) points.push_back(vec(p));
+        out["points"] = std::move(points);
+    }
     void operator()(const SmoothTriangleShape& s) {
         out["type"] = "SmoothTriangle";
         out["a"] = vec(s.a);

@@ -41,9 +41,12 @@ bool isBoundedConvex(const Geometry& geometry) {
 }
 
 bool isFlat(const Geometry& geometry) {
-    return std::holds_alternative<PlaneGeometry>(geometry) || std::holds_alternative<DiscGeometry>(geometry) ||
-           std::holds_alternative<QuadGeometry>(geometry) || std::holds_alternative<TriangleGeometry>(geometry) ||
-           std::holds_alternative<MeshTriangleGeometry>(geometry);
+    return std::holds_alternative<PlaneGeometry>(geometry) ||
+           std::holds_alternative<DiscGeometry>(geometry) ||
+           std::holds_alternative<QuadGeometry>(geometry) ||
+           std::holds_alternative<TriangleGeometry>(geometry) ||
+           std::holds_alternative<MeshTriangleGeometry>(geometry) ||
+           std::holds_alternative<PolygonGeometry>(geometry);
 }
 
 bool hasCheapCrossings(const Geometry& geometry) {
@@ -93,6 +96,8 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape) {
                 return Geometry(QuadGeometry(s));
             else if constexpr (std::is_same_v<S, scene::TriangleShape>)
                 return Geometry(TriangleGeometry(s));
+            else if constexpr (std::is_same_v<S, scene::PolygonShape>)
+                return Geometry(PolygonGeometry(s));
             else if constexpr (std::is_same_v<S, scene::SmoothTriangleShape>)
                 return Geometry(MeshTriangleGeometry(meshOfOne(s), 0));
             else if constexpr (std::is_same_v<S, scene::SuperellipsoidShape>)

@@ -7,6 +7,7 @@
 #include "tracer/geometry/disc.hpp"
 #include "tracer/geometry/mesh_triangle.hpp"
 #include "tracer/geometry/plane.hpp"
+#include "tracer/geometry/polygon.hpp"
 #include "tracer/geometry/quad.hpp"
 #include "tracer/geometry/sphere.hpp"
 #include "tracer/geometry/superellipsoid.hpp"
@@ -19,9 +20,10 @@
 namespace crt::tracer {
 
 /// One primitive in its object space.
-using Geometry = std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry,
-                              ConeGeometry, TorusGeometry, DiscGeometry, QuadGeometry,
-                              TriangleGeometry, MeshTriangleGeometry, SuperellipsoidGeometry>;
+using Geometry =
+    std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry, ConeGeometry,
+                 TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshTriangleGeometry,
+                 SuperellipsoidGeometry, PolygonGeometry>;
 
 /// Object-space bounds (Bounds3::everything() for a plane, empty for a degenerate shape).
 Bounds3 geometryBounds(const Geometry& geometry);

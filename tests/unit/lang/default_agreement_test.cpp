@@ -65,6 +65,8 @@ constexpr Usage kUsages[] = {
     {ObjectType::SmoothTriangle,
      "Scene { SmoothTriangle { a -> vec3(0, 0, 0) b -> vec3(1, 0, 0) c -> vec3(0, 0, 1) "
      "na -> vec3(0, 1, 0) nb -> vec3(0, 1, 0) nc -> vec3(0, 1, 0) @ } }"},
+    {ObjectType::Polygon,
+     "Scene { Polygon { points -> [vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 0, 1)] @ } }"},
     {ObjectType::Superellipsoid, "Scene { Superellipsoid { @ } }"},
     {ObjectType::Merge, "Scene { Merge { objects -> [Superellipsoid {}] @ } }"},
     {ObjectType::Inverse, "Scene { Inverse { object -> Superellipsoid {} @ } }"},
@@ -223,7 +225,8 @@ std::string otherValue(const AttributeInfo& attr) {
     case AttrType::MaterialMap:
     case AttrType::MaterialList:
     case AttrType::Solid:
-    case AttrType::SolidList: return ""; // required: no default to differ from
+    case AttrType::SolidList:
+    case AttrType::PointList: return ""; // required: no default to differ from
     }
     return "";
 }

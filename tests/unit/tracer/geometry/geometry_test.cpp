@@ -43,6 +43,44 @@ TEST_CASE(
     CHECK(sp.uv.x == Approx(0.5));
 }
 
+TEST_CASE("geometry: a polygon's loops are read by the even-odd rule") {
+    // A 2×2 square in the x-z plane with a 1×1 hole, written as POV-Ray writes it.
+    scene::PolygonShape s{{{0, 0, 0},
+                           {2, 0, 0},
+                           {2, 0, 2},
+                           {0, 0, 2},
+                           {0, 0, 0},
+                           {0.5, 0, 0.5},
+                           {1.5, 0, 0.5},
+                           {1.5, 0, 1.5},
+                           {0.5, 0, 1.5}}};
+    Geometry g = *makeGeometry(s);
+    CHECK(isFlat(g));
+    CHECK_FALSE(isSolid(g));
+    auto crossings = [&](double x, double z) {
+        CrossingList list;
+        crossLine(g, {{x, 3, z}, {0, -2, 0}}, list);
+        return list.count;
+    };
+    CHECK(crossings(0.25, 0.25) == 1); // the frame
+    CHECK(crossings(1.75, 1.0) == 1);
+    CHECK(crossings(1.0, 1.0) == 0); // the hole
+    CHECK(crossings(2.5, 1.0) == 0); // outside
+    CrossingList list;
+    Ray ray{{0.25, 3, 1.0}, {0, -2, 0}};
+    crossLine(g, ray, list);
+    REQUIRE(list.count == 1);
+    CHECK(list.items[0].t == Approx(1.5));
+    SurfacePoint sp = surfaceAt(g, ray, list.items[0]);
+    // The first loop runs x, then z: by the right-hand rule its normal is −y.
+    CHECK(sp.normal.y == Approx(-1));
+    CHECK(geometryBounds(g).contains(Vec3(2, 0, 2)));
+    // Fewer than three points, or no area, draw nothing.
+    CHECK(geometryBounds(*makeGeometry(scene::PolygonShape{{{0, 0, 0}, {1, 0, 0}}})).empty());
+    CHECK(geometryBounds(*makeGeometry(scene::PolygonShape{{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}}))
+              .empty());
+}
+
 TEST_CASE("geometry: solidity follows the spec") {
     CHECK(isSolid(*makeGeometry(scene::SphereShape{{0, 0, 0}, 1})));
     CHECK(isSolid(*makeGeometry(scene::BoxShape{})));
