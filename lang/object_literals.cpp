@@ -96,7 +96,9 @@ struct ZeroSize {
         return loops.empty() || glm::length(scene::newellNormal(loops.front())) == 0;
     }
     bool operator()(const scene::SmoothTriangleShape& s) const {
-        return glm::length(glm::cross(s.b - s.a, s.c - s.a)) == 0;
+        if (!s.mesh) return true;
+        const auto& p = s.mesh->positions;
+        return glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) == 0;
     }
     bool operator()(const auto&) const { return false; } // planes and meshes
 };
@@ -547,16 +549,11 @@ scene::Shape Interpreter::surfaceShape(ObjectBuilder& b) {
     }
     case ObjectType::Polygon: return polygonShape(b);
     case ObjectType::SmoothTriangle: {
-        scene::SmoothTriangleShape s;
         for (std::string_view normal : {"na", "nb", "nc"})
             b.nonZeroVector(normal, "each corner needs a direction");
-        s.a = b.vec("a", s.a);
-        s.b = b.vec("b", s.b);
-        s.c = b.vec("c", s.c);
-        s.na = b.vec("na", s.na);
-        s.nb = b.vec("nb", s.nb);
-        s.nc = b.vec("nc", s.nc);
-        return s;
+        const glm::dvec3 none(0.0); // all six are required
+        return scene::smoothTriangle(b.vec("a", none), b.vec("b", none), b.vec("c", none),
+                                     b.vec("na", none), b.vec("nb", none), b.vec("nc", none));
     }
     case ObjectType::Mesh:
     default: {

@@ -6,10 +6,12 @@
 
 #include "scene/obj_mesh.hpp"
 
+#include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -227,11 +229,27 @@ struct TriangleShape { glm::dvec3 a{0.0}; glm::dvec3 b{0.0}; glm::dvec3 c{0.0}; 
 struct PolygonShape {
     std::vector<glm::dvec3> points;
 };
-/// A triangle whose shading normal is interpolated from one at each corner.
+/// A triangle whose shading normal is interpolated from one at each corner, kept as the one
+/// triangle of a mesh with vertex normals: so an entity stays as small as the others, and the
+/// renderer draws it as it draws a mesh's triangles. Null: nothing.
 struct SmoothTriangleShape {
-    glm::dvec3 a{0.0}, b{0.0}, c{0.0};
-    glm::dvec3 na{0, 1, 0}, nb{0, 1, 0}, nc{0, 1, 0};
+    std::shared_ptr<const MeshData> mesh;
 };
+/// The smooth triangle with corners a, b, c and normals na, nb, nc, each made unit length
+/// (as POV-Ray does: each corner's direction counts alike whatever its length).
+inline SmoothTriangleShape smoothTriangle(const glm::dvec3& a, const glm::dvec3& b,
+                                          const glm::dvec3& c, const glm::dvec3& na,
+                                          const glm::dvec3& nb, const glm::dvec3& nc) {
+    auto direction = [](const glm::dvec3& n) {
+        const double len = glm::length(n);
+        return len > 0 && std::isfinite(len) ? n / len : n;
+    };
+    auto mesh = std::make_shared<MeshData>();
+    mesh->positions = {a, b, c};
+    mesh->normals = {direction(na), direction(nb), direction(nc)};
+    mesh->triangles = {{{0, 1, 2}, {0, 1, 2}, {-1, -1, -1}}};
+    return {std::move(mesh)};
+}
 /// POV-Ray's superellipsoid in the cube [-1, 1]³: e the exponent across z, n along it.
 struct SuperellipsoidShape {
     double e = 1;
@@ -259,6 +277,9 @@ using Shape =
     std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape, DiscShape,
                  QuadShape, TriangleShape, SmoothTriangleShape, PolygonShape, SuperellipsoidShape,
                  MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
+// One per entity, and a generated scene has millions: a shape with more data keeps it out of
+// line (as a smooth triangle and a polygon do).
+static_assert(sizeof(Shape) <= 80, "keep every shape small");
 
 /// The name of a CSG operation as scripts and the scene JSON spell its result: "Union" …
 inline const char* csgOpName(CsgOp op) {

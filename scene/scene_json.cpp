@@ -101,12 +101,15 @@ struct ShapeJson {
     }
     void operator()(const SmoothTriangleShape& s) {
         out["type"] = "SmoothTriangle";
-        out["a"] = vec(s.a);
-        out["b"] = vec(s.b);
-        out["c"] = vec(s.c);
-        out["na"] = vec(s.na);
-        out["nb"] = vec(s.nb);
-        out["nc"] = vec(s.nc);
+        const MeshData empty{{glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)},
+                             {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)},
+                             {},
+                             {}};
+        const MeshData& m = s.mesh ? *s.mesh : empty;
+        const char* corners[] = {"a", "b", "c"};
+        const char* normals[] = {"na", "nb", "nc"};
+        for (int i = 0; i < 3; ++i) out[corners[i]] = vec(m.positions[i]);
+        for (int i = 0; i < 3; ++i) out[normals[i]] = vec(m.normals[i]);
     }
     void operator()(const SuperellipsoidShape& s) {
         out["type"] = "Superellipsoid";

@@ -55,25 +55,6 @@ bool hasCheapCrossings(const Geometry& geometry) {
            std::holds_alternative<QuadGeometry>(geometry) || std::holds_alternative<TriangleGeometry>(geometry);
 }
 
-namespace {
-
-/// A smooth triangle as the one triangle of a mesh with vertex normals: drawn by the mesh's
-/// code, and no larger than any mesh triangle. The normals are directions: each counts
-/// alike in the interpolation whatever its length (as in POV-Ray).
-std::shared_ptr<const MeshData> meshOfOne(const scene::SmoothTriangleShape& s) {
-    auto direction = [](const Vec3& n) {
-        const double len = glm::length(n);
-        return len > 0 && std::isfinite(len) ? n / len : n;
-    };
-    auto mesh = std::make_shared<MeshData>();
-    mesh->positions = {s.a, s.b, s.c};
-    mesh->normals = {direction(s.na), direction(s.nb), direction(s.nc)};
-    mesh->triangles = {{{0, 1, 2}, {0, 1, 2}, {-1, -1, -1}}};
-    return mesh;
-}
-
-} // namespace
-
 std::optional<Geometry> makeGeometry(const scene::Shape& shape) {
     return std::visit(
         [](const auto& s) -> std::optional<Geometry> {
@@ -99,7 +80,7 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape) {
             else if constexpr (std::is_same_v<S, scene::PolygonShape>)
                 return Geometry(PolygonGeometry(s));
             else if constexpr (std::is_same_v<S, scene::SmoothTriangleShape>)
-                return Geometry(MeshTriangleGeometry(meshOfOne(s), 0));
+                return Geometry(MeshTriangleGeometry(s.mesh, 0));
             else if constexpr (std::is_same_v<S, scene::SuperellipsoidShape>)
                 return Geometry(SuperellipsoidGeometry(s));
             else

@@ -25,7 +25,8 @@ TEST_CASE("geometry: makeGeometry covers the plain shapes only") {
 
 TEST_CASE(
     "geometry: a smooth triangle interpolates its corners' directions, whatever their length") {
-    scene::SmoothTriangleShape s{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, -1}, {3, 0, 0}, {0, 1, 0}};
+    scene::SmoothTriangleShape s =
+        scene::smoothTriangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, -1}, {3, 0, 0}, {0, 1, 0});
     Geometry g = *makeGeometry(s);
     CHECK(isFlat(g));
     CHECK_FALSE(isSolid(g));
