@@ -494,8 +494,8 @@ scene::Shape Interpreter::polygonShape(ObjectBuilder& b) {
             fail(b.where("points"),
                  loops.size() == 1
                      ? fmt::format("a Polygon needs at least 3 points, not {}", loops[i].size())
-                     : fmt::format("loop {} of this Polygon has {} points; a loop needs at least 3",
-                                   i + 1, loops[i].size()));
+                     : fmt::format("loop {} of this Polygon has {} point{}; a loop needs at least 3",
+                                   i + 1, loops[i].size(), loops[i].size() == 1 ? "" : "s"));
         }
     }
     const glm::dvec3 normal = scene::newellNormal(loops.front());
