@@ -74,6 +74,11 @@ SuperellipsoidGeometry::Radius SuperellipsoidGeometry::radiusAt(const Vec3& p) c
                          std::copysign(slopes.z, p.z))};
 }
 
+ValueAndSlope SuperellipsoidGeometry::alongLine(const Vec3& base, const Vec3& dir, double s) const {
+    const Radius r = radiusAt(base + s * dir);
+    return {r.value - 1, glm::dot(r.gradient, dir)};
+}
+
 void SuperellipsoidGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     out.count = 0;
     out.startsInside = false;
@@ -117,10 +122,7 @@ void SuperellipsoidGeometry::crossLine(const Ray& ray, CrossingList& out) const 
         count = pieces * kStarSubdivisions + 1;
     }
 
-    auto at = [&](double s) {
-        const Radius r = radiusAt(base + s * dir);
-        return ValueAndSlope{r.value - 1, glm::dot(r.gradient, dir)};
-    };
+    auto at = [&](double s) { return alongLine(base, dir, s); };
     const double toT = 1 / dirLength;
     ValueAndSlope previous = at(points[0]);
     for (int i = 1; i < count; ++i) {
@@ -133,10 +135,7 @@ void SuperellipsoidGeometry::crossLine(const Ray& ray, CrossingList& out) const 
 void SuperellipsoidGeometry::crossPiece(const Vec3& base, const Vec3& dir, double lo, double hi,
                                         ValueAndSlope atLo, ValueAndSlope atHi, double toT,
                                         double tStart, CrossingList& out) const {
-    auto at = [&](double s) {
-        const Radius r = radiusAt(base + s * dir);
-        return ValueAndSlope{r.value - 1, glm::dot(r.gradient, dir)};
-    };
+    auto at = [&](double s) { return alongLine(base, dir, s); };
     auto add = [&](double s) { out.add(tStart + s * toT, 0); };
     if ((atLo.value < 0) != (atHi.value < 0)) {
         add(bracketedRoot(at, lo, hi, atLo.value < 0));

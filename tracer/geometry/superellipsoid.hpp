@@ -33,6 +33,8 @@ class SuperellipsoidGeometry {
         Vec3 gradient;
     };
     Radius radiusAt(const Vec3& p) const;
+    /// The radius minus 1 at base + s·dir, and its slope along dir.
+    ValueAndSlope alongLine(const Vec3& base, const Vec3& dir, double s) const;
     /// Appends the crossings of q(s) = base + s·dir (dir of unit length) for s in [lo, hi],
     /// where the radius minus 1 is smooth, given its value and slope at both ends.
     void crossPiece(const Vec3& base, const Vec3& dir, double lo, double hi, ValueAndSlope atLo,
