@@ -239,6 +239,7 @@ private:
     scene::Shape solidShape(ObjectBuilder& b);
     scene::Shape surfaceShape(ObjectBuilder& b);
     scene::Shape polygonShape(ObjectBuilder& b);
+    scene::Shape prismShape(ObjectBuilder& b);
     Value buildMaterial(const ObjectBuilder& b);
     Value buildCamera(ObjectBuilder& b);
     Value buildLight(const ObjectBuilder& b);

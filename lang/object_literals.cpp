@@ -1,6 +1,7 @@
 // Object literals and the Settings statement (spec §5): the scene description entries they
 // build from their checked attributes.
 #include "object_builder.hpp"
+#include "scene/curve_outline.hpp"
 #include "scene/polygon_loops.hpp"
 
 #include <cmath>
@@ -91,6 +92,7 @@ struct ZeroSize {
     bool operator()(const scene::TriangleShape& s) const {
         return glm::length(glm::cross(s.b - s.a, s.c - s.a)) == 0;
     }
+    bool operator()(const scene::PrismShape& s) const { return s.from == s.to; }
     bool operator()(const scene::PolygonShape& s) const {
         const auto loops = scene::polygonLoops(s.points);
         return loops.empty() || glm::length(scene::newellNormal(loops.front())) == 0;
@@ -468,6 +470,7 @@ scene::Shape Interpreter::solidShape(ObjectBuilder& b) {
         s.n = b.number("n", s.n);
         return s;
     }
+    case ObjectType::Prism: return prismShape(b);
     case ObjectType::Torus:
     default: {
         scene::TorusShape s;
@@ -481,6 +484,56 @@ scene::Shape Interpreter::solidShape(ObjectBuilder& b) {
         return s;
     }
     }
+}
+
+/// The outline of a Prism: points in the x-z plane, as many as its spline needs, and every
+/// loop closed.
+scene::Shape Interpreter::prismShape(ObjectBuilder& b) {
+    scene::PrismShape s;
+    const std::vector<Value>& points = *b.get("points")->list;
+    for (size_t i = 0; i < points.size(); ++i) {
+        const double y = points[i].v[1];
+        if (y != 0) {
+            fail(b.whereItem("points", i),
+                 fmt::format("a Prism's points are its outline in the x-z plane: point {} has "
+                             "y = {:g}, not 0",
+                             i + 1, y));
+        }
+        s.points.push_back({points[i].v[0], points[i].v[2]});
+    }
+    const std::string spline = b.lowerText("spline");
+    for (size_t i = 0; i < std::size(scene::kSplineKindNames); ++i)
+        if (spline == scene::kSplineKindNames[i]) s.spline = static_cast<scene::SplineKind>(i);
+    s.conic = b.lowerText("sweep") == "conic";
+    s.from = b.number("from", s.from);
+    s.to = b.number("to", s.to);
+    s.open = b.flag("open", s.open);
+    const std::string_view kind = scene::kSplineKindNames[static_cast<int>(s.spline)];
+    const size_t least = scene::minimumPoints(s.spline);
+    if (s.points.size() < least) {
+        fail(b.where("points"),
+             fmt::format("a Prism with a {} spline needs at least {} points, not {}", kind, least,
+                         s.points.size()));
+    }
+    if (s.spline == scene::SplineKind::Bezier && s.points.size() % 4 != 0) {
+        fail(b.where("points"),
+             fmt::format("a Prism with a bezier spline takes 4 points a segment: {} is not a "
+                         "multiple of 4",
+                         s.points.size()));
+    }
+    const std::ptrdiff_t unclosed = scene::curveLoops(s.points, s.spline).unclosedFrom;
+    if (unclosed >= 0) {
+        const bool control =
+            s.spline == scene::SplineKind::Quadratic || s.spline == scene::SplineKind::Cubic;
+        fail(b.whereItem("points", static_cast<size_t>(unclosed)),
+             fmt::format(
+                 "the outline of this Prism does not close: the loop from point {} never "
+                 "comes back to {}",
+                 unclosed + 1,
+                 control ? fmt::format("point {}, its first after the control point", unclosed + 2)
+                         : "its first point"));
+    }
+    return s;
 }
 
 /// The points of a Polygon: at least three, each loop of at least three, all in the plane of

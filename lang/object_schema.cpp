@@ -199,6 +199,22 @@ constexpr AttributeInfo kCone[] = {
     {"open", A::Bool, false, "false", "No caps."},
     CRT_MATERIAL_ATTR,
 };
+constexpr std::string_view kSweepChoices[] = {"linear", "conic"};
+constexpr AttributeInfo kPrism[] = {
+    {"points", A::PointList, true, "",
+     "The outline, as POV-Ray's prism reads it, in the x-z plane (each y 0); a loop closes where "
+     "its first point on the curve comes again, and loops inside loops are holes."},
+    {"from", A::Float, false, "0", "Height of the bottom face."},
+    {"to", A::Float, false, "1", "Height of the top face."},
+    {"spline", A::Choice, false, "\"linear\"",
+     "How the points make the outline: linear, quadratic, cubic or bezier.",
+     scene::kSplineKindNames},
+    {"sweep", A::Choice, false, "\"linear\"",
+     "linear (straight up) or conic (scaled with the height, from a point at the origin).",
+     kSweepChoices},
+    {"open", A::Bool, false, "false", "No end faces."},
+    CRT_MATERIAL_ATTR,
+};
 constexpr AttributeInfo kTorus[] = {
     {"center", A::Vec3, true, "", "Centre."},
     {"major", A::Float, true, "", "Radius of the ring."},
@@ -415,6 +431,8 @@ constexpr ObjectInfo kObjects[] = {
      "POV-Ray's superellipsoid in the cube from -1 to 1 (solid): a sphere, a rounded box, a "
      "cylinder or a star; move and size it with modifiers.",
      kSuperellipsoid},
+    {T::Prism, "Prism", C::Entity, true,
+     "An outline swept along y, straight or to a point (POV-Ray's prism; solid).", kPrism},
     {T::Merge, "Merge", C::Entity, true,
      "A union of solids without the surfaces inside it (POV-Ray's merge): for glass and "
      "anything seen through.",

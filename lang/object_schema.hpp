@@ -29,6 +29,7 @@ enum class ObjectType : uint8_t {
     Cone,
     Torus,
     Superellipsoid,
+    Prism,
     Merge,
     Inverse,
     Disc,

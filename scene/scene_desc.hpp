@@ -4,6 +4,7 @@
 // (empty) scene. Indices refer to the vectors of SceneDesc; -1 means "none".
 #pragma once
 
+#include "scene/curve_outline.hpp"
 #include "scene/obj_mesh.hpp"
 
 #include <glm/geometric.hpp>
@@ -255,6 +256,17 @@ struct SuperellipsoidShape {
     double e = 1;
     double n = 1;
 };
+/// POV-Ray's prism: an outline in the x-z plane (scene/curve_outline.hpp, holes by the
+/// even-odd rule) swept along y from `from` to `to`; a conic sweep scales it with y, from the
+/// apex at the origin (the outline is its section at y = 1). Open: without the end faces.
+struct PrismShape {
+    std::vector<glm::dvec2> points; ///< x and z
+    double from = 0;
+    double to = 1;
+    SplineKind spline = SplineKind::Linear;
+    bool conic = false;
+    bool open = false;
+};
 struct MeshShape {
     std::string file;         ///< as written in the script
     std::string resolvedFile; ///< the path found on disk, or "" if not found
@@ -276,7 +288,7 @@ struct GroupNode { std::vector<int32_t> members; };
 using Shape =
     std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape, DiscShape,
                  QuadShape, TriangleShape, SmoothTriangleShape, PolygonShape, SuperellipsoidShape,
-                 MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
+                 PrismShape, MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
 // One per entity, and a generated scene has millions: a shape with more data keeps it out of
 // line (as a smooth triangle and a polygon do).
 static_assert(sizeof(Shape) <= 80, "keep every shape small");

@@ -116,6 +116,17 @@ struct ShapeJson {
         out["e"] = s.e;
         out["n"] = s.n;
     }
+    void operator()(const PrismShape& s) {
+        out["type"] = "Prism";
+        Json points = Json::array();
+        for (const glm::dvec2& p : s.points) points.push_back(Json::array({p.x, p.y}));
+        out["points"] = std::move(points);
+        out["from"] = s.from;
+        out["to"] = s.to;
+        out["spline"] = kSplineKindNames[static_cast<int>(s.spline)];
+        out["sweep"] = s.conic ? "conic" : "linear";
+        out["open"] = s.open;
+    }
     void operator()(const MeshShape& s) {
         out["type"] = "Mesh";
         out["file"] = s.file;

@@ -59,8 +59,8 @@ bool RenderScene::convexSpan(int32_t nodeIndex, const CsgRay& q, RayStats& stats
         if (list.startsInside || (list.count != 0 && list.count != 2)) return false;
         span.empty = list.count == 0;
         if (!span.empty) {
-            span.enter = {list.items[0].t, node.primitive, list.items[0].part, true, false};
-            span.exit = {list.items[1].t, node.primitive, list.items[1].part, false, false};
+            span.enter = {list[0].t, node.primitive, list[0].part, true, false};
+            span.exit = {list[1].t, node.primitive, list[1].part, false, false};
         }
         return true;
     }

@@ -39,7 +39,7 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const CsgRay& q, QueryScratch&
         bool inside = list.startsInside;
         for (int i = 0; i < list.count; ++i) {
             inside = !inside;
-            out.push_back({list.items[i].t, node.primitive, list.items[i].part, inside, false});
+            out.push_back({list[i].t, node.primitive, list[i].part, inside, false});
         }
         return list.startsInside;
     }

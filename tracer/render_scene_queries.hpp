@@ -18,7 +18,7 @@ bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, doubl
         ++stats.intersectionTests;
         crossLine(p.geometry, objectRay(p, ray.ray()), list);
         for (int i = 0; i < list.count; ++i) {
-            const Crossing& c = list.items[i];
+            const Crossing& c = list[i];
             if (c.t > 0 && c.t < tMax && !visit(Hit{c.t, object, c, false})) return false;
         }
         return true;

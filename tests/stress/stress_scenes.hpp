@@ -121,6 +121,19 @@ inline scene::SceneDesc primitivesScene(const Placement& at, int width, int heig
     int32_t star = m.entity(scene::SuperellipsoidShape{0.4, 2.6}, mat(0.9, 0.6, 0.3, 0.2));
     m.draw(m.transformed(star, {test::scale(DVec3(0.4)), rotate({20, 30, 0}),
                                 translate({0.3, 0.45, -2.9}), toWorld[0], toWorld[1]}));
+    // A prism with a curved outline and a hole, swept to a point: walls, end faces and the
+    // even-odd rule at every scale.
+    scene::PrismShape prism;
+    prism.spline = scene::SplineKind::Bezier;
+    prism.points = {{0, -1},    {1.2, -1},   {1, 1},       {0, 1},      {0, 1},     {-1, 1},
+                    {-1.2, -1}, {0, -1},     {0, -0.4},    {0.4, -0.4}, {0.4, 0.4}, {0, 0.4},
+                    {0, 0.4},   {-0.4, 0.4}, {-0.4, -0.4}, {0, -0.4}};
+    prism.conic = true;
+    prism.from = 0.5;
+    prism.to = 1.5;
+    int32_t drop = m.entity(prism, mat(0.5, 0.8, 0.4, 0.2));
+    m.draw(m.transformed(drop, {test::scale(DVec3(0.3)), rotate({-30, 20, 0}),
+                                translate({-0.9, 0.2, -2.6}), toWorld[0], toWorld[1]}));
     int32_t block = m.box(at.at({0.8, 0, -1.8}), at.at({1.6, 0.8, -1.0}), mat(0.8, 0.8, 0.8));
     int32_t dent = m.sphere(at.at({1.2, 0.8, -1.4}), s * 0.45, mat(0.9, 0.3, 0.3));
     m.draw(m.csg(scene::CsgOp::Difference, block, dent));

@@ -81,6 +81,8 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape) {
                 return Geometry(PolygonGeometry(s));
             else if constexpr (std::is_same_v<S, scene::SmoothTriangleShape>)
                 return Geometry(MeshTriangleGeometry(s.mesh, 0));
+            else if constexpr (std::is_same_v<S, scene::PrismShape>)
+                return Geometry(PrismGeometry(s));
             else if constexpr (std::is_same_v<S, scene::SuperellipsoidShape>)
                 return Geometry(SuperellipsoidGeometry(s));
             else
@@ -91,7 +93,7 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape) {
 
 bool firstCrossingAfter(const CrossingList& crossings, double tMin, double tMax, Crossing& out) {
     for (int i = 0; i < crossings.count; ++i) {
-        const Crossing& c = crossings.items[i];
+        const Crossing& c = crossings[i];
         if (c.t >= tMax) return false;
         if (c.t > tMin) {
             out = c;

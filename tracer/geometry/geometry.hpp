@@ -8,6 +8,7 @@
 #include "tracer/geometry/mesh_triangle.hpp"
 #include "tracer/geometry/plane.hpp"
 #include "tracer/geometry/polygon.hpp"
+#include "tracer/geometry/prism.hpp"
 #include "tracer/geometry/quad.hpp"
 #include "tracer/geometry/sphere.hpp"
 #include "tracer/geometry/superellipsoid.hpp"
@@ -23,7 +24,7 @@ namespace crt::tracer {
 using Geometry =
     std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry, ConeGeometry,
                  TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshTriangleGeometry,
-                 SuperellipsoidGeometry, PolygonGeometry>;
+                 SuperellipsoidGeometry, PolygonGeometry, PrismGeometry>;
 
 /// Object-space bounds (Bounds3::everything() for a plane, empty for a degenerate shape).
 Bounds3 geometryBounds(const Geometry& geometry);

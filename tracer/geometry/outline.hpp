@@ -1,6 +1,8 @@
-// Closed outlines of straight edges in a plane, and which points they enclose.
+// Closed outlines in a plane, of straight edges or curve segments, and which points they
+// enclose.
 #pragma once
 
+#include "scene/curve_outline.hpp"
 #include "tracer/geometry/ray.hpp"
 
 #include <vector>
@@ -12,8 +14,11 @@ namespace crt::tracer {
 /// rule for polygons and prisms).
 class Outline {
   public:
-    /// Each loop's last point joins its first; loops of fewer than 3 points enclose nothing.
+    /// Straight edges: each loop's last point joins its first; loops of fewer than 3 points
+    /// enclose nothing.
     explicit Outline(const std::vector<std::vector<Vec2>>& loops);
+    /// Curve segments, each loop closed (scene::curveLoops).
+    explicit Outline(const std::vector<std::vector<scene::CurveSegment>>& loops);
 
     bool contains(const Vec2& p) const;
 
@@ -21,7 +26,19 @@ class Outline {
     struct Edge {
         Vec2 a, b;
     };
+    /// A piece of a curve segment along which y only rises or only falls, from a = p(u0)
+    /// to b = p(u1).
+    struct Arc {
+        scene::CurveSegment curve;
+        double u0, u1;
+        Vec2 a, b;
+    };
+    void addCurve(const scene::CurveSegment& s);
+    /// The x where the arc reaches height y, strictly between its ends' heights.
+    static double crossingX(const Arc& arc, double y);
+
     std::vector<Edge> edges_;
+    std::vector<Arc> arcs_;
 };
 
 } // namespace crt::tracer

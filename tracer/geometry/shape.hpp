@@ -10,11 +10,12 @@
 #include "tracer/geometry/bounds.hpp"
 
 #include <cstdint>
+#include <vector>
 
 namespace crt::tracer {
 
 /// One crossing of the line with a surface. `part` tells the shape which face it was
-/// (a box side, a cylinder cap …) so surfaceAt need not redo the search.
+/// (a box side, a cylinder cap, a prism's wall …) so surfaceAt need not redo the search.
 /// (No member initialisers: a CrossingList is made for every intersection test and its
 /// unused slots need not be written.)
 struct Crossing {
@@ -22,19 +23,37 @@ struct Crossing {
     uint32_t part;
 };
 
-/// At most eight crossings: a torus has four, a star-shaped superellipsoid up to six, every
-/// other primitive two or fewer.
-struct CrossingList {
-    static constexpr int kCapacity = 8;
-    Crossing items[kCapacity];
+/// The crossings of one line, ascending. Eight are kept in place (a torus has four, a
+/// star-shaped superellipsoid up to six, most primitives two or fewer); a shape with more,
+/// such as a prism with many walls, spills the rest to the heap.
+class CrossingList {
+  public:
+    static constexpr int kInPlace = 8;
+
     int count = 0;
     /// Whether the line is inside the solid before its first crossing (a half-space can
     /// start inside; bounded solids never do). Each crossing of a solid toggles inside/outside.
     bool startsInside = false;
 
     void add(double t, uint32_t part) {
-        if (count < kCapacity) items[count++] = {t, part};
+        if (count < kInPlace)
+            inPlace_[count] = {t, part};
+        else
+            spill({t, part});
+        ++count;
     }
+    const Crossing& operator[](int i) const {
+        return i < kInPlace ? inPlace_[i] : spilled_[i - kInPlace];
+    }
+    Crossing& operator[](int i) { return i < kInPlace ? inPlace_[i] : spilled_[i - kInPlace]; }
+    /// Sorts the crossings by t, for shapes that find them out of order.
+    void sortByT();
+
+  private:
+    void spill(const Crossing& c);
+
+    Crossing inPlace_[kInPlace];
+    std::vector<Crossing> spilled_;
 };
 
 /// The surface where a crossing happened, in object space.

@@ -10,12 +10,9 @@ namespace crt::crtc::preview {
 
 std::string entityKind(const scene::EntityDesc& entity) {
     static constexpr std::array<const char*, std::variant_size_v<scene::Shape>> kNames{
-        "Sphere",         "Box",     "Plane",
-        "Cylinder",       "Cone",    "Torus",
-        "Disc",           "Quad",    "Triangle",
-        "SmoothTriangle", "Polygon", "Superellipsoid",
-        "Mesh",           "CSG",     "transformed entity",
-        "group",          "inverse"};
+        "Sphere", "Box",  "Plane",    "Cylinder",           "Cone",    "Torus",
+        "Disc",   "Quad", "Triangle", "SmoothTriangle",     "Polygon", "Superellipsoid",
+        "Prism",  "Mesh", "CSG",      "transformed entity", "group",   "inverse"};
     if (auto* csg = std::get_if<scene::CsgNode>(&entity.shape)) {
         switch (csg->op) {
         case scene::CsgOp::Union: return "union";

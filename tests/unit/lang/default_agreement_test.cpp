@@ -68,6 +68,9 @@ constexpr Usage kUsages[] = {
     {ObjectType::Polygon,
      "Scene { Polygon { points -> [vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 0, 1)] @ } }"},
     {ObjectType::Superellipsoid, "Scene { Superellipsoid { @ } }"},
+    {ObjectType::Prism,
+     "Scene { Prism { points -> [vec3(0, 0, 1), vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 0, 1), "
+     "vec3(0, 0, 0)] @ } }"},
     {ObjectType::Merge, "Scene { Merge { objects -> [Superellipsoid {}] @ } }"},
     {ObjectType::Inverse, "Scene { Inverse { object -> Superellipsoid {} @ } }"},
     {ObjectType::Disc,

@@ -41,25 +41,25 @@ TEST_CASE("box: a line through the middle crosses the faces it meets") {
     g.crossLine(ray, list);
     REQUIRE(list.count == 2);
     CHECK_FALSE(list.startsInside);
-    CHECK(list.items[0].t == 4);
-    CHECK(list.items[0].part == 0);
-    CHECK(list.items[1].t == 6);
-    CHECK(list.items[1].part == 1);
-    SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+    CHECK(list[0].t == 4);
+    CHECK(list[0].part == 0);
+    CHECK(list[1].t == 6);
+    CHECK(list[1].part == 1);
+    SurfacePoint sp = g.surfaceAt(ray, list[0]);
     CHECK(sp.point == Vec3(-1, 0, 0));
     CHECK(sp.normal == Vec3(-1, 0, 0));
     CHECK(sp.pointError.x == 0);
     CHECK(sp.uv == Vec2(0.5, 0.5));
-    sp = g.surfaceAt(ray, list.items[1]);
+    sp = g.surfaceAt(ray, list[1]);
     CHECK(sp.normal == Vec3(1, 0, 0));
 
     g.crossLine({{0.5, 0.25, 9}, {0, 0, -2}}, list); // from +z, non-unit direction
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == 4);
-    CHECK(list.items[0].part == 5);
-    CHECK(list.items[1].t == 5);
-    CHECK(list.items[1].part == 4);
-    sp = g.surfaceAt({{0.5, 0.25, 9}, {0, 0, -2}}, list.items[0]);
+    CHECK(list[0].t == 4);
+    CHECK(list[0].part == 5);
+    CHECK(list[1].t == 5);
+    CHECK(list[1].part == 4);
+    sp = g.surfaceAt({{0.5, 0.25, 9}, {0, 0, -2}}, list[0]);
     CHECK(sp.uv.x == 0.75);  // face z: u along x
     CHECK(sp.uv.y == 0.625); // v along y
 }
@@ -69,14 +69,14 @@ TEST_CASE("box: from inside and past the box") {
     CrossingList list;
     g.crossLine({{1, 1, 1}, {0, 1, 0}}, list);
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == -1);
-    CHECK(list.items[1].t == 3);
+    CHECK(list[0].t == -1);
+    CHECK(list[1].t == 3);
     Crossing c{};
     REQUIRE(firstCrossingAfter(list, 0, kInfinity, c));
     CHECK(c.part == 3);
     g.crossLine({{1, 10, 1}, {0, 1, 0}}, list);
     REQUIRE(list.count == 2);
-    CHECK(list.items[1].t == -6);
+    CHECK(list[1].t == -6);
     CHECK_FALSE(firstCrossingAfter(list, 0, kInfinity, c));
 }
 
@@ -122,14 +122,14 @@ TEST_CASE("box: random lines alternate, and hits are bounded and on their face")
         checkAlternates(
             list, ray, [&](const LVec& p) { return insideBox(s, p); }, true);
         for (int k = 0; k < 2; ++k) {
-            SurfacePoint sp = g.surfaceAt(ray, list.items[k]);
-            int axis = int(list.items[k].part / 2);
+            SurfacePoint sp = g.surfaceAt(ray, list[k]);
+            int axis = int(list[k].part / 2);
             CHECK(std::abs(sp.normal[axis]) == 1);
             CHECK(glm::dot(sp.normal, ray.dir) * (k == 0 ? -1 : 1) >= 0);
             CHECK(g.bounds().contains(sp.point));
             CHECK((sp.uv.x >= 0 && sp.uv.x <= 1 && sp.uv.y >= 0 && sp.uv.y <= 1));
             if (std::abs(ray.dir[axis]) < 0.05 * glm::length(ray.dir)) continue;
-            checkBoundContainsExact(sp, ray, boxFaceFn(s, list.items[k].part), list.items[k].t);
+            checkBoundContainsExact(sp, ray, boxFaceFn(s, list[k].part), list[k].t);
         }
     }
 }
@@ -144,19 +144,19 @@ TEST_CASE("plane: one crossing, and the half-space behind the normal is inside")
     g.crossLine(down, list);
     REQUIRE(list.count == 1);
     CHECK_FALSE(list.startsInside);
-    CHECK(list.items[0].t == 2);
-    SurfacePoint sp = g.surfaceAt(down, list.items[0]);
+    CHECK(list[0].t == 2);
+    SurfacePoint sp = g.surfaceAt(down, list[0]);
     CHECK(sp.point == Vec3(0, 1, 0));
     CHECK(sp.normal == Vec3(0, 1, 0));
 
     g.crossLine({{0, -5, 0}, {0, 1, 0}}, list); // from behind
     REQUIRE(list.count == 1);
     CHECK(list.startsInside);
-    CHECK(list.items[0].t == 6);
+    CHECK(list[0].t == 6);
     g.crossLine({{0, 5, 0}, {0, 1, 0}}, list); // moving away: the crossing is behind
     REQUIRE(list.count == 1);
     CHECK(list.startsInside);
-    CHECK(list.items[0].t == -4);
+    CHECK(list[0].t == -4);
 }
 
 TEST_CASE("plane: a parallel line does not cross and is wholly on one side") {
@@ -184,7 +184,7 @@ TEST_CASE("plane: UV are coordinates in the plane, not wrapped") {
         CrossingList list;
         g.crossLine(ray, list);
         if (list.count != 1) continue;
-        SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+        SurfacePoint sp = g.surfaceAt(ray, list[0]);
         CHECK(glm::length(sp.uv) == Approx(glm::length(sp.point - s.position)).epsilon(1e-9));
     }
 }
@@ -209,11 +209,11 @@ TEST_CASE("plane: random lines give bounded hits and consistent sides") {
         checkAlternates(
             list, ray, [&](const LVec& p) { return planeFn(s)(p) <= 0; }, false);
         if (list.count == 0) continue;
-        SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+        SurfacePoint sp = g.surfaceAt(ray, list[0]);
         checkUnit(sp.normal);
         CHECK(glm::dot(sp.normal, s.normal) > 0);
         if (std::abs(glm::dot(sp.normal, ray.dir)) < 0.05 * glm::length(ray.dir)) continue;
-        checkBoundContainsExact(sp, ray, planeFn(s), list.items[0].t);
+        checkBoundContainsExact(sp, ray, planeFn(s), list[0].t);
     }
 }
 
@@ -223,11 +223,11 @@ TEST_CASE("plane: a distant hit keeps an error bound relative to its size") {
     CrossingList list;
     g.crossLine(ray, list);
     REQUIRE(list.count == 1);
-    SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+    SurfacePoint sp = g.surfaceAt(ray, list[0]);
     CHECK(sp.point.y == Approx(-1).margin(1e-9));
     CHECK(sp.pointError.x < 1e-8);
     CHECK(sp.pointError.y < 1e-8);
-    checkBoundContainsExact(sp, ray, planeFn({{0, 1, 0}, {0, -1, 0}}), list.items[0].t);
+    checkBoundContainsExact(sp, ray, planeFn({{0, 1, 0}, {0, -1, 0}}), list[0].t);
 }
 
 // As for the sphere: a line nearly in the plane has an error in t of about 1/|n·d| times the
@@ -242,10 +242,10 @@ TEST_CASE("plane: a grazing hit's bound is its distance from the surface") {
         CrossingList list;
         g.crossLine(ray, list);
         REQUIRE(list.count == 1);
-        SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+        SurfacePoint sp = g.surfaceAt(ray, list[0]);
         INFO("n·d " << glm::dot(sp.normal, dir));
         double offset = glm::dot(absolute(sp.normal), sp.pointError);
         CHECK(offset < errorGamma(64) * (sumAbs(sp.point) + sumAbs(s.position)));
-        checkBoundContainsExact(sp, ray, planeFn(s), list.items[0].t);
+        checkBoundContainsExact(sp, ray, planeFn(s), list[0].t);
     }
 }

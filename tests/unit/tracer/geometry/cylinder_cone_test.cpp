@@ -58,14 +58,14 @@ template <class G> void checkRandomLines(const char* what, uint64_t seed, bool c
             list, ray, [&](const LVec& p) { return exact.inside(p); }, true);
         crossed += list.count > 0;
         for (int k = 0; k < list.count; ++k) {
-            SurfacePoint sp = g.surfaceAt(ray, list.items[k]);
+            SurfacePoint sp = g.surfaceAt(ray, list[k]);
             checkUnit(sp.normal);
             CHECK(glm::dot(sp.normal, ray.dir) * (k == 0 ? -1 : 1) >=
                   -1e-12 * glm::length(ray.dir));
             CHECK(g.bounds().contains(sp.point));
             CHECK((sp.uv.x >= 0 && sp.uv.x < 1 && sp.uv.y >= 0 && sp.uv.y <= 1));
             if (std::abs(glm::dot(sp.normal, ray.dir)) < 0.05 * glm::length(ray.dir)) continue;
-            checkBoundContainsExact(sp, ray, exact.surface(list.items[k].part), list.items[k].t);
+            checkBoundContainsExact(sp, ray, exact.surface(list[k].part), list[k].t);
         }
     }
     CHECK(crossed > 1000);
@@ -80,10 +80,10 @@ TEST_CASE("cylinder: side and cap crossings along and across the axis") {
     Ray across{{-5, 1, 0}, {1, 0, 0}};
     g.crossLine(across, list);
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == 4);
-    CHECK(list.items[1].t == 6);
-    CHECK(list.items[0].part == 0);
-    SurfacePoint sp = g.surfaceAt(across, list.items[0]);
+    CHECK(list[0].t == 4);
+    CHECK(list[1].t == 6);
+    CHECK(list[0].part == 0);
+    SurfacePoint sp = g.surfaceAt(across, list[0]);
     CHECK(sp.normal.x == Approx(-1));
     CHECK(sp.point.x == Approx(-1));
     CHECK(sp.uv.y == Approx(0.5));
@@ -91,21 +91,21 @@ TEST_CASE("cylinder: side and cap crossings along and across the axis") {
     Ray along{{0.5, -5, 0}, {0, 2, 0}};
     g.crossLine(along, list);
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == 2.5);
-    CHECK(list.items[0].part == 1);
-    CHECK(list.items[1].t == 3.5);
-    CHECK(list.items[1].part == 2);
-    sp = g.surfaceAt(along, list.items[0]);
+    CHECK(list[0].t == 2.5);
+    CHECK(list[0].part == 1);
+    CHECK(list[1].t == 3.5);
+    CHECK(list[1].part == 2);
+    sp = g.surfaceAt(along, list[0]);
     CHECK(sp.normal == Vec3(0, -1, 0));
     CHECK(sp.point.y == 0);
     CHECK(sp.uv.y == Approx(0.5)); // half the radius out
-    sp = g.surfaceAt(along, list.items[1]);
+    sp = g.surfaceAt(along, list[1]);
     CHECK(sp.normal == Vec3(0, 1, 0));
 
     g.crossLine({{0, 1, 0}, {0, 0, 1}}, list); // from inside
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == Approx(-1));
-    CHECK(list.items[1].t == Approx(1));
+    CHECK(list[0].t == Approx(-1));
+    CHECK(list[1].t == Approx(1));
     g.crossLine({{0, 3, -5}, {0, 0, 1}}, list); // above the top, parallel to the caps
     CHECK(list.count == 0);
     g.crossLine({{2, -5, 0}, {0, 1, 0}}, list); // parallel to the axis, outside
@@ -139,13 +139,13 @@ TEST_CASE("cylinder: open ones report only side hits and are not solid") {
     CrossingList list;
     g.crossLine({{-5, 1, 0}, {1, 0, 0}}, list);
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].part == 0);
-    CHECK(list.items[1].part == 0);
+    CHECK(list[0].part == 0);
+    CHECK(list[1].part == 0);
     g.crossLine({{0.5, -5, 0}, {0, 1, 0}}, list); // in through one open end, out the other
     CHECK(list.count == 0);
     g.crossLine({{0, -1, 0}, {1, 2, 0}}, list); // in through the bottom, out through the side
     REQUIRE(list.count == 1);
-    CHECK(list.items[0].t == Approx(1));
+    CHECK(list[0].t == Approx(1));
     CHECK_FALSE(list.startsInside);
 }
 
@@ -172,15 +172,15 @@ TEST_CASE("cone: an apex, the caps and the side") {
     Ray axis{{0, 0, -1}, {0, 0, 1}};
     g.crossLine(axis, list);
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == 1);
-    CHECK(list.items[0].part == 1);
-    CHECK(list.items[1].t == Approx(3));
+    CHECK(list[0].t == 1);
+    CHECK(list[0].part == 1);
+    CHECK(list[1].t == Approx(3));
     Ray across{{-5, 0, 1}, {1, 0, 0}}; // half way up: radius 0.5
     g.crossLine(across, list);
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == Approx(4.5));
-    CHECK(list.items[1].t == Approx(5.5));
-    SurfacePoint sp = g.surfaceAt(across, list.items[0]);
+    CHECK(list[0].t == Approx(4.5));
+    CHECK(list[1].t == Approx(5.5));
+    SurfacePoint sp = g.surfaceAt(across, list[0]);
     CHECK(sp.normal.x == Approx(-2 / std::sqrt(5.0)));
     CHECK(sp.normal.z == Approx(1 / std::sqrt(5.0)));
     CHECK(sp.uv.y == Approx(0.5));
@@ -196,10 +196,10 @@ TEST_CASE("cone: the top may be wider than the base, and open cones have no caps
     CrossingList list;
     wide.crossLine({{-5, 2, 0}, {1, 0, 0}}, list); // in the top cap's plane: radius 1.5
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == Approx(3.5));
+    CHECK(list[0].t == Approx(3.5));
     wide.crossLine({{-5, 0.5, 0}, {1, 0, 0}}, list);
     REQUIRE(list.count == 2);
-    SurfacePoint sp = wide.surfaceAt({{-5, 0.5, 0}, {1, 0, 0}}, list.items[0]);
+    SurfacePoint sp = wide.surfaceAt({{-5, 0.5, 0}, {1, 0, 0}}, list[0]);
     CHECK(sp.normal.y < 0); // the side faces down when it widens upward
     ConeGeometry open({{0, 0, 0}, 0.5, {0, 2, 0}, 1.5, true});
     CHECK_FALSE(open.solid());
@@ -207,8 +207,8 @@ TEST_CASE("cone: the top may be wider than the base, and open cones have no caps
     CHECK(list.count == 0);
     open.crossLine({{0, 1, 0}, {1, 0, 0}}, list);
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == Approx(-1));
-    CHECK(list.items[1].t == Approx(1));
+    CHECK(list[0].t == Approx(-1));
+    CHECK(list[1].t == Approx(1));
 }
 
 TEST_CASE("cone: zero radii draw nothing") {
@@ -235,9 +235,9 @@ TEST_CASE("cylinder: a far origin keeps the crossings accurate") {
         g.crossLine(ray, list);
         REQUIRE(list.count == 2);
         for (int k = 0; k < 2; ++k) {
-            SurfacePoint sp = g.surfaceAt(ray, list.items[k]);
+            SurfacePoint sp = g.surfaceAt(ray, list[k]);
             if (std::abs(glm::dot(sp.normal, ray.dir)) < 0.05 * glm::length(ray.dir)) continue;
-            checkBoundContainsExact(sp, ray, exact.surface(list.items[k].part), list.items[k].t);
+            checkBoundContainsExact(sp, ray, exact.surface(list[k].part), list[k].t);
             CHECK(glm::length(sp.pointError) < 1e-9);
         }
     }

@@ -34,7 +34,7 @@ TEST_CASE(
     CrossingList list;
     crossLine(g, ray, list);
     REQUIRE(list.count == 1);
-    SurfacePoint sp = surfaceAt(g, ray, list.items[0]);
+    SurfacePoint sp = surfaceAt(g, ray, list[0]);
     // Barycentric weights 0.25, 0.5, 0.25 of the unit corner normals.
     const Vec3 expected = glm::normalize(Vec3(0.5, 0.25, -0.25));
     CHECK(sp.shadingNormal.x == Approx(expected.x));
@@ -71,8 +71,8 @@ TEST_CASE("geometry: a polygon's loops are read by the even-odd rule") {
     Ray ray{{0.25, 3, 1.0}, {0, -2, 0}};
     crossLine(g, ray, list);
     REQUIRE(list.count == 1);
-    CHECK(list.items[0].t == Approx(1.5));
-    SurfacePoint sp = surfaceAt(g, ray, list.items[0]);
+    CHECK(list[0].t == Approx(1.5));
+    SurfacePoint sp = surfaceAt(g, ray, list[0]);
     // The first loop runs x, then z: by the right-hand rule its normal is −y.
     CHECK(sp.normal.y == Approx(-1));
     CHECK(geometryBounds(g).contains(Vec3(2, 0, 2)));
@@ -110,7 +110,7 @@ TEST_CASE("geometry: the free functions dispatch to the primitive") {
     list.count = 3; // stale contents are replaced
     crossLine(g, ray, list);
     REQUIRE(list.count == 2);
-    SurfacePoint sp = surfaceAt(g, ray, list.items[0]);
+    SurfacePoint sp = surfaceAt(g, ray, list[0]);
     CHECK(sp.point == Vec3(0, 0, -2));
     CHECK(geometryBounds(*makeGeometry(scene::PlaneShape{})).lo.y == -kInfinity);
     CHECK(geometryBounds(*makeGeometry(scene::TorusShape{{0, 0, 0}, 2, 0.5, {0, 1, 0}})).hi.y ==
@@ -164,7 +164,7 @@ TEST_CASE("geometry: every primitive's bounds contain its random hits") {
             for (int k = 0; k < list.count; ++k) {
                 ++hits;
                 // The exact surface is inside the bounds, so the point is, to its error bound.
-                SurfacePoint sp = surfaceAt(g, ray, list.items[k]);
+                SurfacePoint sp = surfaceAt(g, ray, list[k]);
                 CHECK(Bounds3{b.lo - sp.pointError, b.hi + sp.pointError}.contains(sp.point));
             }
         }

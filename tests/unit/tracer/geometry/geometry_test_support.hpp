@@ -112,7 +112,7 @@ inline void checkUnit(const Vec3& n) {
 }
 
 inline void checkSorted(const CrossingList& list) {
-    for (int i = 1; i < list.count; ++i) CHECK(list.items[i - 1].t <= list.items[i].t);
+    for (int i = 1; i < list.count; ++i) CHECK(list[i - 1].t <= list[i].t);
 }
 
 /// Crossings of a solid alternate with its inside, checked against an exact inside test at
@@ -126,12 +126,12 @@ inline void checkAlternates(const CrossingList& list, const Ray& ray,
     }
     LVec o(ray.origin), d(ray.dir);
     bool in = list.startsInside;
-    double before = list.count > 0 ? list.items[0].t - 1 : 0;
+    double before = list.count > 0 ? list[0].t - 1 : 0;
     CHECK(inside(o + LD(before) * d) == in);
     for (int i = 0; i < list.count; ++i) {
         in = !in;
-        double a = list.items[i].t;
-        double b = i + 1 < list.count ? list.items[i + 1].t : a + 1;
+        double a = list[i].t;
+        double b = i + 1 < list.count ? list[i + 1].t : a + 1;
         if (b - a > 1e-6 * (1 + std::abs(a))) CHECK(inside(o + LD(0.5 * (a + b)) * d) == in);
     }
 }

@@ -188,7 +188,7 @@ TEST_CASE("mesh triangle: interpolated normals and UVs") {
     CrossingList list;
     g.crossLine(ray, list);
     REQUIRE(list.count == 1);
-    SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+    SurfacePoint sp = g.surfaceAt(ray, list[0]);
     CHECK(sp.uv.x == Approx(0.25));
     CHECK(sp.uv.y == Approx(0.25));
     checkUnit(sp.shadingNormal);
@@ -198,7 +198,7 @@ TEST_CASE("mesh triangle: interpolated normals and UVs") {
     CHECK(sp.point == Vec3(0.25, 0.25, 0));
 
     MeshTriangleGeometry plain(mesh, 1); // no normals, no UVs
-    sp = plain.surfaceAt(ray, list.items[0]);
+    sp = plain.surfaceAt(ray, list[0]);
     CHECK(sp.normal == Vec3(0, 0, 1));
     CHECK(sp.shadingNormal == sp.normal);
     CHECK(sp.uv.x == Approx(0.25)); // barycentric

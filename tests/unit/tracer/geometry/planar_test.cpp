@@ -22,14 +22,14 @@ void checkPlanarHit(const G& g, const Ray& ray, const SurfaceFn& plane,
     g.crossLine(ray, list);
     REQUIRE(list.count == 1);
     CHECK_FALSE(list.startsInside);
-    SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+    SurfacePoint sp = g.surfaceAt(ray, list[0]);
     checkUnit(sp.normal);
     CHECK(glm::length(sp.normal - glm::normalize(expectedNormal)) < 1e-12);
     CHECK(sp.shadingNormal == sp.normal);
     CHECK(g.bounds().contains(sp.point));
     CHECK((sp.uv.x >= 0 && sp.uv.x <= 1 && sp.uv.y >= 0 && sp.uv.y <= 1));
     if (std::abs(glm::dot(sp.normal, ray.dir)) < 0.05 * glm::length(ray.dir)) return;
-    checkBoundContainsExact(sp, ray, plane, list.items[0].t);
+    checkBoundContainsExact(sp, ray, plane, list[0].t);
 }
 
 } // namespace
@@ -41,8 +41,8 @@ TEST_CASE("disc: hits inside, misses outside and in the hole") {
     Ray down{{1, 5, 0}, {0, -2, 0}};
     g.crossLine(down, list);
     REQUIRE(list.count == 1);
-    CHECK(list.items[0].t == 2);
-    SurfacePoint sp = g.surfaceAt(down, list.items[0]);
+    CHECK(list[0].t == 2);
+    SurfacePoint sp = g.surfaceAt(down, list[0]);
     CHECK(sp.point == Vec3(1, 1, 0));
     CHECK(sp.normal == Vec3(0, 1, 0));
     CHECK(sp.uv.y == 0.5);
@@ -55,7 +55,7 @@ TEST_CASE("disc: hits inside, misses outside and in the hole") {
     REQUIRE(list.count == 1);
     g.crossLine({{1, 5, 0}, {0, 1, 0}}, list); // moving away: the crossing is behind
     REQUIRE(list.count == 1);
-    CHECK(list.items[0].t == -4);
+    CHECK(list[0].t == -4);
     g.crossLine({{-5, 1, 0}, {1, 0, 0}}, list); // in its plane: parallel
     CHECK(list.count == 0);
 }
@@ -89,8 +89,8 @@ TEST_CASE("quad: the parallelogram's inside, edges and UV") {
     Ray down{{1.5, 3, -0.5}, {0, -1, 0}};
     g.crossLine(down, list);
     REQUIRE(list.count == 1);
-    CHECK(list.items[0].t == 3);
-    SurfacePoint sp = g.surfaceAt(down, list.items[0]);
+    CHECK(list[0].t == 3);
+    SurfacePoint sp = g.surfaceAt(down, list[0]);
     CHECK(sp.normal == Vec3(0, 1, 0));
     CHECK(sp.uv.x == Approx(0.5));
     CHECK(sp.uv.y == Approx(0.5));
@@ -126,13 +126,13 @@ TEST_CASE("triangle: right-hand normal, barycentric UV, misses and parallel line
     Ray ray{{0.25, 0.5, 2}, {0, 0, -4}};
     g.crossLine(ray, list);
     REQUIRE(list.count == 1);
-    CHECK(list.items[0].t == 0.5);
-    SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+    CHECK(list[0].t == 0.5);
+    SurfacePoint sp = g.surfaceAt(ray, list[0]);
     CHECK(sp.normal == Vec3(0, 0, 1));
     CHECK(sp.point == Vec3(0.25, 0.5, 0));
     CHECK(sp.uv.x == Approx(0.25));
     CHECK(sp.uv.y == Approx(0.5));
-    Vec3 b = g.barycentrics(ray, list.items[0]);
+    Vec3 b = g.barycentrics(ray, list[0]);
     CHECK(b.x == Approx(0.25));
     g.crossLine({{0.6, 0.6, 2}, {0, 0, -1}}, list); // beyond the hypotenuse
     CHECK(list.count == 0);
@@ -140,7 +140,7 @@ TEST_CASE("triangle: right-hand normal, barycentric UV, misses and parallel line
     CHECK(list.count == 1);
     g.crossLine({{0.25, 0.25, 2}, {0, 0, 1}}, list); // moving away
     REQUIRE(list.count == 1);
-    CHECK(list.items[0].t == -2);
+    CHECK(list[0].t == -2);
     g.crossLine({{-1, 0.25, 0}, {1, 0, 0}}, list); // in its plane
     CHECK(list.count == 0);
     g.crossLine({{-1, 0.25, 1}, {1, 0, 0}}, list); // parallel above
@@ -190,7 +190,7 @@ TEST_CASE("triangle: random lines") {
         checkPlanarHit(g, ray, planeThrough(s.a, n), n);
         CrossingList list;
         g.crossLine(ray, list);
-        SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+        SurfacePoint sp = g.surfaceAt(ray, list[0]);
         CHECK(sp.uv.x == Approx(u).margin(1e-9));
         CHECK(sp.uv.y == Approx(v).margin(1e-9));
     }

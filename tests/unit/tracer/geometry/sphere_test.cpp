@@ -19,9 +19,9 @@ TEST_CASE("sphere: a line from outside enters and leaves") {
     g.crossLine({{0, 0, -5}, {0, 0, 1}}, list);
     REQUIRE(list.count == 2);
     CHECK_FALSE(list.startsInside);
-    CHECK(list.items[0].t == 4);
-    CHECK(list.items[1].t == 6);
-    SurfacePoint sp = g.surfaceAt({{0, 0, -5}, {0, 0, 1}}, list.items[0]);
+    CHECK(list[0].t == 4);
+    CHECK(list[1].t == 6);
+    SurfacePoint sp = g.surfaceAt({{0, 0, -5}, {0, 0, 1}}, list[0]);
     CHECK(sp.point == Vec3(0, 0, -1));
     CHECK(sp.normal == Vec3(0, 0, -1));
     CHECK(sp.shadingNormal == sp.normal);
@@ -35,8 +35,8 @@ TEST_CASE("sphere: from inside the line still reports the crossing behind") {
     Ray ray{{1, 2, 3}, {1, 0, 0}};
     g.crossLine(ray, list);
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == -2);
-    CHECK(list.items[1].t == 2);
+    CHECK(list[0].t == -2);
+    CHECK(list[1].t == 2);
     Crossing c{};
     REQUIRE(firstCrossingAfter(list, 0, kInfinity, c));
     CHECK(c.t == 2);
@@ -50,8 +50,8 @@ TEST_CASE("sphere: origin past the sphere gives only negative crossings") {
     CrossingList list;
     g.crossLine({{0, 0, 5}, {0, 0, 1}}, list);
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == -6);
-    CHECK(list.items[1].t == -4);
+    CHECK(list[0].t == -6);
+    CHECK(list[1].t == -4);
     Crossing c{};
     CHECK_FALSE(firstCrossingAfter(list, 0, kInfinity, c));
 }
@@ -61,8 +61,8 @@ TEST_CASE("sphere: a non-unit direction keeps t in ray units") {
     CrossingList list;
     g.crossLine({{0, 0, -5}, {0, 0, 2}}, list);
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == 2);
-    CHECK(list.items[1].t == 3);
+    CHECK(list[0].t == 2);
+    CHECK(list[1].t == 3);
 }
 
 TEST_CASE("sphere: tangent and grazing lines give zero or two crossings") {
@@ -70,12 +70,12 @@ TEST_CASE("sphere: tangent and grazing lines give zero or two crossings") {
     CrossingList list;
     g.crossLine({{1, 0, -5}, {0, 0, 1}}, list);
     CHECK((list.count == 0 || list.count == 2));
-    if (list.count == 2) CHECK(list.items[0].t == Approx(list.items[1].t).margin(1e-6));
+    if (list.count == 2) CHECK(list[0].t == Approx(list[1].t).margin(1e-6));
     g.crossLine({{1 + 1e-12, 0, -5}, {0, 0, 1}}, list);
     CHECK(list.count == 0);
     g.crossLine({{1 - 1e-12, 0, -5}, {0, 0, 1}}, list);
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t < list.items[1].t);
+    CHECK(list[0].t < list[1].t);
     // Lines at all angles skimming the surface: never an odd count.
     Random rng(7);
     for (int i = 0; i < 2000; ++i) {
@@ -112,7 +112,7 @@ TEST_CASE("sphere: random lines have bounded, outward, on-surface hits") {
         checkAlternates(
             list, ray, [&](const LVec& p) { return sphereFn(s)(p) < 0; }, true);
         for (int k = 0; k < list.count; ++k) {
-            SurfacePoint sp = g.surfaceAt(ray, list.items[k]);
+            SurfacePoint sp = g.surfaceAt(ray, list[k]);
             checkUnit(sp.normal);
             CHECK(glm::dot(sp.normal, sp.point - s.center) > 0);
             CHECK(glm::dot(sp.normal, ray.dir) * (k == 0 ? -1 : 1) >=
@@ -120,7 +120,7 @@ TEST_CASE("sphere: random lines have bounded, outward, on-surface hits") {
             CHECK(g.bounds().contains(sp.point));
             CHECK((sp.uv.x >= 0 && sp.uv.x < 1 && sp.uv.y >= 0 && sp.uv.y <= 1));
             if (std::abs(glm::dot(sp.normal, ray.dir)) < 0.05 * glm::length(ray.dir)) continue;
-            checkBoundContainsExact(sp, ray, sphereFn(s), list.items[k].t);
+            checkBoundContainsExact(sp, ray, sphereFn(s), list[k].t);
         }
     }
 }
@@ -135,8 +135,8 @@ TEST_CASE("sphere: a far origin keeps the crossings accurate") {
         g.crossLine(ray, list);
         REQUIRE(list.count == 2);
         for (int k = 0; k < 2; ++k) {
-            SurfacePoint sp = g.surfaceAt(ray, list.items[k]);
-            checkBoundContainsExact(sp, ray, sphereFn(s), list.items[k].t);
+            SurfacePoint sp = g.surfaceAt(ray, list[k]);
+            checkBoundContainsExact(sp, ray, sphereFn(s), list[k].t);
             CHECK(std::abs(glm::length(sp.point - s.center) - 0.5) < 1e-15 * 8);
         }
     }
@@ -158,10 +158,10 @@ TEST_CASE("sphere: a grazing hit's bound is its distance from the surface") {
         CrossingList list;
         g.crossLine(ray, list);
         REQUIRE(list.count == 2);
-        SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+        SurfacePoint sp = g.surfaceAt(ray, list[0]);
         INFO("n·d " << glm::dot(sp.normal, dir));
         double offset = glm::dot(absolute(sp.normal), sp.pointError);
         CHECK(offset < errorGamma(64) * (sumAbs(sp.point) + s.radius));
-        checkBoundContainsExact(sp, ray, sphereFn(s), list.items[0].t);
+        checkBoundContainsExact(sp, ray, sphereFn(s), list[0].t);
     }
 }

@@ -54,14 +54,14 @@ TEST_CASE("torus: a line through the middle crosses four times") {
     g.crossLine(ray, list);
     REQUIRE(list.count == 4);
     CHECK_FALSE(list.startsInside);
-    CHECK(list.items[0].t == Approx(3.75).epsilon(1e-15));
-    CHECK(list.items[1].t == Approx(4.25).epsilon(1e-15));
-    CHECK(list.items[2].t == Approx(5.75).epsilon(1e-15));
-    CHECK(list.items[3].t == Approx(6.25).epsilon(1e-15));
-    SurfacePoint sp = g.surfaceAt(ray, list.items[0]);
+    CHECK(list[0].t == Approx(3.75).epsilon(1e-15));
+    CHECK(list[1].t == Approx(4.25).epsilon(1e-15));
+    CHECK(list[2].t == Approx(5.75).epsilon(1e-15));
+    CHECK(list[3].t == Approx(6.25).epsilon(1e-15));
+    SurfacePoint sp = g.surfaceAt(ray, list[0]);
     CHECK(sp.normal.x == Approx(-1));
     CHECK(sp.point.x == Approx(-1.25));
-    sp = g.surfaceAt(ray, list.items[1]);
+    sp = g.surfaceAt(ray, list[1]);
     CHECK(sp.normal.x == Approx(1)); // the inner side of the tube faces the hole
     CHECK(sp.uv.y == Approx(0.5));   // the inner equator is half way round the tube
 }
@@ -73,19 +73,19 @@ TEST_CASE("torus: through the hole, across the tube, from inside, behind, non-un
     CHECK(list.count == 0);
     g.crossLine({{1, -5, 0}, {0, 2, 0}}, list); // across the tube, non-unit direction
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == Approx(2.375));
-    CHECK(list.items[1].t == Approx(2.625));
+    CHECK(list[0].t == Approx(2.375));
+    CHECK(list[1].t == Approx(2.625));
     g.crossLine({{1, 0, 0}, {1, 0, 0}}, list); // from inside the tube
     REQUIRE(list.count == 4);
-    CHECK(list.items[2].t == Approx(-0.25));
-    CHECK(list.items[3].t == Approx(0.25));
+    CHECK(list[2].t == Approx(-0.25));
+    CHECK(list[3].t == Approx(0.25));
     g.crossLine({{1, 0, 0}, {0, 0, 1}}, list); // inside the tube along its whole width
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == Approx(-0.75));
-    CHECK(list.items[1].t == Approx(0.75));
+    CHECK(list[0].t == Approx(-0.75));
+    CHECK(list[1].t == Approx(0.75));
     g.crossLine({{9, 0, 0}, {1, 0, 0}}, list); // past the torus
     REQUIRE(list.count == 4);
-    CHECK(list.items[3].t < 0);
+    CHECK(list[3].t < 0);
     g.crossLine({{-5, 0.3, 0}, {1, 0, 0}}, list); // above it
     CHECK(list.count == 0);
 }
@@ -130,21 +130,21 @@ TEST_CASE("torus: random lines around arbitrary axes") {
         std::vector<LD> roots = exact.roots(ray);
         if (roots.size() == size_t(list.count)) {
             for (int k = 0; k < list.count; ++k)
-                CHECK(std::fabs(list.items[k].t - roots[size_t(k)]) * glm::length(ray.dir) <
+                CHECK(std::fabs(list[k].t - roots[size_t(k)]) * glm::length(ray.dir) <
                       1e-12 * (s.major + 1));
         } else {
             // Only near-tangent lines may disagree with the sampled reference.
             CHECK(std::abs(int(roots.size()) - list.count) == 2);
         }
         for (int k = 0; k < list.count; ++k) {
-            SurfacePoint sp = g.surfaceAt(ray, list.items[k]);
+            SurfacePoint sp = g.surfaceAt(ray, list[k]);
             checkUnit(sp.normal);
             CHECK(g.bounds().contains(sp.point));
             CHECK((sp.uv.x >= 0 && sp.uv.x < 1 && sp.uv.y >= 0 && sp.uv.y < 1));
             if (std::abs(glm::dot(sp.normal, ray.dir)) < 0.05 * glm::length(ray.dir)) continue;
             CHECK(glm::dot(sp.normal, ray.dir) * (k % 2 == 0 ? -1 : 1) > 0);
             checkBoundContainsExact(
-                sp, ray, [&](const LVec& p) { return exact.distance(p); }, list.items[k].t);
+                sp, ray, [&](const LVec& p) { return exact.distance(p); }, list[k].t);
         }
     }
     CHECK(fours > 50);
@@ -167,11 +167,11 @@ TEST_CASE("torus: lines from 1e5 away still find accurate roots") {
         }
         for (int k = 0; k < list.count; ++k) {
             // t is about 1e5 / |d|: an error of a few of its ulps only.
-            CHECK(std::fabs(list.items[k].t - roots[size_t(k)]) * glm::length(ray.dir) < 2e-10);
-            SurfacePoint sp = g.surfaceAt(ray, list.items[k]);
+            CHECK(std::fabs(list[k].t - roots[size_t(k)]) * glm::length(ray.dir) < 2e-10);
+            SurfacePoint sp = g.surfaceAt(ray, list[k]);
             if (std::abs(glm::dot(sp.normal, ray.dir)) < 0.05 * glm::length(ray.dir)) continue;
             checkBoundContainsExact(
-                sp, ray, [&](const LVec& p) { return exact.distance(p); }, list.items[k].t);
+                sp, ray, [&](const LVec& p) { return exact.distance(p); }, list[k].t);
         }
     }
 }
@@ -183,7 +183,7 @@ TEST_CASE("torus: a spindle torus (minor > major) is still a closed solid") {
     CrossingList list;
     g.crossLine({{0, 0, -5}, {0, 0, 1}}, list); // along the axis: only the outer surface
     REQUIRE(list.count == 2);
-    CHECK(list.items[0].t == Approx(5 - std::sqrt(0.75)));
+    CHECK(list[0].t == Approx(5 - std::sqrt(0.75)));
     Random rng(34);
     for (int i = 0; i < 1000; ++i) {
         Ray ray = rng.lineThrough(rng.inBox(1.5), rng.uniform(2, 10));

@@ -18,7 +18,7 @@ double bruteForce(const RenderScene& scene, const Ray& ray) {
         Ray r = p.transform < 0 ? ray : scene.transforms[p.transform].toObject.ray(ray);
         crossLine(p.geometry, r, list);
         for (int i = 0; i < list.count; ++i)
-            if (list.items[i].t > 0 && list.items[i].t < best) best = list.items[i].t;
+            if (list[i].t > 0 && list[i].t < best) best = list[i].t;
     }
     return best;
 }
@@ -97,7 +97,7 @@ TEST_CASE("BVH: every crossing query agrees with brute force counts", "[bvh]") {
         for (const Primitive& p : scene->primitives) {
             CrossingList list;
             crossLine(p.geometry, ray, list);
-            for (int k = 0; k < list.count; ++k) expected += list.items[k].t > 0;
+            for (int k = 0; k < list.count; ++k) expected += list[k].t > 0;
         }
         REQUIRE(counted == expected);
     }

@@ -1,0 +1,89 @@
+// A prism's outline as POV-Ray reads its points (see curve_outline.hpp).
+#include "scene/curve_outline.hpp"
+
+namespace crt::scene {
+
+namespace {
+
+using V = glm::dvec2;
+
+CurveSegment line(const V& p0, const V& p1) {
+    return {V(0.0), V(0.0), p1 - p0, p0, p1};
+}
+
+/// Through p1 and p2, with p0 setting the slope at p1 (POV-Ray's quadratic spline).
+CurveSegment quadratic(const V& p0, const V& p1, const V& p2) {
+    return {V(0.0), 0.5 * p0 - p1 + 0.5 * p2, -0.5 * p0 + 0.5 * p2, p1, p2};
+}
+
+/// From p1 to p2, with slopes from p0 and p3 (Catmull-Rom).
+CurveSegment cubic(const V& p0, const V& p1, const V& p2, const V& p3) {
+    return {-0.5 * p0 + 1.5 * p1 - 1.5 * p2 + 0.5 * p3, p0 - 2.5 * p1 + 2.0 * p2 - 0.5 * p3,
+            -0.5 * p0 + 0.5 * p2, p1, p2};
+}
+
+CurveSegment bezier(const V& p0, const V& p1, const V& p2, const V& p3) {
+    return {p3 - 3.0 * p2 + 3.0 * p1 - p0, 3.0 * p2 - 6.0 * p1 + 3.0 * p0, 3.0 * p1 - 3.0 * p0, p0,
+            p3};
+}
+
+} // namespace
+
+size_t minimumPoints(SplineKind kind) {
+    switch (kind) {
+    case SplineKind::Linear: return 3;
+    case SplineKind::Quadratic: return 5;
+    case SplineKind::Cubic: return 6;
+    case SplineKind::Bezier: return 4;
+    }
+    return 3;
+}
+
+CurveLoops curveLoops(std::span<const glm::dvec2> p, SplineKind kind) {
+    CurveLoops out;
+    const size_t n = p.size();
+    std::vector<CurveSegment> loop;
+    // `start` is the loop's first point as written (a control point for the splines), `first`
+    // the point on the curve that closes it.
+    size_t start = 0;
+    auto close = [&](size_t next) {
+        out.loops.push_back(std::move(loop));
+        loop.clear();
+        start = next;
+    };
+    switch (kind) {
+    case SplineKind::Linear:
+        for (size_t i = 0; i + 1 < n; ++i) {
+            loop.push_back(line(p[i], p[i + 1]));
+            if (p[i + 1] == p[start]) close(++i + 1);
+        }
+        if (!loop.empty()) {
+            loop.push_back(line(p[n - 1], p[start]));
+            close(n);
+        }
+        return out;
+    case SplineKind::Quadratic:
+        for (size_t i = 0; i + 2 < n; ++i) {
+            loop.push_back(quadratic(p[i], p[i + 1], p[i + 2]));
+            if (p[i + 2] == p[start + 1]) close((i += 2) + 1);
+        }
+        break;
+    case SplineKind::Cubic:
+        for (size_t i = 0; i + 3 < n; ++i) {
+            loop.push_back(cubic(p[i], p[i + 1], p[i + 2], p[i + 3]));
+            if (p[i + 2] == p[start + 1]) close((i += 3) + 1);
+        }
+        break;
+    case SplineKind::Bezier:
+        for (size_t i = 0; i + 3 < n; i += 4) {
+            if (!loop.empty() && p[i] != loop.back().end) break; // a gap: not closed
+            loop.push_back(bezier(p[i], p[i + 1], p[i + 2], p[i + 3]));
+            if (p[i + 3] == p[start]) close(i + 4);
+        }
+        break;
+    }
+    if (start < n) out.unclosedFrom = static_cast<std::ptrdiff_t>(start);
+    return out;
+}
+
+} // namespace crt::scene
