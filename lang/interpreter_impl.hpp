@@ -240,6 +240,7 @@ private:
     scene::Shape surfaceShape(ObjectBuilder& b);
     scene::Shape polygonShape(ObjectBuilder& b);
     scene::Shape prismShape(ObjectBuilder& b);
+    scene::Shape sorShape(ObjectBuilder& b);
     Value buildMaterial(const ObjectBuilder& b);
     Value buildCamera(ObjectBuilder& b);
     Value buildLight(const ObjectBuilder& b);

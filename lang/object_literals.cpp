@@ -471,6 +471,7 @@ scene::Shape Interpreter::solidShape(ObjectBuilder& b) {
         return s;
     }
     case ObjectType::Prism: return prismShape(b);
+    case ObjectType::Sor: return sorShape(b);
     case ObjectType::Torus:
     default: {
         scene::TorusShape s;
@@ -532,6 +533,51 @@ scene::Shape Interpreter::prismShape(ObjectBuilder& b) {
                  unclosed + 1,
                  control ? fmt::format("point {}, its first after the control point", unclosed + 2)
                          : "its first point"));
+    }
+    return s;
+}
+
+/// The points of a Sor, as POV-Ray checks them: (radius, height) with z 0, at least four,
+/// no radius negative, heights rising from the second point to the last but one, and the
+/// first and last not level with the points two along, whose slopes they set.
+scene::Shape Interpreter::sorShape(ObjectBuilder& b) {
+    scene::SorShape s;
+    s.open = b.flag("open", s.open);
+    const std::vector<Value>& points = *b.get("points")->list;
+    if (points.size() < 4)
+        fail(b.where("points"),
+             fmt::format("a Sor needs at least 4 points, not {}", points.size()));
+    for (size_t i = 0; i < points.size(); ++i) {
+        const Value& p = points[i];
+        if (p.v[2] != 0) {
+            fail(b.whereItem("points", i),
+                 fmt::format("a Sor's points are (radius, height) in the x-y plane: point {} has "
+                             "z = {:g}, not 0",
+                             i + 1, p.v[2]));
+        }
+        if (p.v[0] < 0) {
+            fail(
+                b.whereItem("points", i),
+                fmt::format("point {} of this Sor has a negative radius, x = {:g}", i + 1, p.v[0]));
+        }
+        s.points.push_back({p.v[0], p.v[1]});
+    }
+    const size_t n = s.points.size();
+    for (size_t i = 2; i + 1 < n; ++i) {
+        if (!(s.points[i].y > s.points[i - 1].y)) {
+            fail(b.whereItem("points", i),
+                 fmt::format("the heights of a Sor must rise from its second point to its last but "
+                             "one: point {} (y = {:g}) is not above point {} (y = {:g})",
+                             i + 1, s.points[i].y, i, s.points[i - 1].y));
+        }
+    }
+    for (auto [end, next] : {std::pair{size_t{0}, size_t{2}}, {n - 1, n - 3}}) {
+        if (s.points[end].y == s.points[next].y) {
+            fail(b.whereItem("points", end),
+                 fmt::format("point {} of this Sor is level with point {}, so the slope at point "
+                             "{} between them is undefined",
+                             end + 1, next + 1, (end + next) / 2 + 1));
+        }
     }
     return s;
 }

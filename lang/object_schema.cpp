@@ -215,6 +215,13 @@ constexpr AttributeInfo kPrism[] = {
     {"open", A::Bool, false, "false", "No end faces."},
     CRT_MATERIAL_ATTR,
 };
+constexpr AttributeInfo kSor[] = {
+    {"points", A::PointList, true, "",
+     "(radius, height) in the x-y plane (each z 0), at least four, rising from the second to "
+     "the last but one; the first and last set the slopes at the ends."},
+    {"open", A::Bool, false, "false", "No end faces."},
+    CRT_MATERIAL_ATTR,
+};
 constexpr AttributeInfo kTorus[] = {
     {"center", A::Vec3, true, "", "Centre."},
     {"major", A::Float, true, "", "Radius of the ring."},
@@ -433,6 +440,10 @@ constexpr ObjectInfo kObjects[] = {
      kSuperellipsoid},
     {T::Prism, "Prism", C::Entity, true,
      "An outline swept along y, straight or to a point (POV-Ray's prism; solid).", kPrism},
+    {T::Sor, "Sor", C::Entity, true,
+     "A smooth curve turned about the y axis, its radius squared a cubic of the height "
+     "(POV-Ray's sor; solid).",
+     kSor},
     {T::Merge, "Merge", C::Entity, true,
      "A union of solids without the surfaces inside it (POV-Ray's merge): for glass and "
      "anything seen through.",

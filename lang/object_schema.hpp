@@ -30,6 +30,7 @@ enum class ObjectType : uint8_t {
     Torus,
     Superellipsoid,
     Prism,
+    Sor,
     Merge,
     Inverse,
     Disc,

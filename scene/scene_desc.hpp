@@ -267,6 +267,13 @@ struct PrismShape {
     bool conic = false;
     bool open = false;
 };
+/// POV-Ray's surface of revolution: the points are (radius, height); the radius squared is
+/// a cubic of the height between each two points from the second to the last but one, with
+/// slopes from their neighbours, turned about the y axis. Open: without the end faces.
+struct SorShape {
+    std::vector<glm::dvec2> points;
+    bool open = false;
+};
 struct MeshShape {
     std::string file;         ///< as written in the script
     std::string resolvedFile; ///< the path found on disk, or "" if not found
@@ -288,7 +295,7 @@ struct GroupNode { std::vector<int32_t> members; };
 using Shape =
     std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape, DiscShape,
                  QuadShape, TriangleShape, SmoothTriangleShape, PolygonShape, SuperellipsoidShape,
-                 PrismShape, MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
+                 PrismShape, SorShape, MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
 // One per entity, and a generated scene has millions: a shape with more data keeps it out of
 // line (as a smooth triangle and a polygon do).
 static_assert(sizeof(Shape) <= 80, "keep every shape small");

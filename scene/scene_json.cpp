@@ -127,6 +127,13 @@ struct ShapeJson {
         out["sweep"] = s.conic ? "conic" : "linear";
         out["open"] = s.open;
     }
+    void operator()(const SorShape& s) {
+        out["type"] = "Sor";
+        Json points = Json::array();
+        for (const glm::dvec2& p : s.points) points.push_back(Json::array({p.x, p.y}));
+        out["points"] = std::move(points);
+        out["open"] = s.open;
+    }
     void operator()(const MeshShape& s) {
         out["type"] = "Mesh";
         out["file"] = s.file;

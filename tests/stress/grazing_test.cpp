@@ -289,6 +289,26 @@ GrazingCase coneCase() {
     return c;
 }
 
+/// A cone as a surface of revolution: four points on one line make R(y) the square of a
+/// linear radius, which the cubic reproduces, with the end faces.
+GrazingCase sorCase() {
+    const DVec3 base(0, -1, 0), top(0, 1, 0);
+    const double r0 = 1, r1 = 0.25;
+    auto radius = [=](double y) { return r0 + (r1 - r0) * (y + 1) / 2; };
+    scene::SorShape sor;
+    for (double y : {-1.5, -1.0, 1.0, 1.5}) sor.points.push_back({radius(y), y});
+    GrazingCase c;
+    c.name = "sor";
+    c.add = [=](SceneMaker& m, int32_t mat) { m.draw(m.entity(sor, mat)); };
+    c.hit = [=](const TestRay& r) { return axialHit(r, base, top, r0, r1); };
+    c.camera = DVec3(-0.4, 0.9, -5);
+    c.inside = DVec3(0.0);
+    c.outside = 3.0 * across(c.camera, DVec3(0.0), top - base);
+    c.overview = test::lookAt(c.camera, DVec3(0.0), 40);
+    c.overviewLight = glm::normalize(DVec3(-1, 0.3, 0.1));
+    return c;
+}
+
 GrazingCase torusCase() {
     const DVec3 center(0, 0.1, 0), axis = glm::normalize(DVec3(0.2, 1, -0.1));
     const double major = 1, minor = 0.3;
@@ -434,6 +454,9 @@ TEST_CASE("Grazing rays on a cylinder", "[stress][grazing]") {
 }
 TEST_CASE("Grazing rays on a cone", "[stress][grazing]") {
     runGrazing(coneCase());
+}
+TEST_CASE("Grazing rays on a surface of revolution", "[stress][grazing]") {
+    runGrazing(sorCase());
 }
 TEST_CASE("Grazing rays on a torus", "[stress][grazing]") {
     runGrazing(torusCase());

@@ -134,6 +134,12 @@ inline scene::SceneDesc primitivesScene(const Placement& at, int width, int heig
     int32_t drop = m.entity(prism, mat(0.5, 0.8, 0.4, 0.2));
     m.draw(m.transformed(drop, {test::scale(DVec3(0.3)), rotate({-30, 20, 0}),
                                 translate({-0.9, 0.2, -2.6}), toWorld[0], toWorld[1]}));
+    // A vase as a surface of revolution, radius reaching the axis at its foot.
+    int32_t vase = m.entity(
+        scene::SorShape{{{0.2, -0.2}, {0, 0}, {0.8, 0.4}, {0.4, 1}, {0.6, 1.6}, {0.7, 1.8}}, false},
+        mat(0.6, 0.5, 0.9, 0.2));
+    m.draw(m.transformed(vase, {test::scale(DVec3(0.25)), rotate({10, 0, -15}),
+                                translate({1.9, 0.05, -2.6}), toWorld[0], toWorld[1]}));
     int32_t block = m.box(at.at({0.8, 0, -1.8}), at.at({1.6, 0.8, -1.0}), mat(0.8, 0.8, 0.8));
     int32_t dent = m.sphere(at.at({1.2, 0.8, -1.4}), s * 0.45, mat(0.9, 0.3, 0.3));
     m.draw(m.csg(scene::CsgOp::Difference, block, dent));

@@ -83,6 +83,8 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape) {
                 return Geometry(MeshTriangleGeometry(s.mesh, 0));
             else if constexpr (std::is_same_v<S, scene::PrismShape>)
                 return Geometry(PrismGeometry(s));
+            else if constexpr (std::is_same_v<S, scene::SorShape>)
+                return Geometry(SorGeometry(s));
             else if constexpr (std::is_same_v<S, scene::SuperellipsoidShape>)
                 return Geometry(SuperellipsoidGeometry(s));
             else

@@ -10,6 +10,7 @@
 #include "tracer/geometry/polygon.hpp"
 #include "tracer/geometry/prism.hpp"
 #include "tracer/geometry/quad.hpp"
+#include "tracer/geometry/sor.hpp"
 #include "tracer/geometry/sphere.hpp"
 #include "tracer/geometry/superellipsoid.hpp"
 #include "tracer/geometry/torus.hpp"
@@ -24,7 +25,7 @@ namespace crt::tracer {
 using Geometry =
     std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry, ConeGeometry,
                  TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshTriangleGeometry,
-                 SuperellipsoidGeometry, PolygonGeometry, PrismGeometry>;
+                 SuperellipsoidGeometry, PolygonGeometry, PrismGeometry, SorGeometry>;
 
 /// Object-space bounds (Bounds3::everything() for a plane, empty for a degenerate shape).
 Bounds3 geometryBounds(const Geometry& geometry);

@@ -45,38 +45,15 @@ void includeSegment(const scene::CurveSegment& s, Vec2& lo, Vec2& hi) {
 }
 
 /// Calls found(u) for each u in [0, 1] where g(p(u)) changes sign along the segment, g being
-/// affine: g(p) = linear(p) + constant. The curve is split where g∘p turns (the roots of its
-/// quadratic derivative), so each piece holds at most one root; the ends are the segment's
-/// points as written, so neighbouring segments see the same sign where they meet.
+/// affine: g(p) = linear(p) + constant. The ends are the segment's points as written, so
+/// neighbouring segments see the same sign where they meet.
 template <class Linear, class Found>
 void signChanges(const scene::CurveSegment& s, const Linear& linear, double constant,
                  const Found& found) {
-    const double ga = linear(s.a), gb = linear(s.b), gc = linear(s.c);
-    auto g = [&](double u) { return linear(s.at(u)) + constant; };
-    double split[4];
-    int n = 0;
-    split[n++] = 0;
-    double r0, r1;
-    if (solveQuadratic(3 * ga, gb, gc, r0, r1)) {
-        if (r0 > 0 && r0 < 1) split[n++] = r0;
-        if (r1 > r0 && r1 > 0 && r1 < 1) split[n++] = r1;
-    } else if (ga == 0 && gb != 0) {
-        const double r = -gc / (2 * gb);
-        if (r > 0 && r < 1) split[n++] = r;
-    }
-    split[n++] = 1;
-    double before = linear(s.d) + constant;
-    for (int i = 0; i + 1 < n; ++i) {
-        const double after = i + 2 < n ? g(split[i + 1]) : linear(s.end) + constant;
-        if ((before < 0) != (after < 0)) {
-            found(bracketedRoot(
-                [&](double u) {
-                    return ValueAndSlope{g(u), linear(s.slope(u))};
-                },
-                split[i], split[i + 1], before < 0));
-        }
-        before = after;
-    }
+    cubicSignChanges(
+        linear(s.a), linear(s.b), linear(s.c), [&](double u) { return linear(s.at(u)) + constant; },
+        [&](double u) { return linear(s.slope(u)); }, linear(s.d) + constant,
+        linear(s.end) + constant, found);
 }
 
 } // namespace

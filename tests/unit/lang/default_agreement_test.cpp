@@ -68,6 +68,9 @@ constexpr Usage kUsages[] = {
     {ObjectType::Polygon,
      "Scene { Polygon { points -> [vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 0, 1)] @ } }"},
     {ObjectType::Superellipsoid, "Scene { Superellipsoid { @ } }"},
+    {ObjectType::Sor,
+     "Scene { Sor { points -> [vec3(0, 0, 0), vec3(1, 0.1, 0), vec3(1, 1, 0), vec3(0, 1.1, 0)] "
+     "@ } }"},
     {ObjectType::Prism,
      "Scene { Prism { points -> [vec3(0, 0, 1), vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 0, 1), "
      "vec3(0, 0, 0)] @ } }"},
