@@ -241,6 +241,7 @@ private:
     scene::Shape polygonShape(ObjectBuilder& b);
     scene::Shape prismShape(ObjectBuilder& b);
     scene::Shape sorShape(ObjectBuilder& b);
+    scene::Shape latheShape(ObjectBuilder& b);
     Value buildMaterial(const ObjectBuilder& b);
     Value buildCamera(ObjectBuilder& b);
     Value buildLight(const ObjectBuilder& b);

@@ -74,6 +74,14 @@ std::string findAsset(const std::string& name, std::string_view what, const std:
 }
 
 /// Whether a shape has no extent, and so draws nothing.
+/// The spline attribute's kind (the schema has checked it is one of them).
+scene::SplineKind splineKind(ObjectBuilder& b) {
+    const std::string spline = b.lowerText("spline");
+    for (size_t i = 0; i < std::size(scene::kSplineKindNames); ++i)
+        if (spline == scene::kSplineKindNames[i]) return static_cast<scene::SplineKind>(i);
+    return scene::SplineKind::Linear;
+}
+
 struct ZeroSize {
     bool operator()(const scene::SphereShape& s) const { return s.radius == 0; }
     bool operator()(const scene::BoxShape& s) const {
@@ -368,10 +376,12 @@ Value Interpreter::buildEntity(ObjectBuilder& b) {
         return buildCombination(b);
     scene::Shape shape = b.info.solid ? solidShape(b) : surfaceShape(b);
     bool zeroSize = std::visit(ZeroSize{}, shape);
+    bool solid = b.info.solid;
+    if (auto* lathe = std::get_if<scene::LatheShape>(&shape))
+        solid = scene::curveEnclosesSolid(scene::curveSegments(lathe->points, lathe->spline));
     const int32_t material = b.index("material", -1);
-    int32_t index =
-        addEntity(scene::EntityDesc{std::move(shape), material, b.info.solid, span(b.range)},
-                  EntityInfo{b.range, b.info.type, true});
+    int32_t index = addEntity(scene::EntityDesc{std::move(shape), material, solid, span(b.range)},
+                              EntityInfo{b.range, b.info.type, true});
     // An animated script (one reading t or clock) often starts from zero size.
     if (zeroSize && !animated_) {
         warnOnce(WarningKind::ZeroSizeEntity, b.typeRange,
@@ -472,6 +482,7 @@ scene::Shape Interpreter::solidShape(ObjectBuilder& b) {
     }
     case ObjectType::Prism: return prismShape(b);
     case ObjectType::Sor: return sorShape(b);
+    case ObjectType::Lathe: return latheShape(b);
     case ObjectType::Torus:
     default: {
         scene::TorusShape s;
@@ -502,15 +513,13 @@ scene::Shape Interpreter::prismShape(ObjectBuilder& b) {
         }
         s.points.push_back({points[i].v[0], points[i].v[2]});
     }
-    const std::string spline = b.lowerText("spline");
-    for (size_t i = 0; i < std::size(scene::kSplineKindNames); ++i)
-        if (spline == scene::kSplineKindNames[i]) s.spline = static_cast<scene::SplineKind>(i);
+    s.spline = splineKind(b);
     s.conic = b.lowerText("sweep") == "conic";
     s.from = b.number("from", s.from);
     s.to = b.number("to", s.to);
     s.open = b.flag("open", s.open);
     const std::string_view kind = scene::kSplineKindNames[static_cast<int>(s.spline)];
-    const size_t least = scene::minimumPoints(s.spline);
+    const size_t least = scene::minimumLoopPoints(s.spline);
     if (s.points.size() < least) {
         fail(b.where("points"),
              fmt::format("a Prism with a {} spline needs at least {} points, not {}", kind, least,
@@ -578,6 +587,44 @@ scene::Shape Interpreter::sorShape(ObjectBuilder& b) {
                              "{} between them is undefined",
                              end + 1, next + 1, (end + next) / 2 + 1));
         }
+    }
+    return s;
+}
+
+/// The points of a Lathe, as POV-Ray checks them: (x, y) with z 0, as many as the spline
+/// needs, and no point on the curve left of the axis.
+scene::Shape Interpreter::latheShape(ObjectBuilder& b) {
+    scene::LatheShape s;
+    s.spline = splineKind(b);
+    const std::vector<Value>& points = *b.get("points")->list;
+    const std::string_view kind = scene::kSplineKindNames[static_cast<int>(s.spline)];
+    const size_t least = scene::minimumCurvePoints(s.spline);
+    if (points.size() < least) {
+        fail(b.where("points"), fmt::format("a Lathe with a {} spline needs at least {} points, "
+                                            "not {}",
+                                            kind, least, points.size()));
+    }
+    if (s.spline == scene::SplineKind::Bezier && points.size() % 4 != 0) {
+        fail(b.where("points"),
+             fmt::format("a Lathe with a bezier spline takes 4 points a segment: {} is not a "
+                         "multiple of 4",
+                         points.size()));
+    }
+    for (size_t i = 0; i < points.size(); ++i) {
+        const Value& p = points[i];
+        if (p.v[2] != 0) {
+            fail(b.whereItem("points", i),
+                 fmt::format("a Lathe's points are its curve in the x-y plane: point {} has z = "
+                             "{:g}, not 0",
+                             i + 1, p.v[2]));
+        }
+        if (p.v[0] < 0 && scene::isOnCurve(i, points.size(), s.spline)) {
+            fail(b.whereItem("points", i),
+                 fmt::format("point {} of this Lathe is left of the y axis, x = {:g}; the curve's "
+                             "x is the distance from the axis",
+                             i + 1, p.v[0]));
+        }
+        s.points.push_back({p.v[0], p.v[1]});
     }
     return s;
 }

@@ -222,6 +222,14 @@ constexpr AttributeInfo kSor[] = {
     {"open", A::Bool, false, "false", "No end faces."},
     CRT_MATERIAL_ATTR,
 };
+constexpr AttributeInfo kLathe[] = {
+    {"points", A::PointList, true, "",
+     "The curve in the x-y plane (each z 0), x the distance from the y axis, as POV-Ray's lathe "
+     "reads it; closed, or from the axis to the axis, it bounds a solid."},
+    {"spline", A::Choice, false, "\"linear\"",
+     "How the points make the curve: linear, quadratic, cubic or bezier.", scene::kSplineKindNames},
+    CRT_MATERIAL_ATTR,
+};
 constexpr AttributeInfo kTorus[] = {
     {"center", A::Vec3, true, "", "Centre."},
     {"major", A::Float, true, "", "Radius of the ring."},
@@ -444,6 +452,8 @@ constexpr ObjectInfo kObjects[] = {
      "A smooth curve turned about the y axis, its radius squared a cubic of the height "
      "(POV-Ray's sor; solid).",
      kSor},
+    {T::Lathe, "Lathe", C::Entity, true,
+     "A curve turned about the y axis (POV-Ray's lathe; solid when the curve closes).", kLathe},
     {T::Merge, "Merge", C::Entity, true,
      "A union of solids without the surfaces inside it (POV-Ray's merge): for glass and "
      "anything seen through.",

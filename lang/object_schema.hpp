@@ -31,6 +31,7 @@ enum class ObjectType : uint8_t {
     Superellipsoid,
     Prism,
     Sor,
+    Lathe,
     Merge,
     Inverse,
     Disc,

@@ -482,6 +482,13 @@ Value Interpreter::csg(BinaryOp op, const Value& left, const Value& right, const
     for (const Value* operand : {&left, &right}) {
         if (!scene_.entities[operand->index].solid) {
             const Expr* where = operand == &left ? node->left : node->right;
+            if (operand->objectType == ObjectType::Lathe) {
+                fail(where->range,
+                     fmt::format("this Lathe's curve does not close, so it is a surface and "
+                                 "cannot be used in CSG ('{}'): end it where it starts, or start "
+                                 "and end it on the y axis",
+                                 opSpelling(op)));
+            }
             fail(where->range, fmt::format("{} is not a solid, so it cannot be used in CSG ('{}'); "
                                            "solids are {}",
                                            typeName(*operand), opSpelling(op), solidTypeList()));

@@ -1,4 +1,4 @@
-// A prism's outline as POV-Ray reads its points (see curve_outline.hpp).
+// Curves as POV-Ray's prism and lathe read their points (see curve_outline.hpp).
 #include "scene/curve_outline.hpp"
 
 namespace crt::scene {
@@ -29,7 +29,7 @@ CurveSegment bezier(const V& p0, const V& p1, const V& p2, const V& p3) {
 
 } // namespace
 
-size_t minimumPoints(SplineKind kind) {
+size_t minimumLoopPoints(SplineKind kind) {
     switch (kind) {
     case SplineKind::Linear: return 3;
     case SplineKind::Quadratic: return 5;
@@ -37,6 +37,55 @@ size_t minimumPoints(SplineKind kind) {
     case SplineKind::Bezier: return 4;
     }
     return 3;
+}
+
+size_t minimumCurvePoints(SplineKind kind) {
+    switch (kind) {
+    case SplineKind::Linear: return 2;
+    case SplineKind::Quadratic: return 3;
+    case SplineKind::Cubic: return 4;
+    case SplineKind::Bezier: return 4;
+    }
+    return 2;
+}
+
+bool isOnCurve(size_t i, size_t n, SplineKind kind) {
+    switch (kind) {
+    case SplineKind::Linear: return true;
+    case SplineKind::Quadratic: return i > 0;
+    case SplineKind::Cubic: return i > 0 && i + 1 < n;
+    case SplineKind::Bezier: return i % 4 == 0 || i % 4 == 3;
+    }
+    return true;
+}
+
+std::vector<CurveSegment> curveSegments(std::span<const glm::dvec2> p, SplineKind kind) {
+    std::vector<CurveSegment> out;
+    const size_t n = p.size();
+    switch (kind) {
+    case SplineKind::Linear:
+        for (size_t i = 0; i + 1 < n; ++i) out.push_back(line(p[i], p[i + 1]));
+        break;
+    case SplineKind::Quadratic:
+        for (size_t i = 0; i + 2 < n; ++i) out.push_back(quadratic(p[i], p[i + 1], p[i + 2]));
+        break;
+    case SplineKind::Cubic:
+        for (size_t i = 0; i + 3 < n; ++i) out.push_back(cubic(p[i], p[i + 1], p[i + 2], p[i + 3]));
+        break;
+    case SplineKind::Bezier:
+        for (size_t i = 0; i + 3 < n; i += 4)
+            out.push_back(bezier(p[i], p[i + 1], p[i + 2], p[i + 3]));
+        break;
+    }
+    return out;
+}
+
+bool curveEnclosesSolid(const std::vector<CurveSegment>& segments) {
+    if (segments.empty()) return false;
+    for (size_t i = 1; i < segments.size(); ++i)
+        if (segments[i].d != segments[i - 1].end) return false;
+    const V start = segments.front().d, end = segments.back().end;
+    return end == start || (start.x == 0 && end.x == 0);
 }
 
 CurveLoops curveLoops(std::span<const glm::dvec2> p, SplineKind kind) {

@@ -1,5 +1,6 @@
-// A prism's outline as POV-Ray reads its points: closed loops of curve segments, one cubic
-// polynomial each. Shared by the front end (which checks the points) and the renderer.
+// Curves as POV-Ray's prism and lathe read their points: a prism's closed loops and a
+// lathe's profile, of curve segments one cubic polynomial each. Shared by the front end
+// (which checks the points) and the renderer.
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -20,8 +21,13 @@ enum class SplineKind : uint8_t { Linear, Quadratic, Cubic, Bezier };
 /// The script's name of each kind, in the enum's order.
 inline constexpr std::string_view kSplineKindNames[] = {"linear", "quadratic", "cubic", "bezier"};
 
-/// The fewest points a curve of this kind takes (POV-Ray's).
-size_t minimumPoints(SplineKind kind);
+/// The fewest points a prism's outline of this kind takes (POV-Ray's).
+size_t minimumLoopPoints(SplineKind kind);
+/// The fewest points a lathe's profile of this kind takes (POV-Ray's): one segment.
+size_t minimumCurvePoints(SplineKind kind);
+/// Whether point i of n lies on the curve, rather than only shaping it (the control points
+/// before and after the quadratic and cubic splines' segments, a Bézier segment's middle two).
+bool isOnCurve(size_t i, size_t n, SplineKind kind);
 
 /// One piece of a curve: p(u) = ((a·u + b)·u + c)·u + d for u in [0, 1].
 struct CurveSegment {
@@ -43,5 +49,14 @@ struct CurveLoops {
 /// The loops of POV-Ray's prism points: a loop ends where its first point on the curve comes
 /// again (for Bézier, where a segment ends on it), and the next begins after it.
 CurveLoops curveLoops(std::span<const glm::dvec2> points, SplineKind kind);
+
+/// The segments of POV-Ray's lathe points, in order: each pair of points for linear, each
+/// point after the first but one for quadratic, each but the first and last two for cubic,
+/// each four for Bézier (which need not meet). Too few points give none.
+std::vector<CurveSegment> curveSegments(std::span<const glm::dvec2> points, SplineKind kind);
+
+/// Whether a lathe's segments, turned about the y axis, bound a solid: each begins where the
+/// one before ends, and the last ends where the first begins, or both ends lie on the axis.
+bool curveEnclosesSolid(const std::vector<CurveSegment>& segments);
 
 } // namespace crt::scene

@@ -274,6 +274,13 @@ struct SorShape {
     std::vector<glm::dvec2> points;
     bool open = false;
 };
+/// POV-Ray's lathe: a curve of points (x, y) (scene/curve_outline.hpp's curveSegments)
+/// turned about the y axis. A solid when the curve comes back to its first point on the
+/// curve, or starts and ends on the axis; otherwise a surface.
+struct LatheShape {
+    std::vector<glm::dvec2> points;
+    SplineKind spline = SplineKind::Linear;
+};
 struct MeshShape {
     std::string file;         ///< as written in the script
     std::string resolvedFile; ///< the path found on disk, or "" if not found
@@ -292,10 +299,10 @@ struct TransformNode { int32_t child = -1; std::vector<Modifier> modifiers; };
 /// What a macro emitting several entities returns: drawn as its members; in CSG, their union.
 struct GroupNode { std::vector<int32_t> members; };
 
-using Shape =
-    std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape, DiscShape,
-                 QuadShape, TriangleShape, SmoothTriangleShape, PolygonShape, SuperellipsoidShape,
-                 PrismShape, SorShape, MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
+using Shape = std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape,
+                           DiscShape, QuadShape, TriangleShape, SmoothTriangleShape, PolygonShape,
+                           SuperellipsoidShape, PrismShape, SorShape, LatheShape, MeshShape,
+                           CsgNode, TransformNode, GroupNode, InverseNode>;
 // One per entity, and a generated scene has millions: a shape with more data keeps it out of
 // line (as a smooth triangle and a polygon do).
 static_assert(sizeof(Shape) <= 80, "keep every shape small");

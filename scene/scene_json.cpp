@@ -10,6 +10,11 @@ using Json = nlohmann::ordered_json;
 namespace {
 
 Json vec(const glm::dvec3& v) { return Json::array({v.x, v.y, v.z}); }
+Json pointList(const std::vector<glm::dvec2>& points) {
+    Json out = Json::array();
+    for (const glm::dvec2& p : points) out.push_back(Json::array({p.x, p.y}));
+    return out;
+}
 Json color(const Color& c) { return Json::array({c.r, c.g, c.b, c.a}); }
 Json source(const SourceSpan& s) {
     return Json{{"file", s.file}, {"line", s.line}, {"column", s.column}, {"endLine", s.endLine}, {"endColumn", s.endColumn}};
@@ -118,9 +123,7 @@ struct ShapeJson {
     }
     void operator()(const PrismShape& s) {
         out["type"] = "Prism";
-        Json points = Json::array();
-        for (const glm::dvec2& p : s.points) points.push_back(Json::array({p.x, p.y}));
-        out["points"] = std::move(points);
+        out["points"] = pointList(s.points);
         out["from"] = s.from;
         out["to"] = s.to;
         out["spline"] = kSplineKindNames[static_cast<int>(s.spline)];
@@ -129,10 +132,13 @@ struct ShapeJson {
     }
     void operator()(const SorShape& s) {
         out["type"] = "Sor";
-        Json points = Json::array();
-        for (const glm::dvec2& p : s.points) points.push_back(Json::array({p.x, p.y}));
-        out["points"] = std::move(points);
+        out["points"] = pointList(s.points);
         out["open"] = s.open;
+    }
+    void operator()(const LatheShape& s) {
+        out["type"] = "Lathe";
+        out["points"] = pointList(s.points);
+        out["spline"] = kSplineKindNames[static_cast<int>(s.spline)];
     }
     void operator()(const MeshShape& s) {
         out["type"] = "Mesh";

@@ -309,6 +309,23 @@ GrazingCase sorCase() {
     return c;
 }
 
+/// A cone as a lathe: a straight curve from the axis round the cone's outline back to it.
+GrazingCase latheCase() {
+    const DVec3 base(0, -1, 0), top(0, 1, 0);
+    const double r0 = 1, r1 = 0.25;
+    scene::LatheShape lathe{{{0, -1}, {r0, -1}, {r1, 1}, {0, 1}}, scene::SplineKind::Linear};
+    GrazingCase c;
+    c.name = "lathe";
+    c.add = [=](SceneMaker& m, int32_t mat) { m.draw(m.entity(lathe, mat)); };
+    c.hit = [=](const TestRay& r) { return axialHit(r, base, top, r0, r1); };
+    c.camera = DVec3(0.4, 0.9, -5);
+    c.inside = DVec3(0.0);
+    c.outside = 3.0 * across(c.camera, DVec3(0.0), top - base);
+    c.overview = test::lookAt(c.camera, DVec3(0.0), 40);
+    c.overviewLight = glm::normalize(DVec3(1, 0.3, 0.1));
+    return c;
+}
+
 GrazingCase torusCase() {
     const DVec3 center(0, 0.1, 0), axis = glm::normalize(DVec3(0.2, 1, -0.1));
     const double major = 1, minor = 0.3;
@@ -457,6 +474,9 @@ TEST_CASE("Grazing rays on a cone", "[stress][grazing]") {
 }
 TEST_CASE("Grazing rays on a surface of revolution", "[stress][grazing]") {
     runGrazing(sorCase());
+}
+TEST_CASE("Grazing rays on a lathe", "[stress][grazing]") {
+    runGrazing(latheCase());
 }
 TEST_CASE("Grazing rays on a torus", "[stress][grazing]") {
     runGrazing(torusCase());

@@ -140,6 +140,14 @@ inline scene::SceneDesc primitivesScene(const Placement& at, int width, int heig
         mat(0.6, 0.5, 0.9, 0.2));
     m.draw(m.transformed(vase, {test::scale(DVec3(0.25)), rotate({10, 0, -15}),
                                 translate({1.9, 0.05, -2.6}), toWorld[0], toWorld[1]}));
+    // A ring as a lathe: a cubic curve closed on itself, turned about the axis.
+    int32_t ring = m.entity(
+        scene::LatheShape{
+            {{0.6, 0.2}, {0.9, 0.5}, {0.6, 0.8}, {0.3, 0.5}, {0.6, 0.2}, {0.9, 0.5}, {0.6, 0.8}},
+            scene::SplineKind::Cubic},
+        mat(0.4, 0.7, 0.9, 0.2));
+    m.draw(m.transformed(ring, {test::scale(DVec3(0.35)), rotate({-60, 0, 10}),
+                                translate({-1.6, 0.1, -2.2}), toWorld[0], toWorld[1]}));
     int32_t block = m.box(at.at({0.8, 0, -1.8}), at.at({1.6, 0.8, -1.0}), mat(0.8, 0.8, 0.8));
     int32_t dent = m.sphere(at.at({1.2, 0.8, -1.4}), s * 0.45, mat(0.9, 0.3, 0.3));
     m.draw(m.csg(scene::CsgOp::Difference, block, dent));

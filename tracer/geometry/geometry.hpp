@@ -5,6 +5,7 @@
 #include "tracer/geometry/cone.hpp"
 #include "tracer/geometry/cylinder.hpp"
 #include "tracer/geometry/disc.hpp"
+#include "tracer/geometry/lathe.hpp"
 #include "tracer/geometry/mesh_triangle.hpp"
 #include "tracer/geometry/plane.hpp"
 #include "tracer/geometry/polygon.hpp"
@@ -22,10 +23,10 @@
 namespace crt::tracer {
 
 /// One primitive in its object space.
-using Geometry =
-    std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry, ConeGeometry,
-                 TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshTriangleGeometry,
-                 SuperellipsoidGeometry, PolygonGeometry, PrismGeometry, SorGeometry>;
+using Geometry = std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry,
+                              ConeGeometry, TorusGeometry, DiscGeometry, QuadGeometry,
+                              TriangleGeometry, MeshTriangleGeometry, SuperellipsoidGeometry,
+                              PolygonGeometry, PrismGeometry, SorGeometry, LatheGeometry>;
 
 /// Object-space bounds (Bounds3::everything() for a plane, empty for a degenerate shape).
 Bounds3 geometryBounds(const Geometry& geometry);

@@ -71,6 +71,8 @@ constexpr Usage kUsages[] = {
     {ObjectType::Sor,
      "Scene { Sor { points -> [vec3(0, 0, 0), vec3(1, 0.1, 0), vec3(1, 1, 0), vec3(0, 1.1, 0)] "
      "@ } }"},
+    {ObjectType::Lathe, "Scene { Lathe { points -> [vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 1, 0), "
+                        "vec3(0, 1, 0)] @ } }"},
     {ObjectType::Prism,
      "Scene { Prism { points -> [vec3(0, 0, 1), vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 0, 1), "
      "vec3(0, 0, 0)] @ } }"},
