@@ -1,6 +1,7 @@
 // The lathe primitive: POV-Ray's, a curve in the x-y plane turned about the y axis.
 #include "tracer/geometry/lathe.hpp"
 
+#include "tracer/geometry/curve_segment_math.hpp"
 #include "tracer/geometry/polynomial_roots.hpp"
 
 #include <algorithm>
@@ -16,30 +17,6 @@ Cubic component(const scene::CurveSegment& s, int axis) {
     return {s.d[axis], s.c[axis], s.b[axis], s.a[axis]};
 }
 
-/// The smallest and largest value of a cubic over [0, 1].
-Vec2 rangeOver01(const Cubic& k, double atStart, double atEnd) {
-    double lo = std::min(atStart, atEnd), hi = std::max(atStart, atEnd);
-    const double slope[] = {k[1], 2 * k[2], 3 * k[3]};
-    double turns[2];
-    const int n = polynomialRoots(slope, 2, turns);
-    for (int i = 0; i < n; ++i) {
-        const double v = evaluatePolynomial(k.data(), 3, turns[i]).value;
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-    }
-    return {lo, hi};
-}
-
-/// Twice the signed area the segment sweeps about the origin, ∫ (x·y' − y·x') du over [0, 1]:
-/// summed over a closed curve, positive when it runs counter-clockwise.
-double sweptArea(const scene::CurveSegment& s) {
-    const Cubic x = component(s, 0), y = component(s, 1);
-    double area = 0;
-    for (int j = 0; j < 4; ++j)
-        for (int k = 1; k < 4; ++k) area += k * (x[j] * y[k] - y[j] * x[k]) / (j + k);
-    return area;
-}
-
 std::array<double, 7> square(const Cubic& k) {
     std::array<double, 7> out{};
     for (int i = 0; i < 4; ++i)
@@ -53,21 +30,20 @@ LatheGeometry::LatheGeometry(const scene::LatheShape& desc) {
     const std::vector<scene::CurveSegment> curve = scene::curveSegments(desc.points, desc.spline);
     if (curve.empty()) return;
     auto segments = std::make_shared<std::vector<Segment>>();
-    double radius = 0, yLo = curve.front().d.y, yHi = yLo, area = 0;
+    Vec2 lo(curve.front().d), hi(lo);
     for (const scene::CurveSegment& c : curve) {
-        const Vec2 x = rangeOver01(component(c, 0), c.d.x, c.end.x);
-        const Vec2 y = rangeOver01(component(c, 1), c.d.y, c.end.y);
-        const double r = std::max(std::abs(x.x), std::abs(x.y));
-        segments->push_back({c, y.x, y.y, r});
-        radius = std::max(radius, r);
-        yLo = std::min(yLo, y.x);
-        yHi = std::max(yHi, y.y);
-        area += sweptArea(c);
+        Vec2 segLo(c.d), segHi(segLo);
+        includeSegment(c, segLo, segHi);
+        const double r = std::max(std::abs(segLo.x), std::abs(segHi.x));
+        segments->push_back({c, segLo.y, segHi.y, r});
+        lo = glm::min(lo, segLo);
+        hi = glm::max(hi, segHi);
     }
+    const double radius = std::max(std::abs(lo.x), std::abs(hi.x));
     solid_ = scene::curveEnclosesSolid(curve);
-    // A curve from the axis to the axis is closed by the axis, which adds no area (x = 0).
-    outward_ = area >= 0 ? 1 : -1;
-    bounds_ = padded({Vec3(-radius, yLo, -radius), Vec3(radius, yHi, radius)});
+    // A curve from the axis to the axis is closed by the axis, where x = 0 adds no area.
+    outward_ = signedArea(curve) >= 0 ? 1 : -1;
+    bounds_ = padded({Vec3(-radius, lo.y, -radius), Vec3(radius, hi.y, radius)});
     segments_ = std::move(segments);
 }
 

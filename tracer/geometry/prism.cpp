@@ -1,6 +1,8 @@
 // The prism primitive: POV-Ray's, an outline of curve segments swept along y.
 #include "tracer/geometry/prism.hpp"
 
+#include "tracer/geometry/curve_segment_math.hpp"
+
 #include <algorithm>
 
 namespace crt::tracer {
@@ -9,39 +11,6 @@ namespace {
 
 double cross2(const Vec2& a, const Vec2& b) {
     return a.x * b.y - a.y * b.x;
-}
-
-/// ∮ x dz around a loop: its area, positive when it runs counter-clockwise in (x, z).
-double signedArea(const std::vector<scene::CurveSegment>& loop) {
-    double area = 0;
-    for (const scene::CurveSegment& s : loop) {
-        // ∫₀¹ x(u)·z'(u) du, term by term: xᵢ uⁱ · z'ⱼ uʲ integrates to xᵢ z'ⱼ / (i + j + 1).
-        const double x[4] = {s.d.x, s.c.x, s.b.x, s.a.x};
-        const double dz[3] = {s.c.y, 2 * s.b.y, 3 * s.a.y};
-        for (int i = 0; i < 4; ++i)
-            for (int j = 0; j < 3; ++j) area += x[i] * dz[j] / (i + j + 1);
-    }
-    return area;
-}
-
-/// The segment's extent, from its ends and where x or z turn.
-void includeSegment(const scene::CurveSegment& s, Vec2& lo, Vec2& hi) {
-    auto include = [&](const Vec2& p) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    };
-    include(s.d);
-    include(s.end);
-    for (int k = 0; k < 2; ++k) {
-        double r[2];
-        if (solveQuadratic(3 * s.a[k], s.b[k], s.c[k], r[0], r[1])) {
-            for (double u : r)
-                if (u > 0 && u < 1) include(s.at(u));
-        } else if (s.a[k] == 0 && s.b[k] != 0) {
-            const double u = -s.c[k] / (2 * s.b[k]);
-            if (u > 0 && u < 1) include(s.at(u));
-        }
-    }
 }
 
 /// Calls found(u) for each u in [0, 1] where g(p(u)) changes sign along the segment, g being
