@@ -11,6 +11,7 @@ find_package(CLI11 2.1 REQUIRED) # crtc's command line
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(CPP_HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
 find_package(PNG REQUIRED)
+find_package(Freetype REQUIRED) # Text's glyph outlines
 find_package(ZLIB REQUIRED) # a test deflates the strips of a TIFF it writes by hand
 # MPI (optional): with it, crtc under mpirun shares a render out over the processes
 # (apps/crtc/distributed); without it, crtc says so when started by mpirun.

@@ -33,6 +33,8 @@ VS Code files are in /usr/share/crt/editors.")
 # Depends: from the shared libraries the programs and the modules (image, MPI) link
 # (dpkg-shlibdeps, from dpkg-dev).
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# Not a library, so shlibdeps cannot see it: the font a Text uses when it names none.
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core")
 # Man pages are installed gzipped already (CrtManPages.cmake); control files 0644/0755.
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 

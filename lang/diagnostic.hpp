@@ -35,6 +35,7 @@ enum class WarningKind {
     DivisionByZero,
     OutsideScene,
     NoLights,
+    MissingGlyph,
 };
 
 struct Diagnostic {

@@ -32,6 +32,7 @@ struct Limits {
     uint32_t maxSize = 16'384;      ///< image width and height
     /// Vertices, normals, texture coordinates or triangles of one mesh file (each on its own).
     uint64_t maxMeshSize = scene::kDefaultMaxMeshSize;
+    uint64_t maxTextLength = 10'000; ///< characters of one Text
     /// The most nested calls the front end's stack (large_stack.hpp) holds: maxDepth's ceiling.
     static constexpr uint32_t kMaxSupportedDepth = 200'000;
     /// Approximate bytes of the strings, lists and entities evaluation makes (--max-memory).

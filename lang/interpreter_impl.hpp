@@ -242,6 +242,10 @@ private:
     scene::Shape prismShape(ObjectBuilder& b);
     scene::Shape sorShape(ObjectBuilder& b);
     scene::Shape latheShape(ObjectBuilder& b);
+    /// The `points` of a curve in the x-y plane as (x, y): an error at a point whose z is not
+    /// 0, saying `what` the points are.
+    std::vector<glm::dvec2> pointsInXY(ObjectBuilder& b, std::string_view what);
+    scene::Shape textShape(ObjectBuilder& b);
     Value buildMaterial(const ObjectBuilder& b);
     Value buildCamera(ObjectBuilder& b);
     Value buildLight(const ObjectBuilder& b);

@@ -101,6 +101,9 @@ struct ZeroSize {
         return glm::length(glm::cross(s.b - s.a, s.c - s.a)) == 0;
     }
     bool operator()(const scene::PrismShape& s) const { return s.from == s.to; }
+    bool operator()(const scene::TextShape& s) const {
+        return s.desc->thickness == 0 || (s.desc->outline && s.desc->outline->glyphs.empty());
+    }
     bool operator()(const scene::PolygonShape& s) const {
         const auto loops = scene::polygonLoops(s.points);
         return loops.empty() || glm::length(scene::newellNormal(loops.front())) == 0;
@@ -483,6 +486,7 @@ scene::Shape Interpreter::solidShape(ObjectBuilder& b) {
     case ObjectType::Prism: return prismShape(b);
     case ObjectType::Sor: return sorShape(b);
     case ObjectType::Lathe: return latheShape(b);
+    case ObjectType::Text: return textShape(b);
     case ObjectType::Torus:
     default: {
         scene::TorusShape s;
@@ -546,6 +550,20 @@ scene::Shape Interpreter::prismShape(ObjectBuilder& b) {
     return s;
 }
 
+std::vector<glm::dvec2> Interpreter::pointsInXY(ObjectBuilder& b, std::string_view what) {
+    std::vector<glm::dvec2> out;
+    const std::vector<Value>& points = *b.get("points")->list;
+    for (size_t i = 0; i < points.size(); ++i) {
+        const Value& p = points[i];
+        if (p.v[2] != 0) {
+            fail(b.whereItem("points", i),
+                 fmt::format("{}: point {} has z = {:g}, not 0", what, i + 1, p.v[2]));
+        }
+        out.push_back({p.v[0], p.v[1]});
+    }
+    return out;
+}
+
 /// The points of a Sor, as POV-Ray checks them: (radius, height) with z 0, at least four,
 /// no radius negative, heights rising from the second point to the last but one, and the
 /// first and last not level with the points two along, whose slopes they set.
@@ -556,20 +574,14 @@ scene::Shape Interpreter::sorShape(ObjectBuilder& b) {
     if (points.size() < 4)
         fail(b.where("points"),
              fmt::format("a Sor needs at least 4 points, not {}", points.size()));
+    s.points = pointsInXY(b, "a Sor's points are (radius, height) in the x-y plane");
     for (size_t i = 0; i < points.size(); ++i) {
         const Value& p = points[i];
-        if (p.v[2] != 0) {
-            fail(b.whereItem("points", i),
-                 fmt::format("a Sor's points are (radius, height) in the x-y plane: point {} has "
-                             "z = {:g}, not 0",
-                             i + 1, p.v[2]));
-        }
         if (p.v[0] < 0) {
             fail(
                 b.whereItem("points", i),
                 fmt::format("point {} of this Sor has a negative radius, x = {:g}", i + 1, p.v[0]));
         }
-        s.points.push_back({p.v[0], p.v[1]});
     }
     const size_t n = s.points.size();
     for (size_t i = 2; i + 1 < n; ++i) {
@@ -610,21 +622,15 @@ scene::Shape Interpreter::latheShape(ObjectBuilder& b) {
                          "multiple of 4",
                          points.size()));
     }
+    s.points = pointsInXY(b, "a Lathe's points are its curve in the x-y plane");
     for (size_t i = 0; i < points.size(); ++i) {
         const Value& p = points[i];
-        if (p.v[2] != 0) {
-            fail(b.whereItem("points", i),
-                 fmt::format("a Lathe's points are its curve in the x-y plane: point {} has z = "
-                             "{:g}, not 0",
-                             i + 1, p.v[2]));
-        }
         if (p.v[0] < 0 && scene::isOnCurve(i, points.size(), s.spline)) {
             fail(b.whereItem("points", i),
                  fmt::format("point {} of this Lathe is left of the y axis, x = {:g}; the curve's "
                              "x is the distance from the axis",
                              i + 1, p.v[0]));
         }
-        s.points.push_back({p.v[0], p.v[1]});
     }
     return s;
 }

@@ -230,6 +230,14 @@ constexpr AttributeInfo kLathe[] = {
      "How the points make the curve: linear, quadratic, cubic or bezier.", scene::kSplineKindNames},
     CRT_MATERIAL_ATTR,
 };
+constexpr AttributeInfo kText[] = {
+    {"text", A::String, true, "", "The characters, on one line."},
+    {"font", A::String, false, "\"\"",
+     "A TrueType or OpenType file, looked up as images are; \"\" for DejaVu Sans."},
+    {"thickness", A::Float, false, "0.25", "How far the glyphs are extruded along z."},
+    {"spacing", A::Float, false, "1", "Times the font's advance from one glyph to the next."},
+    CRT_MATERIAL_ATTR,
+};
 constexpr AttributeInfo kTorus[] = {
     {"center", A::Vec3, true, "", "Centre."},
     {"major", A::Float, true, "", "Radius of the ring."},
@@ -454,6 +462,10 @@ constexpr ObjectInfo kObjects[] = {
      kSor},
     {T::Lathe, "Lathe", C::Entity, true,
      "A curve turned about the y axis (POV-Ray's lathe; solid when the curve closes).", kLathe},
+    {T::Text, "Text", C::Entity, true,
+     "A line of text in 3D: glyph outlines on the x-y plane, one unit an em, extruded along z "
+     "(POV-Ray's text; solid).",
+     kText},
     {T::Merge, "Merge", C::Entity, true,
      "A union of solids without the surfaces inside it (POV-Ray's merge): for glass and "
      "anything seen through.",

@@ -21,6 +21,7 @@ std::string_view warningCode(WarningKind kind) {
     case WarningKind::DivisionByZero: return "division-by-zero";
     case WarningKind::OutsideScene: return "outside-scene";
     case WarningKind::NoLights: return "no-lights";
+    case WarningKind::MissingGlyph: return "missing-glyph";
     }
     return "";
 }
@@ -36,9 +37,11 @@ struct LimitSetting {
 constexpr LimitSetting kLimitSettings[] = {
     {"--max-steps", "the language server's maxSteps setting (crt.maxSteps in VS Code)"},
     {"--max-entities", "the language server's maxEntities setting (crt.maxEntities in VS Code)"},
-    {"--max-primitives", "the language server's maxPrimitives setting (crt.maxPrimitives in VS Code)"},
+    {"--max-primitives",
+     "the language server's maxPrimitives setting (crt.maxPrimitives in VS Code)"},
     {"--max-depth", "the language server's maxDepth setting"},
     {"--max-mesh-size", "the language server's maxMeshSize setting"},
+    {"--max-text-length", "the language server's maxTextLength setting"},
     {"--max-memory", "the language server's maxMemory setting"},
 };
 

@@ -325,6 +325,7 @@ void Server::readInitializationOptions(const json& params) {
     readCount(init, "maxSteps", analysis.limits.maxSteps);
     readCount(init, "maxEntities", analysis.limits.maxEntities);
     readCount(init, "maxMeshSize", analysis.limits.maxMeshSize);
+    readCount(init, "maxTextLength", analysis.limits.maxTextLength);
     readCount(init, "maxPrimitives", analysis.limits.render.maxPrimitives);
     readCount(init, "maxDepth", analysis.limits.maxDepth);
     int64_t milliseconds = 0;

@@ -6,6 +6,7 @@
 
 #include "scene/curve_outline.hpp"
 #include "scene/obj_mesh.hpp"
+#include "scene/text_outline.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -281,6 +282,20 @@ struct LatheShape {
     std::vector<glm::dvec2> points;
     SplineKind spline = SplineKind::Linear;
 };
+/// POV-Ray's text: the glyph outlines of scene/text_outline.hpp on the x-y plane, extruded
+/// from z = 0 to `thickness`. Out of line, as an entity's shape must stay small.
+struct TextDesc {
+    std::string text;
+    std::string font;         ///< as written in the script ("" for the default)
+    std::string resolvedFont; ///< the path found on disk, or "" if not looked up
+    double thickness = 0.25;
+    double spacing = 1;
+    /// Laid out by the front end; null when it did not read the font (checkFiles off).
+    std::shared_ptr<const TextOutline> outline;
+};
+struct TextShape {
+    std::shared_ptr<const TextDesc> desc;
+};
 struct MeshShape {
     std::string file;         ///< as written in the script
     std::string resolvedFile; ///< the path found on disk, or "" if not found
@@ -301,8 +316,8 @@ struct GroupNode { std::vector<int32_t> members; };
 
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape,
                            DiscShape, QuadShape, TriangleShape, SmoothTriangleShape, PolygonShape,
-                           SuperellipsoidShape, PrismShape, SorShape, LatheShape, MeshShape,
-                           CsgNode, TransformNode, GroupNode, InverseNode>;
+                           SuperellipsoidShape, PrismShape, SorShape, LatheShape, TextShape,
+                           MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
 // One per entity, and a generated scene has millions: a shape with more data keeps it out of
 // line (as a smooth triangle and a polygon do).
 static_assert(sizeof(Shape) <= 80, "keep every shape small");

@@ -140,6 +140,14 @@ struct ShapeJson {
         out["points"] = pointList(s.points);
         out["spline"] = kSplineKindNames[static_cast<int>(s.spline)];
     }
+    void operator()(const TextShape& s) {
+        out["type"] = "Text";
+        out["text"] = s.desc->text;
+        out["font"] = s.desc->font;
+        out["resolvedFont"] = s.desc->resolvedFont;
+        out["thickness"] = s.desc->thickness;
+        out["spacing"] = s.desc->spacing;
+    }
     void operator()(const MeshShape& s) {
         out["type"] = "Mesh";
         out["file"] = s.file;

@@ -42,6 +42,8 @@ bool evaluationOption(const std::string& arg, const std::function<std::string()>
     else if (arg == "--max-steps") limits.maxSteps = count<uint64_t>(arg, value());
     else if (arg == "--max-entities") limits.maxEntities = count<uint64_t>(arg, value());
     else if (arg == "--max-mesh-size") limits.maxMeshSize = count<uint64_t>(arg, value());
+    else if (arg == "--max-text-length")
+        limits.maxTextLength = count<uint64_t>(arg, value());
     else if (arg == "--max-primitives") limits.render.maxPrimitives = count<uint64_t>(arg, value());
     else if (arg == "--max-depth") limits.maxDepth = count<uint32_t>(arg, value());
     else return false;

@@ -299,6 +299,11 @@ void addEvaluationOptions(CLI::App& app, Options& o) {
         ->check(numberIn<uint64_t>(1, uint64_t{1} << 31, "an integer from 1 to 2147483648"))
         ->type_name("N")
         ->group(group);
+    app.add_option("--max-text-length", limits.maxTextLength,
+                   fmt::format("characters of one Text (default {})", limits.maxTextLength))
+        ->check(numberIn<uint64_t>(1, uint64_t{1} << 31, "an integer from 1 to 2147483648"))
+        ->type_name("N")
+        ->group(group);
     app.add_option("--max-size", limits.maxSize,
                    fmt::format("image width and height (default {})", limits.maxSize))
         ->check(numberIn<uint32_t>(1, std::numeric_limits<uint32_t>::max(), "a positive integer"))

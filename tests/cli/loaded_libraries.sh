@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # crtc loads only what a run needs: MPI's libraries only under mpirun (through crt_mpi.so), and
-# cpp-httplib with the OpenSSL and brotli libraries Debian builds it with only for --preview
-# (in crtc-preview). The dynamic loader's trace (LD_DEBUG=libs) names every library it
+# cpp-httplib with the OpenSSL libraries Debian builds it with only for --preview (in
+# crtc-preview). Brotli is not among them: Debian's FreeType, which reads Text's fonts, links
+# it for WOFF2 fonts. The dynamic loader's trace (LD_DEBUG=libs) names every library it
 # initialises, linked or dlopened.
 #   loaded_libraries.sh CRTC
 set -u
@@ -12,7 +13,7 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 source "$here/expect.sh"
 scene=$here/../mpi/still.crt
-unneeded="libmpi|libopen-pal|crt_mpi|libcpp-httplib|libssl|libcrypto|libbrotli"
+unneeded="libmpi|libopen-pal|crt_mpi|libcpp-httplib|libssl|libcrypto"
 
 initialised() { # the libraries named in $work/err that match $unneeded
     grep "calling init:" "$work/err" | grep -oE "[^ ]*($unneeded)[^ ]*" | xargs -rn1 basename | sort -u | xargs

@@ -148,6 +148,16 @@ inline scene::SceneDesc primitivesScene(const Placement& at, int width, int heig
         mat(0.4, 0.7, 0.9, 0.2));
     m.draw(m.transformed(ring, {test::scale(DVec3(0.35)), rotate({-60, 0, 10}),
                                 translate({-1.6, 0.1, -2.2}), toWorld[0], toWorld[1]}));
+    // Text: glyph prisms of quadratic curves with holes, in the default font.
+    auto text = std::make_shared<scene::TextDesc>();
+    text->text = "e8";
+    std::string fontError;
+    if (auto outline =
+            scene::layoutText(std::string(scene::kDefaultFontFile), text->text, 1, fontError))
+        text->outline = std::make_shared<const scene::TextOutline>(std::move(*outline));
+    int32_t label = m.entity(scene::TextShape{text}, mat(0.9, 0.9, 0.4, 0.2));
+    m.draw(m.transformed(label, {test::scale(DVec3(0.4)), rotate({10, -20, 0}),
+                                 translate({-0.4, -0.3, -2.4}), toWorld[0], toWorld[1]}));
     int32_t block = m.box(at.at({0.8, 0, -1.8}), at.at({1.6, 0.8, -1.0}), mat(0.8, 0.8, 0.8));
     int32_t dent = m.sphere(at.at({1.2, 0.8, -1.4}), s * 0.45, mat(0.9, 0.3, 0.3));
     m.draw(m.csg(scene::CsgOp::Difference, block, dent));

@@ -14,6 +14,7 @@
 #include "tracer/geometry/sor.hpp"
 #include "tracer/geometry/sphere.hpp"
 #include "tracer/geometry/superellipsoid.hpp"
+#include "tracer/geometry/text.hpp"
 #include "tracer/geometry/torus.hpp"
 #include "tracer/geometry/triangle.hpp"
 
@@ -23,10 +24,11 @@
 namespace crt::tracer {
 
 /// One primitive in its object space.
-using Geometry = std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry,
-                              ConeGeometry, TorusGeometry, DiscGeometry, QuadGeometry,
-                              TriangleGeometry, MeshTriangleGeometry, SuperellipsoidGeometry,
-                              PolygonGeometry, PrismGeometry, SorGeometry, LatheGeometry>;
+using Geometry =
+    std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry, ConeGeometry,
+                 TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshTriangleGeometry,
+                 SuperellipsoidGeometry, PolygonGeometry, PrismGeometry, SorGeometry, LatheGeometry,
+                 TextGeometry>;
 
 /// Object-space bounds (Bounds3::everything() for a plane, empty for a degenerate shape).
 Bounds3 geometryBounds(const Geometry& geometry);

@@ -9,11 +9,27 @@
 namespace crt::crtc::preview {
 
 std::string entityKind(const scene::EntityDesc& entity) {
-    static constexpr auto kNames = std::to_array<const char*>(
-        {"Sphere", "Box",    "Plane",    "Cylinder",       "Cone",    "Torus",
-         "Disc",   "Quad",   "Triangle", "SmoothTriangle", "Polygon", "Superellipsoid",
-         "Prism",  "Sor",    "Lathe",    "Mesh",           "CSG",     "transformed entity",
-         "group",  "inverse"});
+    static constexpr auto kNames = std::to_array<const char*>({"Sphere",
+                                                               "Box",
+                                                               "Plane",
+                                                               "Cylinder",
+                                                               "Cone",
+                                                               "Torus",
+                                                               "Disc",
+                                                               "Quad",
+                                                               "Triangle",
+                                                               "SmoothTriangle",
+                                                               "Polygon",
+                                                               "Superellipsoid",
+                                                               "Prism",
+                                                               "Sor",
+                                                               "Lathe",
+                                                               "Text",
+                                                               "Mesh",
+                                                               "CSG",
+                                                               "transformed entity",
+                                                               "group",
+                                                               "inverse"});
     static_assert(kNames.size() == std::variant_size_v<scene::Shape>,
                   "one name for each kind of shape, in the variant's order");
     if (auto* csg = std::get_if<scene::CsgNode>(&entity.shape)) {

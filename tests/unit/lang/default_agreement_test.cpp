@@ -73,6 +73,7 @@ constexpr Usage kUsages[] = {
      "@ } }"},
     {ObjectType::Lathe, "Scene { Lathe { points -> [vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 1, 0), "
                         "vec3(0, 1, 0)] @ } }"},
+    {ObjectType::Text, "Scene { Text { text -> \"crt\" @ } }"},
     {ObjectType::Prism,
      "Scene { Prism { points -> [vec3(0, 0, 1), vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 0, 1), "
      "vec3(0, 0, 0)] @ } }"},

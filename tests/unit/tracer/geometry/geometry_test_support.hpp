@@ -146,6 +146,10 @@ class Random {
     Vec3 inBox(double half) {
         return {uniform(-half, half), uniform(-half, half), uniform(-half, half)};
     }
+    /// A point uniformly within the box.
+    Vec3 pointIn(const Bounds3& b) {
+        return {uniform(b.lo.x, b.hi.x), uniform(b.lo.y, b.hi.y), uniform(b.lo.z, b.hi.z)};
+    }
     Vec3 unit() {
         for (;;) {
             Vec3 v = inBox(1);

@@ -154,8 +154,7 @@ TEST_CASE("lathe: random lines against the exact solid, for every spline kind") 
         Random rng(81);
         int most = 0;
         for (int i = 0; i < 400; ++i) {
-            const Vec3 target(rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y),
-                              rng.uniform(b.lo.z, b.hi.z));
+            const Vec3 target = rng.pointIn(b);
             const Ray ray = rng.lineThrough(target, 5);
             CrossingList list;
             g.crossLine(ray, list);

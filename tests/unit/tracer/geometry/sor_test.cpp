@@ -59,8 +59,7 @@ int checkRandomLines(const std::vector<glm::dvec2>& points, uint64_t seed, int l
     Random rng(seed);
     int most = 0;
     for (int i = 0; i < lines; ++i) {
-        const Vec3 target(rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y),
-                          rng.uniform(b.lo.z, b.hi.z));
+        const Vec3 target = rng.pointIn(b);
         const Ray ray = rng.lineThrough(target, 5);
         CrossingList list;
         g.crossLine(ray, list);
