@@ -246,6 +246,8 @@ private:
     /// 0, saying `what` the points are.
     std::vector<glm::dvec2> pointsInXY(ObjectBuilder& b, std::string_view what);
     scene::Shape textShape(ObjectBuilder& b);
+    scene::Shape blobShape(ObjectBuilder& b);
+    Value buildBlobComponent(const ObjectBuilder& b);
     Value buildMaterial(const ObjectBuilder& b);
     Value buildCamera(ObjectBuilder& b);
     Value buildLight(const ObjectBuilder& b);
@@ -335,6 +337,12 @@ private:
     std::vector<bool> reachable_; ///< per entity: drawn, or part of something drawn
     std::set<std::tuple<WarningKind, uint32_t, uint32_t>> warnedOnce_;
     std::vector<scene::LightDesc> lights_;
+    /// The BlobSphere and BlobCylinder values made, and where.
+    struct BlobComponentValue {
+        scene::BlobComponent component;
+        scene::SourceSpan source;
+    };
+    std::vector<BlobComponentValue> blobComponents_;
     std::vector<LightInfo> lightInfo_;
     std::vector<scene::CameraDesc> cameras_;
     std::vector<scene::BackgroundDesc> backgrounds_;

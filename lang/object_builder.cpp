@@ -133,6 +133,19 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
         if (!isSolid(v)) wrongType(a, v, fmt::format("a solid ({})", solidTypeList()));
         return;
     case AttrType::SolidList: checkSolidList(a, v); return;
+    case AttrType::BlobComponentList:
+        if (v.kind != ValueKind::List) wrongType(a, v, "a list of BlobSphere and BlobCylinder");
+        if (v.list->empty()) in.fail(a.value->range, "a Blob needs at least one component");
+        for (size_t i = 0; i < v.list->size(); ++i) {
+            const Value& item = (*v.list)[i];
+            if (item.kind != ValueKind::BlobComponent) {
+                in.fail(
+                    itemRange(a.value, i),
+                    fmt::format("item {} of '{}' must be a BlobSphere or a BlobCylinder, not {}",
+                                i + 1, a.name, typeName(item)));
+            }
+        }
+        return;
     case AttrType::PointList:
         if (v.kind != ValueKind::List) wrongType(a, v, "a list of vec3");
         for (size_t i = 0; i < v.list->size(); ++i) {

@@ -101,6 +101,10 @@ struct ZeroSize {
         return glm::length(glm::cross(s.b - s.a, s.c - s.a)) == 0;
     }
     bool operator()(const scene::PrismShape& s) const { return s.from == s.to; }
+    bool operator()(const scene::BlobShape& s) const {
+        return std::none_of(s.desc->components.begin(), s.desc->components.end(),
+                            [](const scene::BlobComponent& c) { return c.strength > 0; });
+    }
     bool operator()(const scene::TextShape& s) const {
         return s.desc->thickness == 0 || (s.desc->outline && s.desc->outline->glyphs.empty());
     }
@@ -369,6 +373,7 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
     case ObjectCategory::Light: return buildLight(b);
     case ObjectCategory::Background: return buildBackground(b);
     case ObjectCategory::Texture: return buildTexture(b);
+    case ObjectCategory::BlobComponent: return buildBlobComponent(b);
     case ObjectCategory::Settings: break; // a statement (execSettings), never a value
     }
     fail(node->typeRange, "unknown object type");
@@ -487,6 +492,7 @@ scene::Shape Interpreter::solidShape(ObjectBuilder& b) {
     case ObjectType::Sor: return sorShape(b);
     case ObjectType::Lathe: return latheShape(b);
     case ObjectType::Text: return textShape(b);
+    case ObjectType::Blob: return blobShape(b);
     case ObjectType::Torus:
     default: {
         scene::TorusShape s;
@@ -633,6 +639,38 @@ scene::Shape Interpreter::latheShape(ObjectBuilder& b) {
         }
     }
     return s;
+}
+
+/// A Blob: a threshold above 0 (or the solid would reach infinity), and its components.
+scene::Shape Interpreter::blobShape(ObjectBuilder& b) {
+    auto desc = std::make_shared<scene::BlobDesc>();
+    desc->threshold = b.number("threshold", desc->threshold);
+    if (!(desc->threshold > 0)) {
+        fail(b.where("threshold"),
+             fmt::format("a Blob's threshold must be above 0, not {:g}: the field is 0 far away, "
+                         "so the solid would fill space",
+                         desc->threshold));
+    }
+    for (const Value& v : *b.get("components")->list)
+        desc->components.push_back(blobComponents_[v.index].component);
+    return scene::BlobShape{std::move(desc)};
+}
+
+Value Interpreter::buildBlobComponent(const ObjectBuilder& b) {
+    scene::BlobComponent c;
+    c.cylinder = b.info.type == ObjectType::BlobCylinder;
+    c.a = b.vec(c.cylinder ? "base" : "center", c.a);
+    c.b = b.vec("top", c.a);
+    c.radius = b.number("radius", c.radius);
+    c.strength = b.number("strength", c.strength);
+    if (!(c.radius > 0))
+        fail(b.where("radius"),
+             fmt::format("a {}'s radius must be above 0, not {:g}", b.info.name, c.radius));
+    if (c.cylinder && c.a == c.b)
+        fail(b.where("top"), "a BlobCylinder needs 'base' and 'top' to differ");
+    blobComponents_.push_back({c, span(b.range)});
+    return Value::object(ValueKind::BlobComponent, b.info.type,
+                         static_cast<uint32_t>(blobComponents_.size() - 1));
 }
 
 /// The points of a Polygon: at least three, each loop of at least three, all in the plane of

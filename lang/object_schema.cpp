@@ -238,6 +238,24 @@ constexpr AttributeInfo kText[] = {
     {"spacing", A::Float, false, "1", "Times the font's advance from one glyph to the next."},
     CRT_MATERIAL_ATTR,
 };
+constexpr AttributeInfo kBlob[] = {
+    {"threshold", A::Float, false, "1",
+     "The solid is where the components' fields add up to more than this (> 0)."},
+    {"components", A::BlobComponentList, true, "",
+     "BlobSphere and BlobCylinder fields; a negative strength takes away."},
+    CRT_MATERIAL_ATTR,
+};
+constexpr AttributeInfo kBlobSphere[] = {
+    {"center", A::Vec3, true, "", "Centre."},
+    {"radius", A::Float, true, "", "How far the field reaches (> 0)."},
+    {"strength", A::Float, false, "1", "The field at the centre."},
+};
+constexpr AttributeInfo kBlobCylinder[] = {
+    {"base", A::Vec3, true, "", "One end of the axis."},
+    {"top", A::Vec3, true, "", "The other end."},
+    {"radius", A::Float, true, "", "How far the field reaches from the axis (> 0)."},
+    {"strength", A::Float, false, "1", "The field on the axis."},
+};
 constexpr AttributeInfo kTorus[] = {
     {"center", A::Vec3, true, "", "Centre."},
     {"major", A::Float, true, "", "Radius of the ring."},
@@ -466,6 +484,9 @@ constexpr ObjectInfo kObjects[] = {
      "A line of text in 3D: glyph outlines on the x-y plane, one unit an em, extruded along z "
      "(POV-Ray's text; solid).",
      kText},
+    {T::Blob, "Blob", C::Entity, true,
+     "Spheres and cylinders whose fields blend into one smooth shape (POV-Ray's blob; solid).",
+     kBlob},
     {T::Merge, "Merge", C::Entity, true,
      "A union of solids without the surfaces inside it (POV-Ray's merge): for glass and "
      "anything seen through.",
@@ -529,6 +550,12 @@ constexpr ObjectInfo kObjects[] = {
     {T::Waves, "Waves", C::Texture, false,
      "Waves from ten points near the origin, each of its own length (POV-Ray's waves).",
      kPlainPattern},
+    {T::BlobSphere, "BlobSphere", C::BlobComponent, false,
+     "A Blob's spherical field: strength · (1 − (d / radius)²)² within radius of the centre.",
+     kBlobSphere},
+    {T::BlobCylinder, "BlobCylinder", C::BlobComponent, false,
+     "A Blob's field about a segment, round at its ends: strength · (1 − (d / radius)²)².",
+     kBlobCylinder},
 };
 static_assert(std::size(kObjects) == static_cast<size_t>(ObjectType::Count));
 static_assert(std::size(kSettings) <= kMaxAttributes && std::size(kMaterial) <= kMaxAttributes);
@@ -604,6 +631,7 @@ std::string_view attrTypeName(AttrType type) {
     case A::Solid: return "solid";
     case A::SolidList: return "list of solids";
     case A::PointList: return "list of vec3";
+    case A::BlobComponentList: return "list of blob components";
     }
     return "value";
 }

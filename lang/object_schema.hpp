@@ -33,6 +33,7 @@ enum class ObjectType : uint8_t {
     Sor,
     Lathe,
     Text,
+    Blob,
     Merge,
     Inverse,
     Disc,
@@ -74,10 +75,21 @@ enum class ObjectType : uint8_t {
     Bump,
     Ripples,
     Waves,
+    BlobSphere,
+    BlobCylinder,
     Count,
 };
 
-enum class ObjectCategory : uint8_t { Settings, Camera, Light, Material, Background, Entity, Texture };
+enum class ObjectCategory : uint8_t {
+    Settings,
+    Camera,
+    Light,
+    Material,
+    Background,
+    Entity,
+    Texture,
+    BlobComponent, ///< a part of a Blob's field
+};
 
 /// What an attribute accepts.
 enum class AttrType : uint8_t {
@@ -90,19 +102,20 @@ enum class AttrType : uint8_t {
     Choice, ///< a string from `choices` (case-insensitive)
     Material,
     Camera,
-    Background,   ///< a Background or a color
-    LightList,    ///< a list of lights
-    Texture,      ///< a pattern or Image texture
-    Bump,         ///< a NoiseBump or ImageBump
-    Gamma,        ///< a float > 0, or "srgb"
-    Aperture,     ///< a shape name, or an int >= 3 (polygon sides)
-    ColorMap,     ///< a list of [value, colour] pairs
-    Turbulence,   ///< a float (the same on every axis) or a vec3
-    MaterialMap,  ///< a list of [value, material] pairs
-    MaterialList, ///< a list of materials
-    Solid,        ///< an entity usable in CSG
-    SolidList,    ///< a list of at least one such entity
-    PointList,    ///< a list of vec3, every component finite
+    Background,        ///< a Background or a color
+    LightList,         ///< a list of lights
+    Texture,           ///< a pattern or Image texture
+    Bump,              ///< a NoiseBump or ImageBump
+    Gamma,             ///< a float > 0, or "srgb"
+    Aperture,          ///< a shape name, or an int >= 3 (polygon sides)
+    ColorMap,          ///< a list of [value, colour] pairs
+    Turbulence,        ///< a float (the same on every axis) or a vec3
+    MaterialMap,       ///< a list of [value, material] pairs
+    MaterialList,      ///< a list of materials
+    Solid,             ///< an entity usable in CSG
+    SolidList,         ///< a list of at least one such entity
+    PointList,         ///< a list of vec3, every component finite
+    BlobComponentList, ///< a list of at least one BlobSphere or BlobCylinder
 };
 
 struct AttributeInfo {

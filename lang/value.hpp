@@ -32,6 +32,7 @@ enum class ValueKind : uint8_t {
     Camera,
     Background,
     Texture,
+    BlobComponent, ///< a BlobSphere or BlobCylinder, for a Blob's components
     Macro,
     Builtin,
     Modifiers, ///< a list of modifiers held as a value: `<rotate v, material m>`
@@ -95,7 +96,7 @@ struct Value {
 
     bool isNumber() const { return kind == ValueKind::Int || kind == ValueKind::Float; }
     double asDouble() const { return kind == ValueKind::Int ? static_cast<double>(i) : f; }
-    bool isObject() const { return kind >= ValueKind::Entity && kind <= ValueKind::Texture; }
+    bool isObject() const { return kind >= ValueKind::Entity && kind <= ValueKind::BlobComponent; }
 };
 
 /// The type's name as messages show it: "int", "vec3", "Sphere", "macro".

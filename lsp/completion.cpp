@@ -84,6 +84,7 @@ bool objectFits(AttrType type, const ObjectInfo& info) {
     case AttrType::Texture: return isColorTexture(info.type);
     case AttrType::Bump: return isBumpTexture(info.type);
     case AttrType::Solid: return info.category == ObjectCategory::Entity && info.solid;
+    case AttrType::BlobComponentList: return info.category == ObjectCategory::BlobComponent;
     default: return false;
     }
 }
@@ -112,7 +113,8 @@ int typeFit(AttrType want, const std::string& type) {
     case AttrType::MaterialMap:
     case AttrType::MaterialList:
     case AttrType::SolidList:
-    case AttrType::PointList: return type == "list" ? 0 : -1;
+    case AttrType::PointList:
+    case AttrType::BlobComponentList: return type == "list" ? 0 : -1;
     case AttrType::Turbulence: return type == "float" || type == "int" || type == "vec3" ? 0 : -1;
     }
     return 1;

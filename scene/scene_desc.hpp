@@ -296,6 +296,23 @@ struct TextDesc {
 struct TextShape {
     std::shared_ptr<const TextDesc> desc;
 };
+/// One of a blob's components: its field is strength · (1 − (d / radius)²)² within `radius`
+/// of its centre (a sphere) or of the segment from `a` to `b` (a cylinder with round ends),
+/// d being the distance; nothing farther.
+struct BlobComponent {
+    bool cylinder = false;
+    glm::dvec3 a{0.0}, b{0.0}; ///< the centre, or the segment's ends
+    double radius = 1;
+    double strength = 1;
+};
+/// POV-Ray's blob: the solid where the components' fields add up to more than `threshold`.
+struct BlobDesc {
+    double threshold = 1;
+    std::vector<BlobComponent> components;
+};
+struct BlobShape {
+    std::shared_ptr<const BlobDesc> desc;
+};
 struct MeshShape {
     std::string file;         ///< as written in the script
     std::string resolvedFile; ///< the path found on disk, or "" if not found
@@ -317,7 +334,7 @@ struct GroupNode { std::vector<int32_t> members; };
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape,
                            DiscShape, QuadShape, TriangleShape, SmoothTriangleShape, PolygonShape,
                            SuperellipsoidShape, PrismShape, SorShape, LatheShape, TextShape,
-                           MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
+                           BlobShape, MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
 // One per entity, and a generated scene has millions: a shape with more data keeps it out of
 // line (as a smooth triangle and a polygon do).
 static_assert(sizeof(Shape) <= 80, "keep every shape small");

@@ -148,6 +148,26 @@ struct ShapeJson {
         out["thickness"] = s.desc->thickness;
         out["spacing"] = s.desc->spacing;
     }
+    void operator()(const BlobShape& s) {
+        out["type"] = "Blob";
+        out["threshold"] = s.desc->threshold;
+        Json components = Json::array();
+        for (const BlobComponent& c : s.desc->components) {
+            Json j;
+            if (c.cylinder) {
+                j["type"] = "BlobCylinder";
+                j["base"] = vec(c.a);
+                j["top"] = vec(c.b);
+            } else {
+                j["type"] = "BlobSphere";
+                j["center"] = vec(c.a);
+            }
+            j["radius"] = c.radius;
+            j["strength"] = c.strength;
+            components.push_back(std::move(j));
+        }
+        out["components"] = std::move(components);
+    }
     void operator()(const MeshShape& s) {
         out["type"] = "Mesh";
         out["file"] = s.file;

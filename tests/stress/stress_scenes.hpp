@@ -158,6 +158,16 @@ inline scene::SceneDesc primitivesScene(const Placement& at, int width, int heig
     int32_t label = m.entity(scene::TextShape{text}, mat(0.9, 0.9, 0.4, 0.2));
     m.draw(m.transformed(label, {test::scale(DVec3(0.4)), rotate({10, -20, 0}),
                                  translate({-0.4, -0.3, -2.4}), toWorld[0], toWorld[1]}));
+    // A blob: two spheres and a cylinder blended, a negative sphere denting them.
+    auto blob = std::make_shared<scene::BlobDesc>();
+    blob->threshold = 0.5;
+    blob->components = {{false, {-0.6, 0, 0}, {-0.6, 0, 0}, 1, 1},
+                        {false, {0.6, 0, 0}, {0.6, 0, 0}, 1, 1},
+                        {true, {0, -1, 0}, {0, 1.2, 0.3}, 0.5, 1.2},
+                        {false, {0.3, 0.3, -0.6}, {0.3, 0.3, -0.6}, 0.5, -1}};
+    int32_t drop2 = m.entity(scene::BlobShape{blob}, mat(0.5, 0.7, 0.9, 0.2));
+    m.draw(m.transformed(drop2, {test::scale(DVec3(0.25)), rotate({-20, 30, 0}),
+                                 translate({0.5, 0.6, -2.2}), toWorld[0], toWorld[1]}));
     int32_t block = m.box(at.at({0.8, 0, -1.8}), at.at({1.6, 0.8, -1.0}), mat(0.8, 0.8, 0.8));
     int32_t dent = m.sphere(at.at({1.2, 0.8, -1.4}), s * 0.45, mat(0.9, 0.3, 0.3));
     m.draw(m.csg(scene::CsgOp::Difference, block, dent));

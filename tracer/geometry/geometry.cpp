@@ -89,6 +89,8 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape) {
                 return Geometry(LatheGeometry(s));
             else if constexpr (std::is_same_v<S, scene::TextShape>)
                 return Geometry(TextGeometry(s));
+            else if constexpr (std::is_same_v<S, scene::BlobShape>)
+                return Geometry(BlobGeometry(s));
             else if constexpr (std::is_same_v<S, scene::SuperellipsoidShape>)
                 return Geometry(SuperellipsoidGeometry(s));
             else

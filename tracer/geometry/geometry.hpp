@@ -1,6 +1,7 @@
 // Every primitive behind one type, and the queries the renderer runs on them.
 #pragma once
 
+#include "tracer/geometry/blob.hpp"
 #include "tracer/geometry/box.hpp"
 #include "tracer/geometry/cone.hpp"
 #include "tracer/geometry/cylinder.hpp"
@@ -28,7 +29,7 @@ using Geometry =
     std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry, ConeGeometry,
                  TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshTriangleGeometry,
                  SuperellipsoidGeometry, PolygonGeometry, PrismGeometry, SorGeometry, LatheGeometry,
-                 TextGeometry>;
+                 TextGeometry, BlobGeometry>;
 
 /// Object-space bounds (Bounds3::everything() for a plane, empty for a degenerate shape).
 Bounds3 geometryBounds(const Geometry& geometry);

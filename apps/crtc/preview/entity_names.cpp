@@ -9,27 +9,12 @@
 namespace crt::crtc::preview {
 
 std::string entityKind(const scene::EntityDesc& entity) {
-    static constexpr auto kNames = std::to_array<const char*>({"Sphere",
-                                                               "Box",
-                                                               "Plane",
-                                                               "Cylinder",
-                                                               "Cone",
-                                                               "Torus",
-                                                               "Disc",
-                                                               "Quad",
-                                                               "Triangle",
-                                                               "SmoothTriangle",
-                                                               "Polygon",
-                                                               "Superellipsoid",
-                                                               "Prism",
-                                                               "Sor",
-                                                               "Lathe",
-                                                               "Text",
-                                                               "Mesh",
-                                                               "CSG",
-                                                               "transformed entity",
-                                                               "group",
-                                                               "inverse"});
+    // clang-format off
+    static constexpr auto kNames = std::to_array<const char*>({
+        "Sphere", "Box", "Plane", "Cylinder", "Cone", "Torus", "Disc", "Quad", "Triangle",
+        "SmoothTriangle", "Polygon", "Superellipsoid", "Prism", "Sor", "Lathe", "Text", "Blob",
+        "Mesh", "CSG", "transformed entity", "group", "inverse"});
+    // clang-format on
     static_assert(kNames.size() == std::variant_size_v<scene::Shape>,
                   "one name for each kind of shape, in the variant's order");
     if (auto* csg = std::get_if<scene::CsgNode>(&entity.shape)) {

@@ -73,6 +73,13 @@ constexpr Usage kUsages[] = {
      "@ } }"},
     {ObjectType::Lathe, "Scene { Lathe { points -> [vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 1, 0), "
                         "vec3(0, 1, 0)] @ } }"},
+    {ObjectType::Blob,
+     "Scene { Blob { components -> [BlobSphere { center -> vec3(0, 0, 0) radius -> 2 }] @ } }"},
+    {ObjectType::BlobSphere,
+     "Scene { Blob { components -> [BlobSphere { center -> vec3(0, 0, 0) radius -> 2 @ }] } }"},
+    {ObjectType::BlobCylinder,
+     "Scene { Blob { components -> [BlobCylinder { base -> vec3(0, 0, 0) top -> vec3(0, 1, 0) "
+     "radius -> 2 @ }] } }"},
     {ObjectType::Text, "Scene { Text { text -> \"crt\" @ } }"},
     {ObjectType::Prism,
      "Scene { Prism { points -> [vec3(0, 0, 1), vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 0, 1), "
@@ -235,7 +242,8 @@ std::string otherValue(const AttributeInfo& attr) {
     case AttrType::MaterialList:
     case AttrType::Solid:
     case AttrType::SolidList:
-    case AttrType::PointList: return ""; // required: no default to differ from
+    case AttrType::PointList:
+    case AttrType::BlobComponentList: return ""; // required: no default to differ from
     }
     return "";
 }
