@@ -45,9 +45,10 @@ BlobGeometry::BlobGeometry(const scene::BlobShape& desc) {
     components_ = std::move(components);
 }
 
-double BlobGeometry::fieldAt(const Vec3& p, Vec3* gradient) const {
+double BlobGeometry::fieldAt(const Vec3& p, Vec3* gradient, double* error) const {
     double field = 0;
     if (gradient) *gradient = Vec3(0.0);
+    if (error) *error = 0;
     for (const Component& c : *components_) {
         // The nearest point of the component's centre or segment.
         Vec3 nearest = c.a;
@@ -59,8 +60,21 @@ double BlobGeometry::fieldAt(const Vec3& p, Vec3* gradient) const {
         const double w = 1 - d2 / c.radius2;
         field += c.strength * w * w;
         if (gradient) *gradient -= (4 * c.strength * w / c.radius2) * v;
+        // d² rounds relative to the sizes of the point and the component; the rest a little.
+        const double size = sumAbs(p) + sumAbs(c.a) + sumAbs(c.axis);
+        if (error)
+            *error += std::abs(c.strength) *
+                      (errorGamma(8) + 4 * errorGamma(6) * size * size / c.radius2);
     }
     return field;
+}
+
+double BlobGeometry::pieceField(const Piece& p, const Vec3& x) const {
+    const Component& c = (*components_)[p.component];
+    Vec3 v = x - (p.centre ? *p.centre : c.a);
+    if (!p.centre) v -= (glm::dot(v, c.axis) / c.axisLength2) * c.axis;
+    const double w = std::max(0.0, 1 - glm::dot(v, v) / c.radius2);
+    return c.strength * w * w;
 }
 
 void BlobGeometry::addPieces(const Ray& ray, uint32_t i, std::vector<Piece>& pieces) const {
@@ -134,7 +148,19 @@ void BlobGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
     // threshold − field at each end, once, so that neighbouring spans agree on its sign.
     gaps.clear();
-    for (double t : ends) gaps.push_back(threshold_ - fieldAt(ray.at(t)));
+    for (double t : ends) {
+        const Vec3 x = ray.at(t);
+        double gap = threshold_;
+        // A cylinder's pieces meet at its end planes with the same field: count one.
+        uint32_t counted = UINT32_MAX;
+        for (const Piece& p : pieces) {
+            if (p.t0 <= t && p.t1 >= t && p.component != counted) {
+                gap -= pieceField(p, x);
+                counted = p.component;
+            }
+        }
+        gaps.push_back(gap);
+    }
     for (size_t k = 0; k + 1 < ends.size(); ++k)
         crossSpan(ray, ends[k], ends[k + 1], gaps[k], gaps[k + 1], pieces, out);
 }
@@ -167,12 +193,11 @@ void BlobGeometry::crossSpan(const Ray& ray, double ta, double tb, double gapA, 
         const Vec3 x = ray.at(t);
         double gap = threshold_, dgap = 0;
         for (const Piece* p : active) {
+            gap -= pieceField(*p, x);
+            if (!slope) continue;
             const Component& c = components[p->component];
-            Vec3 v = x - (p->centre ? *p->centre : c.a);
-            if (!p->centre) v -= (glm::dot(v, c.axis) / c.axisLength2) * c.axis;
-            const double w = 1 - glm::dot(v, v) / c.radius2;
-            gap -= c.strength * w * w;
-            dgap += c.strength * 2 * w * (2 * p->A * t + p->B) * h / c.radius2;
+            const double q = (p->A * t + p->B) * t + p->C;
+            dgap += c.strength * 2 * (1 - q / c.radius2) * (2 * p->A * t + p->B) * h / c.radius2;
         }
         if (slope) *slope = dgap;
         return gap;
@@ -190,16 +215,10 @@ void BlobGeometry::crossSpan(const Ray& ray, double ta, double tb, double gapA, 
 SurfacePoint BlobGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool) const {
     const Vec3 p = ray.at(crossing.t);
     Vec3 gradient;
-    const double field = fieldAt(p, &gradient);
+    double fieldError;
+    const double field = fieldAt(p, &gradient, &fieldError);
     const double len = glm::length(gradient);
     const Vec3 n = len > 0 ? -gradient / len : Vec3(0, 1, 0);
-    // Each component's field rounds with its distance, relative to the point's size.
-    double fieldError = 0;
-    for (const Component& c : *components_) {
-        const double reach = sumAbs(p) + sumAbs(c.a) + sumAbs(c.axis);
-        fieldError +=
-            std::abs(c.strength) * (errorGamma(8) + 4 * errorGamma(6) * reach * reach / c.radius2);
-    }
     const double scale = len > 0 ? 1 / len : 0;
     const RefinedPoint r =
         refineOntoSurface(p, (threshold_ - field) * scale, fieldError * scale, n);

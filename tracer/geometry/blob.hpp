@@ -25,8 +25,8 @@ class BlobGeometry {
     bool solid() const { return true; }
     MappingAxis mappingAxis() const { return {Vec3(0.0), Vec3(0, 1, 0)}; }
 
-    /// The field and its gradient at a point.
-    double fieldAt(const Vec3& p, Vec3* gradient = nullptr) const;
+    /// The field at a point; also its gradient, and a bound of its rounding error.
+    double fieldAt(const Vec3& p, Vec3* gradient = nullptr, double* error = nullptr) const;
 
   private:
     struct Piece;
@@ -37,6 +37,8 @@ class BlobGeometry {
     };
     /// Where the line is within reach of the point c: false if nowhere.
     static bool pointReach(const Ray& ray, const Vec3& c, double r2, Piece& piece);
+    /// The field of the piece's component at x, a point the piece holds.
+    double pieceField(const Piece& p, const Vec3& x) const;
     /// Appends the pieces of component i the line passes (blob.cpp's Piece).
     void addPieces(const Ray& ray, uint32_t i, std::vector<Piece>& pieces) const;
     /// Appends the crossings between ta and tb, where the same pieces are in reach.
