@@ -173,9 +173,24 @@ void BlobGeometry::crossSpan(const Ray& ray, double ta, double tb, double gapA, 
     double g[5] = {threshold_, 0, 0, 0, 0};
     thread_local std::vector<const Piece*> active;
     active.clear();
+    // The most the field can reach in the span, from each piece's least distance in it: a
+    // span of the reaches' outskirts never passes the threshold, and is left at that.
+    double most = 0;
     for (const Piece& p : pieces) {
         if (!(p.t0 <= ta && p.t1 >= tb)) continue;
         active.push_back(&p);
+        const Component& c = components[p.component];
+        if (c.strength > 0) {
+            const double t = p.A > 0 ? std::clamp(-p.B / (2 * p.A), ta, tb) : ta;
+            const double q = std::min({(p.A * t + p.B) * t + p.C, (p.A * ta + p.B) * ta + p.C,
+                                       (p.A * tb + p.B) * tb + p.C});
+            const double w = std::max(0.0, 1 - q / c.radius2);
+            most += c.strength * w * w;
+        }
+    }
+    if (active.empty() || most < threshold_ * (1 - 1e-9)) return; // outside throughout
+    for (const Piece* piece : active) {
+        const Piece& p = *piece;
         const Component& c = components[p.component];
         const double q0 = (p.A * ta + p.B) * ta + p.C, q1 = (2 * p.A * ta + p.B) * h,
                      q2 = p.A * h * h;
@@ -186,7 +201,6 @@ void BlobGeometry::crossSpan(const Ray& ray, double ta, double tb, double gapA, 
         g[3] -= c.strength * 2 * w1 * w2;
         g[4] -= c.strength * w2 * w2;
     }
-    if (active.empty()) return; // no field: outside
     // The same from the point itself, which rounds less than the coefficients.
     auto gapAt = [&](double u, double* slope) {
         const double t = ta + u * h;
