@@ -1,12 +1,16 @@
 // The crossing list's rarely used parts: spilling beyond its places, and sorting.
 #include "tracer/geometry/shape.hpp"
 
+#include <algorithm>
+
 namespace crt::tracer {
 
-void CrossingList::spill(const Crossing& c) {
-    // A list reused after `count` was reset drops what it spilled before.
-    spilled_.resize(static_cast<size_t>(count - kInPlace));
-    spilled_.push_back(c);
+void CrossingList::grow() {
+    auto more = std::make_unique<Crossing[]>(static_cast<size_t>(2 * capacity_));
+    std::copy(data_, data_ + count, more.get());
+    heap_ = std::move(more);
+    data_ = heap_.get();
+    capacity_ *= 2;
 }
 
 void CrossingList::sortByT() {

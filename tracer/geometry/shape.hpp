@@ -10,6 +10,7 @@
 #include "tracer/geometry/bounds.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace crt::tracer {
@@ -30,30 +31,32 @@ class CrossingList {
   public:
     static constexpr int kInPlace = 8;
 
+    CrossingList() = default;
+    CrossingList(const CrossingList&) = delete; // data_ may point into the list itself
+    CrossingList& operator=(const CrossingList&) = delete;
+
     int count = 0;
     /// Whether the line is inside the solid before its first crossing (a half-space can
     /// start inside; bounded solids never do). Each crossing of a solid toggles inside/outside.
     bool startsInside = false;
 
     void add(double t, uint32_t part) {
-        if (count < kInPlace)
-            inPlace_[count] = {t, part};
-        else
-            spill({t, part});
-        ++count;
+        if (count == capacity_) grow();
+        data_[count++] = {t, part};
     }
-    const Crossing& operator[](int i) const {
-        return i < kInPlace ? inPlace_[i] : spilled_[i - kInPlace];
-    }
-    Crossing& operator[](int i) { return i < kInPlace ? inPlace_[i] : spilled_[i - kInPlace]; }
+    const Crossing& operator[](int i) const { return data_[i]; }
+    Crossing& operator[](int i) { return data_[i]; }
     /// Sorts the crossings by t, for shapes that find them out of order.
     void sortByT();
 
   private:
-    void spill(const Crossing& c);
+    /// Moves the crossings to the heap, with twice the room (kept when the list is reused).
+    void grow();
 
     Crossing inPlace_[kInPlace];
-    std::vector<Crossing> spilled_;
+    Crossing* data_ = inPlace_;
+    int capacity_ = kInPlace;
+    std::unique_ptr<Crossing[]> heap_;
 };
 
 /// The surface where a crossing happened, in object space.

@@ -195,7 +195,8 @@ TEST_CASE("prism: surface points, normals and error bounds") {
                 SurfaceFn f;
                 if (list[k].part < 2) {
                     const LD h = list[k].part == 0 ? s.from : s.to;
-                    f = [=](const LVec& p) { return list[k].part == 0 ? h - p.y : p.y - h; };
+                    const bool bottom = list[k].part == 0;
+                    f = [=](const LVec& p) { return bottom ? h - p.y : p.y - h; };
                 } else {
                     const V2 a = s.points[list[k].part - 2], b = s.points[list[k].part - 1];
                     const LVec n(LD(b.y) - a.y, 0, LD(a.x) - b.x);

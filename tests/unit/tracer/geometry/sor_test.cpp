@@ -121,7 +121,8 @@ TEST_CASE("sor: surface points, outward normals and error bounds") {
                 SurfaceFn f;
                 if (list[k].part < 2) {
                     const LD h = list[k].part == 0 ? kVase[1].y : kVase[5].y;
-                    f = [=](const LVec& q) { return list[k].part == 0 ? h - q.y : q.y - h; };
+                    const bool bottom = list[k].part == 0;
+                    f = [=](const LVec& q) { return bottom ? h - q.y : q.y - h; };
                 } else {
                     const size_t seg = list[k].part - 2;
                     f = [=](const LVec& q) { return exact.sideDistance(q, seg); };
