@@ -51,6 +51,12 @@ has 'image.crt:1:48: error: cannot find image "/etc/hostname" in the script.s fo
 printf 'Scene { Mesh { file -> "/proc/self/maps" } }\n' >"$work/proj/mesh.crt"
 run 1 "a mesh outside the roots" --check "$work/proj/mesh.crt"
 has 'mesh.crt:1:24: error: cannot find mesh "/proc/self/maps".*outside' "mesh outside"
+# A font as an image: refused outside the roots, even DejaVu's (the default is not refused).
+printf 'Scene { Text { text -> "a" font -> "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf" } }\n' >"$work/proj/font.crt"
+run 1 "a font outside the roots" --check "$work/proj/font.crt"
+has 'font.crt:1:36: error: cannot find font "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf".*outside' "font outside"
+printf 'Scene { Text { text -> "a" } }\n' >"$work/proj/default-font.crt"
+run 0 "the default font" --check "$work/proj/default-font.crt"
 background ../other/sky.ppm >"$work/proj/up.crt"
 run 1 "an image in a sibling folder" --check "$work/proj/up.crt"
 has 'error: image ".*other/sky.ppm" is outside the folders' "relative image outside"
