@@ -194,22 +194,16 @@ GrazingCase sphereCase() {
     return c;
 }
 
-/// A sphere as a blob: one component whose field passes the threshold at radius 1.
+/// The sphere as a blob: one component whose field passes the threshold at radius 1.
 GrazingCase blobCase() {
-    const DVec3 center(0.1, 0.2, 0.3);
+    GrazingCase c = sphereCase();
+    const DVec3 center = c.inside;
     // strength · (1 − (d/r)²)² = 0.25 at d = r·√(1 − √0.25) = r·√0.5: r = √2 gives 1.
     auto blob = std::make_shared<scene::BlobDesc>();
     blob->threshold = 0.25;
     blob->components = {{false, center, center, std::sqrt(2.0), 1}};
-    GrazingCase c;
     c.name = "blob";
     c.add = [=](SceneMaker& m, int32_t mat) { m.draw(m.entity(scene::BlobShape{blob}, mat)); };
-    c.hit = [=](const TestRay& r) { return sphereHit(r, center, 1); };
-    c.camera = DVec3(0.7, 1.3, -4.5);
-    c.inside = center;
-    c.outside = center + DVec3(3, 0, 0);
-    c.overview = test::lookAt(c.camera, center, 35);
-    c.overviewLight = glm::normalize(DVec3(1, 0.2, 0.1));
     return c;
 }
 
