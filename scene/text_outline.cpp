@@ -94,6 +94,26 @@ struct FreeType {
     }
 };
 
+/// Appends the glyph's outline with its origin at x = origin (font units), in ems; a glyph
+/// without contours (a space) adds nothing.
+FT_Error placeGlyph(FT_Outline& outline, double origin, double em,
+                    std::vector<GlyphOutline>& glyphs) {
+    ContourBuilder contours;
+    if (FT_Error e = FT_Outline_Decompose(&outline, &kDecompose, &contours)) return e;
+    contours.close();
+    if (contours.points.empty()) return 0;
+    GlyphOutline g;
+    g.points.reserve(contours.points.size());
+    for (const V& p : contours.points) g.points.push_back(V(origin + p.x, p.y) / em);
+    g.lo = g.hi = g.points.front();
+    for (const V& p : g.points) {
+        g.lo = glm::min(g.lo, p);
+        g.hi = glm::max(g.hi, p);
+    }
+    glyphs.push_back(std::move(g));
+    return 0;
+}
+
 } // namespace
 
 size_t TextOutline::byteSize() const {
@@ -177,22 +197,10 @@ std::optional<TextOutline> layoutText(std::span<const unsigned char> font, std::
             pen += advance + static_cast<double>(kern.x);
         }
         previous = glyph;
-        ContourBuilder contours;
-        if (FT_Error e = FT_Outline_Decompose(&slot->outline, &kDecompose, &contours)) {
+        if (FT_Error e = placeGlyph(slot->outline, origin, em, out.glyphs)) {
             error = fontProblem(e);
             return std::nullopt;
         }
-        contours.close();
-        if (contours.points.empty()) continue; // a space
-        GlyphOutline g;
-        g.points.reserve(contours.points.size());
-        for (const V& p : contours.points) g.points.push_back(V(origin + p.x, p.y) / em);
-        g.lo = g.hi = g.points.front();
-        for (const V& p : g.points) {
-            g.lo = glm::min(g.lo, p);
-            g.hi = glm::max(g.hi, p);
-        }
-        out.glyphs.push_back(std::move(g));
     }
     return out;
 }
