@@ -85,6 +85,7 @@ std::string Interpreter::objectText(const Value& value) const {
     case ValueKind::Camera: where = cameras_[value.index].source; break;
     case ValueKind::Background: where = backgrounds_[value.index].source; break;
     case ValueKind::BlobComponent: where = blobComponents_[value.index].source; break;
+    case ValueKind::Spline: where = splines_[value.index].source; break;
     default: break;
     }
     return fmt::format("<{} {}:{}>", type, where.line, where.column);
@@ -351,6 +352,12 @@ Value b_print(BuiltinCall& call) {
     return Value::none();
 }
 
+Value b_spline(BuiltinCall& call) {
+    const Value& s = call.args[0];
+    if (s.kind != ValueKind::Spline) argError(call, 0, "a Spline");
+    return fromVector(call.interpreter.splineAt(s.index, number(call, 1)));
+}
+
 constexpr BuiltinInfo kBuiltins[] = {
     {"vec3", 3, 3, "vec3(x, y, z)", "A 3D vector.", b_vec3},
     {"rgb", 3, 3, "rgb(r, g, b)", "A linear colour; components may exceed 1.", b_rgb},
@@ -376,6 +383,10 @@ constexpr BuiltinInfo kBuiltins[] = {
     {"clamp", 3, 3, "clamp(x, lo, hi)", "x limited to [lo, hi].", b_clamp},
     {"mix", 3, 3, "mix(a, b, t)", "a + (b - a) * t, for numbers, vec3 or colours.", b_mix},
     {"radians", 1, 1, "radians(degrees)", "Degrees to radians.", b_radians},
+    {"spline", 2, 2, "spline(s, t)",
+     "The point of Spline s at t, between its first and last times (0 and 1 by default); "
+     "clamped to its ends outside them.",
+     b_spline},
     {"degrees", 1, 1, "degrees(radians)", "Radians to degrees.", b_degrees},
     {"length", 1, 1, "length(v)", "Length of a vec3.", b_length},
     {"normalize", 1, 1, "normalize(v)", "v scaled to length 1; v must not be zero.", b_normalize},
@@ -385,7 +396,8 @@ constexpr BuiltinInfo kBuiltins[] = {
     {"range", 1, 3, "range(n) | range(a, b) | range(a, b, step)",
      "The list a, a+step, ... below b (above b for a negative step).", b_range},
     {"str", 1, 1, "str(x)", "x as text.", b_str},
-    {"print", 0, -1, "print(a, b, ...)", "Writes its arguments, separated by spaces, to standard output.", b_print},
+    {"print", 0, -1, "print(a, b, ...)",
+     "Writes its arguments, separated by spaces, to standard output.", b_print},
 };
 
 constexpr uint32_t kFunctionCount = static_cast<uint32_t>(std::size(kBuiltins));

@@ -86,6 +86,8 @@ public:
     std::ostream& printOut();
     /// Writes print()'s line, escaped if EvalOptions::escapePrint says so.
     void print(const std::string& line);
+    /// The point of Spline value `index` at t (spline(s, t)).
+    glm::dvec3 splineAt(uint32_t index, double t) const;
     /// The text form of `value`, as str() gives it; an error at the statement running if it
     /// would pass the memory limit (a list holding itself many times grows exponentially).
     std::string str(const Value& value);
@@ -248,6 +250,7 @@ private:
     scene::Shape textShape(ObjectBuilder& b);
     scene::Shape blobShape(ObjectBuilder& b);
     Value buildBlobComponent(const ObjectBuilder& b);
+    Value buildSpline(ObjectBuilder& b);
     Value buildMaterial(const ObjectBuilder& b);
     Value buildCamera(ObjectBuilder& b);
     Value buildLight(const ObjectBuilder& b);
@@ -343,6 +346,13 @@ private:
         scene::SourceSpan source;
     };
     std::vector<BlobComponentValue> blobComponents_;
+    /// The Spline values made: their segments and times, and where.
+    struct SplineValue {
+        std::vector<scene::CurveSegmentOf<glm::dvec3>> segments;
+        std::vector<double> times; ///< one more than the segments, or none: evenly 0 to 1
+        scene::SourceSpan source;
+    };
+    std::vector<SplineValue> splines_;
     std::vector<LightInfo> lightInfo_;
     std::vector<scene::CameraDesc> cameras_;
     std::vector<scene::BackgroundDesc> backgrounds_;

@@ -133,6 +133,17 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
         if (!isSolid(v)) wrongType(a, v, fmt::format("a solid ({})", solidTypeList()));
         return;
     case AttrType::SolidList: checkSolidList(a, v); return;
+    case AttrType::FloatList:
+        if (v.kind != ValueKind::List) wrongType(a, v, "a list of numbers");
+        for (size_t i = 0; i < v.list->size(); ++i) {
+            const Value& item = (*v.list)[i];
+            if (!item.isNumber() || !std::isfinite(item.asDouble())) {
+                in.fail(itemRange(a.value, i),
+                        fmt::format("item {} of '{}' must be a finite number, not {}", i + 1,
+                                    a.name, typeName(item)));
+            }
+        }
+        return;
     case AttrType::BlobComponentList:
         if (v.kind != ValueKind::List) wrongType(a, v, "a list of BlobSphere and BlobCylinder");
         if (v.list->empty()) in.fail(a.value->range, "a Blob needs at least one component");

@@ -177,4 +177,7 @@ struct ObjectBuilder {
     void finite(const Attribute& a, const Value& v, int components);
 };
 
+/// The curve kind attribute `attribute` names (the schema has checked it is one of them).
+scene::SplineKind splineKind(ObjectBuilder& b, std::string_view attribute);
+
 } // namespace crt::lang

@@ -74,13 +74,16 @@ std::string findAsset(const std::string& name, std::string_view what, const std:
 }
 
 /// Whether a shape has no extent, and so draws nothing.
-/// The spline attribute's kind (the schema has checked it is one of them).
-scene::SplineKind splineKind(ObjectBuilder& b) {
-    const std::string spline = b.lowerText("spline");
+} // namespace
+
+scene::SplineKind splineKind(ObjectBuilder& b, std::string_view attribute) {
+    const std::string spline = b.lowerText(attribute);
     for (size_t i = 0; i < std::size(scene::kSplineKindNames); ++i)
         if (spline == scene::kSplineKindNames[i]) return static_cast<scene::SplineKind>(i);
     return scene::SplineKind::Linear;
 }
+
+namespace {
 
 struct ZeroSize {
     bool operator()(const scene::SphereShape& s) const { return s.radius == 0; }
@@ -374,6 +377,7 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
     case ObjectCategory::Background: return buildBackground(b);
     case ObjectCategory::Texture: return buildTexture(b);
     case ObjectCategory::BlobComponent: return buildBlobComponent(b);
+    case ObjectCategory::Spline: return buildSpline(b);
     case ObjectCategory::Settings: break; // a statement (execSettings), never a value
     }
     fail(node->typeRange, "unknown object type");
@@ -523,7 +527,7 @@ scene::Shape Interpreter::prismShape(ObjectBuilder& b) {
         }
         s.points.push_back({points[i].v[0], points[i].v[2]});
     }
-    s.spline = splineKind(b);
+    s.spline = splineKind(b, "spline");
     s.conic = b.lowerText("sweep") == "conic";
     s.from = b.number("from", s.from);
     s.to = b.number("to", s.to);
@@ -613,7 +617,7 @@ scene::Shape Interpreter::sorShape(ObjectBuilder& b) {
 /// needs, and no point on the curve left of the axis.
 scene::Shape Interpreter::latheShape(ObjectBuilder& b) {
     scene::LatheShape s;
-    s.spline = splineKind(b);
+    s.spline = splineKind(b, "spline");
     const std::vector<Value>& points = *b.get("points")->list;
     const std::string_view kind = scene::kSplineKindNames[static_cast<int>(s.spline)];
     const size_t least = scene::minimumCurvePoints(s.spline);

@@ -208,7 +208,7 @@ constexpr AttributeInfo kPrism[] = {
     {"to", A::Float, false, "1", "Height of the top face."},
     {"spline", A::Choice, false, "\"linear\"",
      "How the points make the outline: linear, quadratic, cubic or bezier.",
-     scene::kSplineKindNames},
+     scene::kLoopSplineKindNames},
     {"sweep", A::Choice, false, "\"linear\"",
      "linear (straight up) or conic (scaled with the height, from a point at the origin).",
      kSweepChoices},
@@ -227,7 +227,8 @@ constexpr AttributeInfo kLathe[] = {
      "The curve in the x-y plane (each z 0), x the distance from the y axis, as POV-Ray's lathe "
      "reads it; closed, or from the axis to the axis, it bounds a solid."},
     {"spline", A::Choice, false, "\"linear\"",
-     "How the points make the curve: linear, quadratic, cubic or bezier.", scene::kSplineKindNames},
+     "How the points make the curve: linear, quadratic, cubic, bezier or bspline.",
+     scene::kSplineKindNames},
     CRT_MATERIAL_ATTR,
 };
 constexpr AttributeInfo kText[] = {
@@ -255,6 +256,14 @@ constexpr AttributeInfo kBlobCylinder[] = {
     {"top", A::Vec3, true, "", "The other end."},
     {"radius", A::Float, true, "", "How far the field reaches from the axis (> 0)."},
     {"strength", A::Float, false, "1", "The field on the axis."},
+};
+constexpr AttributeInfo kSpline[] = {
+    {"points", A::PointList, true, "", "The points the curve is made from, as `kind` reads them."},
+    {"kind", A::Choice, false, "\"linear\"",
+     "linear, quadratic, cubic, bezier (as a Lathe reads its points) or bspline.",
+     scene::kSplineKindNames},
+    {"times", A::FloatList, false, "[]",
+     "When the curve is at each point between its segments, rising; [] for evenly from 0 to 1."},
 };
 constexpr AttributeInfo kTorus[] = {
     {"center", A::Vec3, true, "", "Centre."},
@@ -556,6 +565,9 @@ constexpr ObjectInfo kObjects[] = {
     {T::BlobCylinder, "BlobCylinder", C::BlobComponent, false,
      "A Blob's field about a segment, round at its ends: strength · (1 − (d / radius)²)².",
      kBlobCylinder},
+    {T::Spline, "Spline", C::Spline, false,
+     "A curve through space, for paths: spline(s, t) is its point at t (POV-Ray's spline).",
+     kSpline},
 };
 static_assert(std::size(kObjects) == static_cast<size_t>(ObjectType::Count));
 static_assert(std::size(kSettings) <= kMaxAttributes && std::size(kMaterial) <= kMaxAttributes);
@@ -632,6 +644,7 @@ std::string_view attrTypeName(AttrType type) {
     case A::SolidList: return "list of solids";
     case A::PointList: return "list of vec3";
     case A::BlobComponentList: return "list of blob components";
+    case A::FloatList: return "list of floats";
     }
     return "value";
 }

@@ -77,6 +77,7 @@ enum class ObjectType : uint8_t {
     Waves,
     BlobSphere,
     BlobCylinder,
+    Spline,
     Count,
 };
 
@@ -89,6 +90,7 @@ enum class ObjectCategory : uint8_t {
     Entity,
     Texture,
     BlobComponent, ///< a part of a Blob's field
+    Spline,        ///< a curve through space, read with spline(s, t)
 };
 
 /// What an attribute accepts.
@@ -116,6 +118,7 @@ enum class AttrType : uint8_t {
     SolidList,         ///< a list of at least one such entity
     PointList,         ///< a list of vec3, every component finite
     BlobComponentList, ///< a list of at least one BlobSphere or BlobCylinder
+    FloatList,         ///< a list of numbers, every one finite
 };
 
 struct AttributeInfo {

@@ -29,6 +29,7 @@ std::string_view kindName(ValueKind kind) {
     case ValueKind::Background: return "background";
     case ValueKind::Texture: return "texture";
     case ValueKind::BlobComponent: return "blob component";
+    case ValueKind::Spline: return "spline";
     case ValueKind::Macro: return "macro";
     case ValueKind::Builtin: return "function";
     case ValueKind::Modifiers: return "modifiers";

@@ -33,6 +33,7 @@ enum class ValueKind : uint8_t {
     Background,
     Texture,
     BlobComponent, ///< a BlobSphere or BlobCylinder, for a Blob's components
+    Spline,        ///< a Spline, read with spline(s, t)
     Macro,
     Builtin,
     Modifiers, ///< a list of modifiers held as a value: `<rotate v, material m>`
@@ -96,7 +97,7 @@ struct Value {
 
     bool isNumber() const { return kind == ValueKind::Int || kind == ValueKind::Float; }
     double asDouble() const { return kind == ValueKind::Int ? static_cast<double>(i) : f; }
-    bool isObject() const { return kind >= ValueKind::Entity && kind <= ValueKind::BlobComponent; }
+    bool isObject() const { return kind >= ValueKind::Entity && kind <= ValueKind::Spline; }
 };
 
 /// The type's name as messages show it: "int", "vec3", "Sphere", "macro".

@@ -114,7 +114,8 @@ int typeFit(AttrType want, const std::string& type) {
     case AttrType::MaterialList:
     case AttrType::SolidList:
     case AttrType::PointList:
-    case AttrType::BlobComponentList: return type == "list" ? 0 : -1;
+    case AttrType::BlobComponentList:
+    case AttrType::FloatList: return type == "list" ? 0 : -1;
     case AttrType::Turbulence: return type == "float" || type == "int" || type == "vec3" ? 0 : -1;
     }
     return 1;

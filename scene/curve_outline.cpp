@@ -3,31 +3,8 @@
 
 namespace crt::scene {
 
-namespace {
-
 using V = glm::dvec2;
-
-CurveSegment line(const V& p0, const V& p1) {
-    return {V(0.0), V(0.0), p1 - p0, p0, p1};
-}
-
-/// Through p1 and p2, with p0 setting the slope at p1 (POV-Ray's quadratic spline).
-CurveSegment quadratic(const V& p0, const V& p1, const V& p2) {
-    return {V(0.0), 0.5 * p0 - p1 + 0.5 * p2, -0.5 * p0 + 0.5 * p2, p1, p2};
-}
-
-/// From p1 to p2, with slopes from p0 and p3 (Catmull-Rom).
-CurveSegment cubic(const V& p0, const V& p1, const V& p2, const V& p3) {
-    return {-0.5 * p0 + 1.5 * p1 - 1.5 * p2 + 0.5 * p3, p0 - 2.5 * p1 + 2.0 * p2 - 0.5 * p3,
-            -0.5 * p0 + 0.5 * p2, p1, p2};
-}
-
-CurveSegment bezier(const V& p0, const V& p1, const V& p2, const V& p3) {
-    return {p3 - 3.0 * p2 + 3.0 * p1 - p0, 3.0 * p2 - 6.0 * p1 + 3.0 * p0, 3.0 * p1 - 3.0 * p0, p0,
-            p3};
-}
-
-} // namespace
+using namespace curve_pieces;
 
 size_t minimumLoopPoints(SplineKind kind) {
     switch (kind) {
@@ -35,6 +12,7 @@ size_t minimumLoopPoints(SplineKind kind) {
     case SplineKind::Quadratic: return 5;
     case SplineKind::Cubic: return 6;
     case SplineKind::Bezier: return 4;
+    case SplineKind::BSpline: return 4;
     }
     return 3;
 }
@@ -45,6 +23,7 @@ size_t minimumCurvePoints(SplineKind kind) {
     case SplineKind::Quadratic: return 3;
     case SplineKind::Cubic: return 4;
     case SplineKind::Bezier: return 4;
+    case SplineKind::BSpline: return 4;
     }
     return 2;
 }
@@ -55,29 +34,9 @@ bool isOnCurve(size_t i, size_t n, SplineKind kind) {
     case SplineKind::Quadratic: return i > 0;
     case SplineKind::Cubic: return i > 0 && i + 1 < n;
     case SplineKind::Bezier: return i % 4 == 0 || i % 4 == 3;
+    case SplineKind::BSpline: return true; // on none, but the curve keeps to their hull
     }
     return true;
-}
-
-std::vector<CurveSegment> curveSegments(std::span<const glm::dvec2> p, SplineKind kind) {
-    std::vector<CurveSegment> out;
-    const size_t n = p.size();
-    switch (kind) {
-    case SplineKind::Linear:
-        for (size_t i = 0; i + 1 < n; ++i) out.push_back(line(p[i], p[i + 1]));
-        break;
-    case SplineKind::Quadratic:
-        for (size_t i = 0; i + 2 < n; ++i) out.push_back(quadratic(p[i], p[i + 1], p[i + 2]));
-        break;
-    case SplineKind::Cubic:
-        for (size_t i = 0; i + 3 < n; ++i) out.push_back(cubic(p[i], p[i + 1], p[i + 2], p[i + 3]));
-        break;
-    case SplineKind::Bezier:
-        for (size_t i = 0; i + 3 < n; i += 4)
-            out.push_back(bezier(p[i], p[i + 1], p[i + 2], p[i + 3]));
-        break;
-    }
-    return out;
 }
 
 bool curveEnclosesSolid(const std::vector<CurveSegment>& segments) {
@@ -130,6 +89,7 @@ CurveLoops curveLoops(std::span<const glm::dvec2> p, SplineKind kind) {
             if (p[i + 3] == p[start]) close(i + 4);
         }
         break;
+    case SplineKind::BSpline: break; // not a prism's kind (kLoopSplineKindNames): unclosed
     }
     if (start < n) out.unclosedFrom = static_cast<std::ptrdiff_t>(start);
     return out;

@@ -41,7 +41,7 @@ For example (:includeDirs [\"/my/includes\"] :maxSteps 1000000)."
 (defconst crt--builtins
   '("vec3" "rgb" "rgba" "sin" "cos" "tan" "asin" "acos" "atan" "atan2" "sqrt" "pow" "exp"
     "log" "abs" "floor" "ceil" "round" "min" "max" "clamp" "mix" "radians" "degrees"
-    "length" "normalize" "dot" "cross" "len" "range" "str" "print" "rand")
+    "length" "normalize" "dot" "cross" "len" "range" "str" "print" "rand" "spline")
   "The built-in functions (docs/language.md, section 10).")
 
 (defconst crt-font-lock-keywords

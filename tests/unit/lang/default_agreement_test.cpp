@@ -80,6 +80,9 @@ constexpr Usage kUsages[] = {
     {ObjectType::BlobCylinder,
      "Scene { Blob { components -> [BlobCylinder { base -> vec3(0, 0, 0) top -> vec3(0, 1, 0) "
      "radius -> 2 @ }] } }"},
+    {ObjectType::Spline,
+     "Scene { Sphere { radius -> 1 center -> spline(Spline { points -> [vec3(0, 0, 0), "
+     "vec3(1, 0, 0), vec3(2, 1, 0), vec3(3, 0, 0)] @ }, 0.3) } }"},
     {ObjectType::Text, "Scene { Text { text -> \"crt\" @ } }"},
     {ObjectType::Prism,
      "Scene { Prism { points -> [vec3(0, 0, 1), vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 0, 1), "
@@ -244,6 +247,7 @@ std::string otherValue(const AttributeInfo& attr) {
     case AttrType::SolidList:
     case AttrType::PointList:
     case AttrType::BlobComponentList: return ""; // required: no default to differ from
+    case AttrType::FloatList: return "[0, 0.1, 0.5, 1]";
     }
     return "";
 }

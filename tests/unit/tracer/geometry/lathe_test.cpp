@@ -106,7 +106,9 @@ struct Case {
 const Case kCases[] = {{"goblet", kGoblet, scene::SplineKind::Linear, 1, 4},
                        {"bottle", kBottle, scene::SplineKind::Quadratic, 1, 2},
                        {"ring", kRing, scene::SplineKind::Cubic, -1, 4},
-                       {"dome", kDome, scene::SplineKind::Bezier, 1, 2}};
+                       {"dome", kDome, scene::SplineKind::Bezier, 1, 2},
+                       // The ring's points close a B-spline too, which keeps inside them.
+                       {"pebble ring", kRing, scene::SplineKind::BSpline, -1, 4}};
 
 ExactLathe exactOf(const Case& c) {
     return {scene::curveSegments(c.points, c.kind), c.outward};
