@@ -23,6 +23,6 @@ if [ "${1:-}" != "--quick" ]; then
     cmake --build build-asan
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
         ctest --output-on-failure -j "$jobs")
-    scripts/fuzz.sh 60 frontend lsp obj
+    scripts/fuzz.sh 60 frontend lsp obj font
 fi
 echo "all tests passed"
