@@ -102,48 +102,6 @@ template <class F> double bracketedRoot(const F& f, double lo, double hi, bool n
     return x;
 }
 
-/// Calls found(u) for each root of g between consecutive splits (ascending, from 0 to 1, g
-/// monotonic between them) where g changes sign, refined by bracketedRoot. `value` and `slope`
-/// give g and g' at a point; the values at the ends are given, so that pieces meeting at an
-/// end agree on its sign.
-template <class Value, class Slope, class Found>
-void signChangesBetween(const double* split, int n, const Value& value, const Slope& slope,
-                        double atStart, double atEnd, const Found& found) {
-    double before = atStart;
-    for (int i = 0; i + 1 < n; ++i) {
-        const double after = i + 2 < n ? value(split[i + 1]) : atEnd;
-        if ((before < 0) != (after < 0)) {
-            found(bracketedRoot(
-                [&](double u) {
-                    return ValueAndSlope{value(u), slope(u)};
-                },
-                split[i], split[i + 1], before < 0));
-        }
-        before = after;
-    }
-}
-
-/// Calls found(u) for each u in [0, 1] where g changes sign, g being a cubic in u with
-/// derivative 3a·u² + 2b·u + c: the interval is split where g turns, so each piece holds at
-/// most one root (signChangesBetween).
-template <class Value, class Slope, class Found>
-void cubicSignChanges(double a, double b, double c, const Value& value, const Slope& slope,
-                      double atStart, double atEnd, const Found& found) {
-    double split[4];
-    int n = 0;
-    split[n++] = 0;
-    double r0, r1;
-    if (solveQuadratic(3 * a, b, c, r0, r1)) {
-        if (r0 > 0 && r0 < 1) split[n++] = r0;
-        if (r1 > r0 && r1 > 0 && r1 < 1) split[n++] = r1;
-    } else if (a == 0 && b != 0) {
-        const double r = -c / (2 * b);
-        if (r > 0 && r < 1) split[n++] = r;
-    }
-    split[n++] = 1;
-    signChangesBetween(split, n, value, slope, atStart, atEnd, found);
-}
-
 inline double clamp01(double x) {
     return std::clamp(x, 0.0, 1.0);
 }

@@ -21,6 +21,15 @@ int polynomialRoots(const double* c, int degree, double* roots) {
         roots[0] = u;
         return 1;
     }
+    if (degree == 2) { // in closed form: two distinct roots, each a sign change
+        double r0, r1;
+        int found = 0;
+        if (solveQuadratic(c[2], 0.5 * c[1], c[0], r0, r1) && r0 < r1) {
+            if (r0 > 0 && r0 < 1) roots[found++] = r0;
+            if (r1 > 0 && r1 < 1) roots[found++] = r1;
+        }
+        return found;
+    }
     auto at = [&](double u) { return evaluatePolynomial(c, degree, u); };
     int found = 0;
     polynomialSignChanges(

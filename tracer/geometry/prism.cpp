@@ -2,6 +2,7 @@
 #include "tracer/geometry/prism.hpp"
 
 #include "tracer/geometry/curve_segment_math.hpp"
+#include "tracer/geometry/polynomial_roots.hpp"
 
 #include <algorithm>
 
@@ -19,10 +20,10 @@ double cross2(const Vec2& a, const Vec2& b) {
 template <class Linear, class Found>
 void signChanges(const scene::CurveSegment& s, const Linear& linear, double constant,
                  const Found& found) {
-    cubicSignChanges(
-        linear(s.a), linear(s.b), linear(s.c), [&](double u) { return linear(s.at(u)) + constant; },
-        [&](double u) { return linear(s.slope(u)); }, linear(s.d) + constant,
-        linear(s.end) + constant, found);
+    const double g[4] = {linear(s.d) + constant, linear(s.c), linear(s.b), linear(s.a)};
+    polynomialSignChanges(
+        g, 3, [&](double u) { return linear(s.at(u)) + constant; },
+        [&](double u) { return linear(s.slope(u)); }, g[0], linear(s.end) + constant, found);
 }
 
 } // namespace

@@ -1,6 +1,8 @@
 // The surface of revolution primitive: POV-Ray's sor, a radius given by cubics of the height.
 #include "tracer/geometry/sor.hpp"
 
+#include "tracer/geometry/polynomial_roots.hpp"
+
 #include <algorithm>
 
 namespace crt::tracer {
@@ -51,12 +53,12 @@ void SorGeometry::crossSegment(const Ray& ray, size_t i, CrossingList& out) cons
     const double q = (seg.y1 - seg.y0) / ray.dir.y;
     const double alpha = glm::dot(d2, d2) * q * q;
     const double beta = 2 * glm::dot(o2 + t0 * d2, d2) * q;
-    cubicSignChanges(
-        -seg.c3, alpha - seg.c2, beta - seg.c1,
-        [&](double s) { return rho2(t0 + s * q) - seg.at(s); },
-        [&](double s) { return 2 * glm::dot(o2 + (t0 + s * q) * d2, d2) * q - seg.slope(s); },
-        rho2(t0) - seg.k0, rho2(t1) - seg.k1,
-        [&](double s) { out.add(t0 + s * q, static_cast<uint32_t>(2 + i)); });
+    // ρ² − R as a cubic in s (its constant term is the value at s = 0).
+    const double g[4] = {rho2(t0) - seg.k0, beta - seg.c1, alpha - seg.c2, -seg.c3};
+    polynomialSignChanges(
+        g, 3, [&](double s) { return rho2(t0 + s * q) - seg.at(s); },
+        [&](double s) { return 2 * glm::dot(o2 + (t0 + s * q) * d2, d2) * q - seg.slope(s); }, g[0],
+        rho2(t1) - seg.k1, [&](double s) { out.add(t0 + s * q, static_cast<uint32_t>(2 + i)); });
 }
 
 void SorGeometry::crossLine(const Ray& ray, CrossingList& out) const {
