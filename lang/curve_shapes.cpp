@@ -14,6 +14,22 @@ scene::SplineKind splineKind(ObjectBuilder& b, std::string_view attribute) {
     return scene::SplineKind::Linear;
 }
 
+void Interpreter::checkPointCount(ObjectBuilder& b, scene::SplineKind kind, size_t least) {
+    const size_t count = b.get("points")->list->size();
+    const std::string_view kindName = scene::kSplineKindNames[static_cast<int>(kind)];
+    if (count < least) {
+        fail(b.where("points"),
+             fmt::format("a {} with a {} spline needs at least {} points, not {}", b.info.name,
+                         kindName, least, count));
+    }
+    if (kind == scene::SplineKind::Bezier && count % 4 != 0) {
+        fail(b.where("points"),
+             fmt::format("a {} with a bezier spline takes 4 points a segment: {} is not a "
+                         "multiple of 4",
+                         b.info.name, count));
+    }
+}
+
 /// The outline of a Prism: points in the x-z plane, as many as its spline needs, and every
 /// loop closed.
 scene::Shape Interpreter::prismShape(ObjectBuilder& b) {
@@ -34,19 +50,7 @@ scene::Shape Interpreter::prismShape(ObjectBuilder& b) {
     s.from = b.number("from", s.from);
     s.to = b.number("to", s.to);
     s.open = b.flag("open", s.open);
-    const std::string_view kind = scene::kSplineKindNames[static_cast<int>(s.spline)];
-    const size_t least = scene::minimumLoopPoints(s.spline);
-    if (s.points.size() < least) {
-        fail(b.where("points"),
-             fmt::format("a Prism with a {} spline needs at least {} points, not {}", kind, least,
-                         s.points.size()));
-    }
-    if (s.spline == scene::SplineKind::Bezier && s.points.size() % 4 != 0) {
-        fail(b.where("points"),
-             fmt::format("a Prism with a bezier spline takes 4 points a segment: {} is not a "
-                         "multiple of 4",
-                         s.points.size()));
-    }
+    checkPointCount(b, s.spline, scene::minimumLoopPoints(s.spline));
     const std::ptrdiff_t unclosed = scene::curveLoops(s.points, s.spline).unclosedFrom;
     if (unclosed >= 0) {
         const bool control =
@@ -121,19 +125,7 @@ scene::Shape Interpreter::latheShape(ObjectBuilder& b) {
     scene::LatheShape s;
     s.spline = splineKind(b, "spline");
     const std::vector<Value>& points = *b.get("points")->list;
-    const std::string_view kind = scene::kSplineKindNames[static_cast<int>(s.spline)];
-    const size_t least = scene::minimumCurvePoints(s.spline);
-    if (points.size() < least) {
-        fail(b.where("points"), fmt::format("a Lathe with a {} spline needs at least {} points, "
-                                            "not {}",
-                                            kind, least, points.size()));
-    }
-    if (s.spline == scene::SplineKind::Bezier && points.size() % 4 != 0) {
-        fail(b.where("points"),
-             fmt::format("a Lathe with a bezier spline takes 4 points a segment: {} is not a "
-                         "multiple of 4",
-                         points.size()));
-    }
+    checkPointCount(b, s.spline, scene::minimumCurvePoints(s.spline));
     s.points = pointsInXY(b, "a Lathe's points are its curve in the x-y plane");
     for (size_t i = 0; i < points.size(); ++i) {
         const Value& p = points[i];

@@ -244,6 +244,9 @@ private:
     scene::Shape prismShape(ObjectBuilder& b);
     scene::Shape sorShape(ObjectBuilder& b);
     scene::Shape latheShape(ObjectBuilder& b);
+    /// The error of a Prism or Lathe with fewer `points` than `least`, or Bézier points not in
+    /// fours.
+    void checkPointCount(ObjectBuilder& b, scene::SplineKind kind, size_t least);
     /// The `points` of a curve in the x-y plane as (x, y): an error at a point whose z is not
     /// 0, saying `what` the points are.
     std::vector<glm::dvec2> pointsInXY(ObjectBuilder& b, std::string_view what);
