@@ -31,6 +31,7 @@ enum class NodeKind : uint8_t {
     List,
     Object,
     Macro,
+    Function,
     // statements
     While,
     For,
@@ -61,6 +62,7 @@ enum class Binding : uint8_t {
     Local,     ///< slot in the current macro frame
     Enclosing, ///< slot in the frame `depth` macro levels out
     Builtin,   ///< slot in the prelude (functions, t, clock)
+    Parameter, ///< the parameter `slot` of the Function whose body holds the name
 };
 
 struct Resolution {
@@ -180,6 +182,12 @@ struct MacroExpr : Expr {
     bool capturesFrame;   ///< a nested macro reads this frame's locals: it must outlive the call
 };
 
+/// `Function (x, y, z) { expression }`: a numeric function, compiled when it is made.
+struct FunctionExpr : Expr {
+    std::span<Param> params;
+    Expr* body;
+};
+
 struct Block : Node {
     std::span<Node*> statements;
 };
@@ -221,7 +229,7 @@ struct Script {
     uint32_t file = 0;
 };
 
-inline bool isExpression(const Node* node) { return node->kind <= NodeKind::Macro; }
+inline bool isExpression(const Node* node) { return node->kind <= NodeKind::Function; }
 
 /// Calls `visit` on each direct child of `node` in source order: operands, arguments,
 /// attribute values, modifier arguments, statements, and a macro's body.
@@ -264,6 +272,7 @@ template <typename F> void forEachChild(Node* node, F&& visit) {
         for (Attribute& a : static_cast<ObjectExpr*>(node)->attributes) visit(a.value);
         break;
     case NodeKind::Macro: visit(static_cast<MacroExpr*>(node)->body); break;
+    case NodeKind::Function: visit(static_cast<FunctionExpr*>(node)->body); break;
     case NodeKind::While:
         visit(static_cast<WhileStmt*>(node)->condition);
         visit(static_cast<WhileStmt*>(node)->body);

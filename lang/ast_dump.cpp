@@ -110,6 +110,14 @@ private:
             statements(m->body->statements, depth + 1);
             break;
         }
+        case NodeKind::Function: {
+            auto* f = static_cast<const FunctionExpr*>(n);
+            std::string params;
+            for (const Param& p : f->params) params += (params.empty() ? "" : ", ") + std::string(p.name);
+            line(n, depth, fmt::format("Function ({})", params));
+            node(f->body, depth + 1);
+            break;
+        }
         default: break;
         }
     }

@@ -64,6 +64,10 @@ std::string Interpreter::objectText(const Value& value) const {
         return fmt::format("<macro {}:{}>", at.line, at.column);
     }
     case ValueKind::Builtin: return fmt::format("<function {}>", builtinFunctions()[value.index].name);
+    case ValueKind::Function: {
+        const scene::SourceSpan& where = functions_[value.index].source;
+        return fmt::format("<Function {}:{}>", where.line, where.column);
+    }
     case ValueKind::Modifiers: {
         const SourceRange& written = value.modifiers->range;
         LineColumn at = compilation_.sources.file(written.file).lineColumn(written.begin);

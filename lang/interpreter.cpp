@@ -538,6 +538,7 @@ Value Interpreter::evalVar(const VarExpr* node) {
         slot = &frame->slots[r.slot];
         break;
     }
+    case Binding::Parameter: // only in a Function's body, which is compiled, not evaluated
     case Binding::Unresolved: break;
     }
     if (!slot || slot->kind <= ValueKind::Poisoned) unboundVariable(node);

@@ -4,6 +4,7 @@
 #include "builtins.hpp"
 #include "interpreter.hpp"
 
+#include "scene/function_program.hpp"
 #include "scene/primitive_count.hpp"
 
 #include <fmt/format.h>
@@ -113,8 +114,14 @@ public:
     const Limits& limits() const { return options_.limits; }
     SourceRange argRange(const CallExpr* site, size_t index) const;
 
+    /// The program of Function value `index`.
+    const std::shared_ptr<const scene::FunctionProgram>& functionProgram(uint32_t index) const {
+        return functions_[index].program;
+    }
+
 private:
     friend struct ObjectBuilder;
+    friend class FunctionCompiler;
 
     // statements
     void execStatements(std::span<Node* const> statements);
@@ -216,6 +223,10 @@ private:
     scene::Modifier evalMatrix(const Modifier& modifier);
     Value evalList(const ListExpr* node);
     Value evalMacro(const MacroExpr* node);
+    /// Compiles a Function (function_values.cpp), reading the names it uses besides its
+    /// parameters now.
+    Value evalFunction(const FunctionExpr* node);
+    Value callFunction(uint32_t index, const CallExpr* site, std::span<const Value> args);
     Value callMacro(const Closure* closure, const CallExpr* site, std::span<const Value> args);
     /// Adds "in the macro called here" to the errors reported since `diagnosticsBefore`.
     void noteCallSite(size_t diagnosticsBefore, const CallExpr* site);
@@ -252,6 +263,8 @@ private:
     std::vector<glm::dvec2> pointsInXY(ObjectBuilder& b, std::string_view what);
     scene::Shape textShape(ObjectBuilder& b);
     scene::Shape blobShape(ObjectBuilder& b);
+    scene::Shape isosurfaceShape(ObjectBuilder& b);
+    scene::Shape heightFieldShape(ObjectBuilder& b);
     Value buildBlobComponent(const ObjectBuilder& b);
     Value buildSpline(ObjectBuilder& b);
     Value buildMaterial(const ObjectBuilder& b);
@@ -356,6 +369,12 @@ private:
         scene::SourceSpan source;
     };
     std::vector<SplineValue> splines_;
+    /// The Function values made, and where.
+    struct FunctionValue {
+        std::shared_ptr<const scene::FunctionProgram> program;
+        scene::SourceSpan source;
+    };
+    std::vector<FunctionValue> functions_;
     std::vector<LightInfo> lightInfo_;
     std::vector<scene::CameraDesc> cameras_;
     std::vector<scene::BackgroundDesc> backgrounds_;

@@ -116,6 +116,7 @@ Token Lexer::scan() {
         "Settings"  { return make(TokenKind::KwSettings); }
         "Scene"     { return make(TokenKind::KwScene); }
         "Macro"     { return make(TokenKind::KwMacro); }
+        "Function"  { return make(TokenKind::KwFunction); }
         "scale"     { return make(TokenKind::KwScale); }
         "translate" { return make(TokenKind::KwTranslate); }
         "rotate"    { return make(TokenKind::KwRotate); }
@@ -253,6 +254,7 @@ std::string_view tokenDescription(TokenKind kind) {
     case TokenKind::KwSettings: return "'Settings'";
     case TokenKind::KwScene: return "'Scene'";
     case TokenKind::KwMacro: return "'Macro'";
+    case TokenKind::KwFunction: return "'Function'";
     case TokenKind::KwScale: return "'scale'";
     case TokenKind::KwTranslate: return "'translate'";
     case TokenKind::KwRotate: return "'rotate'";

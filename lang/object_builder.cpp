@@ -171,6 +171,22 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
                             fmt::format("item {} of '{}' is not finite", i + 1, a.name));
         }
         return;
+    case AttrType::Function:
+        if (v.kind != ValueKind::Function) wrongType(a, v, "a Function");
+        if (size_t n = in.functionProgram(v.index)->parameterCount(); n != 3) {
+            in.fail(a.value->range, fmt::format("attribute '{}' of {} takes a Function of (x, y, z), "
+                                                "not one of {} parameter{}",
+                                                a.name, info.name, n, n == 1 ? "" : "s"));
+        }
+        return;
+    case AttrType::Box:
+        if (v.kind != ValueKind::Entity || v.objectType != ObjectType::Box) wrongType(a, v, "a Box");
+        if (!std::holds_alternative<scene::BoxShape>(in.scene_.entities[v.index].shape)) {
+            in.fail(a.value->range, fmt::format("attribute '{}' of {} takes a Box as written, not "
+                                                "moved: move the {} instead",
+                                                a.name, info.name, info.name));
+        }
+        return;
     case AttrType::Turbulence:
         if (v.kind == ValueKind::Vec3) {
             finite(a, v, 3);

@@ -381,6 +381,8 @@ Value Interpreter::buildEntity(ObjectBuilder& b) {
     bool solid = b.info.solid;
     if (auto* lathe = std::get_if<scene::LatheShape>(&shape))
         solid = scene::curveEnclosesSolid(scene::curveSegments(lathe->points, lathe->spline));
+    if (auto* isosurface = std::get_if<scene::IsosurfaceShape>(&shape))
+        solid = !isosurface->desc->open;
     const int32_t material = b.index("material", -1);
     int32_t index = addEntity(scene::EntityDesc{std::move(shape), material, solid, span(b.range)},
                               EntityInfo{b.range, b.info.type, true});
@@ -487,6 +489,8 @@ scene::Shape Interpreter::solidShape(ObjectBuilder& b) {
     case ObjectType::Lathe: return latheShape(b);
     case ObjectType::Text: return textShape(b);
     case ObjectType::Blob: return blobShape(b);
+    case ObjectType::Isosurface: return isosurfaceShape(b);
+    case ObjectType::HeightField: return heightFieldShape(b);
     case ObjectType::Torus:
     default: {
         scene::TorusShape s;
@@ -728,8 +732,8 @@ Value Interpreter::buildBackground(const ObjectBuilder& b) {
 }
 
 // A texture's kind is its object type's place after Checker: the two lists keep one order.
-static_assert(static_cast<int>(ObjectType::Waves) - static_cast<int>(ObjectType::Checker) ==
-              static_cast<int>(scene::TextureKind::Waves));
+static_assert(static_cast<int>(ObjectType::FunctionPattern) - static_cast<int>(ObjectType::Checker) ==
+              static_cast<int>(scene::TextureKind::FunctionPattern));
 
 Value Interpreter::buildTexture(ObjectBuilder& b) {
     ObjectType type = b.info.type;
@@ -759,6 +763,7 @@ Value Interpreter::buildTexture(ObjectBuilder& b) {
     t.rings = b.number("rings", t.rings);
     t.strength = b.number("strength", t.strength);
     if (t.kind == scene::TextureKind::Bump) readBumpPattern(b, scene_.textures, t);
+    if (t.kind == scene::TextureKind::FunctionPattern) t.function = functionProgram(b.get("function")->index);
     if (scene::readsImage(t.kind)) {
         t.file = b.text("file", t.file);
         t.resolvedFile = findFile(b, "file", "image");

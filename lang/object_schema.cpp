@@ -246,6 +246,29 @@ constexpr AttributeInfo kBlob[] = {
      "BlobSphere and BlobCylinder fields; a negative strength takes away."},
     CRT_MATERIAL_ATTR,
 };
+constexpr AttributeInfo kIsosurface[] = {
+    {"function", A::Function, true, "",
+     "f(x, y, z): the solid is where it is below the threshold."},
+    {"bounds", A::Box, false, "Box { cornerA -> vec3(-1,-1,-1) cornerB -> vec3(1,1,1) }",
+     "The box the surface is sought in; its faces close the solid where f is below the threshold."},
+    {"threshold", A::Float, false, "0", "The value of f on the surface."},
+    {"maxgradient", A::Float, false, "1.1",
+     "How fast f may change per unit of length (> 0): too low leaves holes, too high is slow."},
+    {"accuracy", A::Float, false, "0.001",
+     "How short the spans are where a crossing is sought (> 0): thinner parts may be missed."},
+    {"open", A::Bool, false, "false", "Without the faces of the bounds."},
+    CRT_MATERIAL_ATTR,
+};
+constexpr AttributeInfo kHeightField[] = {
+    {"image", A::String, false, "\"\"",
+     "An image whose grey levels are the heights, its first row at z = 1; or give a function."},
+    {"function", A::Function, false, "none",
+     "f(x, 0, z), the height at (x, z), sampled on a grid of resolution points."},
+    {"resolution", A::Int, false, "100",
+     "For a function: how many samples along x, and as many along z (2 to 10,000)."},
+    {"smooth", A::Bool, false, "false", "Normals interpolated across each cell."},
+    CRT_MATERIAL_ATTR,
+};
 constexpr AttributeInfo kBlobSphere[] = {
     {"center", A::Vec3, true, "", "Centre."},
     {"radius", A::Float, true, "", "How far the field reaches (> 0)."},
@@ -390,6 +413,11 @@ constexpr AttributeInfo kGradient[] = {
     CRT_PATTERN(CRT_BLACK_WHITE),
 };
 constexpr AttributeInfo kPlainPattern[] = {CRT_PATTERN(CRT_BLACK_WHITE)};
+constexpr AttributeInfo kFunctionPattern[] = {
+    {"function", A::Function, true, "",
+     "f(x, y, z), the pattern's value (above 1 and below 0 it wraps, as in POV-Ray)."},
+    CRT_PATTERN(CRT_BLACK_WHITE),
+};
 constexpr AttributeInfo kSpiral[] = {
     {"arms", A::Int, true, "", "How many arms wind around the z axis."},
     CRT_PATTERN_COLORS(CRT_BLACK_WHITE),
@@ -496,6 +524,14 @@ constexpr ObjectInfo kObjects[] = {
     {T::Blob, "Blob", C::Entity, true,
      "Spheres and cylinders whose fields blend into one smooth shape (POV-Ray's blob; solid).",
      kBlob},
+    {T::Isosurface, "Isosurface", C::Entity, true,
+     "The solid where a Function of (x, y, z) is below a threshold, within a box (POV-Ray's "
+     "isosurface).",
+     kIsosurface},
+    {T::HeightField, "HeightField", C::Entity, true,
+     "Heights from 0 to 1 over the unit square of the x-z plane, from an image or a Function "
+     "(POV-Ray's height_field; solid below its surface).",
+     kHeightField},
     {T::Merge, "Merge", C::Entity, true,
      "A union of solids without the surfaces inside it (POV-Ray's merge): for glass and "
      "anything seen through.",
@@ -559,6 +595,9 @@ constexpr ObjectInfo kObjects[] = {
     {T::Waves, "Waves", C::Texture, false,
      "Waves from ten points near the origin, each of its own length (POV-Ray's waves).",
      kPlainPattern},
+    {T::FunctionPattern, "FunctionPattern", C::Texture, false,
+     "A Function's value at each point, through a colour map (POV-Ray's function pattern).",
+     kFunctionPattern},
     {T::BlobSphere, "BlobSphere", C::BlobComponent, false,
      "A Blob's spherical field: strength · (1 − (d / radius)²)² within radius of the centre.",
      kBlobSphere},
@@ -645,6 +684,8 @@ std::string_view attrTypeName(AttrType type) {
     case A::PointList: return "list of vec3";
     case A::BlobComponentList: return "list of blob components";
     case A::FloatList: return "list of floats";
+    case A::Function: return "Function";
+    case A::Box: return "Box";
     }
     return "value";
 }

@@ -34,6 +34,8 @@ enum class ObjectType : uint8_t {
     Lathe,
     Text,
     Blob,
+    Isosurface,
+    HeightField,
     Merge,
     Inverse,
     Disc,
@@ -75,6 +77,7 @@ enum class ObjectType : uint8_t {
     Bump,
     Ripples,
     Waves,
+    FunctionPattern,
     BlobSphere,
     BlobCylinder,
     Spline,
@@ -119,6 +122,8 @@ enum class AttrType : uint8_t {
     PointList,         ///< a list of vec3, every component finite
     BlobComponentList, ///< a list of at least one BlobSphere or BlobCylinder
     FloatList,         ///< a list of numbers, every one finite
+    Function,          ///< a Function of (x, y, z)
+    Box,               ///< a Box, as written (not moved)
 };
 
 struct AttributeInfo {

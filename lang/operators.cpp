@@ -30,6 +30,7 @@ std::string_view kindName(ValueKind kind) {
     case ValueKind::Texture: return "texture";
     case ValueKind::BlobComponent: return "blob component";
     case ValueKind::Spline: return "spline";
+    case ValueKind::Function: return "Function";
     case ValueKind::Macro: return "macro";
     case ValueKind::Builtin: return "function";
     case ValueKind::Modifiers: return "modifiers";
@@ -179,6 +180,7 @@ Value Interpreter::eval(const Expr* node) {
     case NodeKind::List: return evalList(static_cast<const ListExpr*>(node));
     case NodeKind::Object: return evalObject(static_cast<const ObjectExpr*>(node));
     case NodeKind::Macro: return evalMacro(static_cast<const MacroExpr*>(node));
+    case NodeKind::Function: return evalFunction(static_cast<const FunctionExpr*>(node));
     default: return notAnExpression(node);
     }
 }
@@ -491,6 +493,11 @@ Value Interpreter::csg(BinaryOp op, const Value& left, const Value& right, const
                                  "and end it on the y axis",
                                  opSpelling(op)));
             }
+            if (operand->objectType == ObjectType::Isosurface) {
+                fail(where->range, fmt::format("this Isosurface is open, so it is a surface and cannot "
+                                               "be used in CSG ('{}'): leave out 'open'",
+                                               opSpelling(op)));
+            }
             fail(where->range, fmt::format("{} is not a solid, so it cannot be used in CSG ('{}'); "
                                            "solids are {}",
                                            typeName(*operand), opSpelling(op), solidTypeList()));
@@ -673,6 +680,7 @@ void Interpreter::arityError(const BuiltinInfo& info, const CallExpr* node) {
 [[gnu::always_inline]] inline Value Interpreter::callWith(const Value& callee, const CallExpr* node, std::span<Value> args) {
     evalArguments(node, args);
     if (callee.kind == ValueKind::Macro) return callMacro(callee.closure, node, args);
+    if (callee.kind == ValueKind::Function) return callFunction(callee.index, node, args);
     // sin(x) and its kind on a number, the loops' usual call, skip the general path; a NaN
     // result goes the general way, where the built-in tells a domain error from a NaN given.
     if (args.size() == 1 && args[0].isNumber()) {
@@ -692,7 +700,8 @@ Value Interpreter::evalCall(const CallExpr* node) {
     const auto* name = node->callee->kind == NodeKind::Var ? static_cast<const VarExpr*>(node->callee) : nullptr;
     Value callee = name && name->resolution.binding == Binding::Builtin ? prelude_[name->resolution.slot]
                                                                          : eval(node->callee);
-    if (callee.kind != ValueKind::Builtin && callee.kind != ValueKind::Macro) {
+    if (callee.kind != ValueKind::Builtin && callee.kind != ValueKind::Macro &&
+        callee.kind != ValueKind::Function) {
         fail(node->callee->range, fmt::format("cannot call {}; only macros and functions can be called",
                                               typeName(callee)));
     }

@@ -24,6 +24,7 @@ bool canStartStatement(TokenKind kind) {
     case TokenKind::KwSettings:
     case TokenKind::KwScene:
     case TokenKind::KwMacro:
+    case TokenKind::KwFunction:
     case TokenKind::KwTrue:
     case TokenKind::KwFalse:
     case TokenKind::KwWhile:
@@ -223,6 +224,7 @@ int yylex(Parser::semantic_type* value, Parser::location_type* location, ParseCo
     case TokenKind::KwSettings: return T::TOK_SETTINGS;
     case TokenKind::KwScene: return T::TOK_SCENE;
     case TokenKind::KwMacro: return T::TOK_MACRO;
+    case TokenKind::KwFunction: return T::TOK_FUNCTION;
     case TokenKind::KwScale: return T::TOK_SCALE;
     case TokenKind::KwTranslate: return T::TOK_TRANSLATE;
     case TokenKind::KwRotate: return T::TOK_ROTATE;

@@ -103,6 +103,12 @@ private:
     }
 
     Resolution lookup(std::string_view name, bool forRead) {
+        if (forRead && !functions_.empty()) {
+            const std::span<Param> params = functions_.back()->params;
+            for (size_t i = 0; i < params.size(); ++i) {
+                if (params[i].name == name) return {Binding::Parameter, 0, static_cast<uint32_t>(i)};
+            }
+        }
         for (size_t depth = 0; depth < scopes_.size(); ++depth) {
             MacroScope& scope = *scopes_[scopes_.size() - 1 - depth];
             int slot = scope.find(name);
@@ -156,6 +162,7 @@ private:
             break;
         case NodeKind::Object: object(static_cast<ObjectExpr*>(node)); break;
         case NodeKind::Macro: macro(static_cast<MacroExpr*>(node)); break;
+        case NodeKind::Function: function(static_cast<FunctionExpr*>(node)); break;
         default: forEachChild(node, [&](Node* child) { visit(child); }); break;
         }
     }
@@ -243,8 +250,25 @@ private:
         }
     }
 
+    /// A Function's parameters are its own; every other name in its body is read where the
+    /// Function is made, so it resolves as it would beside the Function.
+    void function(FunctionExpr* node) {
+        for (size_t i = 0; i < node->params.size(); ++i) {
+            for (size_t j = 0; j < i; ++j) {
+                if (node->params[j].name == node->params[i].name) {
+                    diagnostics_.error(node->params[i].range,
+                                       fmt::format("parameter '{}' is listed twice", node->params[i].name));
+                }
+            }
+        }
+        functions_.push_back(node);
+        visit(node->body);
+        functions_.pop_back();
+    }
+
     GlobalTable& globals_;
     DiagnosticBag& diagnostics_;
+    std::vector<FunctionExpr*> functions_; ///< the Functions whose body the walk is in
     bool isMainFile_;
     std::vector<MacroScope*> scopes_;
     std::vector<std::string_view> shadowReported_;

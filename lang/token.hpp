@@ -20,6 +20,7 @@ enum class TokenKind : uint8_t {
     KwSettings,
     KwScene,
     KwMacro,
+    KwFunction,
     KwScale,
     KwTranslate,
     KwRotate,

@@ -34,6 +34,7 @@ enum class ValueKind : uint8_t {
     Texture,
     BlobComponent, ///< a BlobSphere or BlobCylinder, for a Blob's components
     Spline,        ///< a Spline, read with spline(s, t)
+    Function,      ///< a compiled numeric Function: index into the interpreter's functions
     Macro,
     Builtin,
     Modifiers, ///< a list of modifiers held as a value: `<rotate v, material m>`

@@ -152,6 +152,19 @@ public:
 
 private:
     uint32_t symbolFor(std::string_view name, const Resolution& r) {
+        if (r.binding == Binding::Parameter && !functions_.empty()) {
+            // A Function's parameters are its own, the first of a name listed twice too.
+            const FunctionExpr* owner = functions_.back();
+            uint32_t slot = r.slot;
+            for (uint32_t i = 0; i < slot; ++i)
+                if (owner->params[i].name == name) slot = i;
+            auto key = std::make_pair(static_cast<const Expr*>(owner), slot);
+            auto it = locals_.find(key);
+            if (it != locals_.end()) return it->second;
+            uint32_t id = add(name, SymbolKind::Parameter, owner);
+            locals_.emplace(key, id);
+            return id;
+        }
         if (r.binding == Binding::Builtin) {
             auto it = builtins_.find(name);
             if (it != builtins_.end()) return it->second;
@@ -161,7 +174,7 @@ private:
         }
         if ((r.binding == Binding::Local || r.binding == Binding::Enclosing) && r.depth < macros_.size()) {
             const MacroExpr* owner = macros_[macros_.size() - 1 - r.depth];
-            auto key = std::make_pair(owner, r.slot);
+            auto key = std::make_pair(static_cast<const Expr*>(owner), r.slot);
             auto it = locals_.find(key);
             if (it != locals_.end()) return it->second;
             uint32_t id = add(name, SymbolKind::Variable, owner);
@@ -175,7 +188,7 @@ private:
         return id;
     }
 
-    uint32_t add(std::string_view name, SymbolKind kind, const MacroExpr* scope) {
+    uint32_t add(std::string_view name, SymbolKind kind, const Expr* scope) {
         Symbol s;
         s.name = std::string(name);
         s.kind = kind;
@@ -230,7 +243,7 @@ private:
             return;
         case NodeKind::Macro: {
             auto* m = static_cast<MacroExpr*>(node);
-            a_.macros.push_back(m);
+            a_.scopes.push_back(m);
             macros_.push_back(m);
             std::vector<std::string_view> seen;
             for (const Param& p : m->params) {
@@ -245,6 +258,18 @@ private:
             macros_.pop_back();
             return;
         }
+        case NodeKind::Function: {
+            auto* f = static_cast<FunctionExpr*>(node);
+            a_.scopes.push_back(f);
+            functions_.push_back(f);
+            for (uint32_t i = 0; i < f->params.size(); ++i) {
+                uint32_t id = symbolFor(f->params[i].name, {Binding::Parameter, 0, i});
+                a_.occurrences.push_back({f->params[i].range, id, true, false});
+            }
+            visit(f->body);
+            functions_.pop_back();
+            return;
+        }
         case NodeKind::Include: includeNames.emplace_back(static_cast<IncludeStmt*>(node)->path->value); return;
         default: forEachChild(node, [&](Node* child) { visit(child); }); return;
         }
@@ -253,11 +278,12 @@ private:
     Analysis& a_;
     std::vector<const MacroExpr*> macros_;
     struct LocalKeyHash {
-        size_t operator()(const std::pair<const MacroExpr*, uint32_t>& key) const {
+        size_t operator()(const std::pair<const Expr*, uint32_t>& key) const {
             return std::hash<const void*>()(key.first) ^ (static_cast<size_t>(key.second) * 0x9E3779B97F4A7C15ull);
         }
     };
-    std::unordered_map<std::pair<const MacroExpr*, uint32_t>, uint32_t, LocalKeyHash> locals_;
+    std::unordered_map<std::pair<const Expr*, uint32_t>, uint32_t, LocalKeyHash> locals_;
+    std::vector<const FunctionExpr*> functions_; ///< the Functions whose body the walk is in
     std::unordered_map<std::string_view, uint32_t> builtins_;
     std::unordered_map<uint32_t, const Expr*> values_; ///< by the offset of an assigned name
     std::unordered_set<uint32_t> loopVariables_;
@@ -382,10 +408,17 @@ int Analysis::tokenBefore(uint32_t offset) const {
     return static_cast<int>(it - tokens.begin()) - 1;
 }
 
-std::vector<const MacroExpr*> Analysis::macrosAt(uint32_t offset) const {
-    std::vector<const MacroExpr*> result;
-    for (const MacroExpr* m : macros) {
-        if (m->body->range.begin < offset && offset < m->body->range.end) result.push_back(m);
+std::vector<const Expr*> Analysis::scopesAt(uint32_t offset) const {
+    std::vector<const Expr*> result;
+    for (const Expr* scope : scopes) {
+        // A macro's names are seen in its block; a Function's in its braces, whose first
+        // and last bytes hold its body.
+        const SourceRange inside = scope->kind == NodeKind::Macro
+                                       ? static_cast<const MacroExpr*>(scope)->body->range
+                                       : SourceRange{scope->range.file,
+                                                     static_cast<const FunctionExpr*>(scope)->body->range.begin - 1,
+                                                     scope->range.end};
+        if (inside.begin < offset && offset < inside.end) result.push_back(scope);
     }
     return result;
 }
@@ -405,7 +438,7 @@ ObjectType Analysis::enclosingObject(int index) const {
 }
 
 const Symbol* Analysis::lookup(std::string_view name, uint32_t offset) const {
-    std::vector<const MacroExpr*> scopes = macrosAt(offset);
+    std::vector<const Expr*> scopes = scopesAt(offset);
     for (auto scope = scopes.rbegin(); scope != scopes.rend(); ++scope) {
         for (const Symbol& s : symbols) {
             if (s.scope == *scope && s.name == name) return &s;
@@ -440,6 +473,15 @@ std::string staticType(const Expr* value, int depth) {
         for (size_t i = 0; i < m->params.size(); ++i) {
             if (i) text += ", ";
             text += std::string(m->params[i].name);
+        }
+        return text + ")";
+    }
+    case NodeKind::Function: {
+        auto* f = static_cast<const FunctionExpr*>(value);
+        std::string text = "Function (";
+        for (size_t i = 0; i < f->params.size(); ++i) {
+            if (i) text += ", ";
+            text += std::string(f->params[i].name);
         }
         return text + ")";
     }

@@ -42,7 +42,8 @@ enum class SymbolKind : uint8_t { Variable, Parameter, LoopVariable, Macro, Buil
 struct Symbol {
     std::string name;
     SymbolKind kind = SymbolKind::Variable;
-    const lang::MacroExpr* scope = nullptr;  ///< the macro owning a local; null for globals
+    /// The macro owning a local, or the Function a parameter; null for globals.
+    const lang::Expr* scope = nullptr;
     std::optional<lang::SourceRange> definition; ///< first binding in this document
     const lang::Expr* value = nullptr;        ///< what the definition assigns, if an assignment
     int external = -1; ///< index into Analysis::externals when first bound in an included file
@@ -112,7 +113,8 @@ struct Analysis {
     std::vector<AttributeUse> attributes; ///< sorted by position
     std::vector<std::shared_ptr<const IncludedFile>> includes; ///< reachable, in first-seen order
     std::vector<ExternalSymbol> externals;
-    std::vector<const lang::MacroExpr*> macros; ///< every macro literal, outer before inner
+    /// Every macro and Function literal (the scopes of names), outer before inner.
+    std::vector<const lang::Expr*> scopes;
     bool syntaxErrors = false;
 
     const lang::SourceFile& file() const { return compilation.sources.file(0); }
@@ -133,8 +135,8 @@ struct Analysis {
     }
     /// The symbol called `name` visible at `offset`: locals of enclosing macros first.
     const Symbol* lookup(std::string_view name, uint32_t offset) const;
-    /// Macros whose body holds `offset`, innermost last.
-    std::vector<const lang::MacroExpr*> macrosAt(uint32_t offset) const;
+    /// Macros and Functions whose body holds `offset`, innermost last.
+    std::vector<const lang::Expr*> scopesAt(uint32_t offset) const;
     /// The object type (or Settings) whose braces enclose token `index`, from the tokens
     /// alone (so it works where the parse failed); ObjectType::Count when none.
     lang::ObjectType enclosingObject(int index) const;

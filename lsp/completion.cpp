@@ -85,6 +85,7 @@ bool objectFits(AttrType type, const ObjectInfo& info) {
     case AttrType::Bump: return isBumpTexture(info.type);
     case AttrType::Solid: return info.category == ObjectCategory::Entity && info.solid;
     case AttrType::BlobComponentList: return info.category == ObjectCategory::BlobComponent;
+    case AttrType::Box: return info.type == ObjectType::Box;
     default: return false;
     }
 }
@@ -105,7 +106,7 @@ int typeFit(AttrType want, const std::string& type) {
         if (type == "colour") return 0;
         [[fallthrough]];
     case AttrType::Material: case AttrType::Camera: case AttrType::Texture: case AttrType::Bump:
-    case AttrType::Solid:
+    case AttrType::Solid: case AttrType::Box:
         return object != ObjectType::Count && objectFits(want, objectInfo(object)) ? 0 : -1;
     case AttrType::Gamma: return type == "float" || type == "int" || type == "string" ? 0 : -1;
     case AttrType::Aperture: return type == "int" || type == "string" ? 0 : -1;
@@ -117,6 +118,7 @@ int typeFit(AttrType want, const std::string& type) {
     case AttrType::BlobComponentList:
     case AttrType::FloatList: return type == "list" ? 0 : -1;
     case AttrType::Turbulence: return type == "float" || type == "int" || type == "vec3" ? 0 : -1;
+    case AttrType::Function: return type.starts_with("Function") ? 0 : -1;
     }
     return 1;
 }
@@ -374,7 +376,7 @@ private:
 
     std::vector<const Symbol*> visibleSymbols() {
         std::vector<const Symbol*> result;
-        std::vector<const MacroExpr*> scopes = names_.macrosAt(namesOffset_);
+        std::vector<const Expr*> scopes = names_.scopesAt(namesOffset_);
         std::set<std::string_view> names;
         for (auto scope = scopes.rbegin(); scope != scopes.rend(); ++scope) {
             for (const Symbol& s : names_.symbols) {
@@ -421,6 +423,8 @@ private:
                  objectSnippet(info), true, "2"});
         }
         add({"Macro", CompletionKind::Keyword, "Macro (params) { … }", "", "Macro (${1}) {\n\t$0\n}", true, "4"});
+        add({"Function", CompletionKind::Keyword, "Function (x, y, z) { … }", "",
+             "Function (${1:x, y, z}) { $0 }", true, "4"});
         add({"true", CompletionKind::Keyword, "bool", "", "true", false, "4"});
         add({"false", CompletionKind::Keyword, "bool", "", "false", false, "4"});
         if (!statementStart) return;

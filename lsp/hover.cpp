@@ -118,6 +118,7 @@ std::string_view keywordDoc(TokenKind kind) {
     case TokenKind::KwSettings: return "`Settings { … }`: image size, camera, lights, background and quality. At most once.";
     case TokenKind::KwScene: return "`Scene { … }`: each statement whose value is an entity (or a list of them) draws it.";
     case TokenKind::KwMacro: return "`Macro (params) { … }`: a closure. A call yields the entities its body emits, or the value of its last statement.";
+    case TokenKind::KwFunction: return "`Function (x, y, z) { expression }`: a numeric function, compiled when made: for Isosurface, HeightField and FunctionPattern, or called as f(1, 2, 3).";
     case TokenKind::KwScale: return "`scale s`: scales by a number or a vec3, about the origin.";
     case TokenKind::KwTranslate: return "`translate v`: moves by the vec3 v.";
     case TokenKind::KwRotate: return "`rotate vec3(x, y, z)`: rotates by x, then y, then z degrees about the world axes (left-handed).";

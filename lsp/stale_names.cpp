@@ -33,11 +33,12 @@ bool bindsOrTypes(const Analysis& a, size_t index) {
         if (next == TokenKind::Assign || next == TokenKind::LBrace || isOpenParen(next)) return true;
     }
     if (index > 0 && t[index - 1].kind == TokenKind::KwFor) return true;
-    // A macro's parameter list: `Macro (a, b)`.
+    // A macro's or Function's parameter list: `Macro (a, b)`.
     for (size_t i = index; i-- > 0;) {
         TokenKind k = t[i].kind;
         if (k == TokenKind::Identifier || k == TokenKind::Comma) continue;
-        return isOpenParen(k) && i > 0 && t[i - 1].kind == TokenKind::KwMacro;
+        return isOpenParen(k) && i > 0 &&
+               (t[i - 1].kind == TokenKind::KwMacro || t[i - 1].kind == TokenKind::KwFunction);
     }
     return false;
 }

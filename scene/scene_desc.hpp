@@ -5,6 +5,7 @@
 #pragma once
 
 #include "scene/curve_outline.hpp"
+#include "scene/function_program.hpp"
 #include "scene/obj_mesh.hpp"
 #include "scene/text_outline.hpp"
 
@@ -83,7 +84,8 @@ enum class TextureKind : uint8_t {
     Slope,
     Bump,
     Ripples,
-    Waves
+    Waves,
+    FunctionPattern
 };
 enum class TextureMapping : uint8_t { Uv, Planar, Spherical, Cylindrical, Cubic };
 
@@ -151,6 +153,7 @@ struct TextureDesc {
     double rings = 8;          ///< Wood
     double strength = 0.5;     ///< bump textures
     std::vector<TextureDesc> pattern; ///< Bump: the one pattern whose value is the height
+    std::shared_ptr<const FunctionProgram> function; ///< FunctionPattern: f(x, y, z), the value
     std::string file;          ///< Image, ImageBump: as written in the script
     std::string resolvedFile;  ///< the path found on disk, or "" if not found yet
     TextureMapping mapping = TextureMapping::Uv;
@@ -313,6 +316,36 @@ struct BlobDesc {
 struct BlobShape {
     std::shared_ptr<const BlobDesc> desc;
 };
+/// POV-Ray's isosurface: the solid where `function` of (x, y, z) is below `threshold`, within
+/// the box from `boundsMin` to `boundsMax` (whose faces close it, unless `open`). Crossings are
+/// found by halving the line's span in the box wherever `maxGradient` (a bound of how fast the
+/// function changes per unit of length) lets the function reach the threshold, down to spans
+/// of `accuracy`.
+struct IsosurfaceDesc {
+    std::shared_ptr<const FunctionProgram> function;
+    glm::dvec3 boundsMin{-1.0}, boundsMax{1.0};
+    double threshold = 0;
+    double maxGradient = 1.1;
+    double accuracy = 0.001;
+    bool open = false;
+    SourceSpan source; ///< for the renderer's warnings (a gradient above maxGradient …)
+};
+struct IsosurfaceShape {
+    std::shared_ptr<const IsosurfaceDesc> desc;
+};
+/// POV-Ray's height field: heights in [0, 1] over the unit square of the x-z plane, from an
+/// image's grey levels (its first row at z = 1, as POV-Ray has it) or a function of (x, 0, z)
+/// sampled on a grid; two triangles a cell. Smooth: normals interpolated from the corners'.
+struct HeightFieldDesc {
+    std::string image;         ///< as written in the script ("" for a function)
+    std::string resolvedImage; ///< the path found on disk, or "" if not looked up
+    std::shared_ptr<const FunctionProgram> function;
+    int resolution = 100; ///< a function's samples along x, and as many along z
+    bool smooth = false;
+};
+struct HeightFieldShape {
+    std::shared_ptr<const HeightFieldDesc> desc;
+};
 struct MeshShape {
     std::string file;         ///< as written in the script
     std::string resolvedFile; ///< the path found on disk, or "" if not found
@@ -334,7 +367,7 @@ struct GroupNode { std::vector<int32_t> members; };
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape,
                            DiscShape, QuadShape, TriangleShape, SmoothTriangleShape, PolygonShape,
                            SuperellipsoidShape, PrismShape, SorShape, LatheShape, TextShape,
-                           BlobShape, MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
+                           BlobShape, IsosurfaceShape, HeightFieldShape, MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
 // One per entity, and a generated scene has millions: a shape with more data keeps it out of
 // line (as a smooth triangle and a polygon do).
 static_assert(sizeof(Shape) <= 80, "keep every shape small");
@@ -468,6 +501,9 @@ struct RenderLimits {
     uint64_t maxPrimitives = 5'000'000;
     /// Pixels of one image a texture or background reads (width × height from its header).
     uint64_t maxImagePixels = 100'000'000;
+    /// Evaluations of an isosurface's function along one line before the search gives up
+    /// (what it found so far is kept, and the render warns).
+    uint64_t maxIsosurfaceEvaluations = 100'000;
 };
 
 /// The evaluated scene.

@@ -10,6 +10,19 @@ using Json = nlohmann::ordered_json;
 namespace {
 
 Json vec(const glm::dvec3& v) { return Json::array({v.x, v.y, v.z}); }
+/// A compiled Function: its registers' first values, then one [operation, result register,
+/// operand registers…] an instruction.
+Json functionJson(const FunctionProgram& f) {
+    Json code = Json::array();
+    for (const FunctionInstruction& in : f.code) {
+        Json step = Json::array({functionOpName(in.op), in.out});
+        const uint16_t operands[] = {in.a, in.b, in.c};
+        for (int k = 0; k < functionOpArity(in.op); ++k) step.push_back(operands[k]);
+        code.push_back(std::move(step));
+    }
+    return Json{{"parameters", f.parameters}, {"constants", f.constants}, {"code", std::move(code)},
+                {"result", f.result}};
+}
 Json pointList(const std::vector<glm::dvec2>& points) {
     Json out = Json::array();
     for (const glm::dvec2& p : points) out.push_back(Json::array({p.x, p.y}));
@@ -168,6 +181,27 @@ struct ShapeJson {
         }
         out["components"] = std::move(components);
     }
+    void operator()(const IsosurfaceShape& s) {
+        out["type"] = "Isosurface";
+        out["function"] = functionJson(*s.desc->function);
+        out["boundsMin"] = vec(s.desc->boundsMin);
+        out["boundsMax"] = vec(s.desc->boundsMax);
+        out["threshold"] = s.desc->threshold;
+        out["maxgradient"] = s.desc->maxGradient;
+        out["accuracy"] = s.desc->accuracy;
+        out["open"] = s.desc->open;
+    }
+    void operator()(const HeightFieldShape& s) {
+        out["type"] = "HeightField";
+        if (s.desc->function) {
+            out["function"] = functionJson(*s.desc->function);
+            out["resolution"] = s.desc->resolution;
+        } else {
+            out["image"] = s.desc->image;
+            out["resolvedImage"] = s.desc->resolvedImage;
+        }
+        out["smooth"] = s.desc->smooth;
+    }
     void operator()(const MeshShape& s) {
         out["type"] = "Mesh";
         out["file"] = s.file;
@@ -210,8 +244,8 @@ const char* textureKind(TextureKind kind) {
         "ImageBump", "Gradient", "Onion",     "Leopard",     "Radial",   "Spiral",  "Brick",
         "Hexagon",   "Boxed",    "Spherical", "Cylindrical", "Planar",   "Quilted", "Mandel",
         "Bozo",      "Spotted",  "Granite",   "Agate",       "Wrinkles", "Dents",   "Crackle",
-        "Cells",     "Slope",    "Bump",      "Ripples",     "Waves"};
-    static_assert(std::size(names) == static_cast<size_t>(TextureKind::Waves) + 1);
+        "Cells",     "Slope",    "Bump",      "Ripples",     "Waves",    "FunctionPattern"};
+    static_assert(std::size(names) == static_cast<size_t>(TextureKind::FunctionPattern) + 1);
     return names[static_cast<int>(kind)];
 }
 
@@ -379,6 +413,7 @@ void patternJson(const TextureDesc& x, Json& texture) {
         texture["control1"] = x.control1;
     }
     if (x.kind == K::Mandel) texture["iterations"] = x.iterations;
+    if (x.kind == K::FunctionPattern) texture["function"] = functionJson(*x.function);
     if (x.kind == K::Crackle) {
         texture["metric"] = x.metric;
         texture["form"] = vec(x.form);

@@ -120,11 +120,9 @@ bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double 
                                   QueryScratch& scratch, RayStats& stats) const {
     if (object >= 0) {
         const Primitive& p = primitives[object];
-        CrossingList list;
         ++stats.intersectionTests;
-        crossLine(p.geometry, objectRay(p, ray.ray()), list);
         Crossing c{};
-        if (!firstCrossingAfter(list, 0.0, tMax, c)) return false;
+        if (!firstCrossing(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, c)) return false;
         hit = {c.t, object, c, false};
         return true;
     }

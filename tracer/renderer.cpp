@@ -174,6 +174,19 @@ void traceTile(const PixelSampler& sampler, const Tile& tile, int channels, std:
     }
 }
 
+/// The warnings of the scene's isosurfaces, each once however often it is drawn.
+std::string isosurfaceWarnings(const scene::SceneDesc& desc, const RenderScene& scene) {
+    std::string warnings;
+    std::vector<const scene::IsosurfaceDesc*> seen;
+    for (const Primitive& p : scene.primitives) {
+        auto* iso = std::get_if<IsosurfaceGeometry>(&p.geometry);
+        if (!iso || std::find(seen.begin(), seen.end(), &iso->desc()) != seen.end()) continue;
+        seen.push_back(&iso->desc());
+        warnings += iso->warnings(scene::spanLocation(desc, iso->desc().source));
+    }
+    return warnings;
+}
+
 /// Whether every tile is a non-empty rectangle inside the image; else says which is not.
 bool tilesFit(const std::vector<Tile>& tiles, int width, int height, std::string& error) {
     for (const Tile& t : tiles) {
@@ -278,6 +291,7 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     outcome.cancelled = job.nextTile ? job.cancel && job.cancel->load()
                                      : outcome.tilesDone < tileCount;
     outcome.ok = !outcome.cancelled;
+    outcome.warnings = isosurfaceWarnings(desc, *prepared.geometry);
     return outcome;
 }
 

@@ -86,6 +86,9 @@ struct RenderOutcome {
     int bvhDepth = 0;
     uint64_t samples = 0; ///< camera samples per pixel (before depth of field)
     std::string shading;  ///< the shading the scene uses (SceneFeatures::names)
+    /// What the render met that the user should hear of, a line each ("scene.crt:3:5: warning:
+    /// …"): an isosurface's function steeper than its maxgradient, say.
+    std::string warnings;
 };
 
 /// Renders the tiles of `job` of `scene` at its settings' width and height.

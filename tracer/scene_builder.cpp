@@ -3,6 +3,7 @@
 #include "tracer/render_scene.hpp"
 
 #include "scene/primitive_count.hpp"
+#include "tracer/height_grid_reading.hpp"
 
 #include <fmt/format.h>
 
@@ -24,6 +25,7 @@ public:
         defaultMaterial_ = static_cast<int32_t>(scene_.materials.size());
         scene_.materials.emplace_back(); // the default material
         scene_.blends = desc_.blends;
+        if (!readHeightGrids()) return false;
         // Counted before anything is expanded: a shared entity doubled in a loop would
         // otherwise fill memory here. Evaluation refuses such a scene already; this is for
         // descriptions made otherwise.
@@ -105,8 +107,29 @@ private:
         return static_cast<int32_t>(scene_.transforms.size() - 1);
     }
 
+    /// The heights of every HeightField, once each however often it is drawn.
+    bool readHeightGrids() {
+        for (const scene::EntityDesc& e : desc_.entities) {
+            auto* field = std::get_if<scene::HeightFieldShape>(&e.shape);
+            if (!field || heightGrids_.contains(field->desc.get())) continue;
+            std::shared_ptr<const HeightGrid> grid = readHeightGrid(*field->desc, desc_.limits, error_);
+            if (!grid) {
+                const std::string where = scene::spanLocation(desc_, e.source);
+                if (!where.empty()) error_ = where + ": error: " + error_;
+                return false;
+            }
+            heightGrids_.emplace(field->desc.get(), std::move(grid));
+        }
+        return true;
+    }
+
     int32_t addPrimitive(const Operand& op) {
-        std::optional<Geometry> geometry = makeGeometry(desc_.entities[op.entity].shape);
+        const scene::Shape& shape = desc_.entities[op.entity].shape;
+        std::optional<Geometry> geometry;
+        if (auto* field = std::get_if<scene::HeightFieldShape>(&shape))
+            geometry = HeightFieldGeometry(heightGrids_.at(field->desc.get()), field->desc->smooth);
+        else
+            geometry = makeGeometry(shape, desc_.limits);
         if (!geometry) return -1;
         scene_.primitives.push_back(
             {std::move(*geometry), addTransform(op.transform), materialOf(op)});
@@ -336,6 +359,7 @@ private:
     std::string& error_;
     int32_t defaultMaterial_ = 0;
     std::map<std::string, std::shared_ptr<const MeshData>> meshes_;
+    std::map<const scene::HeightFieldDesc*, std::shared_ptr<const HeightGrid>> heightGrids_;
 };
 
 std::unique_ptr<RenderScene> buildRenderScene(const scene::SceneDesc& desc, std::string& error,

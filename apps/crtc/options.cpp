@@ -293,6 +293,12 @@ void addEvaluationOptions(CLI::App& app, Options& o) {
         ->check(anyNumber<uint64_t>("a non-negative integer"))
         ->type_name("N")
         ->group(group);
+    app.add_option("--max-isosurface-evaluations", limits.render.maxIsosurfaceEvaluations,
+                   fmt::format("evaluations of an isosurface's function along one line (default {})",
+                               limits.render.maxIsosurfaceEvaluations))
+        ->check(numberIn<uint64_t>(1, uint64_t{1} << 40, "an integer from 1 to 1099511627776"))
+        ->type_name("N")
+        ->group(group);
     app.add_option("--max-mesh-size", limits.maxMeshSize,
                    fmt::format("vertices or triangles of one mesh file (default {})",
                                limits.maxMeshSize))

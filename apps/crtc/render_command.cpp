@@ -75,6 +75,13 @@ struct RenderTotals {
         outcome.bvhNodes = r.bvhNodes;
         outcome.bvhDepth = r.bvhDepth;
         outcome.shading = r.shading;
+        // Each warning once, however many frames met it.
+        for (size_t at = 0; at < r.warnings.size();) {
+            const size_t end = std::min(r.warnings.find('\n', at), r.warnings.size());
+            const std::string line = r.warnings.substr(at, end - at + 1);
+            if (outcome.warnings.find(line) == std::string::npos) outcome.warnings += line;
+            at = end + 1;
+        }
     }
 };
 
@@ -517,6 +524,7 @@ int RenderRun::run(const CompileFrame& compileFrame) {
         return 2;
     }
     if (log_) log_->remove();
+    std::cerr << lang::terminalSafe(totals_.outcome.warnings); // diagnostics: -q keeps them
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!options_.quiet) printSummary(totals_, frames_.selected(), seconds, plan_.path);

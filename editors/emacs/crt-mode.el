@@ -45,7 +45,7 @@ For example (:includeDirs [\"/my/includes\"] :maxSteps 1000000)."
   "The built-in functions (docs/language.md, section 10).")
 
 (defconst crt-font-lock-keywords
-  `((,(regexp-opt '("while" "for" "in" "if" "else" "include" "Settings" "Scene" "Macro"
+  `((,(regexp-opt '("while" "for" "in" "if" "else" "include" "Settings" "Scene" "Macro" "Function"
                     "scale" "translate" "rotate")
                   'symbols)
      . font-lock-keyword-face)

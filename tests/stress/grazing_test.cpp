@@ -10,6 +10,7 @@
 // reached by shadow rays nearly tangent to it: every pixel that sees the surface must be the
 // Lambert value C·(n·l), and a self-shadowed (acne) pixel is black.
 #include "analytic_shapes.hpp"
+#include "stress_scenes.hpp"
 
 #include <functional>
 #include <memory>
@@ -204,6 +205,25 @@ GrazingCase blobCase() {
     blob->components = {{false, center, center, std::sqrt(2.0), 1}};
     c.name = "blob";
     c.add = [=](SceneMaker& m, int32_t mat) { m.draw(m.entity(scene::BlobShape{blob}, mat)); };
+    return c;
+}
+
+/// The sphere as an isosurface of x² + y² + z² − 1, moved to its centre, with an accuracy
+/// fine enough to part the two crossings of the nearest lines to the tangent the test casts (a
+/// billionth of the distance off it).
+GrazingCase isosurfaceCase() {
+    GrazingCase c = sphereCase();
+    auto iso = std::make_shared<scene::IsosurfaceDesc>();
+    iso->function = unitSphereFunction();
+    iso->boundsMin = DVec3(-1.1);
+    iso->boundsMax = DVec3(1.1);
+    iso->maxGradient = 3.85; // 2·|p|, at most 2·1.1·√3
+    iso->accuracy = 1e-7;
+    const DVec3 center = c.inside;
+    c.name = "isosurface";
+    c.add = [=](SceneMaker& m, int32_t mat) {
+        m.draw(m.transformed(m.entity(scene::IsosurfaceShape{iso}, mat), {test::translate(center)}));
+    };
     return c;
 }
 
@@ -472,6 +492,9 @@ TEST_CASE("Grazing rays on a sphere", "[stress][grazing]") {
 }
 TEST_CASE("Grazing rays on a blob", "[stress][grazing]") {
     runGrazing(blobCase());
+}
+TEST_CASE("Grazing rays on an isosurface", "[stress][grazing][release-only]") {
+    runGrazing(isosurfaceCase());
 }
 TEST_CASE("Grazing rays on a box", "[stress][grazing]") {
     runGrazing(boxCase());

@@ -51,6 +51,32 @@ inline void gradientSky(scene::SceneDesc& desc) {
     desc.background.sky = scene::Color{0.3, 0.5, 0.9, 1};
 }
 
+/// x² + y² + z² − 1, as the front end compiles it: registers x y z, the constant, temporaries.
+inline std::shared_ptr<scene::FunctionProgram> unitSphereFunction() {
+    using Op = scene::FunctionOp;
+    auto f = std::make_shared<scene::FunctionProgram>();
+    f->parameters = {"x", "y", "z"};
+    f->constants = {1};
+    f->code = {{Op::Mul, 4, 0, 0, 0}, {Op::Mul, 5, 1, 1, 1}, {Op::Add, 4, 4, 5, 5},
+               {Op::Mul, 5, 2, 2, 2}, {Op::Add, 4, 4, 5, 5}, {Op::Sub, 4, 4, 3, 3}};
+    f->registerCount = 6;
+    f->result = 4;
+    return f;
+}
+
+/// 0.2 + 0.6 · x · (1 − z): heights in [0.2, 0.8] over the unit square.
+inline std::shared_ptr<scene::FunctionProgram> slopeFunction() {
+    using Op = scene::FunctionOp;
+    auto f = std::make_shared<scene::FunctionProgram>();
+    f->parameters = {"x", "y", "z"};
+    f->constants = {1, 0.6, 0.2};
+    f->code = {{Op::Sub, 6, 3, 2, 2}, {Op::Mul, 6, 0, 6, 6}, {Op::Mul, 6, 6, 4, 4},
+               {Op::Add, 6, 6, 5, 5}};
+    f->registerCount = 7;
+    f->result = 6;
+    return f;
+}
+
 /// A sphere resting on a slightly reflective floor, a mirror sphere and a mirror wall.
 inline scene::SceneDesc mirrorScene(const Placement& at, int width, int height) {
     test::SceneMaker m;
@@ -168,6 +194,22 @@ inline scene::SceneDesc primitivesScene(const Placement& at, int width, int heig
     int32_t drop2 = m.entity(scene::BlobShape{blob}, mat(0.5, 0.7, 0.9, 0.2));
     m.draw(m.transformed(drop2, {test::scale(DVec3(0.25)), rotate({-20, 30, 0}),
                                  translate({0.5, 0.6, -2.2}), toWorld[0], toWorld[1]}));
+    // An isosurface, a sphere's function with its top cut off by its box's face, and a smooth
+    // height field sampled from a function: both searched in their own unit space.
+    auto iso = std::make_shared<scene::IsosurfaceDesc>();
+    iso->function = unitSphereFunction();
+    iso->boundsMax = {1, 0.5, 1};
+    iso->maxGradient = 4;
+    int32_t bowl = m.entity(scene::IsosurfaceShape{iso}, mat(0.8, 0.4, 0.6, 0.2));
+    m.draw(m.transformed(bowl, {test::scale(DVec3(0.3)), rotate({-40, 10, 0}),
+                                translate({2.6, 0.35, -2.1}), toWorld[0], toWorld[1]}));
+    auto field = std::make_shared<scene::HeightFieldDesc>();
+    field->function = slopeFunction();
+    field->resolution = 9;
+    field->smooth = true;
+    int32_t hill = m.entity(scene::HeightFieldShape{field}, mat(0.5, 0.8, 0.5, 0.2));
+    m.draw(m.transformed(hill, {test::scale(DVec3(0.9, 0.5, 0.7)), rotate({0, 25, 0}),
+                                translate({-3.0, 0.0, -2.3}), toWorld[0], toWorld[1]}));
     int32_t block = m.box(at.at({0.8, 0, -1.8}), at.at({1.6, 0.8, -1.0}), mat(0.8, 0.8, 0.8));
     int32_t dent = m.sphere(at.at({1.2, 0.8, -1.4}), s * 0.45, mat(0.9, 0.3, 0.3));
     m.draw(m.csg(scene::CsgOp::Difference, block, dent));

@@ -55,9 +55,9 @@ bool hasCheapCrossings(const Geometry& geometry) {
            std::holds_alternative<QuadGeometry>(geometry) || std::holds_alternative<TriangleGeometry>(geometry);
 }
 
-std::optional<Geometry> makeGeometry(const scene::Shape& shape) {
+std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::RenderLimits& limits) {
     return std::visit(
-        [](const auto& s) -> std::optional<Geometry> {
+        [&](const auto& s) -> std::optional<Geometry> {
             using S = std::decay_t<decltype(s)>;
             if constexpr (std::is_same_v<S, scene::SphereShape>)
                 return Geometry(SphereGeometry(s));
@@ -91,12 +91,28 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape) {
                 return Geometry(TextGeometry(s));
             else if constexpr (std::is_same_v<S, scene::BlobShape>)
                 return Geometry(BlobGeometry(s));
+            else if constexpr (std::is_same_v<S, scene::IsosurfaceShape>)
+                return Geometry(IsosurfaceGeometry(s, limits.maxIsosurfaceEvaluations));
             else if constexpr (std::is_same_v<S, scene::SuperellipsoidShape>)
                 return Geometry(SuperellipsoidGeometry(s));
             else
                 return std::nullopt; // meshes, CSG, transforms, groups and inverses
         },
         shape);
+}
+
+bool firstCrossing(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out) {
+    return std::visit(
+        [&](const auto& g) {
+            if constexpr (requires { g.firstCrossing(ray, tMin, tMax, out); }) {
+                return g.firstCrossing(ray, tMin, tMax, out);
+            } else {
+                CrossingList list;
+                g.crossLine(ray, list);
+                return firstCrossingAfter(list, tMin, tMax, out);
+            }
+        },
+        geometry);
 }
 
 bool firstCrossingAfter(const CrossingList& crossings, double tMin, double tMax, Crossing& out) {

@@ -6,6 +6,8 @@
 #include "tracer/geometry/cone.hpp"
 #include "tracer/geometry/cylinder.hpp"
 #include "tracer/geometry/disc.hpp"
+#include "tracer/geometry/height_field.hpp"
+#include "tracer/geometry/isosurface.hpp"
 #include "tracer/geometry/lathe.hpp"
 #include "tracer/geometry/mesh_triangle.hpp"
 #include "tracer/geometry/plane.hpp"
@@ -29,7 +31,7 @@ using Geometry =
     std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry, ConeGeometry,
                  TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshTriangleGeometry,
                  SuperellipsoidGeometry, PolygonGeometry, PrismGeometry, SorGeometry, LatheGeometry,
-                 TextGeometry, BlobGeometry>;
+                 TextGeometry, BlobGeometry, IsosurfaceGeometry, HeightFieldGeometry>;
 
 /// Object-space bounds (Bounds3::everything() for a plane, empty for a degenerate shape).
 Bounds3 geometryBounds(const Geometry& geometry);
@@ -51,11 +53,16 @@ bool isFlat(const Geometry& geometry);
 /// (then testing the bounds first does not pay).
 bool hasCheapCrossings(const Geometry& geometry);
 
-/// The primitive of a plain shape; nullopt for CSG, transform and group nodes and for meshes
-/// (which become one MeshTriangleGeometry per triangle once the file is read).
-std::optional<Geometry> makeGeometry(const scene::Shape& shape);
+/// The primitive of a plain shape; nullopt for CSG, transform and group nodes, for meshes
+/// (which become one MeshTriangleGeometry per triangle once the file is read) and for height
+/// fields (HeightFieldGeometry, once their heights are read).
+/// `limits`: the work a primitive may do for one line (an isosurface's evaluations).
+std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::RenderLimits& limits = {});
 
 /// The first crossing with tMin < t < tMax (crossings are sorted), for nearest-hit queries.
 bool firstCrossingAfter(const CrossingList& crossings, double tMin, double tMax, Crossing& out);
+/// The first crossing of the line with tMin < t < tMax: crossLine's, or a search of the
+/// window alone where the primitive has one (an isosurface, whose search is long).
+bool firstCrossing(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out);
 
 } // namespace crt::tracer

@@ -38,6 +38,7 @@ double continuousValue(const scene::TextureDesc& d, const Vec3& p, const Vec3& n
     case Kind::Slope: return patterns::slope(normal, d.axis);
     case Kind::Ripples: return patterns::ripples(p, d.frequency, d.phase);
     case Kind::Waves: return patterns::waves(p, d.frequency, d.phase);
+    case Kind::FunctionPattern: return patterns::function(p, *d.function);
     default: return 0;
     }
 }

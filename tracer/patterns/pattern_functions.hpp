@@ -49,6 +49,9 @@ double agate(const Vec3& p);
 double wrinkles(const Vec3& p);
 double dents(const Vec3& p);
 
+// A Function's value (function_pattern.cpp); above 1 its fraction, as in POV-Ray.
+double function(const Vec3& p, const scene::FunctionProgram& f);
+
 // Cellular (cellular_patterns.cpp): a random point or value in each unit cube.
 double crackle(const Vec3& p, double metric, const Vec3& form);
 double cells(const Vec3& p);

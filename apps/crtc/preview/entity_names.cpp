@@ -13,7 +13,7 @@ std::string entityKind(const scene::EntityDesc& entity) {
     static constexpr auto kNames = std::to_array<const char*>({
         "Sphere", "Box", "Plane", "Cylinder", "Cone", "Torus", "Disc", "Quad", "Triangle",
         "SmoothTriangle", "Polygon", "Superellipsoid", "Prism", "Sor", "Lathe", "Text", "Blob",
-        "Mesh", "CSG", "transformed entity", "group", "inverse"});
+        "Isosurface", "HeightField", "Mesh", "CSG", "transformed entity", "group", "inverse"});
     // clang-format on
     static_assert(kNames.size() == std::variant_size_v<scene::Shape>,
                   "one name for each kind of shape, in the variant's order");

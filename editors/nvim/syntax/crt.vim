@@ -1,6 +1,6 @@
 " Syntax highlighting for CRT scene scripts (Neovim 0.7 has no semantic tokens).
 if exists('b:current_syntax') | finish | endif
-syn keyword crtKeyword Settings Scene Macro while for in if else include
+syn keyword crtKeyword Settings Scene Macro Function while for in if else include
 syn keyword crtModifier scale translate rotate
 syn keyword crtBoolean true false
 syn match crtType "\<[A-Z][A-Za-z0-9_]*\>"

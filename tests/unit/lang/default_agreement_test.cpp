@@ -84,6 +84,11 @@ constexpr Usage kUsages[] = {
      "Scene { Sphere { radius -> 1 center -> spline(Spline { points -> [vec3(0, 0, 0), "
      "vec3(1, 0, 0), vec3(2, 1, 0), vec3(3, 0, 0)] @ }, 0.3) } }"},
     {ObjectType::Text, "Scene { Text { text -> \"crt\" @ } }"},
+    {ObjectType::Isosurface,
+     "Scene { Isosurface { function -> Function (x, y, z) { x * x + y * y + z * z - 0.5 } @ } }"},
+    {ObjectType::HeightField, "Scene { HeightField { function -> Function (x, y, z) { x * z } @ } }"},
+    {ObjectType::FunctionPattern,
+     CRT_SPHERE_WITH("Material { texture -> FunctionPattern { function -> Function (x, y, z) { x } @ } }")},
     {ObjectType::Prism,
      "Scene { Prism { points -> [vec3(0, 0, 1), vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 0, 1), "
      "vec3(0, 0, 0)] @ } }"},
@@ -141,6 +146,8 @@ constexpr std::pair<ObjectType, std::string_view> kRuleDefaults[] = {
     {ObjectType::Material, "bump"},            // none
     {ObjectType::Settings, "reflectiondepth"}, // recursiondepth
     {ObjectType::Settings, "refractiondepth"}, // recursiondepth
+    {ObjectType::HeightField, "image"},        // a height field has an image or a function
+    {ObjectType::HeightField, "function"},
 };
 
 bool isRuleDefault(ObjectType type, std::string_view attribute) {
@@ -246,7 +253,9 @@ std::string otherValue(const AttributeInfo& attr) {
     case AttrType::Solid:
     case AttrType::SolidList:
     case AttrType::PointList:
-    case AttrType::BlobComponentList: return ""; // required: no default to differ from
+    case AttrType::BlobComponentList:
+    case AttrType::Function: return ""; // required: no default to differ from
+    case AttrType::Box: return "Box { cornerA -> vec3(-2, -1, -1) cornerB -> vec3(1, 2, 1) }";
     case AttrType::FloatList: return "[0, 0.1, 0.5, 1]";
     }
     return "";
