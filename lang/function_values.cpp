@@ -244,6 +244,9 @@ class FunctionCompiler {
             for (size_t i = 1; i < args.size(); ++i) folded = apply(*op, folded, args[i], args[i], temporaryTop_);
             return folded;
         }
+        // A square, the commonest power in isosurfaces, is one product rather than a call of pow.
+        if (*op == FunctionOp::Pow && args[1].space == Space::Constant && constants_[args[1].index] == 2)
+            return apply(FunctionOp::Mul, args[0], args[0], args[0], freeFrom);
         args.resize(3, args[0]);
         return apply(*op, args[0], args[1], args[2], freeFrom);
     }

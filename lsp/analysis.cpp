@@ -455,6 +455,20 @@ const Symbol* Analysis::lookup(std::string_view name, uint32_t offset) const {
 
 // ---------------------------------------------------------------- static types
 
+namespace {
+
+/// "(a, b)": a macro's or Function's parameters as written.
+std::string parameterList(std::span<const Param> params) {
+    std::string text = "(";
+    for (size_t i = 0; i < params.size(); ++i) {
+        if (i) text += ", ";
+        text += std::string(params[i].name);
+    }
+    return text + ")";
+}
+
+} // namespace
+
 std::string staticType(const Expr* value, int depth) {
     if (!value || depth <= 0) return "";
     switch (value->kind) {
@@ -467,24 +481,9 @@ std::string staticType(const Expr* value, int depth) {
         auto* o = static_cast<const ObjectExpr*>(value);
         return std::string(o->typeName);
     }
-    case NodeKind::Macro: {
-        auto* m = static_cast<const MacroExpr*>(value);
-        std::string text = "macro (";
-        for (size_t i = 0; i < m->params.size(); ++i) {
-            if (i) text += ", ";
-            text += std::string(m->params[i].name);
-        }
-        return text + ")";
-    }
-    case NodeKind::Function: {
-        auto* f = static_cast<const FunctionExpr*>(value);
-        std::string text = "Function (";
-        for (size_t i = 0; i < f->params.size(); ++i) {
-            if (i) text += ", ";
-            text += std::string(f->params[i].name);
-        }
-        return text + ")";
-    }
+    case NodeKind::Macro: return "macro " + parameterList(static_cast<const MacroExpr*>(value)->params);
+    case NodeKind::Function:
+        return "Function " + parameterList(static_cast<const FunctionExpr*>(value)->params);
     case NodeKind::Modify: return staticType(static_cast<const ModifyExpr*>(value)->target, depth - 1);
     case NodeKind::ModifierList: return "modifiers";
     case NodeKind::Component: return "float";

@@ -92,6 +92,8 @@ double run(const FunctionProgram& program, double* r) {
         case FunctionOp::Abs: r[in.out] = std::abs(r[in.a]); break;
         case FunctionOp::Sqrt: r[in.out] = std::sqrt(r[in.a]); break;
         case FunctionOp::Select: r[in.out] = r[in.a] != 0 ? r[in.b] : r[in.c]; break;
+        case FunctionOp::Sin: r[in.out] = std::sin(r[in.a]); break;
+        case FunctionOp::Cos: r[in.out] = std::cos(r[in.a]); break;
         default: r[in.out] = applyFunctionOp(in.op, r[in.a], r[in.b], r[in.c]); break;
         }
     }
@@ -109,10 +111,11 @@ double FunctionProgram::operator()(std::span<const double> args) const {
         onHeap.resize(registerCount);
         r = onHeap.data();
     }
+    // Element by element: a handful each, where a call of memmove would cost more.
     const size_t n = std::min(args.size(), parameters.size());
-    std::copy_n(args.begin(), n, r);
-    std::fill(r + n, r + parameters.size(), 0.0);
-    std::copy(constants.begin(), constants.end(), r + parameters.size());
+    for (size_t i = 0; i < parameters.size(); ++i) r[i] = i < n ? args[i] : 0.0;
+    double* k = r + parameters.size();
+    for (size_t i = 0; i < constants.size(); ++i) k[i] = constants[i];
     return run(*this, r);
 }
 

@@ -122,7 +122,14 @@ bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double 
         const Primitive& p = primitives[object];
         ++stats.intersectionTests;
         Crossing c{};
-        if (!firstCrossing(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, c)) return false;
+        bool found = false;
+        auto first = [&](const Crossing& x) {
+            c = x;
+            found = true;
+            return false;
+        };
+        crossingsIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, first);
+        if (!found) return false;
         hit = {c.t, object, c, false};
         return true;
     }

@@ -14,14 +14,9 @@ bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, doubl
                                     RayStats& stats, Visit& visit) const {
     if (object >= 0) {
         const Primitive& p = primitives[object];
-        CrossingList list;
         ++stats.intersectionTests;
-        crossLine(p.geometry, objectRay(p, ray.ray()), list);
-        for (int i = 0; i < list.count; ++i) {
-            const Crossing& c = list[i];
-            if (c.t > 0 && c.t < tMax && !visit(Hit{c.t, object, c, false})) return false;
-        }
-        return true;
+        auto hit = [&](const Crossing& c) { return visit(Hit{c.t, object, c, false}); };
+        return crossingsIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, hit);
     }
     if (!csgMayCross(~object, ray.box(), tMax)) return true;
     size_t start = scratch.csg.size();

@@ -101,15 +101,17 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::Ren
         shape);
 }
 
-bool firstCrossing(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out) {
+bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit) {
     return std::visit(
         [&](const auto& g) {
-            if constexpr (requires { g.firstCrossing(ray, tMin, tMax, out); }) {
-                return g.firstCrossing(ray, tMin, tMax, out);
+            if constexpr (requires { g.crossingsIn(ray, tMin, tMax, visit); }) {
+                return g.crossingsIn(ray, tMin, tMax, visit);
             } else {
                 CrossingList list;
                 g.crossLine(ray, list);
-                return firstCrossingAfter(list, tMin, tMax, out);
+                for (int i = 0; i < list.count; ++i)
+                    if (list[i].t > tMin && list[i].t < tMax && !visit(list[i])) return false;
+                return true;
             }
         },
         geometry);

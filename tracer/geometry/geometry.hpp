@@ -61,8 +61,9 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::Ren
 
 /// The first crossing with tMin < t < tMax (crossings are sorted), for nearest-hit queries.
 bool firstCrossingAfter(const CrossingList& crossings, double tMin, double tMax, Crossing& out);
-/// The first crossing of the line with tMin < t < tMax: crossLine's, or a search of the
-/// window alone where the primitive has one (an isosurface, whose search is long).
-bool firstCrossing(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out);
+/// Visits the crossings with tMin < t < tMax in order until the visitor returns false (then
+/// false): crossLine's, or a search of the window alone where the primitive has one (an
+/// isosurface, whose search along the line is long).
+bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit);
 
 } // namespace crt::tracer

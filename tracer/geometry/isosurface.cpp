@@ -57,28 +57,27 @@ double IsosurfaceGeometry::rootBetween(const Ray& ray, double ta, double tb, dou
     return 0.5 * (ta + tb);
 }
 
-template <typename OnCrossing>
-void IsosurfaceGeometry::search(const Ray& ray, double ta, double tb, double ga, double gb,
-                                OnCrossing&& onCrossing) const {
+bool IsosurfaceGeometry::search(const Ray& ray, double ta, double tb, double ga, double gb,
+                                CrossingVisitor visit) const {
     const double dirLength = glm::length(ray.dir);
     const double slopeBound = desc_->maxGradient * dirLength; // of the function, per unit of t
     const double finest = desc_->accuracy / dirLength;
     uint64_t evaluations = 2;
     double steepest = 0;
-    bool cutShort = false;
+    bool cutShort = false, goOn = true;
     // Depth first, the nearer half first, so that crossings come in order; each halving adds
     // one span to the stack, and the spans cannot be halved below the double's precision.
     std::array<Span, 1100> pending;
     int count = 0;
     pending[count++] = {ta, tb, ga, gb};
-    while (count > 0) {
+    while (count > 0 && goOn) {
         const Span s = pending[--count];
         const double length = s.b - s.a;
         if (length > 0) steepest = std::max(steepest, std::abs(s.gb - s.ga) / (length * dirLength));
         const bool sidesDiffer = inside(s.ga) != inside(s.gb);
         if (!sidesDiffer && std::abs(s.ga) + std::abs(s.gb) >= slopeBound * length) continue;
         if (length <= finest || count + 2 > static_cast<int>(pending.size()) || !(s.a < 0.5 * (s.a + s.b))) {
-            if (sidesDiffer && !onCrossing(rootBetween(ray, s.a, s.b, s.ga, s.gb, evaluations))) break;
+            if (sidesDiffer) goOn = visit({rootBetween(ray, s.a, s.b, s.ga, s.gb, evaluations), 0});
             continue;
         }
         if (evaluations >= maxEvaluations_) {
@@ -93,48 +92,32 @@ void IsosurfaceGeometry::search(const Ray& ray, double ta, double tb, double ga,
     }
     raiseTo(findings_->steepestGradient, steepest);
     if (cutShort) findings_->searchesCutShort.fetch_add(1, std::memory_order_relaxed);
+    return goOn;
 }
 
 void IsosurfaceGeometry::crossLine(const Ray& ray, CrossingList& out) const {
-    CrossingList faces;
-    box_.crossLine(ray, faces);
-    if (faces.count < 2) return;
-    const double tEnter = faces[0].t, tExit = faces[1].t;
-    const double gEnter = valueAt(ray.at(tEnter)), gExit = valueAt(ray.at(tExit));
-    if (!desc_->open && inside(gEnter)) out.add(tEnter, 1 + faces[0].part);
-    search(ray, tEnter, tExit, gEnter, gExit, [&](double t) {
-        out.add(t, 0);
+    auto add = [&](const Crossing& c) {
+        out.add(c.t, c.part);
         return true;
-    });
-    if (!desc_->open && inside(gExit)) out.add(tExit, 1 + faces[1].part);
+    };
+    crossingsIn(ray, -kInfinity, kInfinity, add);
 }
 
-bool IsosurfaceGeometry::firstCrossing(const Ray& ray, double tMin, double tMax, Crossing& out) const {
+bool IsosurfaceGeometry::crossingsIn(const Ray& ray, double tMin, double tMax, CrossingVisitor visit) const {
     CrossingList faces;
     box_.crossLine(ray, faces);
-    if (faces.count < 2) return false;
+    if (faces.count < 2) return true;
     const double tEnter = faces[0].t, tExit = faces[1].t;
-    if (tExit <= tMin || tEnter >= tMax) return false;
-    // The span of the line inside both the box and the window, and whether it starts inside.
+    if (tExit <= tMin || tEnter >= tMax) return true;
+    // The span of the line inside both the box and the window; a face ends it only where the
+    // window holds it.
     const double ta = std::max(tEnter, tMin), tb = std::min(tExit, tMax);
     const double ga = valueAt(ray.at(ta)), gb = valueAt(ray.at(tb));
-    if (ta == tEnter && tEnter > tMin && !desc_->open && inside(ga)) {
-        out = {tEnter, 1 + faces[0].part};
-        return true;
-    }
-    bool found = false;
-    search(ray, ta, tb, ga, gb, [&](double t) {
-        if (!(t > tMin && t < tMax)) return true;
-        out = {t, 0};
-        found = true;
-        return false;
-    });
-    if (found) return true;
-    if (tb == tExit && tExit < tMax && !desc_->open && inside(gb)) {
-        out = {tExit, 1 + faces[1].part};
-        return true;
-    }
-    return false;
+    const bool closed = !desc_->open;
+    if (closed && tEnter > tMin && inside(ga) && !visit({tEnter, 1 + faces[0].part})) return false;
+    auto inWindow = [&](const Crossing& c) { return !(c.t > tMin && c.t < tMax) || visit(c); };
+    if (!search(ray, ta, tb, ga, gb, inWindow)) return false;
+    return !(closed && tExit < tMax && inside(gb)) || visit({tExit, 1 + faces[1].part});
 }
 
 SurfacePoint IsosurfaceGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {

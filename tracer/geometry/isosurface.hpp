@@ -35,9 +35,10 @@ class IsosurfaceGeometry {
 
     Bounds3 bounds() const { return box_.bounds(); }
     void crossLine(const Ray& ray, CrossingList& out) const;
-    /// The first crossing with tMin < t < tMax: the search kept to that window and stopped
-    /// at its first crossing, for nearest-hit queries (crossLine searches the whole line).
-    bool firstCrossing(const Ray& ray, double tMin, double tMax, Crossing& out) const;
+    /// Visits the crossings with tMin < t < tMax in order, until the visitor returns false
+    /// (then false): the search kept to that window, for the renderer's queries, which need
+    /// no more (crossLine searches the whole line).
+    bool crossingsIn(const Ray& ray, double tMin, double tMax, CrossingVisitor visit) const;
     SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     bool solid() const { return !desc_->open; }
     MappingAxis mappingAxis() const { return {Vec3(0.0), Vec3(0, 1, 0)}; }
@@ -52,9 +53,9 @@ class IsosurfaceGeometry {
 
   private:
     /// Halves the span from ta to tb (the function's values there ga and gb) as the class
-    /// says, calling onCrossing(t) for each crossing in order until it returns false.
-    template <typename OnCrossing>
-    void search(const Ray& ray, double ta, double tb, double ga, double gb, OnCrossing&& onCrossing) const;
+    /// says, visiting each crossing of the surface (part 0) in order until the visitor returns
+    /// false; false then.
+    bool search(const Ray& ray, double ta, double tb, double ga, double gb, CrossingVisitor visit) const;
     /// The crossing between ta and tb, whose values ga and gb lie on the two sides.
     double rootBetween(const Ray& ray, double ta, double tb, double ga, double gb, uint64_t& evaluations) const;
 

@@ -157,7 +157,7 @@ TEST_CASE("isosurface: a search stops at the evaluation limit, and the lines cut
     CHECK(enough.findings().searchesCutShort.load() == 0);
 }
 
-TEST_CASE("isosurface: the first crossing in a window is the one of all crossings there") {
+TEST_CASE("isosurface: the crossings in a window are those of all crossings there") {
     // A sphere cut by its box's top face, so that windows start and end inside the solid too.
     const IsosurfaceGeometry g(isosurface(sphereFunction(1.3), 7, false, Vec3(-2), Vec3(2, 0.8, 2)));
     Random random(17);
@@ -167,14 +167,26 @@ TEST_CASE("isosurface: the first crossing in a window is the one of all crossing
         const double tMin = random.uniform(-1, 1.5), tMax = tMin + random.uniform(0.1, 3);
         CrossingList all;
         g.crossLine(ray, all);
-        Crossing expected{}, first{};
-        const bool any = firstCrossingAfter(all, tMin, tMax, expected);
+        std::vector<Crossing> expected, visited;
+        for (int k = 0; k < all.count; ++k)
+            if (all[k].t > tMin && all[k].t < tMax) expected.push_back(all[k]);
+        auto collect = [&](const Crossing& c) {
+            visited.push_back(c);
+            return true;
+        };
         INFO("line " << i);
-        REQUIRE(g.firstCrossing(ray, tMin, tMax, first) == any);
-        if (!any) continue;
-        CHECK(first.part == expected.part);
-        CHECK(first.t == Approx(expected.t).margin(1e-9));
-        ++found;
+        CHECK(g.crossingsIn(ray, tMin, tMax, collect));
+        REQUIRE(visited.size() == expected.size());
+        for (size_t k = 0; k < visited.size(); ++k) {
+            CHECK(visited[k].part == expected[k].part);
+            CHECK(visited[k].t == Approx(expected[k].t).margin(1e-9));
+        }
+        // Stopped at the first: false, having visited it alone.
+        int calls = 0;
+        auto firstOnly = [&](const Crossing&) { return ++calls > 1; };
+        CHECK(g.crossingsIn(ray, tMin, tMax, firstOnly) == expected.empty());
+        CHECK(calls == (expected.empty() ? 0 : 1));
+        if (!expected.empty()) ++found;
     }
     CHECK(found > 300);
 }
