@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Render benchmark: crtc against POV-Ray 3.7 on five equivalent scenes
-# (mirror_room, sphere_grid, csg, textured, shapes), rendered by both tools at each size,
+# Render benchmark: crtc against POV-Ray 3.7 on six equivalent scenes
+# (mirror_room, sphere_grid, csg, textured, shapes, functions), rendered by both tools at each size,
 # alternating, several times. Prints median wall times, their ratio and the
 # RMSE between the two images as a Markdown table. See bench/README.md.
 #
@@ -9,7 +9,8 @@
 #
 #   --runs N      timed runs per tool, scene and size; medians reported (default 3)
 #   --sizes LIST  comma-separated image sizes (default 800x600,1920x1080)
-#   --scenes LIST comma-separated subset of mirror_room,sphere_grid,csg,textured,shapes
+#   --scenes LIST comma-separated subset of mirror_room,sphere_grid,csg,textured,shapes,
+#                 functions
 #   --base CRTC   a second crtc binary (e.g. the build before a change; default
 #                 $CRTC_BASE), timed in the same runs against the same POV-Ray
 #                 renders; adds columns with its time, its ratio to POV-Ray and
@@ -38,7 +39,7 @@ root=$(cd "$here/../.." && pwd)
 
 runs=3
 sizes=800x600,1920x1080
-scenes=mirror_room,sphere_grid,csg,textured,shapes
+scenes=mirror_room,sphere_grid,csg,textured,shapes,functions
 base=${CRTC_BASE:-}
 base_commit=
 bench_parse_options runs sizes scenes base base-commit=base_commit -- "$@"
@@ -63,8 +64,8 @@ done
 IFS=, read -r -a scene_list <<<"$scenes"
 for w in "${scene_list[@]}"; do
     case $w in
-        mirror_room | sphere_grid | csg | textured | shapes) ;;
-        *) echo "$0: unknown scene '$w' (mirror_room, sphere_grid, csg, textured, shapes)" >&2; exit 2 ;;
+        mirror_room | sphere_grid | csg | textured | shapes | functions) ;;
+        *) echo "$0: unknown scene '$w' (mirror_room, sphere_grid, csg, textured, shapes, functions)" >&2; exit 2 ;;
     esac
 done
 if [[ ! -x $povray ]]; then
