@@ -1,6 +1,8 @@
 // Object literals' attributes (spec §5): evaluated in order and checked against the schema.
 #include "object_builder.hpp"
 
+#include "scene/entity_parts.hpp"
+
 #include <cmath>
 #include <filesystem>
 
@@ -133,6 +135,13 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
         if (!isSolid(v)) wrongType(a, v, fmt::format("a solid ({})", solidTypeList()));
         return;
     case AttrType::SolidList: checkSolidList(a, v); return;
+    case AttrType::Entity:
+        if (v.kind != ValueKind::Entity) wrongType(a, v, "an entity");
+        if (holdsMesh(v.index))
+            in.fail(a.value->range, fmt::format("attribute '{}' of {} takes no Mesh: a mesh is not "
+                                                "clipped yet",
+                                                a.name, info.name));
+        return;
     case AttrType::FloatList:
         if (v.kind != ValueKind::List) wrongType(a, v, "a list of numbers");
         for (size_t i = 0; i < v.list->size(); ++i) {
@@ -255,6 +264,17 @@ void ObjectBuilder::checkMaterialList(const Attribute& a, const Value& v) {
                     fmt::format("layer {} must be a material, not {}", i + 1, typeName(layer)));
         }
     }
+}
+
+bool ObjectBuilder::holdsMesh(uint32_t entity) const {
+    std::vector<uint32_t> pending{entity};
+    while (!pending.empty()) {
+        const scene::EntityDesc& e = in.scene_.entities[pending.back()];
+        pending.pop_back();
+        if (std::holds_alternative<scene::MeshShape>(e.shape)) return true;
+        scene::forEachPart(e, [&](int32_t part) { pending.push_back(static_cast<uint32_t>(part)); });
+    }
+    return false;
 }
 
 bool ObjectBuilder::isSolid(const Value& v) const {

@@ -171,6 +171,8 @@ struct ObjectBuilder {
     void checkMaterialList(const Attribute& a, const Value& v);
     void checkSolidList(const Attribute& a, const Value& v);
     bool isSolid(const Value& v) const;
+    /// Whether the entity is or has a Mesh among its parts.
+    bool holdsMesh(uint32_t entity) const;
     void missing(const AttributeInfo& attr);
     [[noreturn]] void wrongType(const Attribute& a, const Value& v, std::string_view wanted);
     [[noreturn]] void floatForInt(const Attribute& a, const Value& v, std::string_view wanted);

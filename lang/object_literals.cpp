@@ -374,7 +374,8 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
 }
 
 Value Interpreter::buildEntity(ObjectBuilder& b) {
-    if (b.info.type == ObjectType::Merge || b.info.type == ObjectType::Inverse)
+    if (b.info.type == ObjectType::Merge || b.info.type == ObjectType::Inverse ||
+        b.info.type == ObjectType::Clipped)
         return buildCombination(b);
     scene::Shape shape = b.info.solid ? solidShape(b) : surfaceShape(b);
     bool zeroSize = std::visit(ZeroSize{}, shape);
@@ -396,12 +397,16 @@ Value Interpreter::buildEntity(ObjectBuilder& b) {
 
 Value Interpreter::buildCombination(ObjectBuilder& b) {
     const EntityInfo info{b.range, b.info.type, true};
+    // A clipped entity is open where it was cut: a surface.
+    const bool solid = b.info.type != ObjectType::Clipped;
     auto add = [&](scene::Shape shape) {
-        return addEntity(scene::EntityDesc{std::move(shape), -1, true, span(b.range)}, info);
+        return addEntity(scene::EntityDesc{std::move(shape), -1, solid, span(b.range)}, info);
     };
     int32_t index;
     if (b.info.type == ObjectType::Inverse) {
         index = add(scene::InverseNode{b.index("object", -1)});
+    } else if (b.info.type == ObjectType::Clipped) {
+        index = add(scene::CsgNode{scene::CsgOp::Clip, b.index("object", -1), b.index("by", -1)});
     } else {
         // A chain of merges; one object merges with itself, so that the result is a Merge still.
         const std::vector<Value>& objects = *b.get("objects")->list;
@@ -413,7 +418,7 @@ Value Interpreter::buildCombination(ObjectBuilder& b) {
     // Its own material is given to the parts without one, as `<material m>` gives it.
     if (const int32_t material = b.index("material", -1); material >= 0) {
         index = addEntity(
-            scene::EntityDesc{scene::TransformNode{index, {}}, material, true, span(b.range)},
+            scene::EntityDesc{scene::TransformNode{index, {}}, material, solid, span(b.range)},
             info);
     }
     return Value::object(ValueKind::Entity, b.info.type, static_cast<uint32_t>(index));

@@ -311,6 +311,11 @@ constexpr AttributeInfo kInverse[] = {
     {"object", A::Solid, true, "", "The solid whose outside this is."},
     CRT_MATERIAL_ATTR,
 };
+constexpr AttributeInfo kClipped[] = {
+    {"object", A::Entity, true, "", "The entity whose surfaces are kept where they are inside 'by'."},
+    {"by", A::Solid, true, "", "The solid that keeps them."},
+    CRT_MATERIAL_ATTR,
+};
 constexpr AttributeInfo kDisc[] = {
     {"center", A::Vec3, true, "", "Centre."},
     {"normal", A::Vec3, true, "", "Normal."},
@@ -538,6 +543,10 @@ constexpr ObjectInfo kObjects[] = {
      kMerge},
     {T::Inverse, "Inverse", C::Entity, true,
      "Everything outside a solid (POV-Ray's inverse): its surface, facing inward.", kInverse},
+    {T::Clipped, "Clipped", C::Entity, false,
+     "An entity's surfaces where they lie inside a solid (POV-Ray's clipped_by): a surface, open "
+     "where it was cut.",
+     kClipped},
     {T::Disc, "Disc", C::Entity, false, "A flat disc, optionally with a hole.", kDisc},
     {T::Quad, "Quad", C::Entity, false, "A flat parallelogram.", kQuad},
     {T::Triangle, "Triangle", C::Entity, false, "A triangle.", kTriangle},
@@ -680,6 +689,7 @@ std::string_view attrTypeName(AttrType type) {
     case A::MaterialMap: return "material map";
     case A::MaterialList: return "list of materials";
     case A::Solid: return "solid";
+    case A::Entity: return "entity";
     case A::SolidList: return "list of solids";
     case A::PointList: return "list of vec3";
     case A::BlobComponentList: return "list of blob components";

@@ -38,6 +38,7 @@ enum class ObjectType : uint8_t {
     HeightField,
     Merge,
     Inverse,
+    Clipped,
     Disc,
     Quad,
     Triangle,
@@ -118,6 +119,7 @@ enum class AttrType : uint8_t {
     MaterialMap,       ///< a list of [value, material] pairs
     MaterialList,      ///< a list of materials
     Solid,             ///< an entity usable in CSG
+    Entity,            ///< any entity but a mesh
     SolidList,         ///< a list of at least one such entity
     PointList,         ///< a list of vec3, every component finite
     BlobComponentList, ///< a list of at least one BlobSphere or BlobCylinder

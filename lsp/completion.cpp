@@ -84,6 +84,7 @@ bool objectFits(AttrType type, const ObjectInfo& info) {
     case AttrType::Texture: return isColorTexture(info.type);
     case AttrType::Bump: return isBumpTexture(info.type);
     case AttrType::Solid: return info.category == ObjectCategory::Entity && info.solid;
+    case AttrType::Entity: return info.category == ObjectCategory::Entity && info.type != ObjectType::Mesh;
     case AttrType::BlobComponentList: return info.category == ObjectCategory::BlobComponent;
     case AttrType::Box: return info.type == ObjectType::Box;
     default: return false;
@@ -106,7 +107,7 @@ int typeFit(AttrType want, const std::string& type) {
         if (type == "colour") return 0;
         [[fallthrough]];
     case AttrType::Material: case AttrType::Camera: case AttrType::Texture: case AttrType::Bump:
-    case AttrType::Solid: case AttrType::Box:
+    case AttrType::Solid: case AttrType::Box: case AttrType::Entity:
         return object != ObjectType::Count && objectFits(want, objectInfo(object)) ? 0 : -1;
     case AttrType::Gamma: return type == "float" || type == "int" || type == "string" ? 0 : -1;
     case AttrType::Aperture: return type == "int" || type == "string" ? 0 : -1;

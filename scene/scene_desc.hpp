@@ -352,8 +352,11 @@ struct MeshShape {
 };
 
 /// Merge: a union without the surfaces that lie inside it (POV-Ray's merge, for glass).
-enum class CsgOp : uint8_t { Union, Difference, Intersection, Merge };
-/// A CSG combination of two entities (each a solid or a group of solids).
+/// Clip: the left entity's surfaces where they are inside the right solid (POV-Ray's
+/// clipped_by), a surface however closed the left one is.
+enum class CsgOp : uint8_t { Union, Difference, Intersection, Merge, Clip };
+/// A CSG combination of two entities (each a solid or a group of solids; a Clip's left one
+/// may be a surface).
 struct CsgNode { CsgOp op = CsgOp::Union; int32_t left = -1; int32_t right = -1; };
 /// The complement of a solid: everything outside it, bounded by its surface facing inward.
 struct InverseNode {
@@ -379,6 +382,7 @@ inline const char* csgOpName(CsgOp op) {
     case CsgOp::Difference: return "Difference";
     case CsgOp::Intersection: return "Intersection";
     case CsgOp::Merge: return "Merge";
+    case CsgOp::Clip: return "Clipped";
     }
     return "?";
 }

@@ -14,7 +14,8 @@ bool insideOf(CsgNodeKind kind, bool left, bool right) {
     case CsgNodeKind::Difference: return left && !right;
     case CsgNodeKind::Intersection: return left && right;
     case CsgNodeKind::Leaf:
-    case CsgNodeKind::Inverse: break;
+    case CsgNodeKind::Inverse:
+    case CsgNodeKind::Clip: break; // none of these reaches the general merge
     }
     return left;
 }
@@ -60,6 +61,21 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const CsgRay& q, QueryScratch&
             out[k].flipNormal = !out[k].flipNormal;
         }
         return !inChild;
+    }
+    if (node.kind == CsgNodeKind::Clip) {
+        // The left child's crossings where the line is inside the right one; the right
+        // child's own surfaces are not drawn. The result is a surface: never inside.
+        const size_t start = out.size();
+        operand(node.left);
+        const size_t rightStart = out.size();
+        bool inRight = operand(node.right);
+        size_t kept = start;
+        for (size_t i = start, j = rightStart; i < rightStart; ++i) {
+            for (; j < out.size() && out[j].t < out[i].t; ++j) inRight = out[j].insideAfter;
+            if (inRight) out[kept++] = out[i];
+        }
+        out.resize(kept);
+        return false;
     }
     size_t leftStart = out.size();
     bool inLeft = operand(node.left);

@@ -29,7 +29,8 @@ struct TransformPair {
 
 /// Merge: a union that keeps only its outer surface. Inverse: the complement of `left`
 /// (everything when left is -1, the inverse of nothing).
-enum class CsgNodeKind : uint8_t { Leaf, Union, Difference, Intersection, Merge, Inverse };
+/// Clip: the left child's crossings where the line is inside the right child (clipped_by).
+enum class CsgNodeKind : uint8_t { Leaf, Union, Difference, Intersection, Merge, Inverse, Clip };
 
 /// A node of a flattened CSG tree; a leaf refers to a primitive.
 struct CsgTreeNode {

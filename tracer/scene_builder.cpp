@@ -216,6 +216,8 @@ private:
             scene_.csgNodes.push_back(leaf);
             return static_cast<int32_t>(scene_.csgNodes.size() - 1);
         }
+        if (c && c->op == scene::CsgOp::Clip)
+            return combine(CsgNodeKind::Clip, addCsg(operand.part(c->left)), addCsg(operand.part(c->right)));
         if (c && c->op == scene::CsgOp::Difference) {
             // Walk the left spine: ((a − b) − c) − d = a − (b ∪ c ∪ d).
             std::vector<Operand> subtracted;
@@ -282,7 +284,7 @@ private:
     int32_t combine(CsgNodeKind kind, int32_t left, int32_t right) {
         const bool joins = kind == CsgNodeKind::Union || kind == CsgNodeKind::Merge;
         if (left < 0) return joins ? right : -1;
-        if (right < 0) return kind == CsgNodeKind::Intersection ? -1 : left;
+        if (right < 0) return kind == CsgNodeKind::Intersection || kind == CsgNodeKind::Clip ? -1 : left;
         CsgTreeNode node;
         node.kind = kind;
         node.left = left;

@@ -23,6 +23,7 @@ std::string entityKind(const scene::EntityDesc& entity) {
         case scene::CsgOp::Difference: return "difference";
         case scene::CsgOp::Intersection: return "intersection";
         case scene::CsgOp::Merge: return "merge";
+        case scene::CsgOp::Clip: return "clipped entity";
         }
     }
     return kNames[entity.shape.index()];

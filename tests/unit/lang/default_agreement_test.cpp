@@ -94,6 +94,7 @@ constexpr Usage kUsages[] = {
      "vec3(0, 0, 0)] @ } }"},
     {ObjectType::Merge, "Scene { Merge { objects -> [Superellipsoid {}] @ } }"},
     {ObjectType::Inverse, "Scene { Inverse { object -> Superellipsoid {} @ } }"},
+    {ObjectType::Clipped, "Scene { Clipped { object -> Superellipsoid {} by -> Superellipsoid {} @ } }"},
     {ObjectType::Disc,
      "Scene { Disc { center -> vec3(0, 0, 0) normal -> vec3(0, 1, 0) radius -> 1 @ } }"},
     {ObjectType::Quad,
@@ -251,6 +252,7 @@ std::string otherValue(const AttributeInfo& attr) {
     case AttrType::MaterialMap:
     case AttrType::MaterialList:
     case AttrType::Solid:
+    case AttrType::Entity:
     case AttrType::SolidList:
     case AttrType::PointList:
     case AttrType::BlobComponentList:

@@ -211,3 +211,25 @@ TEST_CASE("CSG nests to any depth and on transformed operands", "[csg]") {
     CHECK(hit.t == Approx(4.8));
     CHECK_FALSE(probe.hit({Vec3(9, 0, -5), Vec3(0, 0, 1)}, hit)); // cut away by the big sphere
 }
+
+TEST_CASE("A clipped entity keeps its own surfaces inside the clipping solid, and no others", "[csg]") {
+    SceneMaker m;
+    int32_t red = m.colored(1, 0, 0);
+    int32_t blue = m.colored(0, 0, 1);
+    // The unit sphere cut by the half-space below y = 0.5: a bowl open at the top.
+    int32_t ball = m.sphere(Vec3(0), 1, red);
+    int32_t below = m.box(Vec3(-2), Vec3(2, 0.5, 2), blue);
+    m.draw(m.csg(scene::CsgOp::Clip, ball, below));
+    Probe probe(m.desc);
+    Hit hit;
+    // Down the axis: through the opening, onto the bowl's inside at its bottom.
+    REQUIRE(probe.hit({Vec3(0, 5, 0), Vec3(0, -1, 0)}, hit));
+    CHECK(hit.t == Approx(6));
+    CHECK(probe.scene->interaction({Vec3(0, 5, 0), Vec3(0, -1, 0)}, hit).material == red);
+    CHECK(probe.crossings({Vec3(0, 5, 0), Vec3(0, -1, 0)}) == 1);
+    // Across below the cut: both walls; above it: nothing, not even the box's face.
+    CHECK(probe.crossings({Vec3(-5, 0, 0), Vec3(1, 0, 0)}) == 2);
+    CHECK_FALSE(probe.hit({Vec3(-5, 0.8, 0), Vec3(1, 0, 0)}, hit));
+    // Where the box alone is: nothing of it is drawn.
+    CHECK_FALSE(probe.hit({Vec3(1.5, 5, 1.5), Vec3(0, -1, 0)}, hit));
+}
