@@ -279,9 +279,13 @@ private:
     void recordSettingsLinks(const ObjectBuilder& b);
     /// The image or mesh file an attribute names, found on disk (unless checkFiles is off).
     std::string findFile(const ObjectBuilder& b, std::string_view attribute, std::string_view what);
+    /// A Mesh from its file or from the vertices and faces written in it (mesh_reading.cpp).
+    scene::Shape meshShape(ObjectBuilder& b);
     /// Reads and checks the mesh at `path` (found by findFile) into the scene, once per
-    /// evaluation (mesh_reading.cpp).
+    /// evaluation.
     void readMesh(const ObjectBuilder& b, const std::string& path);
+    /// The mesh of a Mesh's vertices, faces, normals and uvs, checked.
+    std::shared_ptr<const scene::MeshData> writtenMesh(ObjectBuilder& b);
     /// What the script may read, made from the options when first needed.
     const FileAccess& fileAccess();
     int32_t addEntity(scene::EntityDesc entity, EntityInfo info);

@@ -1,6 +1,7 @@
 // The meshes a script names, read while it is evaluated: a bad OBJ file is an error of the
 // script (at its `file ->` attribute, with a note at the file's line), so `crtc --check` and
-// the language server report it, and the renderer draws the data that was checked.
+// the language server report it, and the renderer draws the data that was checked. And the
+// meshes a script writes, vertices and faces (POV-Ray's mesh2), checked the same way.
 #include "interpreter_impl.hpp"
 #include "object_builder.hpp"
 
@@ -9,6 +10,75 @@
 #include <filesystem>
 
 namespace crt::lang {
+
+scene::Shape Interpreter::meshShape(ObjectBuilder& b) {
+    scene::MeshShape s;
+    s.file = b.text("file", s.file);
+    auto given = [&](std::string_view name) { return b.get(name) && !b.get(name)->list->empty(); };
+    const bool written = given("vertices") || given("faces");
+    if (written && !s.file.empty()) fail(b.where("vertices"), "a Mesh takes a file or vertices and faces, not both");
+    if (!written && s.file.empty())
+        fail(b.typeRange, "a Mesh needs a file, or vertices and faces");
+    if (written) {
+        scene_.writtenMeshes.push_back(writtenMesh(b));
+        s.written = static_cast<int32_t>(scene_.writtenMeshes.size() - 1);
+        return s;
+    }
+    s.resolvedFile = findFile(b, "file", "mesh");
+    if (!s.resolvedFile.empty()) readMesh(b, s.resolvedFile);
+    return s;
+}
+
+std::shared_ptr<const scene::MeshData> Interpreter::writtenMesh(ObjectBuilder& b) {
+    auto list = [&](std::string_view name) -> const std::vector<Value>& {
+        static const std::vector<Value> kNone;
+        const Value* v = b.get(name);
+        return v ? *v->list : kNone;
+    };
+    const std::vector<Value>& vertices = list("vertices");
+    const std::vector<Value>& faces = list("faces");
+    const std::vector<Value>& normals = list("normals");
+    const std::vector<Value>& uvs = list("uvs");
+    for (auto [name, count] : {std::pair{"vertices", vertices.size()}, {"faces", faces.size()},
+                               {"normals", normals.size()}, {"uvs", uvs.size()}}) {
+        if (count > options_.limits.maxMeshSize)
+            fail(b.where(name), fmt::format("a Mesh of more than {} {}; raise the limit with --max-mesh-size",
+                                            options_.limits.maxMeshSize, name));
+    }
+    if (faces.empty()) fail(b.where("vertices"), "a Mesh with vertices needs faces too");
+    for (auto [name, count] : {std::pair{"normals", normals.size()}, {"uvs", uvs.size()}}) {
+        if (count != 0 && count != vertices.size())
+            fail(b.where(name), fmt::format("a Mesh has one of its {} at each vertex: {}, not {}", name,
+                                            vertices.size(), count));
+    }
+    auto mesh = std::make_shared<scene::MeshData>();
+    auto point = [](const Value& v) { return glm::dvec3(v.v[0], v.v[1], v.v[2]); };
+    for (const Value& v : vertices) mesh->positions.push_back(point(v));
+    // Each of unit length, as POV-Ray makes them: only their directions are blended.
+    for (const Value& n : normals) {
+        const double length = glm::length(point(n));
+        mesh->normals.push_back(length > 0 ? point(n) / length : point(n));
+    }
+    for (size_t i = 0; i < uvs.size(); ++i) {
+        if (uvs[i].v[2] != 0) fail(b.whereItem("uvs", i), fmt::format("uv {} is not in the u-v plane: its z is not 0", i + 1));
+        mesh->uvs.emplace_back(uvs[i].v[0], uvs[i].v[1]);
+    }
+    for (size_t i = 0; i < faces.size(); ++i) {
+        scene::MeshData::Triangle t{};
+        for (int k = 0; k < 3; ++k) {
+            const int64_t corner = (*faces[i].list)[k].i;
+            if (corner >= static_cast<int64_t>(vertices.size()))
+                fail(b.whereItem("faces", i), fmt::format("face {} names vertex {}, but the Mesh has {} (numbered from 0)",
+                                                          i + 1, corner, vertices.size()));
+            t.v[k] = static_cast<int32_t>(corner);
+            t.n[k] = normals.empty() ? -1 : t.v[k];
+            t.uv[k] = uvs.empty() ? -1 : t.v[k];
+        }
+        mesh->triangles.push_back(t);
+    }
+    charge(mesh->byteSize());
+    return mesh;
+}
 
 void Interpreter::readMesh(const ObjectBuilder& b, const std::string& path) {
     if (scene_.meshes.contains(path)) return;

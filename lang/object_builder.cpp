@@ -180,6 +180,20 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
                             fmt::format("item {} of '{}' is not finite", i + 1, a.name));
         }
         return;
+    case AttrType::FaceList:
+        if (v.kind != ValueKind::List) wrongType(a, v, "a list of [a, b, c]");
+        for (size_t i = 0; i < v.list->size(); ++i) {
+            const Value& face = (*v.list)[i];
+            const bool triple = face.kind == ValueKind::List && face.list->size() == 3 &&
+                                std::all_of(face.list->begin(), face.list->end(), [](const Value& n) {
+                                    return n.kind == ValueKind::Int && n.i >= 0;
+                                });
+            if (!triple)
+                in.fail(itemRange(a.value, i),
+                        fmt::format("item {} of '{}' must be three vertex numbers [a, b, c], ints from 0",
+                                    i + 1, a.name));
+        }
+        return;
     case AttrType::Function:
         if (v.kind != ValueKind::Function) wrongType(a, v, "a Function");
         if (size_t n = in.functionProgram(v.index)->parameterCount(); n != 3) {

@@ -584,13 +584,7 @@ scene::Shape Interpreter::surfaceShape(ObjectBuilder& b) {
                                      b.vec("na", none), b.vec("nb", none), b.vec("nc", none));
     }
     case ObjectType::Mesh:
-    default: {
-        scene::MeshShape s;
-        s.resolvedFile = findFile(b, "file", "mesh");
-        s.file = b.text("file", s.file);
-        if (!s.resolvedFile.empty()) readMesh(b, s.resolvedFile);
-        return s;
-    }
+    default: return meshShape(b);
     }
 }
 

@@ -351,7 +351,11 @@ constexpr AttributeInfo kPolygon[] = {
     CRT_MATERIAL_ATTR,
 };
 constexpr AttributeInfo kMesh[] = {
-    {"file", A::String, true, "", "A Wavefront OBJ file."},
+    {"file", A::String, false, "\"\"", "A Wavefront OBJ file; or give the vertices and faces."},
+    {"vertices", A::PointList, false, "[]", "The corners, numbered from 0 (POV-Ray's mesh2)."},
+    {"faces", A::FaceList, false, "[]", "Triangles: [a, b, c], three vertex numbers each."},
+    {"normals", A::PointList, false, "[]", "A normal at each vertex, for smooth shading; [] for flat."},
+    {"uvs", A::PointList, false, "[]", "A vec3(u, v, 0) at each vertex, for textures; [] for none."},
     CRT_MATERIAL_ATTR,
 };
 
@@ -555,7 +559,8 @@ constexpr ObjectInfo kObjects[] = {
      kSmoothTriangle},
     {T::Polygon, "Polygon", C::Entity, false, "A flat polygon, with holes (POV-Ray's polygon).",
      kPolygon},
-    {T::Mesh, "Mesh", C::Entity, false, "A triangle mesh from a Wavefront OBJ file.", kMesh},
+    {T::Mesh, "Mesh", C::Entity, false,
+     "A triangle mesh, from a Wavefront OBJ file or written in the script.", kMesh},
     {T::Checker, "Checker", C::Texture, false, "A 3D checker pattern.", kChecker},
     {T::Stripes, "Stripes", C::Texture, false, "Stripes across an axis.", kStripes},
     {T::Noise, "Noise", C::Texture, false, "Perlin noise between two colours.", kNoise},
@@ -694,6 +699,7 @@ std::string_view attrTypeName(AttrType type) {
     case A::PointList: return "list of vec3";
     case A::BlobComponentList: return "list of blob components";
     case A::FloatList: return "list of floats";
+    case A::FaceList: return "list of [a, b, c]";
     case A::Function: return "Function";
     case A::Box: return "Box";
     }

@@ -124,6 +124,7 @@ enum class AttrType : uint8_t {
     PointList,         ///< a list of vec3, every component finite
     BlobComponentList, ///< a list of at least one BlobSphere or BlobCylinder
     FloatList,         ///< a list of numbers, every one finite
+    FaceList,          ///< a list of [a, b, c], three ints >= 0 each
     Function,          ///< a Function of (x, y, z)
     Box,               ///< a Box, as written (not moved)
 };

@@ -117,6 +117,7 @@ int typeFit(AttrType want, const std::string& type) {
     case AttrType::SolidList:
     case AttrType::PointList:
     case AttrType::BlobComponentList:
+    case AttrType::FaceList:
     case AttrType::FloatList: return type == "list" ? 0 : -1;
     case AttrType::Turbulence: return type == "float" || type == "int" || type == "vec3" ? 0 : -1;
     case AttrType::Function: return type.starts_with("Function") ? 0 : -1;

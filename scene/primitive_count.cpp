@@ -10,6 +10,8 @@ namespace crt::scene {
 uint64_t primitivesOf(const EntityDesc& entity, std::span<const uint64_t> earlier,
                       const SceneDesc& scene) {
     if (const auto* mesh = std::get_if<MeshShape>(&entity.shape)) {
+        if (mesh->written >= 0)
+            return std::max<uint64_t>(scene.writtenMeshes[static_cast<size_t>(mesh->written)]->triangles.size(), 1);
         auto read = scene.meshes.find(fileToOpen(mesh->resolvedFile, mesh->file));
         return read == scene.meshes.end() ? 1 : std::max<uint64_t>(read->second->triangles.size(), 1);
     }

@@ -347,8 +347,11 @@ struct HeightFieldShape {
     std::shared_ptr<const HeightFieldDesc> desc;
 };
 struct MeshShape {
-    std::string file;         ///< as written in the script
+    std::string file;         ///< as written in the script ("" for a mesh written in it)
     std::string resolvedFile; ///< the path found on disk, or "" if not found
+    /// A mesh written in the script (its vertices, faces …, POV-Ray's mesh2): its index in
+    /// SceneDesc::writtenMeshes; -1 for a file.
+    int32_t written = -1;
 };
 
 /// Merge: a union without the surfaces that lie inside it (POV-Ray's merge, for glass).
@@ -529,6 +532,8 @@ struct SceneDesc {
     /// checked, and reads the file of a mesh not here (a description built otherwise). Kept
     /// beside the entities, not in them, so that every entity stays as small as it was.
     std::map<std::string, std::shared_ptr<const MeshData>> meshes;
+    /// The meshes the script wrote, by MeshShape::written.
+    std::vector<std::shared_ptr<const MeshData>> writtenMeshes;
     double time = 0;            ///< t of this evaluation
     int frame = 0;
     int frameCount = 1;

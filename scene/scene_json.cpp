@@ -55,6 +55,7 @@ Json modifiers(const std::vector<Modifier>& mods) {
 
 struct ShapeJson {
     Json& out;
+    const SceneDesc& scene;
     void operator()(const SphereShape& s) {
         out["type"] = "Sphere";
         out["center"] = vec(s.center);
@@ -204,8 +205,24 @@ struct ShapeJson {
     }
     void operator()(const MeshShape& s) {
         out["type"] = "Mesh";
+        if (s.written >= 0) {
+            writtenMesh(*scene.writtenMeshes[static_cast<size_t>(s.written)]);
+            return;
+        }
         out["file"] = s.file;
         out["resolvedFile"] = s.resolvedFile;
+    }
+    void writtenMesh(const MeshData& m) {
+        Json vertices = Json::array(), faces = Json::array();
+        for (const glm::dvec3& p : m.positions) vertices.push_back(vec(p));
+        for (const MeshData::Triangle& t : m.triangles) faces.push_back({t.v[0], t.v[1], t.v[2]});
+        out["vertices"] = std::move(vertices);
+        out["faces"] = std::move(faces);
+        Json normals = Json::array(), uvs = Json::array();
+        for (const glm::dvec3& n : m.normals) normals.push_back(vec(n));
+        for (const glm::dvec2& uv : m.uvs) uvs.push_back({uv.x, uv.y});
+        out["normals"] = std::move(normals);
+        out["uvs"] = std::move(uvs);
     }
     void operator()(const CsgNode& s) {
         out["type"] = csgOpName(s.op);
@@ -463,9 +480,9 @@ Json textureJson(const TextureDesc& x) {
     return texture;
 }
 
-Json entityJson(const EntityDesc& e, size_t id) {
+Json entityJson(const EntityDesc& e, size_t id, const SceneDesc& scene) {
     Json entity{{"id", id}};
-    std::visit(ShapeJson{entity}, e.shape);
+    std::visit(ShapeJson{entity, scene}, e.shape);
     if (e.material >= 0) entity["material"] = e.material;
     entity["solid"] = e.solid;
     entity["source"] = source(e.source);
@@ -493,7 +510,7 @@ std::string sceneToJson(const SceneDesc& scene, int indent) {
     Json& blends = root["blends"] = Json::array();
     for (const BlendDesc& b : scene.blends) blends.push_back(blendJson(b));
     Json& entities = root["entities"] = Json::array();
-    for (size_t i = 0; i < scene.entities.size(); ++i) entities.push_back(entityJson(scene.entities[i], i));
+    for (size_t i = 0; i < scene.entities.size(); ++i) entities.push_back(entityJson(scene.entities[i], i, scene));
     root["drawn"] = scene.drawn;
     // JSON holds only UTF-8, and a script's strings (titles, file names) may hold any bytes.
     return compactNumberArrays(root.dump(indent, ' ', false, Json::error_handler_t::replace)) + "\n";

@@ -141,14 +141,19 @@ private:
         const scene::EntityDesc& e = desc_.entities[op.entity];
         // The front end read the script's meshes; a description built otherwise names files.
         const std::string& path = scene::fileToOpen(mesh.resolvedFile, mesh.file);
-        const auto& known = desc_.meshes.contains(path) ? desc_.meshes : meshes_;
-        auto cached = known.find(path);
-        if (cached == known.end()) {
-            std::optional<MeshData> read = scene::readObj(path, scene::kDefaultMaxMeshSize, error_);
-            if (!read) return false;
-            cached = meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*read))).first;
+        std::shared_ptr<const MeshData> data;
+        if (mesh.written >= 0) {
+            data = desc_.writtenMeshes[static_cast<size_t>(mesh.written)];
+        } else {
+            const auto& known = desc_.meshes.contains(path) ? desc_.meshes : meshes_;
+            auto cached = known.find(path);
+            if (cached == known.end()) {
+                std::optional<MeshData> read = scene::readObj(path, scene::kDefaultMaxMeshSize, error_);
+                if (!read) return false;
+                cached = meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*read))).first;
+            }
+            data = cached->second;
         }
-        const std::shared_ptr<const MeshData>& data = cached->second;
         // The description counts a mesh as one primitive; here its triangles are known.
         const size_t triangles = data->triangles.size();
         const uint64_t limit = desc_.limits.maxPrimitives;

@@ -41,9 +41,12 @@ void addAssets(Hasher& h, const scene::SceneDesc& scene) {
         if (!texture.file.empty()) h.addFile(scene::fileToOpen(texture.resolvedFile, texture.file));
     if (!scene.background.image.empty())
         h.addFile(scene::fileToOpen(scene.background.resolvedImage, scene.background.image));
-    for (const scene::EntityDesc& entity : scene.entities)
-        if (const auto* mesh = std::get_if<scene::MeshShape>(&entity.shape))
+    for (const scene::EntityDesc& entity : scene.entities) {
+        if (const auto* mesh = std::get_if<scene::MeshShape>(&entity.shape); mesh && mesh->written < 0)
             h.addFile(scene::fileToOpen(mesh->resolvedFile, mesh->file));
+        if (const auto* field = std::get_if<scene::HeightFieldShape>(&entity.shape); field && !field->desc->image.empty())
+            h.addFile(scene::fileToOpen(field->desc->resolvedImage, field->desc->image));
+    }
 }
 
 } // namespace

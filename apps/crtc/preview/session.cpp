@@ -54,6 +54,7 @@ std::vector<std::string> filesRead(const lang::Compilation& c) {
     add(scene.background.resolvedImage);
     for (const scene::EntityDesc& e : scene.entities)
         if (auto* mesh = std::get_if<scene::MeshShape>(&e.shape)) add(mesh->resolvedFile);
+        else if (auto* field = std::get_if<scene::HeightFieldShape>(&e.shape)) add(field->desc->resolvedImage);
     std::sort(files.begin(), files.end());
     files.erase(std::unique(files.begin(), files.end()), files.end());
     return files;

@@ -149,6 +149,11 @@ constexpr std::pair<ObjectType, std::string_view> kRuleDefaults[] = {
     {ObjectType::Settings, "refractiondepth"}, // recursiondepth
     {ObjectType::HeightField, "image"},        // a height field has an image or a function
     {ObjectType::HeightField, "function"},
+    {ObjectType::Mesh, "file"},                // a mesh has a file, or vertices and faces
+    {ObjectType::Mesh, "vertices"},
+    {ObjectType::Mesh, "faces"},
+    {ObjectType::Mesh, "normals"},
+    {ObjectType::Mesh, "uvs"},
 };
 
 bool isRuleDefault(ObjectType type, std::string_view attribute) {
@@ -259,6 +264,7 @@ std::string otherValue(const AttributeInfo& attr) {
     case AttrType::Function: return ""; // required: no default to differ from
     case AttrType::Box: return "Box { cornerA -> vec3(-2, -1, -1) cornerB -> vec3(1, 2, 1) }";
     case AttrType::FloatList: return "[0, 0.1, 0.5, 1]";
+    case AttrType::FaceList: return "[[0, 1, 2]]";
     }
     return "";
 }
