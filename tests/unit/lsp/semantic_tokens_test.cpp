@@ -96,3 +96,15 @@ TEST_CASE("semantic tokens: a component's name is a property, its vector a varia
     CHECK(tokenAt(tokens, code.range("v")).first == TokenType::Variable);
     CHECK(tokenAt(tokens, code.range("c")).first == TokenType::Property);
 }
+
+TEST_CASE("semantic tokens of a Function: the keyword and its parameters", "[semantic]") {
+    Annotations code(R"(r = 2
+f = $kw«Function» ($pdef«x», y, z) { $param«x» * y - r + z }
+Scene { Isosurface { function -> f } }
+)");
+    auto a = analyzeCode(code.code);
+    auto tokens = semanticTokens(*a);
+    CHECK(tokenAt(tokens, code.range("kw")).first == TokenType::Keyword);
+    CHECK(tokenAt(tokens, code.range("pdef")) == std::pair{TokenType::Parameter, uint32_t{ModDeclaration | ModDefinition}});
+    CHECK(tokenAt(tokens, code.range("param")) == std::pair{TokenType::Parameter, uint32_t{0}});
+}

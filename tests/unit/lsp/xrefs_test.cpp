@@ -123,3 +123,17 @@ TEST_CASE("names resolve in a broken script", "[xrefs]") {
     REQUIRE(def.size() == 1);
     CHECK(def[0].range == code.range("d"));
 }
+
+TEST_CASE("a Function's parameters: definition and references stay in its body", "[xrefs]") {
+    // The global x outside is another name than the parameter x inside.
+    Annotations code(R"($g«x» = 2
+f = Function ($p«x», y, z) { $p«x» * $p«@x» + y - z }
+print(f($g«@x», 0, 0))
+)");
+    auto a = analyzeCode(code.code);
+    auto def = definition(*a, code.points()[0]);
+    REQUIRE(def.size() == 1);
+    CHECK(def[0].range == code.ranges("p")[0]);
+    CHECK(inDocument(references(*a, code.points()[0], true), *a) == code.ranges("p"));
+    CHECK(inDocument(references(*a, code.points()[1], true), *a) == code.ranges("g"));
+}
