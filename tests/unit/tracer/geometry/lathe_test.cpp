@@ -168,7 +168,8 @@ TEST_CASE("lathe: random lines against the exact solid, for every spline kind") 
     }
 }
 
-TEST_CASE("lathe: surface points, outward normals and error bounds") {
+// 32 s in Release, 200 s under the sanitizers (its long-double references unoptimised there).
+TEST_CASE("lathe: surface points, outward normals and error bounds", "[release-only]") {
     int checked = 0;
     for (const Case& c : kCases) {
         INFO(c.name);
