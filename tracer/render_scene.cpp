@@ -138,14 +138,7 @@ bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double 
         const Primitive& p = primitives[object];
         ++stats.intersectionTests;
         Crossing c{};
-        bool found = false;
-        auto first = [&](const Crossing& x) {
-            c = x;
-            found = true;
-            return false;
-        };
-        crossingsIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, first);
-        if (!found) return false;
+        if (!firstCrossingIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, c)) return false;
         hit = {c.t, object, c, false};
         return true;
     }

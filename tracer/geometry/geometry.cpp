@@ -117,16 +117,15 @@ bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double t
         geometry);
 }
 
-bool firstCrossingAfter(const CrossingList& crossings, double tMin, double tMax, Crossing& out) {
-    for (int i = 0; i < crossings.count; ++i) {
-        const Crossing& c = crossings[i];
-        if (c.t >= tMax) return false;
-        if (c.t > tMin) {
-            out = c;
-            return true;
-        }
-    }
-    return false;
+bool firstCrossingIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out) {
+    bool found = false;
+    auto first = [&](const Crossing& c) {
+        out = c;
+        found = true;
+        return false;
+    };
+    crossingsIn(geometry, ray, tMin, tMax, first);
+    return found;
 }
 
 } // namespace crt::tracer

@@ -59,11 +59,11 @@ bool hasCheapCrossings(const Geometry& geometry);
 /// `limits`: the work a primitive may do for one line (an isosurface's evaluations).
 std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::RenderLimits& limits = {});
 
-/// The first crossing with tMin < t < tMax (crossings are sorted), for nearest-hit queries.
-bool firstCrossingAfter(const CrossingList& crossings, double tMin, double tMax, Crossing& out);
 /// Visits the crossings with tMin < t < tMax in order until the visitor returns false (then
 /// false): crossLine's, or a search of the window alone where the primitive has one (an
 /// isosurface, whose search along the line is long).
 bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit);
+/// The first crossing with tMin < t < tMax, for nearest-hit queries: crossingsIn's first.
+bool firstCrossingIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out);
 
 } // namespace crt::tracer

@@ -41,7 +41,7 @@ class HeightFieldGeometry {
     bool solid() const { return true; }
     MappingAxis mappingAxis() const { return {Vec3(0.5, 0, 0.5), Vec3(0, 1, 0)}; }
 
-    /// The surface's height at (x, z) of the square, and the cell and half it lies in.
+    /// The surface's height at (x, z) of the square.
     double heightAt(double x, double z) const;
 
   private:

@@ -72,12 +72,12 @@ TEST_CASE("box: from inside and past the box") {
     CHECK(list[0].t == -1);
     CHECK(list[1].t == 3);
     Crossing c{};
-    REQUIRE(firstCrossingAfter(list, 0, kInfinity, c));
+    REQUIRE(firstCrossingIn(Geometry(g), Ray{{1, 1, 1}, {0, 1, 0}}, 0, kInfinity, c));
     CHECK(c.part == 3);
     g.crossLine({{1, 10, 1}, {0, 1, 0}}, list);
     REQUIRE(list.count == 2);
     CHECK(list[1].t == -6);
-    CHECK_FALSE(firstCrossingAfter(list, 0, kInfinity, c));
+    CHECK_FALSE(firstCrossingIn(Geometry(g), Ray{{1, 10, 1}, {0, 1, 0}}, 0, kInfinity, c));
 }
 
 TEST_CASE("box: a line in a face plane or along an edge never crosses once") {

@@ -119,22 +119,23 @@ TEST_CASE("geometry: the free functions dispatch to the primitive") {
           Approx(2.5));
 }
 
-TEST_CASE("geometry: firstCrossingAfter takes the first crossing strictly inside the range") {
-    CrossingList list;
-    list.add(-1, 0);
-    list.add(2, 1);
-    list.add(5, 2);
+TEST_CASE("geometry: firstCrossingIn takes the first crossing strictly inside the range") {
+    // Two boxes' worth of crossings: a box crossed at t = -1 and t = 2, behind its origin and
+    // ahead; a second line through it ahead only.
+    const Geometry box(BoxGeometry({{-1, -1, -1}, {2, 1, 1}}));
+    const Ray ray{{0, 0, 0}, {1, 0, 0}};
     Crossing c{};
-    REQUIRE(firstCrossingAfter(list, 0, kInfinity, c));
+    REQUIRE(firstCrossingIn(box, ray, 0, kInfinity, c));
     CHECK(c.t == 2);
     CHECK(c.part == 1);
-    REQUIRE(firstCrossingAfter(list, 2, kInfinity, c)); // strictly after tMin
-    CHECK(c.t == 5);
-    CHECK_FALSE(firstCrossingAfter(list, 2, 5, c)); // strictly before tMax
-    CHECK_FALSE(firstCrossingAfter(list, 5, 100, c));
-    REQUIRE(firstCrossingAfter(list, -kInfinity, 0, c));
+    REQUIRE(firstCrossingIn(box, ray, -2, kInfinity, c));
     CHECK(c.t == -1);
-    CHECK_FALSE(firstCrossingAfter(CrossingList{}, 0, kInfinity, c));
+    CHECK_FALSE(firstCrossingIn(box, ray, 2, kInfinity, c)); // strictly after tMin
+    CHECK_FALSE(firstCrossingIn(box, ray, -1, 2, c));        // strictly before tMax
+    CHECK_FALSE(firstCrossingIn(box, ray, 5, 100, c));
+    REQUIRE(firstCrossingIn(box, ray, -kInfinity, 0, c));
+    CHECK(c.t == -1);
+    CHECK_FALSE(firstCrossingIn(box, Ray{{0, 5, 0}, {1, 0, 0}}, 0, kInfinity, c));
 }
 
 TEST_CASE("geometry: every primitive's bounds contain its random hits") {

@@ -38,7 +38,7 @@ TEST_CASE("sphere: from inside the line still reports the crossing behind") {
     CHECK(list[0].t == -2);
     CHECK(list[1].t == 2);
     Crossing c{};
-    REQUIRE(firstCrossingAfter(list, 0, kInfinity, c));
+    REQUIRE(firstCrossingIn(Geometry(g), ray, 0, kInfinity, c));
     CHECK(c.t == 2);
     SurfacePoint sp = g.surfaceAt(ray, c);
     CHECK(sp.normal == Vec3(1, 0, 0)); // outward even when hit from inside
@@ -53,7 +53,7 @@ TEST_CASE("sphere: origin past the sphere gives only negative crossings") {
     CHECK(list[0].t == -6);
     CHECK(list[1].t == -4);
     Crossing c{};
-    CHECK_FALSE(firstCrossingAfter(list, 0, kInfinity, c));
+    CHECK_FALSE(firstCrossingIn(Geometry(g), Ray{{0, 0, 5}, {0, 0, 1}}, 0, kInfinity, c));
 }
 
 TEST_CASE("sphere: a non-unit direction keeps t in ray units") {
