@@ -1,4 +1,4 @@
-// The shapes made from curves of points: Prism, Sor and Lathe, checked as POV-Ray checks
+// The shapes made from curves of points: Prism, Sor, Lathe and SphereSweep, checked as POV-Ray checks
 // their points, and the spline kind their attributes name.
 #include "interpreter_impl.hpp"
 #include "object_builder.hpp"
@@ -134,6 +134,31 @@ scene::Shape Interpreter::latheShape(ObjectBuilder& b) {
                  fmt::format("point {} of this Lathe is left of the y axis, x = {:g}; the curve's "
                              "x is the distance from the axis",
                              i + 1, p.v[0]));
+        }
+    }
+    return s;
+}
+
+/// The points and radii of a SphereSweep, as POV-Ray checks them: a radius for each point,
+/// none negative, and as many points as the spline needs.
+scene::Shape Interpreter::sphereSweepShape(ObjectBuilder& b) {
+    scene::SphereSweepShape s;
+    s.spline = splineKind(b, "spline");
+    checkPointCount(b, s.spline, s.spline == scene::SplineKind::Linear ? 2 : 4);
+    const std::vector<Value>& points = *b.get("points")->list;
+    const std::vector<Value>& radii = *b.get("radii")->list;
+    if (radii.size() != points.size()) {
+        fail(b.where("radii"),
+             fmt::format("a SphereSweep takes one radius a point: {} points, {} {}",
+                         points.size(), radii.size(), radii.size() == 1 ? "radius" : "radii"));
+    }
+    for (size_t i = 0; i < points.size(); ++i) {
+        s.points.push_back({points[i].v[0], points[i].v[1], points[i].v[2]});
+        s.radii.push_back(radii[i].asDouble());
+        if (s.radii.back() < 0) {
+            fail(b.whereItem("radii", i),
+                 fmt::format("radius {} of this SphereSweep is negative ({:g})", i + 1,
+                             s.radii.back()));
         }
     }
     return s;

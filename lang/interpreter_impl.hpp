@@ -255,6 +255,7 @@ private:
     scene::Shape prismShape(ObjectBuilder& b);
     scene::Shape sorShape(ObjectBuilder& b);
     scene::Shape latheShape(ObjectBuilder& b);
+    scene::Shape sphereSweepShape(ObjectBuilder& b);
     /// The error of a Prism or Lathe with fewer `points` than `least`, or Bézier points not in
     /// fours.
     void checkPointCount(ObjectBuilder& b, scene::SplineKind kind, size_t least);

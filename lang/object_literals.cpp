@@ -94,6 +94,9 @@ struct ZeroSize {
         return glm::length(glm::cross(s.b - s.a, s.c - s.a)) == 0;
     }
     bool operator()(const scene::PrismShape& s) const { return s.from == s.to; }
+    bool operator()(const scene::SphereSweepShape& s) const {
+        return std::all_of(s.radii.begin(), s.radii.end(), [](double r) { return r == 0; });
+    }
     bool operator()(const scene::BlobShape& s) const {
         return std::none_of(s.desc->components.begin(), s.desc->components.end(),
                             [](const scene::BlobComponent& c) { return c.strength > 0; });
@@ -492,6 +495,7 @@ scene::Shape Interpreter::solidShape(ObjectBuilder& b) {
     case ObjectType::Prism: return prismShape(b);
     case ObjectType::Sor: return sorShape(b);
     case ObjectType::Lathe: return latheShape(b);
+    case ObjectType::SphereSweep: return sphereSweepShape(b);
     case ObjectType::Text: return textShape(b);
     case ObjectType::Blob: return blobShape(b);
     case ObjectType::Isosurface: return isosurfaceShape(b);

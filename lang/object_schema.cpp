@@ -231,6 +231,17 @@ constexpr AttributeInfo kLathe[] = {
      scene::kSplineKindNames},
     CRT_MATERIAL_ATTR,
 };
+constexpr AttributeInfo kSphereSweep[] = {
+    {"points", A::PointList, true, "",
+     "Where the sphere's centre passes, as `spline` reads them: at least 2 for linear, 4 "
+     "otherwise."},
+    {"radii", A::FloatList, true, "", "The sphere's radius at each point, one a point (>= 0)."},
+    {"spline", A::Choice, false, "\"linear\"",
+     "How the points make the curve: linear (straight between them), cubic (through all but "
+     "the first and last) or bspline (smooth, near them).",
+     scene::kSweepSplineKindNames},
+    CRT_MATERIAL_ATTR,
+};
 constexpr AttributeInfo kText[] = {
     {"text", A::String, true, "", "The characters, on one line."},
     {"font", A::String, false, "\"\"",
@@ -526,6 +537,10 @@ constexpr ObjectInfo kObjects[] = {
      kSor},
     {T::Lathe, "Lathe", C::Entity, true,
      "A curve turned about the y axis (POV-Ray's lathe; solid when the curve closes).", kLathe},
+    {T::SphereSweep, "SphereSweep", C::Entity, true,
+     "The solid a sphere fills as it moves along a curve, its radius changing (POV-Ray's "
+     "sphere_sweep).",
+     kSphereSweep},
     {T::Text, "Text", C::Entity, true,
      "A line of text in 3D: glyph outlines on the x-y plane, one unit an em, extruded along z "
      "(POV-Ray's text; solid).",

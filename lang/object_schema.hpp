@@ -32,6 +32,7 @@ enum class ObjectType : uint8_t {
     Prism,
     Sor,
     Lathe,
+    SphereSweep,
     Text,
     Blob,
     Isosurface,

@@ -24,6 +24,8 @@ inline constexpr std::string_view kSplineKindNames[] = {"linear", "quadratic", "
                                                         "bspline"};
 /// The kinds a prism's loops take: all but the B-spline, which has no point to close a loop at.
 inline constexpr std::span<const std::string_view> kLoopSplineKindNames(kSplineKindNames, 4);
+/// The kinds POV-Ray's sphere_sweep takes.
+inline constexpr std::string_view kSweepSplineKindNames[] = {"linear", "cubic", "bspline"};
 
 /// The fewest points a prism's outline of this kind takes (POV-Ray's).
 size_t minimumLoopPoints(SplineKind kind);

@@ -285,6 +285,16 @@ struct LatheShape {
     std::vector<glm::dvec2> points;
     SplineKind spline = SplineKind::Linear;
 };
+/// POV-Ray's sphere_sweep: the solid a sphere fills as its centre moves along the curve of
+/// `points` and its radius along the curve of `radii` (scene/curve_outline.hpp's
+/// curveSegmentsOf, the two read alike): straight between the points (linear), a
+/// Catmull-Rom spline through all but the first and last (cubic), or a uniform cubic B-spline
+/// (bspline).
+struct SphereSweepShape {
+    std::vector<glm::dvec3> points;
+    std::vector<double> radii;
+    SplineKind spline = SplineKind::Linear;
+};
 /// POV-Ray's text: the glyph outlines of scene/text_outline.hpp on the x-y plane, extruded
 /// from z = 0 to `thickness`. Out of line, as an entity's shape must stay small.
 struct TextDesc {
@@ -372,7 +382,7 @@ struct GroupNode { std::vector<int32_t> members; };
 
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape,
                            DiscShape, QuadShape, TriangleShape, SmoothTriangleShape, PolygonShape,
-                           SuperellipsoidShape, PrismShape, SorShape, LatheShape, TextShape,
+                           SuperellipsoidShape, PrismShape, SorShape, LatheShape, SphereSweepShape, TextShape,
                            BlobShape, IsosurfaceShape, HeightFieldShape, MeshShape, CsgNode, TransformNode, GroupNode, InverseNode>;
 // One per entity, and a generated scene has millions: a shape with more data keeps it out of
 // line (as a smooth triangle and a polygon do).

@@ -154,6 +154,14 @@ struct ShapeJson {
         out["points"] = pointList(s.points);
         out["spline"] = kSplineKindNames[static_cast<int>(s.spline)];
     }
+    void operator()(const SphereSweepShape& s) {
+        out["type"] = "SphereSweep";
+        Json points = Json::array();
+        for (const glm::dvec3& p : s.points) points.push_back(vec(p));
+        out["points"] = points;
+        out["radii"] = s.radii;
+        out["spline"] = kSplineKindNames[static_cast<int>(s.spline)];
+    }
     void operator()(const TextShape& s) {
         out["type"] = "Text";
         out["text"] = s.desc->text;

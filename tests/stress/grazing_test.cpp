@@ -342,6 +342,42 @@ GrazingCase sorCase() {
     return c;
 }
 
+/// A capsule as a sphere sweep: a straight segment of one radius, its spheres' envelope a
+/// cylinder between two half spheres. `cubic` makes it a Catmull-Rom piece of four evenly
+/// spaced points on the line (the rounded coefficients leave the cubic terms tiny rather than
+/// zero), found by the cubic segments' code.
+GrazingCase sphereSweepCase(bool cubic) {
+    const DVec3 base(-0.2, -1, 0.1), top(0.3, 1, -0.2);
+    const double radius = 0.6;
+    const DVec3 middle = 0.5 * (base + top);
+    scene::SphereSweepShape sweep;
+    if (cubic) {
+        sweep.points = {2.0 * base - top, base, top, 2.0 * top - base};
+        sweep.radii = {radius, radius, radius, radius};
+        sweep.spline = scene::SplineKind::Cubic;
+    } else {
+        sweep.points = {base, top};
+        sweep.radii = {radius, radius};
+    }
+    GrazingCase c;
+    c.name = cubic ? "cubic sphere sweep" : "sphere sweep";
+    c.add = [=](SceneMaker& m, int32_t mat) { m.draw(m.entity(sweep, mat)); };
+    c.hit = [=](const TestRay& r) {
+        std::optional<SurfaceHit> nearest;
+        for (auto hit : {sphereHit(r, base, radius), sphereHit(r, top, radius),
+                         axialHit(r, base, top, radius, radius)}) {
+            if (hit && (!nearest || hit->t < nearest->t)) nearest = hit;
+        }
+        return nearest;
+    };
+    c.camera = DVec3(0.5, 0.8, -5);
+    c.inside = middle;
+    c.outside = middle + 3.0 * across(c.camera, middle, top - base);
+    c.overview = test::lookAt(c.camera, middle, 40);
+    c.overviewLight = glm::normalize(DVec3(1, 0.1, 0.05));
+    return c;
+}
+
 /// A cone as a lathe: a straight curve from the axis round the cone's outline back to it.
 GrazingCase latheCase() {
     const DVec3 base(0, -1, 0), top(0, 1, 0);
@@ -513,6 +549,12 @@ TEST_CASE("Grazing rays on a cone", "[stress][grazing]") {
 }
 TEST_CASE("Grazing rays on a surface of revolution", "[stress][grazing]") {
     runGrazing(sorCase());
+}
+TEST_CASE("Grazing rays on a sphere sweep", "[stress][grazing]") {
+    runGrazing(sphereSweepCase(false));
+}
+TEST_CASE("Grazing rays on a cubic sphere sweep", "[stress][grazing]") {
+    runGrazing(sphereSweepCase(true));
 }
 TEST_CASE("Grazing rays on a lathe", "[stress][grazing]") {
     runGrazing(latheCase());

@@ -194,6 +194,15 @@ inline scene::SceneDesc primitivesScene(const Placement& at, int width, int heig
     int32_t drop2 = m.entity(scene::BlobShape{blob}, mat(0.5, 0.7, 0.9, 0.2));
     m.draw(m.transformed(drop2, {test::scale(DVec3(0.25)), rotate({-20, 30, 0}),
                                  translate({0.5, 0.6, -2.2}), toWorld[0], toWorld[1]}));
+    // A sphere sweep: a cubic coil through five points, its radius changing.
+    int32_t coil = m.entity(
+        scene::SphereSweepShape{{{-1, 0, 0}, {-0.5, 0.8, 0.3}, {0, 0, 0.6}, {0.5, 0.8, 0.3},
+                                 {1, 0, 0}, {1.2, 1, 0}},
+                                {0.15, 0.2, 0.3, 0.2, 0.25, 0.15},
+                                scene::SplineKind::Cubic},
+        mat(0.9, 0.5, 0.6, 0.2));
+    m.draw(m.transformed(coil, {test::scale(DVec3(0.35)), rotate({0, 20, 0}),
+                                translate({1.2, 0.15, -1.6}), toWorld[0], toWorld[1]}));
     // An isosurface, a sphere's function with its top cut off by its box's face, and a smooth
     // height field sampled from a function: both searched in their own unit space.
     auto iso = std::make_shared<scene::IsosurfaceDesc>();

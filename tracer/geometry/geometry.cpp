@@ -87,6 +87,8 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::Ren
                 return Geometry(SorGeometry(s));
             else if constexpr (std::is_same_v<S, scene::LatheShape>)
                 return Geometry(LatheGeometry(s));
+            else if constexpr (std::is_same_v<S, scene::SphereSweepShape>)
+                return Geometry(SphereSweepGeometry(s));
             else if constexpr (std::is_same_v<S, scene::TextShape>)
                 return Geometry(TextGeometry(s));
             else if constexpr (std::is_same_v<S, scene::BlobShape>)

@@ -16,6 +16,7 @@
 #include "tracer/geometry/quad.hpp"
 #include "tracer/geometry/sor.hpp"
 #include "tracer/geometry/sphere.hpp"
+#include "tracer/geometry/sphere_sweep.hpp"
 #include "tracer/geometry/superellipsoid.hpp"
 #include "tracer/geometry/text.hpp"
 #include "tracer/geometry/torus.hpp"
@@ -31,7 +32,8 @@ using Geometry =
     std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry, ConeGeometry,
                  TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshTriangleGeometry,
                  SuperellipsoidGeometry, PolygonGeometry, PrismGeometry, SorGeometry, LatheGeometry,
-                 TextGeometry, BlobGeometry, IsosurfaceGeometry, HeightFieldGeometry>;
+                 TextGeometry, BlobGeometry, IsosurfaceGeometry, HeightFieldGeometry,
+                 SphereSweepGeometry>;
 
 /// Object-space bounds (Bounds3::everything() for a plane, empty for a degenerate shape).
 Bounds3 geometryBounds(const Geometry& geometry);

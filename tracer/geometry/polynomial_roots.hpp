@@ -5,8 +5,9 @@
 
 namespace crt::tracer {
 
-/// The largest degree polynomialRoots takes (a lathe's cubic curve against a line gives 6).
-inline constexpr int kMaxPolynomialDegree = 6;
+/// The largest degree polynomialRoots takes. Each degree isolates its roots by those of its
+/// derivative, so the work grows with its square.
+inline constexpr int kMaxPolynomialDegree = 10;
 
 /// Writes to `roots`, ascending, each u in (0, 1) where c[0] + c[1]·u + … + c[degree]·u^degree
 /// changes sign, and returns how many. The roots of the derivative (found the same way) split

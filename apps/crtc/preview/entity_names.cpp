@@ -12,7 +12,8 @@ std::string entityKind(const scene::EntityDesc& entity) {
     // clang-format off
     static constexpr auto kNames = std::to_array<const char*>({
         "Sphere", "Box", "Plane", "Cylinder", "Cone", "Torus", "Disc", "Quad", "Triangle",
-        "SmoothTriangle", "Polygon", "Superellipsoid", "Prism", "Sor", "Lathe", "Text", "Blob",
+        "SmoothTriangle", "Polygon", "Superellipsoid", "Prism", "Sor", "Lathe", "SphereSweep", "Text",
+        "Blob",
         "Isosurface", "HeightField", "Mesh", "CSG", "transformed entity", "group", "inverse"});
     // clang-format on
     static_assert(kNames.size() == std::variant_size_v<scene::Shape>,

@@ -73,6 +73,9 @@ constexpr Usage kUsages[] = {
      "@ } }"},
     {ObjectType::Lathe, "Scene { Lathe { points -> [vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 1, 0), "
                         "vec3(0, 1, 0)] @ } }"},
+    {ObjectType::SphereSweep,
+     "Scene { SphereSweep { points -> [vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 1, 0), vec3(0, 1, 0)] "
+     "radii -> [0.5, 0.2, 0.3, 0.4] @ } }"},
     {ObjectType::Blob,
      "Scene { Blob { components -> [BlobSphere { center -> vec3(0, 0, 0) radius -> 2 }] @ } }"},
     {ObjectType::BlobSphere,
