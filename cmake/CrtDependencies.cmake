@@ -12,6 +12,7 @@ find_package(PkgConfig REQUIRED)
 pkg_check_modules(CPP_HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
 find_package(PNG REQUIRED)
 find_package(Freetype REQUIRED) # Text's glyph outlines
+find_package(assimp REQUIRED)   # PLY, STL and glTF meshes
 find_package(ZLIB REQUIRED) # a test deflates the strips of a TIFF it writes by hand
 # MPI (optional): with it, crtc under mpirun shares a render out over the processes
 # (apps/crtc/distributed); without it, crtc says so when started by mpirun.

@@ -285,6 +285,14 @@ private:
     /// Reads and checks the mesh at `path` (found by findFile) into the scene, once per
     /// evaluation.
     void readMesh(const ObjectBuilder& b, const std::string& path);
+    /// Reads a PLY, STL or glTF file for readMesh, through Assimp.
+    void readAssimpMesh(const ObjectBuilder& b, const std::string& path);
+    /// The mesh data a Mesh names; null when its file was not read (files not checked).
+    const scene::MeshData* meshDataOf(const scene::MeshShape& mesh) const;
+    /// Why an entity that is a Mesh (or one moved) is not closed, naming an open edge ("its
+    /// edge from vertex 3 (…) to vertex 4 (…) has one triangle"); "" for any other entity,
+    /// a closed mesh, or a mesh not read.
+    std::string openMeshReason(uint32_t entity) const;
     /// The mesh of a Mesh's vertices, faces, normals and uvs, checked.
     std::shared_ptr<const scene::MeshData> writtenMesh(ObjectBuilder& b);
     /// What the script may read, made from the options when first needed.

@@ -1,9 +1,12 @@
-// The meshes a script names, read while it is evaluated: a bad OBJ file is an error of the
-// script (at its `file ->` attribute, with a note at the file's line), so `crtc --check` and
+// The meshes a script names, read while it is evaluated: a bad file is an error of the script
+// (at its `file ->` attribute; for OBJ with a note at the file's line), so `crtc --check` and
 // the language server report it, and the renderer draws the data that was checked. And the
 // meshes a script writes, vertices and faces (POV-Ray's mesh2), checked the same way.
 #include "interpreter_impl.hpp"
 #include "object_builder.hpp"
+
+#include "scene/mesh_closure.hpp"
+#include "scene/mesh_file.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -76,6 +79,7 @@ std::shared_ptr<const scene::MeshData> Interpreter::writtenMesh(ObjectBuilder& b
         }
         mesh->triangles.push_back(t);
     }
+    scene::markClosure(*mesh);
     charge(mesh->byteSize());
     return mesh;
 }
@@ -86,6 +90,10 @@ void Interpreter::readMesh(const ObjectBuilder& b, const std::string& path) {
     std::error_code error;
     const uintmax_t fileSize = std::filesystem::file_size(path, error);
     if (!error) checkRoom(fileSize); // the text is held while it is parsed
+    if (scene::isAssimpMeshFile(path)) {
+        readAssimpMesh(b, path);
+        return;
+    }
     std::optional<std::string> text = readFile(path);
     if (!text) fail(where, fmt::format("cannot read mesh '{}': {}", path, std::strerror(errno)));
 
@@ -105,6 +113,47 @@ void Interpreter::readMesh(const ObjectBuilder& b, const std::string& path) {
     }
     charge(mesh->byteSize());
     scene_.meshes.emplace(path, std::make_shared<const scene::MeshData>(std::move(*mesh)));
+}
+
+void Interpreter::readAssimpMesh(const ObjectBuilder& b, const std::string& path) {
+    // A glTF's buffers are read as the mesh is: where the script may read.
+    const scene::FileGate gate = [&](const std::string& file) {
+        const FileCheck check = fileAccess().check(file);
+        return check.refused() ? check.reason : std::string();
+    };
+    scene::MeshFileError problem;
+    std::optional<scene::MeshData> mesh =
+        scene::readAssimpMesh(path, options_.limits.maxMeshSize, gate, problem);
+    if (!mesh) {
+        std::string message = fmt::format("bad mesh '{}': {}", b.text("file", ""), problem.message);
+        if (problem.overLimit) message += "; raise the limit with --max-mesh-size";
+        fail(b.where("file"), message);
+    }
+    charge(mesh->byteSize());
+    scene_.meshes.emplace(path, std::make_shared<const scene::MeshData>(std::move(*mesh)));
+}
+
+const scene::MeshData* Interpreter::meshDataOf(const scene::MeshShape& mesh) const {
+    if (mesh.written >= 0) return scene_.writtenMeshes[static_cast<size_t>(mesh.written)].get();
+    auto found = scene_.meshes.find(mesh.resolvedFile);
+    return found == scene_.meshes.end() ? nullptr : found->second.get();
+}
+
+std::string Interpreter::openMeshReason(uint32_t entity) const {
+    const scene::Shape* shape = &scene_.entities[entity].shape;
+    while (auto* moved = std::get_if<scene::TransformNode>(shape))
+        shape = &scene_.entities[static_cast<size_t>(moved->child)].shape;
+    const auto* mesh = std::get_if<scene::MeshShape>(shape);
+    const scene::MeshData* data = mesh ? meshDataOf(*mesh) : nullptr;
+    if (!data || data->closed) return {};
+    const scene::MeshClosure closure = scene::meshClosure(*data);
+    if (closure.edgeFrom < 0) return fmt::format("it {}", closure.problem);
+    auto corner = [&](int32_t v) {
+        const glm::dvec3& p = data->positions[static_cast<size_t>(v)];
+        return fmt::format("vertex {} ({:g}, {:g}, {:g})", v, p.x, p.y, p.z);
+    };
+    return fmt::format("its edge from {} to {} {}", corner(closure.edgeFrom),
+                       corner(closure.edgeTo), closure.problem);
 }
 
 } // namespace crt::lang

@@ -132,15 +132,11 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
     case AttrType::MaterialMap: checkMap(a, v, attr.type); return;
     case AttrType::MaterialList: checkMaterialList(a, v); return;
     case AttrType::Solid:
-        if (!isSolid(v)) wrongType(a, v, fmt::format("a solid ({})", solidTypeList()));
+        if (!isSolid(v)) notSolid(a.value->range, fmt::format("attribute '{}'", a.name), v);
         return;
     case AttrType::SolidList: checkSolidList(a, v); return;
     case AttrType::Entity:
         if (v.kind != ValueKind::Entity) wrongType(a, v, "an entity");
-        if (holdsMesh(v.index))
-            in.fail(a.value->range, fmt::format("attribute '{}' of {} takes no Mesh: a mesh is not "
-                                                "clipped yet",
-                                                a.name, info.name));
         return;
     case AttrType::FloatList:
         if (v.kind != ValueKind::List) wrongType(a, v, "a list of numbers");
@@ -280,19 +276,21 @@ void ObjectBuilder::checkMaterialList(const Attribute& a, const Value& v) {
     }
 }
 
-bool ObjectBuilder::holdsMesh(uint32_t entity) const {
-    std::vector<uint32_t> pending{entity};
-    while (!pending.empty()) {
-        const scene::EntityDesc& e = in.scene_.entities[pending.back()];
-        pending.pop_back();
-        if (std::holds_alternative<scene::MeshShape>(e.shape)) return true;
-        scene::forEachPart(e, [&](int32_t part) { pending.push_back(static_cast<uint32_t>(part)); });
-    }
-    return false;
-}
-
 bool ObjectBuilder::isSolid(const Value& v) const {
     return v.kind == ValueKind::Entity && in.scene_.entities[v.index].solid;
+}
+
+void ObjectBuilder::notSolid(SourceRange where, std::string_view what, const Value& v) {
+    // "attribute 'by' of Clipped", but "item 2 of 'objects'".
+    const std::string subject =
+        what.starts_with("item") ? std::string(what) : fmt::format("{} of {}", what, info.name);
+    if (v.kind == ValueKind::Entity) {
+        if (std::string open = in.openMeshReason(v.index); !open.empty())
+            in.fail(where, fmt::format("{} must be a solid, and this Mesh is not closed: {}",
+                                       subject, open));
+    }
+    in.fail(where, fmt::format("{} must be a solid ({}), not {}", subject, solidTypeList(),
+                               typeName(v)));
 }
 
 void ObjectBuilder::checkSolidList(const Attribute& a, const Value& v) {
@@ -301,11 +299,8 @@ void ObjectBuilder::checkSolidList(const Attribute& a, const Value& v) {
         in.fail(a.value->range, fmt::format("a {} needs at least one solid", info.name));
     for (size_t i = 0; i < v.list->size(); ++i) {
         const Value& item = (*v.list)[i];
-        if (!isSolid(item)) {
-            in.fail(itemRange(a.value, i),
-                    fmt::format("item {} of '{}' must be a solid ({}), not {}", i + 1, a.name,
-                                solidTypeList(), typeName(item)));
-        }
+        if (!isSolid(item))
+            notSolid(itemRange(a.value, i), fmt::format("item {} of '{}'", i + 1, a.name), item);
     }
 }
 

@@ -171,10 +171,11 @@ struct ObjectBuilder {
     void checkMaterialList(const Attribute& a, const Value& v);
     void checkSolidList(const Attribute& a, const Value& v);
     bool isSolid(const Value& v) const;
-    /// Whether the entity is or has a Mesh among its parts.
-    bool holdsMesh(uint32_t entity) const;
     void missing(const AttributeInfo& attr);
     [[noreturn]] void wrongType(const Attribute& a, const Value& v, std::string_view wanted);
+    /// The error of a value that is not a solid where one must be (`what`: "attribute 'by'",
+    /// "item 2 of 'objects'"), naming an open edge when it is a Mesh.
+    [[noreturn]] void notSolid(SourceRange where, std::string_view what, const Value& v);
     [[noreturn]] void floatForInt(const Attribute& a, const Value& v, std::string_view wanted);
     void finite(const Attribute& a, const Value& v, int components);
 };

@@ -387,6 +387,11 @@ Value Interpreter::buildEntity(ObjectBuilder& b) {
         solid = scene::curveEnclosesSolid(scene::curveSegments(lathe->points, lathe->spline));
     if (auto* isosurface = std::get_if<scene::IsosurfaceShape>(&shape))
         solid = !isosurface->desc->open;
+    // A closed mesh bounds a solid; one not read (files not checked) is taken at its word.
+    if (auto* mesh = std::get_if<scene::MeshShape>(&shape)) {
+        const scene::MeshData* data = meshDataOf(*mesh);
+        solid = !data || data->closed;
+    }
     const int32_t material = b.index("material", -1);
     int32_t index = addEntity(scene::EntityDesc{std::move(shape), material, solid, span(b.range)},
                               EntityInfo{b.range, b.info.type, true});

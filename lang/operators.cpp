@@ -493,6 +493,11 @@ Value Interpreter::csg(BinaryOp op, const Value& left, const Value& right, const
                                  "and end it on the y axis",
                                  opSpelling(op)));
             }
+            if (std::string open = openMeshReason(operand->index); !open.empty()) {
+                fail(where->range, fmt::format("this Mesh is not closed, so it is a surface and "
+                                               "cannot be used in CSG ('{}'): {}",
+                                               opSpelling(op), open));
+            }
             if (operand->objectType == ObjectType::Isosurface) {
                 fail(where->range, fmt::format("this Isosurface is open, so it is a surface and cannot "
                                                "be used in CSG ('{}'): leave out 'open'",

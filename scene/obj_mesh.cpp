@@ -1,6 +1,8 @@
 // Reading Wavefront OBJ meshes: positions, normals, UVs and fan-triangulated polygons.
 #include "scene/obj_mesh.hpp"
 
+#include "scene/mesh_closure.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -221,6 +223,7 @@ std::optional<MeshData> parseObj(std::string_view text, uint64_t maxSize, ObjErr
         error.message = "not a Wavefront OBJ mesh (no line of it is an OBJ statement)";
         return std::nullopt;
     }
+    markClosure(parser.mesh);
     return std::move(parser.mesh);
 }
 

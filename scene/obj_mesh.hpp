@@ -27,6 +27,10 @@ struct MeshData {
         int32_t uv[3];
     };
     std::vector<Triangle> triangles;
+    /// Whether the triangles bound a solid, and whether they run clockwise seen from outside
+    /// (scene/mesh_closure.hpp's markClosure sets both).
+    bool closed = false;
+    bool inward = false;
 
     /// The bytes the mesh holds (for memory budgets).
     uint64_t byteSize() const;

@@ -13,6 +13,7 @@ packages=(
     libpng-dev # PNG output, written without OpenImageIO
     libcli11-dev # crtc's command line
     libfreetype-dev fonts-dejavu-core # Text: glyph outlines, and its default font
+    libassimp-dev # Mesh: PLY, STL and glTF files
     python3 # the language server's protocol session tests (tests/lsp), docs transcripts (tests/docs)
     jq # the docs' transcripts that pipe JSON through it
     neovim  # the language server's end-to-end test (tests/lsp/nvim)

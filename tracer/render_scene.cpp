@@ -14,6 +14,7 @@ bool insideOf(CsgNodeKind kind, bool left, bool right) {
     case CsgNodeKind::Difference: return left && !right;
     case CsgNodeKind::Intersection: return left && right;
     case CsgNodeKind::Leaf:
+    case CsgNodeKind::Mesh:
     case CsgNodeKind::Inverse:
     case CsgNodeKind::Clip: break; // none of these reaches the general merge
     }
@@ -31,6 +32,10 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const CsgRay& q, QueryScratch&
     const CsgTreeNode& node = csgNodes[nodeIndex];
     std::vector<CsgCrossing>& out = scratch.csg;
 
+    if (node.kind == CsgNodeKind::Mesh) {
+        meshCrossings(node, q, scratch, stats);
+        return false;
+    }
     if (node.kind != CsgNodeKind::Leaf && convexCrossings(nodeIndex, q, scratch, stats)) return false;
     if (node.kind == CsgNodeKind::Leaf) {
         const Primitive& p = primitives[node.primitive];
@@ -122,6 +127,55 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const CsgRay& q, QueryScratch&
     std::copy(out.begin() + rightEnd, out.end(), out.begin() + leftStart);
     out.resize(leftStart + (out.size() - rightEnd));
     return startsInside;
+}
+
+void RenderScene::meshCrossings(const CsgTreeNode& node, const CsgRay& q, QueryScratch& scratch,
+                                RayStats& stats) const {
+    const MeshOperand& mesh = meshOperands[node.primitive];
+    // The BVH is searched on (0, tMax): from a point before the mesh's bounds, so that the
+    // whole line through them is.
+    double enter = -kInfinity, leave = kInfinity;
+    for (int k = 0; k < 3; ++k) {
+        if (q.ray.dir[k] == 0) continue;
+        double a = (node.bounds.lo[k] - q.ray.origin[k]) / q.ray.dir[k];
+        double b = (node.bounds.hi[k] - q.ray.origin[k]) / q.ray.dir[k];
+        enter = std::max(enter, std::min(a, b));
+        leave = std::min(leave, std::max(a, b));
+    }
+    if (!(enter <= leave) || !std::isfinite(enter) || !std::isfinite(leave)) return;
+    const double start = enter - 0.5 * (leave - enter) - 1;
+    const Ray from{q.ray.at(start), q.ray.dir};
+    const double length = 2 * (leave - start) + 1;
+    const size_t first = scratch.csg.size();
+    mesh.bvh.traverse(LazyBoxRay(from), length, stats, [&](int32_t item) {
+        const int32_t primitive = mesh.first + item;
+        const Primitive& p = primitives[primitive];
+        const Ray local = objectRay(p, from);
+        CrossingList list;
+        ++stats.intersectionTests;
+        crossLine(p.geometry, local, list);
+        if (list.count > 0) {
+            const double facing = std::get<MeshTriangleGeometry>(p.geometry).facing(local);
+            // insideAfter holds whether it enters, until the walk below.
+            scratch.csg.push_back({start + list[0].t, primitive, list[0].part, facing < 0, false});
+        }
+        return true;
+    });
+    std::sort(scratch.csg.begin() + first, scratch.csg.end(),
+              [](const CsgCrossing& a, const CsgCrossing& b) { return a.t < b.t; });
+    size_t kept = first;
+    bool inside = false;
+    for (size_t i = first; i < scratch.csg.size(); ++i) {
+        CsgCrossing c = scratch.csg[i];
+        if (mesh.closed) {
+            if (c.insideAfter == inside) continue; // the same step again, at an edge
+            inside = c.insideAfter;
+        } else {
+            c.insideAfter = false;
+        }
+        scratch.csg[kept++] = c;
+    }
+    scratch.csg.resize(kept);
 }
 
 bool RenderScene::csgMayCross(int32_t root, const BoxRay& boxRay, double tMax) const {

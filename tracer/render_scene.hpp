@@ -30,13 +30,14 @@ struct TransformPair {
 /// Merge: a union that keeps only its outer surface. Inverse: the complement of `left`
 /// (everything when left is -1, the inverse of nothing).
 /// Clip: the left child's crossings where the line is inside the right child (clipped_by).
-enum class CsgNodeKind : uint8_t { Leaf, Union, Difference, Intersection, Merge, Inverse, Clip };
+/// Mesh: a leaf of many primitives, the triangles of one mesh (RenderScene::meshOperands).
+enum class CsgNodeKind : uint8_t { Leaf, Union, Difference, Intersection, Merge, Inverse, Clip, Mesh };
 
 /// A node of a flattened CSG tree; a leaf refers to a primitive.
 struct CsgTreeNode {
     CsgNodeKind kind = CsgNodeKind::Leaf;
     int32_t left = -1, right = -1; ///< children (node indices) of an operator
-    int32_t primitive = -1;        ///< leaf
+    int32_t primitive = -1;        ///< leaf; for a Mesh node, its index in meshOperands
     Bounds3 bounds;                ///< world space; everything() when unbounded
     /// Whether queries test `bounds` before asking the node: not for leaves whose own
     /// crossing test costs about as much as the box test, nor for a difference (its bounds
@@ -45,6 +46,15 @@ struct CsgTreeNode {
     /// A bounded convex solid: a sphere, box, capped cylinder or cone, or an intersection of
     /// such. The line crosses it at most twice, so it is evaluated as one interval.
     bool convex = false;
+};
+
+/// A mesh used in CSG: its triangles, primitives first … first + count − 1, and a BVH over
+/// them. A closed mesh's crossings alternate between entering and leaving its solid; an open
+/// one's (the clipped side of a Clip) bound nothing.
+struct MeshOperand {
+    int32_t first = 0, count = 0;
+    bool closed = false;
+    Bvh bvh;
 };
 
 /// A world ray prepared for CSG queries.
@@ -131,6 +141,7 @@ public:
     std::vector<int32_t> primitiveEntities;
     std::vector<TransformPair> transforms;
     std::vector<CsgTreeNode> csgNodes;
+    std::vector<MeshOperand> meshOperands;
     std::vector<ShadingMaterial> materials;
     std::vector<scene::BlendDesc> blends; ///< of the materials made of others
 
@@ -170,6 +181,11 @@ private:
     /// Appends the node's crossings of the whole line to scratch.csg; returns whether the
     /// line starts inside. The caller has tested the node's bounds where that pays.
     bool csgCrossings(int32_t node, const CsgRay& ray, QueryScratch& scratch, RayStats& stats) const;
+    /// csgCrossings of a Mesh node: its triangles' crossings of the whole line, in order; of
+    /// a closed mesh only those that alternate between entering and leaving (a line through
+    /// an edge or a vertex meets the triangles around it more than once there).
+    void meshCrossings(const CsgTreeNode& node, const CsgRay& ray, QueryScratch& scratch,
+                       RayStats& stats) const;
     /// The crossings of an intersection of convex nodes, or of a difference of two, appended
     /// as csgCrossings appends them but without its general merge. False, with nothing
     /// appended, when the node is of neither kind or two crossings nearly coincide (the

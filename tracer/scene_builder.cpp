@@ -2,6 +2,7 @@
 // unions into primitives, rebalances CSG chains, reads meshes, and builds the BVH.
 #include "tracer/render_scene.hpp"
 
+#include "scene/mesh_file.hpp"
 #include "scene/primitive_count.hpp"
 #include "tracer/height_grid_reading.hpp"
 
@@ -80,6 +81,7 @@ private:
             } else if (std::holds_alternative<scene::CsgNode>(e.shape) ||
                        std::holds_alternative<scene::InverseNode>(e.shape)) {
                 int32_t node = addCsg(op);
+                if (!error_.empty()) return false; // a mesh operand that cannot be read
                 if (node >= 0) scene_.objects.push_back(~node);
             } else if (auto* m = std::get_if<scene::MeshShape>(&e.shape)) {
                 if (!addMesh(*m, op)) return false;
@@ -137,7 +139,9 @@ private:
         return static_cast<int32_t>(scene_.primitives.size() - 1);
     }
 
-    bool addMesh(const scene::MeshShape& mesh, const Operand& op) {
+    /// The mesh's data, read once however often it is drawn; null (with error_ set) when it
+    /// cannot be read or its triangles would pass the primitive limit.
+    std::shared_ptr<const MeshData> meshData(const scene::MeshShape& mesh, const Operand& op) {
         const scene::EntityDesc& e = desc_.entities[op.entity];
         // The front end read the script's meshes; a description built otherwise names files.
         const std::string& path = scene::fileToOpen(mesh.resolvedFile, mesh.file);
@@ -148,8 +152,8 @@ private:
             const auto& known = desc_.meshes.contains(path) ? desc_.meshes : meshes_;
             auto cached = known.find(path);
             if (cached == known.end()) {
-                std::optional<MeshData> read = scene::readObj(path, scene::kDefaultMaxMeshSize, error_);
-                if (!read) return false;
+                std::optional<MeshData> read = scene::readMeshFile(path, scene::kDefaultMaxMeshSize, error_);
+                if (!read) return nullptr;
                 cached = meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*read))).first;
             }
             data = cached->second;
@@ -161,17 +165,57 @@ private:
             const std::string where = scene::spanLocation(desc_, e.source);
             error_ = fmt::format("{}{}the scene expands to more than {} primitives with the {} "
                                  "triangles of {}; raise the limit with --max-primitives",
-                                 where, where.empty() ? "" : ": error: ", limit, triangles, path);
-            return false;
+                                 where, where.empty() ? "" : ": error: ", limit, triangles,
+                                 mesh.written >= 0 ? "a Mesh" : path);
+            return nullptr;
         }
+        return data;
+    }
+
+    /// Adds the mesh's triangles as primitives; returns the first, or -1 on error.
+    int32_t addTriangles(const scene::MeshShape& mesh, const Operand& op) {
+        std::shared_ptr<const MeshData> data = meshData(mesh, op);
+        if (!data) return -1;
+        const auto first = static_cast<int32_t>(scene_.primitives.size());
         const int32_t transform = addTransform(op.transform);
         const int32_t material = materialOf(op);
-        for (size_t i = 0; i < triangles; ++i) {
+        for (size_t i = 0; i < data->triangles.size(); ++i) {
             scene_.primitives.push_back({MeshTriangleGeometry(data, i), transform, material});
             scene_.primitiveEntities.push_back(op.entity);
-            scene_.objects.push_back(static_cast<int32_t>(scene_.primitives.size() - 1));
         }
+        return first;
+    }
+
+    bool addMesh(const scene::MeshShape& mesh, const Operand& op) {
+        const int32_t first = addTriangles(mesh, op);
+        if (first < 0) return false;
+        for (auto p = static_cast<size_t>(first); p < scene_.primitives.size(); ++p)
+            scene_.objects.push_back(static_cast<int32_t>(p));
         return true;
+    }
+
+    /// A mesh as a CSG operand: one leaf over its triangles, with a BVH of their own.
+    int32_t addMeshOperand(const scene::MeshShape& mesh, const Operand& op) {
+        const int32_t first = addTriangles(mesh, op);
+        if (first < 0) return -1; // error_ says why
+        MeshOperand operand;
+        operand.first = first;
+        operand.count = static_cast<int32_t>(scene_.primitives.size()) - first;
+        if (operand.count == 0) return -1;
+        std::vector<Bounds3> bounds;
+        CsgTreeNode leaf;
+        leaf.kind = CsgNodeKind::Mesh;
+        for (int32_t i = 0; i < operand.count; ++i) {
+            bounds.push_back(worldBounds(scene_.primitives[first + i]));
+            leaf.bounds.include(bounds.back());
+        }
+        operand.closed = isSolid(scene_.primitives[first].geometry);
+        operand.bvh.build(std::move(bounds), threads_);
+        leaf.primitive = static_cast<int32_t>(scene_.meshOperands.size());
+        leaf.testBounds = true;
+        scene_.meshOperands.push_back(std::move(operand));
+        scene_.csgNodes.push_back(leaf);
+        return static_cast<int32_t>(scene_.csgNodes.size() - 1);
     }
 
     /// The operands of a chain of one associative operator, through transforms and groups.
@@ -209,6 +253,7 @@ private:
             scene_.csgNodes.push_back(node);
             return static_cast<int32_t>(scene_.csgNodes.size() - 1);
         }
+        if (auto* mesh = std::get_if<scene::MeshShape>(&e.shape)) return addMeshOperand(*mesh, operand);
         const scene::CsgNode* c = std::get_if<scene::CsgNode>(&e.shape);
         if (!c && !std::holds_alternative<scene::GroupNode>(e.shape)) {
             int32_t p = addPrimitive(operand);

@@ -55,7 +55,7 @@ field() { dpkg-deb -f "$deb" "$1"; }
 [ -n "$(field Maintainer)" ] || fail "no Maintainer"
 # Depends comes from the shared libraries the programs and the modules link, and names the
 # default font of Text.
-for library in libc6 libstdc++6 libopenimageio libpng16 libfreetype6 fonts-dejavu-core; do
+for library in libc6 libstdc++6 libopenimageio libpng16 libfreetype6 libassimp5 fonts-dejavu-core; do
     field Depends | grep -q "$library" || fail "Depends lacks $library: $(field Depends)"
 done
 dpkg-deb -c "$deb" | grep -q ' ./usr/share/man/man1/crtc.1.gz$' || fail "no gzipped crtc.1 in the package"

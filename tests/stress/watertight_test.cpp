@@ -8,8 +8,11 @@
 // its edges), and facing the cube with pixel centres on the grid: every pixel ray meets a grid
 // vertex, a grid edge or a cell's diagonal. Each mesh is drawn closed and as its front half
 // only (the triangles facing the camera), so a ray that slips through the front surface shows
-// the black background instead of the back. The silhouette comes from the mesh's convex solid
-// (the intersection of its face planes, blind to edges); inside it, 0 background pixels.
+// the black background instead of the back. The closed mesh is also drawn as a solid, cut by
+// a large sphere in CSG, where its crossings must alternate between entering and leaving: a
+// line through an edge meets two triangles there, and one missed or one too many would leave
+// the line outside. The silhouette comes from the mesh's convex solid (the intersection of its
+// face planes, blind to edges); inside it, 0 background pixels.
 #include "analytic_shapes.hpp"
 
 #include <catch2/catch.hpp>
@@ -129,6 +132,17 @@ std::vector<HalfSpace> solidOf(const Mesh& mesh) {
     return faces;
 }
 
+/// The mesh with every triangle's corners in counter-clockwise order seen from outside (the
+/// meshes above are built without minding it), as a solid needs.
+Mesh outwardWound(const Mesh& mesh) {
+    Mesh wound = mesh;
+    for (auto& t : wound.triangles) {
+        const DVec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
+        if (glm::dot(glm::cross(b - a, c - a), outwardNormal(mesh, t)) < 0) std::swap(t[1], t[2]);
+    }
+    return wound;
+}
+
 /// The triangles facing `eye` (what shows of a convex mesh; they cover its silhouette).
 Mesh frontHalf(const Mesh& mesh, DVec3 eye) {
     Mesh front{mesh.vertices, {}};
@@ -158,13 +172,23 @@ struct LeakCount {
     std::string first; ///< the first leaking pixel
 };
 
+/// How a mesh is drawn: as triangles, or as a closed solid in CSG (intersected with a sphere
+/// holding it, so the result is the mesh's solid).
+enum class Drawn { Triangles, Solid };
+
 /// Renders `drawn` flat on black and counts the background pixels inside the silhouette.
 LeakCount countLeaks(const Mesh& drawn, const std::vector<HalfSpace>& solid,
-                     const scene::CameraDesc& camera, const std::string& fileName) {
+                     const scene::CameraDesc& camera, const std::string& fileName,
+                     Drawn how = Drawn::Triangles) {
     TempObjFile file(fileName, drawn.vertices, drawn.triangles);
     test::SceneMaker m;
     m.desc = test::blankScene(kWidth, kHeight, camera);
-    m.draw(m.entity(scene::MeshShape{file.path(), file.path()}, flatMaterial(m, kEmission)));
+    const int32_t material = flatMaterial(m, kEmission);
+    const int32_t mesh = m.entity(scene::MeshShape{file.path(), file.path()}, material);
+    if (how == Drawn::Solid)
+        m.draw(m.csg(scene::CsgOp::Intersection, mesh, m.sphere(DVec3(0.0), 10, material)));
+    else
+        m.draw(mesh);
     PixelBuffer image = test::renderOk(m.desc);
     LeakCount count;
     auto hits = [&](const TestRay& r) { return convexHit(r, solid).has_value(); };
@@ -180,14 +204,17 @@ LeakCount countLeaks(const Mesh& drawn, const std::vector<HalfSpace>& solid,
     return count;
 }
 
-/// The closed mesh and its front half, seen by `camera`: 0 leaks in either.
+/// The closed mesh, its front half and the mesh as a solid in CSG, seen by `camera`: 0 leaks
+/// in any.
 void checkWatertight(const Mesh& mesh, const scene::CameraDesc& camera, const std::string& name) {
     std::vector<HalfSpace> solid = solidOf(mesh);
     std::string summary;
-    for (bool front : {false, true}) {
-        const Mesh drawn = front ? frontHalf(mesh, camera.position) : mesh;
-        std::string what = name + (front ? ", front half" : ", closed");
-        LeakCount c = countLeaks(drawn, solid, camera, "watertight");
+    for (int view = 0; view < 3; ++view) {
+        const bool front = view == 1;
+        const Mesh drawn = front ? frontHalf(mesh, camera.position) : view == 2 ? outwardWound(mesh) : mesh;
+        std::string what = name + (front ? ", front half" : view == 0 ? ", closed" : ", a solid in CSG");
+        LeakCount c = countLeaks(drawn, solid, camera, "watertight",
+                                 view == 2 ? Drawn::Solid : Drawn::Triangles);
         INFO(what << ": " << c.leaks << " background pixels (first at " << c.first << ") of "
                   << c.inside << " inside the silhouette; 0 allowed");
         CHECK(c.leaks == 0);

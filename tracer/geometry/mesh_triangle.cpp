@@ -1,4 +1,4 @@
-// One triangle of a mesh read from an OBJ file, with interpolated vertex normals and UVs.
+// One triangle of a mesh, with interpolated vertex normals and UVs.
 #include "tracer/geometry/mesh_triangle.hpp"
 
 #include <utility>
@@ -29,11 +29,13 @@ MeshTriangleGeometry::MeshTriangleGeometry(std::shared_ptr<const MeshData> mesh,
         const MeshData::Triangle& tri = mesh_->triangles[index_];
         hasNormals_ = allValid(tri.n, mesh_->normals);
         hasUvs_ = allValid(tri.uv, mesh_->uvs);
+        outward_ = mesh_->closed && mesh_->inward ? -1 : 1;
     }
 }
 
 SurfacePoint MeshTriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {
     SurfacePoint sp = triangle_.surfaceAt(ray, crossing, wantUv);
+    if (outward_ < 0) sp.normal = sp.shadingNormal = -sp.normal;
     if (!hasNormals_ && !(hasUvs_ && wantUv)) return sp;
     const MeshData::Triangle& tri = mesh_->triangles[index_];
     Vec3 b = triangle_.barycentrics(ray, crossing);
@@ -43,7 +45,13 @@ SurfacePoint MeshTriangleGeometry::surfaceAt(const Ray& ray, const Crossing& cro
         double len = glm::length(n);
         if (len > 0 && std::isfinite(len)) {
             sp.shadingNormal = n / len;
-            if (glm::dot(sp.normal, sp.shadingNormal) < 0) sp.normal = -sp.normal;
+            // A solid's winding says which side is out; a surface's vertex normals do.
+            if (glm::dot(sp.normal, sp.shadingNormal) < 0) {
+                if (solid())
+                    sp.shadingNormal = -sp.shadingNormal;
+                else
+                    sp.normal = -sp.normal;
+            }
         }
     }
     if (hasUvs_ && wantUv) {

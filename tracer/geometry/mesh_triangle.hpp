@@ -1,4 +1,4 @@
-// One triangle of a mesh read from an OBJ file, with interpolated vertex normals and UVs.
+// One triangle of a mesh, with interpolated vertex normals and UVs.
 #pragma once
 
 #include "scene/obj_mesh.hpp"
@@ -10,9 +10,11 @@ namespace crt::tracer {
 
 using scene::MeshData;
 
-/// Triangle `index` of a mesh; a surface, not a solid. The vertex positions are copied so the
-/// crossing test does not chase the mesh. The geometric normal follows the right-hand rule of
-/// the face's corners, turned toward the interpolated vertex normal when the face has them
+/// Triangle `index` of a mesh; a face of a solid when the mesh is closed (MeshData::closed),
+/// else a surface. The vertex positions are copied so the crossing test does not chase the
+/// mesh. The geometric normal of a closed mesh's face points out of the solid (the right-hand
+/// rule of its corners, or the left-hand one for a mesh wound inward); an open mesh's follows
+/// the right-hand rule, turned toward the interpolated vertex normal when the face has them
 /// (files disagree on winding, the normals say which side is out). shadingNormal: the vertex
 /// normals interpolated (the geometric normal without them); UV: the vertex UVs interpolated,
 /// else the barycentric weights of the second and third corners.
@@ -27,8 +29,10 @@ class MeshTriangleGeometry {
     void crossLine(const Ray& ray, CrossingList& out) const { triangle_.crossLine(ray, out); }
     /// The refined point, its error bound, the normal and UV at one of crossLine's crossings.
     SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
-    /// A surface without an inside: not usable in CSG.
-    bool solid() const { return false; }
+    /// A face of a closed mesh's solid.
+    bool solid() const { return mesh_ && mesh_->closed; }
+    /// For a closed mesh: negative where the line enters the solid, positive where it leaves.
+    double facing(const Ray& ray) const { return outward_ * triangle_.facing(ray); }
 
   private:
     /// dpdu and dpdv of the face's own uvs (zero when they are degenerate).
@@ -40,6 +44,7 @@ class MeshTriangleGeometry {
     size_t index_;
     bool hasNormals_ = false;
     bool hasUvs_ = false;
+    double outward_ = 1; ///< −1 for a closed mesh wound inward
 };
 
 } // namespace crt::tracer

@@ -23,6 +23,9 @@ class TriangleGeometry {
     /// A surface without an inside: not usable in CSG.
     bool solid() const { return false; }
 
+    /// n · d for the line's direction d and the normal above: negative where the line meets
+    /// the face from the side the normal points to.
+    double facing(const Ray& ray) const { return glm::dot(normal_, ray.dir); }
     /// The barycentric weights of a, b and c at a crossing (for interpolating vertex data).
     Vec3 barycentrics(const Ray& ray, const Crossing& crossing) const;
 

@@ -1,0 +1,81 @@
+// The header of a PLY file, checked before Assimp reads the file (see ply_header.hpp).
+#include "scene/ply_header.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace crt::scene {
+
+namespace {
+
+/// The bytes of one value of a PLY scalar type; 0 for a name PLY does not have.
+int plyTypeSize(std::string_view type) {
+    static constexpr std::pair<std::string_view, int> kSizes[] = {
+        {"char", 1},  {"uchar", 1},  {"int8", 1},   {"uint8", 1},   {"short", 2},
+        {"ushort", 2}, {"int16", 2}, {"uint16", 2}, {"int", 4},     {"uint", 4},
+        {"int32", 4}, {"uint32", 4}, {"float", 4},  {"float32", 4}, {"double", 8},
+        {"float64", 8}};
+    for (auto [name, size] : kSizes)
+        if (name == type) return size;
+    return 0;
+}
+
+} // namespace
+
+std::string plyHeaderProblem(std::string_view head, uint64_t fileSize) {
+    std::istringstream lines{std::string(head)};
+    std::string line;
+    if (!std::getline(lines, line) || (line != "ply" && line != "ply\r")) return "not a PLY file";
+    bool text = true, ended = false;
+    struct Element {
+        std::string name;
+        uint64_t count = 0, least = 0;
+    };
+    std::vector<Element> elements;
+    size_t bodyStart = line.size() + 1;
+    for (int number = 2; !ended && std::getline(lines, line); ++number) {
+        bodyStart += line.size() + 1;
+        std::istringstream words(line);
+        std::string keyword, type, extra;
+        words >> keyword;
+        bool plain = true;
+        if (keyword == "end_header") {
+            ended = !(words >> extra);
+            plain = ended;
+        } else if (keyword == "format") {
+            plain = static_cast<bool>(words >> type >> extra) &&
+                    (type == "ascii" || type == "binary_little_endian" || type == "binary_big_endian");
+            text = type == "ascii";
+        } else if (keyword == "element") {
+            Element e;
+            plain = static_cast<bool>(words >> e.name >> e.count);
+            elements.push_back(e);
+        } else if (keyword == "property") {
+            words >> type;
+            if (type == "list") words >> type >> extra; // the count's type: a list holds at least it
+            plain = !elements.empty() && plyTypeSize(type) > 0 && plyTypeSize(extra.empty() ? type : extra) > 0;
+            if (plain) elements.back().least += text ? 2 : static_cast<uint64_t>(plyTypeSize(type));
+        } else {
+            plain = keyword == "comment" || keyword == "obj_info";
+        }
+        if (!plain) return fmt::format("line {} of its PLY header is not one Assimp reads", number);
+    }
+    if (!ended) return "no end_header line in the first 64 KiB of the PLY file";
+    const uint64_t body = fileSize > bodyStart ? fileSize - bodyStart : 0;
+    uint64_t needed = 0;
+    for (const Element& e : elements) {
+        needed += std::min(e.count, body + 1) * std::max<uint64_t>(e.least, 1);
+        if (e.count > body || needed > body) {
+            return fmt::format("its header declares {} {} elements, more than its {} bytes of "
+                               "data can hold",
+                               e.count, e.name, body);
+        }
+    }
+    return {};
+}
+
+} // namespace crt::scene

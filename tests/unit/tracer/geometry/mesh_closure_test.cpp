@@ -1,0 +1,74 @@
+// Whether a mesh bounds a solid: closed and consistently wound, whichever way round, with
+// split vertices joined by position; the edge an open mesh is named by.
+#include "geometry_test_support.hpp"
+
+#include "scene/mesh_closure.hpp"
+
+using crt::scene::MeshClosure;
+using crt::scene::meshClosure;
+using crt::tracer::MeshData;
+
+namespace {
+
+MeshData meshOf(std::vector<glm::dvec3> positions, std::vector<std::array<int32_t, 3>> faces) {
+    MeshData m;
+    m.positions = std::move(positions);
+    for (const auto& f : faces) m.triangles.push_back({{f[0], f[1], f[2]}, {-1, -1, -1}, {-1, -1, -1}});
+    return m;
+}
+
+const std::vector<glm::dvec3> kCorners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+const std::vector<std::array<int32_t, 3>> kOutward = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+
+} // namespace
+
+TEST_CASE("mesh closure: a tetrahedron wound either way is closed") {
+    MeshClosure out = meshClosure(meshOf(kCorners, kOutward));
+    CHECK(out.closed);
+    CHECK_FALSE(out.inward);
+    std::vector<std::array<int32_t, 3>> inward;
+    for (auto f : kOutward) inward.push_back({f[0], f[2], f[1]});
+    MeshData in = meshOf(kCorners, inward);
+    out = crt::scene::markClosure(in);
+    CHECK(out.closed);
+    CHECK(out.inward);
+    CHECK(in.closed);
+    CHECK(in.inward);
+}
+
+TEST_CASE("mesh closure: split vertices count as one, flat triangles not at all") {
+    // A soup: three vertices of its own for each triangle, as STL stores them.
+    MeshData soup;
+    for (const auto& f : kOutward) {
+        const auto first = static_cast<int32_t>(soup.positions.size());
+        for (int32_t k : f) soup.positions.push_back(kCorners[size_t(k)]);
+        soup.triangles.push_back({{first, first + 1, first + 2}, {-1, -1, -1}, {-1, -1, -1}});
+    }
+    // And a triangle with no area, two corners at one place.
+    soup.positions.push_back(kCorners[0]);
+    soup.triangles.push_back({{0, 1, static_cast<int32_t>(soup.positions.size() - 1)}, {-1, -1, -1}, {-1, -1, -1}});
+    CHECK(meshClosure(soup).closed);
+}
+
+TEST_CASE("mesh closure: open meshes name an edge") {
+    MeshClosure out = meshClosure(meshOf(kCorners, {kOutward[0], kOutward[1], kOutward[2]}));
+    CHECK_FALSE(out.closed);
+    CHECK(out.problem == "has one triangle");
+    CHECK(out.edgeFrom >= 0);
+    CHECK(out.edgeTo >= 0);
+    // One face turned: every edge has two triangles, but one runs the same way in both.
+    auto twisted = kOutward;
+    twisted[3] = {1, 3, 2};
+    out = meshClosure(meshOf(kCorners, twisted));
+    CHECK_FALSE(out.closed);
+    CHECK(out.problem == "runs the same way in both of its triangles");
+    // Three triangles on one edge.
+    auto fin = kOutward;
+    fin.push_back({0, 1, 2});
+    out = meshClosure(meshOf(kCorners, fin));
+    CHECK_FALSE(out.closed);
+    CHECK(out.problem == "has 3 triangles");
+    out = meshClosure(MeshData{});
+    CHECK_FALSE(out.closed);
+    CHECK(out.problem == "has no triangles");
+}
