@@ -2,7 +2,7 @@
 #include "scene/mesh_file.hpp"
 
 #include "scene/mesh_closure.hpp"
-#include "scene/ply_header.hpp"
+#include "scene/assimp_guard.hpp"
 
 #include <assimp/BaseImporter.h>
 #include <assimp/DefaultIOSystem.h>
@@ -229,21 +229,22 @@ bool isAssimpMeshFile(std::string_view path) {
 
 std::optional<MeshData> readAssimpMesh(const std::string& path, uint64_t maxSize,
                                        const FileGate& gate, MeshFileError& error) {
-    if (lowerExtension(path) == "ply") {
-        std::ifstream in(path, std::ios::binary);
-        std::string head(kPlyHeadBytes, '\0');
-        in.read(head.data(), static_cast<std::streamsize>(head.size()));
-        head.resize(static_cast<size_t>(in.gcount()));
-        std::error_code failed;
-        const uintmax_t size = std::filesystem::file_size(path, failed);
-        if (in.bad() || failed) {
-            error = {fmt::format("cannot read it: {}", failed ? failed.message() : "read error")};
-            return std::nullopt;
-        }
-        if (std::string problem = plyHeaderProblem(head, size); !problem.empty()) {
-            error = {std::move(problem)};
-            return std::nullopt;
-        }
+    std::ifstream in(path, std::ios::binary);
+    std::error_code failed;
+    const uintmax_t size = std::filesystem::file_size(path, failed);
+    if (!in || failed) {
+        error = {fmt::format("cannot read it: {}", failed ? failed.message() : "cannot open it")};
+        return std::nullopt;
+    }
+    const ByteReader read = [&](uint64_t offset, void* to, size_t n) {
+        in.clear();
+        in.seekg(static_cast<std::streamoff>(offset));
+        in.read(static_cast<char*>(to), static_cast<std::streamsize>(n));
+        return in.gcount() == static_cast<std::streamsize>(n);
+    };
+    if (std::string problem = assimpGuardProblem(lowerExtension(path), read, size); !problem.empty()) {
+        error = {std::move(problem)};
+        return std::nullopt;
     }
     std::unique_ptr<Assimp::Importer> importer = meshImporter();
     auto* files = new GatedFiles(path, gate); // the importer owns its file system
@@ -257,13 +258,14 @@ std::optional<MeshData> readAssimpMesh(const std::string& path, uint64_t maxSize
 
 std::optional<MeshData> parseAssimpMesh(std::span<const uint8_t> bytes, std::string_view extension,
                                         uint64_t maxSize, MeshFileError& error) {
-    if (extension == "ply") {
-        const std::string_view head(reinterpret_cast<const char*>(bytes.data()),
-                                    std::min(bytes.size(), kPlyHeadBytes));
-        if (std::string problem = plyHeaderProblem(head, bytes.size()); !problem.empty()) {
-            error = {std::move(problem)};
-            return std::nullopt;
-        }
+    const ByteReader read = [&](uint64_t offset, void* to, size_t n) {
+        if (offset > bytes.size() || n > bytes.size() - offset) return false;
+        std::memcpy(to, bytes.data() + offset, n);
+        return true;
+    };
+    if (std::string problem = assimpGuardProblem(extension, read, bytes.size()); !problem.empty()) {
+        error = {std::move(problem)};
+        return std::nullopt;
     }
     std::unique_ptr<Assimp::Importer> importer = meshImporter();
     // Beside the bytes, a refusal of every file.

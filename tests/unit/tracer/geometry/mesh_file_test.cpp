@@ -237,6 +237,12 @@ TEST_CASE("mesh files: damaged files are errors, never crashes or huge allocatio
     CHECK(readError(folder.write("tangled.ply", "ply\nformat ascii 1.0\nelemenend_headert vertex 4\n"
                                                 "property float x\nend_header\n0\n")) ==
           "line 3 of its PLY header is not one Assimp reads");
+    // A GLB chunk longer than the file (Assimp allocated what it declared: a fuzzing finding).
+    Bytes glb;
+    glb.put(uint32_t{0x46546C67}).put(uint32_t{2}).put(uint32_t{28});
+    glb.put(uint32_t{0x40000000}).put(uint32_t{0x4E4F534A}).put(uint64_t{0});
+    CHECK(readError(folder.write("chunk.glb", glb.data)) ==
+          "its chunk at byte 12 runs past the end of the file");
     CHECK_THAT(readError(folder.write("huge.stl", binaryStl(2000000000))),
                Catch::Contains("STL"));
     CHECK_FALSE(readError(folder.write("text.ply", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).empty());

@@ -1,5 +1,5 @@
-// The header of a PLY file, checked before Assimp reads the file (see ply_header.hpp).
-#include "scene/ply_header.hpp"
+// The checks a mesh file must pass before Assimp reads it (see assimp_guard.hpp).
+#include "scene/assimp_guard.hpp"
 
 #include <fmt/format.h>
 
@@ -76,6 +76,40 @@ std::string plyHeaderProblem(std::string_view head, uint64_t fileSize) {
         }
     }
     return {};
+}
+
+std::string glbProblem(const ByteReader& read, uint64_t fileSize) {
+    // Little-endian words: the magic "glTF", the version, the length; then chunks, each its
+    // length and type before its data.
+    auto word = [&](uint64_t offset, uint32_t& value) {
+        uint8_t bytes[4];
+        if (!read(offset, bytes, 4)) return false;
+        value = uint32_t(bytes[0]) | uint32_t(bytes[1]) << 8 | uint32_t(bytes[2]) << 16 |
+                uint32_t(bytes[3]) << 24;
+        return true;
+    };
+    uint32_t magic = 0, version = 0, length = 0;
+    if (!word(0, magic) || !word(4, version) || !word(8, length) || magic != 0x46546C67)
+        return "not a GLB file";
+    if (version != 2) return fmt::format("a GLB file of version {}, not 2", version);
+    if (length != fileSize)
+        return fmt::format("its header gives a length of {} bytes, but the file has {}", length, fileSize);
+    for (uint64_t at = 12; at < length;) {
+        uint32_t chunk = 0;
+        if (at + 8 > length || !word(at, chunk) || chunk > length - at - 8)
+            return fmt::format("its chunk at byte {} runs past the end of the file", at);
+        at += 8 + uint64_t(chunk);
+    }
+    return {};
+}
+
+std::string assimpGuardProblem(std::string_view extension, const ByteReader& read, uint64_t fileSize) {
+    if (extension == "glb") return glbProblem(read, fileSize);
+    if (extension != "ply") return {};
+    constexpr uint64_t kHeadBytes = 64 * 1024;
+    std::string head(std::min(fileSize, kHeadBytes), '\0');
+    if (!read(0, head.data(), head.size())) return "cannot read its header";
+    return plyHeaderProblem(head, fileSize);
 }
 
 } // namespace crt::scene
