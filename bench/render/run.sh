@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Render benchmark: crtc against POV-Ray 3.7 on six equivalent scenes
-# (mirror_room, sphere_grid, csg, textured, shapes, functions), rendered by both tools at each size,
+# Render benchmark: crtc against POV-Ray 3.7 on seven equivalent scenes
+# (mirror_room, sphere_grid, csg, textured, shapes, functions, mesh), rendered by both tools at each size,
 # alternating, several times. Prints median wall times, their ratio and the
 # RMSE between the two images as a Markdown table. See bench/README.md.
 #
@@ -10,7 +10,8 @@
 #   --runs N      timed runs per tool, scene and size; medians reported (default 3)
 #   --sizes LIST  comma-separated image sizes (default 800x600,1920x1080)
 #   --scenes LIST comma-separated subset of mirror_room,sphere_grid,csg,textured,shapes,
-#                 functions
+#                 functions,mesh (mesh: a 1M-triangle terrain, written into generated/ by
+#                 gen_terrain.py on first use)
 #   --base CRTC   a second crtc binary (e.g. the build before a change; default
 #                 $CRTC_BASE), timed in the same runs against the same POV-Ray
 #                 renders; adds columns with its time, its ratio to POV-Ray and
@@ -39,7 +40,7 @@ root=$(cd "$here/../.." && pwd)
 
 runs=3
 sizes=800x600,1920x1080
-scenes=mirror_room,sphere_grid,csg,textured,shapes,functions
+scenes=mirror_room,sphere_grid,csg,textured,shapes,functions,mesh
 base=${CRTC_BASE:-}
 base_commit=
 bench_parse_options runs sizes scenes base base-commit=base_commit -- "$@"
@@ -64,8 +65,8 @@ done
 IFS=, read -r -a scene_list <<<"$scenes"
 for w in "${scene_list[@]}"; do
     case $w in
-        mirror_room | sphere_grid | csg | textured | shapes | functions) ;;
-        *) echo "$0: unknown scene '$w' (mirror_room, sphere_grid, csg, textured, shapes, functions)" >&2; exit 2 ;;
+        mirror_room | sphere_grid | csg | textured | shapes | functions | mesh) ;;
+        *) echo "$0: unknown scene '$w' (mirror_room, sphere_grid, csg, textured, shapes, functions, mesh)" >&2; exit 2 ;;
     esac
 done
 if [[ ! -x $povray ]]; then
@@ -84,6 +85,10 @@ fi
 
 bench_check_crtc
 bench_output_folder render
+if [[ ",$scenes," == *,mesh,* && ! -f $here/generated/terrain.inc ]]; then
+    echo "writing the terrain mesh into $here/generated/ ..." >&2
+    python3 "$here/gen_terrain.py" "$here/generated"
+fi
 [[ -n $base_commit ]] && bench_build_commit "$base_commit"
 bench_check_base
 
