@@ -26,7 +26,8 @@ struct MeshFileError {
     bool overLimit = false; ///< the mesh is larger than the limit allows
 };
 
-/// Reads a PLY, STL or glTF file as one mesh: the triangles of every mesh in its scene, each
+/// Reads a PLY, STL or glTF file as one mesh, in a child process (Assimp's faults stay there,
+/// an error here): the triangles of every mesh in its scene, each
 /// placed by its node's transforms (polygons fan-triangulated, points and lines left out);
 /// vertex normals and the first set of texture coordinates where the file has them (a glTF's
 /// v turned to OBJ's, upward). Files the mesh refers to are read only where `gate` allows. An
@@ -36,7 +37,7 @@ std::optional<MeshData> readAssimpMesh(const std::string& path, uint64_t maxSize
                                        const FileGate& gate, MeshFileError& error);
 
 /// The same from the bytes of a file whose extension is `extension` ("ply", "stl", "glb" or
-/// "gltf"); it can refer to no other file.
+/// "gltf"), in this process (for fuzzing Assimp's readers); it can refer to no other file.
 std::optional<MeshData> parseAssimpMesh(std::span<const uint8_t> bytes, std::string_view extension,
                                         uint64_t maxSize, MeshFileError& error);
 

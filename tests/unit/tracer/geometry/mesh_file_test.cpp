@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <vector>
 
 using namespace crt::tracer;
 namespace fs = std::filesystem;
@@ -209,12 +210,8 @@ TEST_CASE("mesh files: a glTF's buffer is read only where the gate allows") {
     TempFolder folder("gate");
     const std::string buffer = folder.write("tetrahedron.bin", gltfBuffer());
     const std::string path = folder.write("tetrahedron.gltf", gltf("tetrahedron.bin"));
-    std::vector<std::string> asked;
-    readOk(path, [&](const std::string& file) {
-        asked.push_back(file);
-        return std::string();
-    });
-    CHECK(std::find(asked.begin(), asked.end(), buffer) != asked.end());
+    // Allowed: read. (The file is read in a child process, so the gate is asked there.)
+    readOk(path, [&](const std::string&) { return std::string(); });
     MeshFileError error;
     CHECK_FALSE(crt::scene::readAssimpMesh(path, kDefaultMaxMeshSize, [&](const std::string& file) {
         return file == buffer ? std::string("is outside the readable folders") : std::string();
