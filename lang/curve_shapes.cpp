@@ -1,5 +1,5 @@
-// The shapes made from curves of points: Prism, Sor, Lathe and SphereSweep, checked as POV-Ray checks
-// their points, and the spline kind their attributes name.
+// The shapes made from curves of points: Prism, Sor, Lathe and SphereSweep, checked as
+// POV-Ray checks their points, and the spline kind their attributes name.
 #include "interpreter_impl.hpp"
 #include "object_builder.hpp"
 

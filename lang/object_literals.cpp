@@ -387,7 +387,8 @@ Value Interpreter::buildEntity(ObjectBuilder& b) {
         solid = scene::curveEnclosesSolid(scene::curveSegments(lathe->points, lathe->spline));
     if (auto* isosurface = std::get_if<scene::IsosurfaceShape>(&shape))
         solid = !isosurface->desc->open;
-    // A closed mesh bounds a solid; one not read (files not checked) is taken at its word.
+    // A closed mesh bounds a solid. One not read (files not checked) passes for one here; the
+    // renderer, which reads it, finds it open or not.
     if (auto* mesh = std::get_if<scene::MeshShape>(&shape)) {
         const scene::MeshData* data = meshDataOf(*mesh);
         solid = !data || data->closed;

@@ -15,10 +15,9 @@ namespace {
 /// The bytes of one value of a PLY scalar type; 0 for a name PLY does not have.
 int plyTypeSize(std::string_view type) {
     static constexpr std::pair<std::string_view, int> kSizes[] = {
-        {"char", 1},  {"uchar", 1},  {"int8", 1},   {"uint8", 1},   {"short", 2},
-        {"ushort", 2}, {"int16", 2}, {"uint16", 2}, {"int", 4},     {"uint", 4},
-        {"int32", 4}, {"uint32", 4}, {"float", 4},  {"float32", 4}, {"double", 8},
-        {"float64", 8}};
+        {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
+        {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
+        {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
     for (auto [name, size] : kSizes)
         if (name == type) return size;
     return 0;
@@ -47,18 +46,24 @@ std::string plyHeaderProblem(std::string_view head, uint64_t fileSize) {
             ended = !(words >> extra);
             plain = ended;
         } else if (keyword == "format") {
-            plain = static_cast<bool>(words >> type >> extra) &&
-                    (type == "ascii" || type == "binary_little_endian" || type == "binary_big_endian");
+            plain =
+                static_cast<bool>(words >> type >> extra) &&
+                (type == "ascii" || type == "binary_little_endian" || type == "binary_big_endian");
             text = type == "ascii";
         } else if (keyword == "element") {
             Element e;
-            plain = static_cast<bool>(words >> e.name >> e.count);
+            plain = static_cast<bool>(words >> e.name >> e.count) && !(words >> extra);
             elements.push_back(e);
         } else if (keyword == "property") {
+            // "property TYPE NAME" or "property list COUNT_TYPE TYPE NAME", nothing after.
+            std::string countType, name;
             words >> type;
-            if (type == "list") words >> type >> extra; // the count's type: a list holds at least it
-            plain = !elements.empty() && plyTypeSize(type) > 0 && plyTypeSize(extra.empty() ? type : extra) > 0;
-            if (plain) elements.back().least += text ? 2 : static_cast<uint64_t>(plyTypeSize(type));
+            if (type == "list") words >> countType >> type;
+            plain = static_cast<bool>(words >> name) && !(words >> extra) && !elements.empty() &&
+                    plyTypeSize(type) > 0 && (countType.empty() || plyTypeSize(countType) > 0);
+            // A list holds at least its count.
+            const int bytes = plyTypeSize(countType.empty() ? type : countType);
+            if (plain) elements.back().least += text ? 2 : static_cast<uint64_t>(bytes);
         } else {
             plain = keyword == "comment" || keyword == "obj_info";
         }
@@ -93,7 +98,8 @@ std::string glbProblem(const ByteReader& read, uint64_t fileSize) {
         return "not a GLB file";
     if (version != 2) return fmt::format("a GLB file of version {}, not 2", version);
     if (length != fileSize)
-        return fmt::format("its header gives a length of {} bytes, but the file has {}", length, fileSize);
+        return fmt::format("its header gives a length of {} bytes, but the file has {}", length,
+                           fileSize);
     for (uint64_t at = 12; at < length;) {
         uint32_t chunk = 0;
         if (at + 8 > length || !word(at, chunk) || chunk > length - at - 8)
@@ -103,7 +109,8 @@ std::string glbProblem(const ByteReader& read, uint64_t fileSize) {
     return {};
 }
 
-std::string assimpGuardProblem(std::string_view extension, const ByteReader& read, uint64_t fileSize) {
+std::string assimpGuardProblem(std::string_view extension, const ByteReader& read,
+                               uint64_t fileSize) {
     if (extension == "glb") return glbProblem(read, fileSize);
     if (extension != "ply") return {};
     constexpr uint64_t kHeadBytes = 64 * 1024;

@@ -16,7 +16,8 @@ using ByteReader = std::function<bool(uint64_t offset, void* to, size_t size)>;
 
 /// Why a file of this extension ("ply", "stl", "glb", "gltf") and size is refused before
 /// Assimp reads it ("" when it is not): plyHeaderProblem or glbProblem.
-std::string assimpGuardProblem(std::string_view extension, const ByteReader& read, uint64_t fileSize);
+std::string assimpGuardProblem(std::string_view extension, const ByteReader& read,
+                               uint64_t fileSize);
 
 /// Why a PLY file is refused before Assimp reads it ("" when it is not), from its first bytes
 /// (the header must fit in 64 KiB) and its size. The header must be plain PLY, line by line (the

@@ -5,8 +5,8 @@
 
 #include <cerrno>
 #include <csignal>
-#include <fcntl.h>
 #include <cstring>
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -37,8 +37,8 @@ bool readAll(int fd, void* to, size_t size) {
 
 } // namespace
 
-std::optional<std::string> inChildProcess(const std::function<std::string()>& work, uint64_t maxBytes,
-                                          std::string& why) {
+std::optional<std::string> inChildProcess(const std::function<std::string()>& work,
+                                          uint64_t maxBytes, std::string& why) {
     int pipeEnds[2];
     // Close-on-exec: a process another thread starts meanwhile must not hold the write end.
     if (::pipe2(pipeEnds, O_CLOEXEC) != 0) {
@@ -58,7 +58,8 @@ std::optional<std::string> inChildProcess(const std::function<std::string()>& wo
         // Its length first, so that the parent takes them in one piece of memory.
         const uint64_t length = bytes.size();
         const bool written =
-            writeAll(pipeEnds[1], std::string(reinterpret_cast<const char*>(&length), sizeof length)) &&
+            writeAll(pipeEnds[1],
+                     std::string(reinterpret_cast<const char*>(&length), sizeof length)) &&
             writeAll(pipeEnds[1], bytes);
         ::_exit(written ? 0 : 1);
     }
@@ -82,11 +83,13 @@ std::optional<std::string> inChildProcess(const std::function<std::string()>& wo
         return std::nullopt;
     }
     if (WIFSIGNALED(status)) {
-        why = fmt::format("it stopped on signal {} ({})", WTERMSIG(status), strsignal(WTERMSIG(status)));
+        why = fmt::format("it stopped on signal {} ({})", WTERMSIG(status),
+                          strsignal(WTERMSIG(status)));
         return std::nullopt;
     }
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        why = fmt::format("it stopped with status {}", WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+        why =
+            fmt::format("it stopped with status {}", WIFEXITED(status) ? WEXITSTATUS(status) : -1);
         return std::nullopt;
     }
     if (!complete) {

@@ -15,7 +15,7 @@ namespace crt::scene {
 /// stopped on signal 11 (Segmentation fault)"), when the child did not finish, or returned
 /// more than `maxBytes`. The child leaves by _exit: no destructors, no exit handlers of the
 /// parent run in it.
-std::optional<std::string> inChildProcess(const std::function<std::string()>& work, uint64_t maxBytes,
-                                          std::string& why);
+std::optional<std::string> inChildProcess(const std::function<std::string()>& work,
+                                          uint64_t maxBytes, std::string& why);
 
 } // namespace crt::scene

@@ -53,7 +53,8 @@ MeshClosure meshClosure(const MeshData& mesh) {
         const int32_t v[3] = {welded[t.v[0]], welded[t.v[1]], welded[t.v[2]]};
         if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;
         for (int k = 0; k < 3; ++k) edges.push_back({v[k], v[(k + 1) % 3]});
-        const glm::dvec3 &a = mesh.positions[v[0]], &b = mesh.positions[v[1]], &c = mesh.positions[v[2]];
+        const glm::dvec3 &a = mesh.positions[v[0]], &b = mesh.positions[v[1]],
+                         &c = mesh.positions[v[2]];
         volume += glm::dot(a, glm::cross(b, c));
     }
     if (edges.empty()) {

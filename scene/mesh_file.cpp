@@ -1,19 +1,19 @@
 // Mesh files of every format crt reads (see mesh_file.hpp).
 #include "scene/mesh_file.hpp"
 
-#include "scene/mesh_closure.hpp"
 #include "scene/assimp_guard.hpp"
 #include "scene/child_process.hpp"
 #include "scene/mesh_bytes.hpp"
+#include "scene/mesh_closure.hpp"
 
 #include <assimp/BaseImporter.h>
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/importerdesc.h>
 #include <assimp/postprocess.h>
-#include <glm/geometric.hpp>
 #include <assimp/scene.h>
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cstring>
@@ -31,7 +31,8 @@ namespace {
 std::string lowerExtension(std::string_view path) {
     const size_t dot = path.find_last_of('.');
     const size_t slash = path.find_last_of('/');
-    if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) return {};
+    if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash))
+        return {};
     std::string extension(path.substr(dot + 1));
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -45,7 +46,9 @@ class GatedFiles : public Assimp::DefaultIOSystem {
     GatedFiles(const std::string& mesh, FileGate gate)
         : mesh_(std::filesystem::path(mesh).lexically_normal().string()), gate_(std::move(gate)) {}
 
-    bool Exists(const char* file) const override { return allowed(file) && DefaultIOSystem::Exists(file); }
+    bool Exists(const char* file) const override {
+        return allowed(file) && DefaultIOSystem::Exists(file);
+    }
     Assimp::IOStream* Open(const char* file, const char* mode) override {
         if (std::strchr(mode, 'w') || std::strchr(mode, 'a') || !allowed(file)) return nullptr;
         return DefaultIOSystem::Open(file, mode);
@@ -100,12 +103,14 @@ struct Placed {
 std::vector<Placed> placedMeshes(const aiScene& imported) {
     std::vector<Placed> out;
     std::vector<std::pair<const aiNode*, aiMatrix4x4>> pending;
-    if (imported.mRootNode) pending.emplace_back(imported.mRootNode, imported.mRootNode->mTransformation);
+    if (imported.mRootNode)
+        pending.emplace_back(imported.mRootNode, imported.mRootNode->mTransformation);
     while (!pending.empty()) {
         const auto [node, toScene] = pending.back();
         pending.pop_back();
         for (unsigned i = 0; i < node->mNumMeshes; ++i)
-            if (node->mMeshes[i] < imported.mNumMeshes) out.push_back({imported.mMeshes[node->mMeshes[i]], toScene});
+            if (node->mMeshes[i] < imported.mNumMeshes)
+                out.push_back({imported.mMeshes[node->mMeshes[i]], toScene});
         for (unsigned i = 0; i < node->mNumChildren; ++i)
             pending.emplace_back(node->mChildren[i], toScene * node->mChildren[i]->mTransformation);
     }
@@ -247,7 +252,8 @@ std::optional<MeshData> importFile(const std::string& path, uint64_t maxSize, co
         in.read(static_cast<char*>(to), static_cast<std::streamsize>(n));
         return in.gcount() == static_cast<std::streamsize>(n);
     };
-    if (std::string problem = assimpGuardProblem(lowerExtension(path), read, size); !problem.empty()) {
+    if (std::string problem = assimpGuardProblem(lowerExtension(path), read, size);
+        !problem.empty()) {
         error = {std::move(problem)};
         return std::nullopt;
     }
@@ -255,7 +261,8 @@ std::optional<MeshData> importFile(const std::string& path, uint64_t maxSize, co
     auto* files = new GatedFiles(path, gate); // the importer owns its file system
     importer->SetIOHandler(files);
     const aiScene* imported = importer->ReadFile(path, kSteps);
-    std::optional<MeshData> mesh = importedMesh(*importer, imported, lowerExtension(path), maxSize, error);
+    std::optional<MeshData> mesh =
+        importedMesh(*importer, imported, lowerExtension(path), maxSize, error);
     if (!mesh && !files->refusal().empty())
         error.message = fmt::format("{}; {}", error.message, files->refusal());
     return mesh;

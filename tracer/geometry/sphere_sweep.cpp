@@ -147,7 +147,8 @@ void SphereSweepGeometry::crossSegment(const Ray& ray, uint32_t i, std::vector<S
     }
     for (int j = 0; j <= n; ++j)
         for (int k = 0; k <= n; ++k)
-            discriminant.c[j + k] += dd * terms.radius[j] * terms.radius[k] - glm::dot(cross[j], cross[k]);
+            discriminant.c[j + k] +=
+                dd * terms.radius[j] * terms.radius[k] - glm::dot(cross[j], cross[k]);
     // The entry or exit stops moving where (d·w)'·√disc = ∓disc'/2, a root of the squared
     // form g = 4·(d·w)'²·disc − disc'². Where both sides vanish at once (a line square to a
     // straight segment) g only touches 0, so its turns are candidates too: entries and exits

@@ -36,8 +36,8 @@ class SphereSweepGeometry {
     /// One piece of the curve: (centre, radius) = ((a·u + b)·u + c)·u + d for u in [0, 1].
     struct Segment {
         scene::CurveSegmentOf<glm::dvec4> curve;
-        int degree;    ///< 1 for a straight piece, else 3
-        double size;   ///< the sum of the coefficients' magnitudes, for rounding bounds
+        int degree;  ///< 1 for a straight piece, else 3
+        double size; ///< the sum of the coefficients' magnitudes, for rounding bounds
         Bounds3 bounds;
     };
     /// Where the line is inside the spheres of one run of one segment.

@@ -28,7 +28,12 @@ TEST_CASE("child process: the work's bytes come back") {
 
 TEST_CASE("child process: a child that dies is an error of the parent") {
     std::string why;
-    CHECK_FALSE(inChildProcess([]() -> std::string { ::kill(::getpid(), SIGKILL); return "unreached"; }, 1 << 30, why));
+    CHECK_FALSE(inChildProcess(
+        []() -> std::string {
+            ::kill(::getpid(), SIGKILL);
+            return "unreached";
+        },
+        1 << 30, why));
     CHECK_THAT(why, Catch::StartsWith("it stopped on signal 9"));
     CHECK_FALSE(inChildProcess([]() -> std::string { ::_exit(3); }, 1 << 30, why));
     CHECK(why == "it stopped with status 3");

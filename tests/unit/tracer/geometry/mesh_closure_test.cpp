@@ -13,7 +13,8 @@ namespace {
 MeshData meshOf(std::vector<glm::dvec3> positions, std::vector<std::array<int32_t, 3>> faces) {
     MeshData m;
     m.positions = std::move(positions);
-    for (const auto& f : faces) m.triangles.push_back({{f[0], f[1], f[2]}, {-1, -1, -1}, {-1, -1, -1}});
+    for (const auto& f : faces)
+        m.triangles.push_back({{f[0], f[1], f[2]}, {-1, -1, -1}, {-1, -1, -1}});
     return m;
 }
 
@@ -46,7 +47,8 @@ TEST_CASE("mesh closure: split vertices count as one, flat triangles not at all"
     }
     // And a triangle with no area, two corners at one place.
     soup.positions.push_back(kCorners[0]);
-    soup.triangles.push_back({{0, 1, static_cast<int32_t>(soup.positions.size() - 1)}, {-1, -1, -1}, {-1, -1, -1}});
+    soup.triangles.push_back(
+        {{0, 1, static_cast<int32_t>(soup.positions.size() - 1)}, {-1, -1, -1}, {-1, -1, -1}});
     CHECK(meshClosure(soup).closed);
 }
 

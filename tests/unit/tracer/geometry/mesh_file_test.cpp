@@ -75,7 +75,8 @@ std::string binaryStl(uint32_t declared = 4) {
     b.put(declared);
     for (const auto& f : kFaces) {
         b.put(0.0f).put(0.0f).put(0.0f); // the facet normal, which readers recompute
-        for (int k : f) b.put(float(kCorners[k].x)).put(float(kCorners[k].y)).put(float(kCorners[k].z));
+        for (int k : f)
+            b.put(float(kCorners[k].x)).put(float(kCorners[k].y)).put(float(kCorners[k].z));
         b.put(uint16_t{0});
     }
     return b.data;
@@ -85,7 +86,8 @@ std::string asciiStl() {
     std::string s = "solid tetrahedron\n";
     for (const auto& f : kFaces) {
         s += "facet normal 0 0 0\nouter loop\n";
-        for (int k : f) s += fmt::format("vertex {} {} {}\n", kCorners[k].x, kCorners[k].y, kCorners[k].z);
+        for (int k : f)
+            s += fmt::format("vertex {} {} {}\n", kCorners[k].x, kCorners[k].y, kCorners[k].z);
         s += "endloop\nendfacet\n";
     }
     return s + "endsolid tetrahedron\n";
@@ -121,8 +123,9 @@ std::set<std::array<double, 9>> trianglesOf(const MeshData& mesh, glm::dvec3 off
         // Rotated so that the least corner comes first: the winding is kept.
         int first = 0;
         for (int k = 1; k < 3; ++k)
-            if (std::lexicographical_compare(&mesh.positions[t.v[k]].x, &mesh.positions[t.v[k]].x + 3,
-                                             &mesh.positions[t.v[first]].x, &mesh.positions[t.v[first]].x + 3))
+            if (std::lexicographical_compare(
+                    &mesh.positions[t.v[k]].x, &mesh.positions[t.v[k]].x + 3,
+                    &mesh.positions[t.v[first]].x, &mesh.positions[t.v[first]].x + 3))
                 first = k;
         for (int k = 0; k < 3; ++k) {
             const glm::dvec3 p = mesh.positions[t.v[(first + k) % 3]] - offset;
@@ -137,7 +140,8 @@ const std::set<std::array<double, 9>>& tetrahedron() {
     static const std::set<std::array<double, 9>> kTriangles = [] {
         MeshData m;
         m.positions.assign(std::begin(kCorners), std::end(kCorners));
-        for (const auto& f : kFaces) m.triangles.push_back({{f[0], f[1], f[2]}, {-1, -1, -1}, {-1, -1, -1}});
+        for (const auto& f : kFaces)
+            m.triangles.push_back({{f[0], f[1], f[2]}, {-1, -1, -1}, {-1, -1, -1}});
         return trianglesOf(m);
     }();
     return kTriangles;
@@ -145,7 +149,8 @@ const std::set<std::array<double, 9>>& tetrahedron() {
 
 MeshData readOk(const std::string& path, const crt::scene::FileGate& gate = {}) {
     MeshFileError error;
-    std::optional<MeshData> mesh = crt::scene::readAssimpMesh(path, kDefaultMaxMeshSize, gate, error);
+    std::optional<MeshData> mesh =
+        crt::scene::readAssimpMesh(path, kDefaultMaxMeshSize, gate, error);
     INFO(path << ": " << error.message);
     REQUIRE(mesh);
     return *mesh;
@@ -213,9 +218,12 @@ TEST_CASE("mesh files: a glTF's buffer is read only where the gate allows") {
     // Allowed: read. (The file is read in a child process, so the gate is asked there.)
     readOk(path, [&](const std::string&) { return std::string(); });
     MeshFileError error;
-    CHECK_FALSE(crt::scene::readAssimpMesh(path, kDefaultMaxMeshSize, [&](const std::string& file) {
-        return file == buffer ? std::string("is outside the readable folders") : std::string();
-    }, error));
+    CHECK_FALSE(crt::scene::readAssimpMesh(
+        path, kDefaultMaxMeshSize,
+        [&](const std::string& file) {
+            return file == buffer ? std::string("is outside the readable folders") : std::string();
+        },
+        error));
     CHECK_THAT(error.message, Catch::Contains("'" + buffer + "' is outside the readable folders"));
 }
 
@@ -228,21 +236,23 @@ TEST_CASE("mesh files: damaged files are errors, never crashes or huge allocatio
     const std::string huge = "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\n"
                              "property float x\nproperty float y\nproperty float z\n"
                              "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
-    CHECK(readError(folder.write("huge.ply", huge + std::string(16, '\0'))) ==
-          "its header declares 2000000000 vertex elements, more than its 16 bytes of data can hold");
+    CHECK(
+        readError(folder.write("huge.ply", huge + std::string(16, '\0'))) ==
+        "its header declares 2000000000 vertex elements, more than its 16 bytes of data can hold");
     // A header Assimp would read forever (a fuzzing finding): refused line by line.
-    CHECK(readError(folder.write("tangled.ply", "ply\nformat ascii 1.0\nelemenend_headert vertex 4\n"
-                                                "property float x\nend_header\n0\n")) ==
-          "line 3 of its PLY header is not one Assimp reads");
+    CHECK(
+        readError(folder.write("tangled.ply", "ply\nformat ascii 1.0\nelemenend_headert vertex 4\n"
+                                              "property float x\nend_header\n0\n")) ==
+        "line 3 of its PLY header is not one Assimp reads");
     // A GLB chunk longer than the file (Assimp allocated what it declared: a fuzzing finding).
     Bytes glb;
     glb.put(uint32_t{0x46546C67}).put(uint32_t{2}).put(uint32_t{28});
     glb.put(uint32_t{0x40000000}).put(uint32_t{0x4E4F534A}).put(uint64_t{0});
     CHECK(readError(folder.write("chunk.glb", glb.data)) ==
           "its chunk at byte 12 runs past the end of the file");
-    CHECK_THAT(readError(folder.write("huge.stl", binaryStl(2000000000))),
-               Catch::Contains("STL"));
-    CHECK_FALSE(readError(folder.write("text.ply", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).empty());
+    CHECK_THAT(readError(folder.write("huge.stl", binaryStl(2000000000))), Catch::Contains("STL"));
+    CHECK_FALSE(
+        readError(folder.write("text.ply", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).empty());
     CHECK_FALSE(readError(folder.write("empty.glb", "")).empty());
     CHECK_FALSE(readError(folder.write("missing_buffer.gltf", gltf("nowhere.bin"))).empty());
     CHECK_FALSE(readError((folder.path / "absent.stl").string()).empty());

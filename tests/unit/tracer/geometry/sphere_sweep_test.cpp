@@ -73,13 +73,15 @@ void checkRandomLines(const scene::SphereSweepShape& shape, uint64_t seed, int l
         const Ray ray = random.lineThrough(random.pointIn(g.bounds()), 20);
         INFO("line " << i);
         g.crossLine(ray, list);
-        checkAlternates(list, ray, [&](const LVec& p) { return exact(p) < 0; }, true);
+        checkAlternates(
+            list, ray, [&](const LVec& p) { return exact(p) < 0; }, true);
         for (int k = 0; k < list.count; ++k) {
             const SurfacePoint sp = g.surfaceAt(ray, list[k]);
             checkUnit(sp.normal);
             checkBoundContainsExact(sp, ray, f, list[k].t);
             // Outward: the reference grows along the normal.
-            CHECK(exact(LVec(sp.point + 1e-6 * sp.normal)) > exact(LVec(sp.point - 1e-6 * sp.normal)));
+            CHECK(exact(LVec(sp.point + 1e-6 * sp.normal)) >
+                  exact(LVec(sp.point - 1e-6 * sp.normal)));
         }
         hits += list.count > 0;
     }
@@ -115,8 +117,7 @@ TEST_CASE("A straight sweep of one radius is a capsule", "[sphere_sweep]") {
 
 TEST_CASE("A sweep whose radius grows faster than it moves is its largest sphere",
           "[sphere_sweep]") {
-    const SphereSweepGeometry g(
-        sweep({{0, 0, 0}, {1, 0, 0}}, {0.1, 2}, scene::SplineKind::Linear));
+    const SphereSweepGeometry g(sweep({{0, 0, 0}, {1, 0, 0}}, {0.1, 2}, scene::SplineKind::Linear));
     CrossingList list;
     g.crossLine({{1, -5, 0}, {0, 1, 0}}, list);
     REQUIRE(list.count == 2);
@@ -141,8 +142,8 @@ TEST_CASE("A line through two arms of a bent sweep crosses it four times", "[sph
 }
 
 TEST_CASE("Too few points give no sweep", "[sphere_sweep]") {
-    const SphereSweepGeometry g(sweep({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {1, 1, 1},
-                                      scene::SplineKind::Cubic));
+    const SphereSweepGeometry g(
+        sweep({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {1, 1, 1}, scene::SplineKind::Cubic));
     CrossingList list;
     g.crossLine({{1, -5, 0}, {0, 1, 0}}, list);
     CHECK(list.count == 0);
@@ -150,18 +151,22 @@ TEST_CASE("Too few points give no sweep", "[sphere_sweep]") {
 }
 
 TEST_CASE("Random lines through linear, cubic and B-spline sweeps", "[sphere_sweep]") {
-    const std::vector<glm::dvec3> zigzag = {{-2, 0, 0}, {-1, 1.5, 0.5}, {0, -0.5, 1},
-                                            {1, 1, -0.5}, {2, 0, 0}};
+    const std::vector<glm::dvec3> zigzag = {
+        {-2, 0, 0}, {-1, 1.5, 0.5}, {0, -0.5, 1}, {1, 1, -0.5}, {2, 0, 0}};
     const std::vector<double> radii = {0.3, 0.5, 0.2, 0.6, 0.3};
-    SECTION("linear") { checkRandomLines(sweep(zigzag, radii, scene::SplineKind::Linear), 1, 60); }
-    SECTION("cubic") { checkRandomLines(sweep(zigzag, radii, scene::SplineKind::Cubic), 2, 60); }
+    SECTION("linear") {
+        checkRandomLines(sweep(zigzag, radii, scene::SplineKind::Linear), 1, 60);
+    }
+    SECTION("cubic") {
+        checkRandomLines(sweep(zigzag, radii, scene::SplineKind::Cubic), 2, 60);
+    }
     SECTION("bspline") {
         checkRandomLines(sweep(zigzag, radii, scene::SplineKind::BSpline), 3, 60);
     }
     SECTION("a cubic loop that runs through itself") {
-        const std::vector<glm::dvec3> loop = {{-1, -1, 0}, {1, 0, 0}, {0, 1, 0.3}, {-1, 0, 0},
-                                              {1, -1, 0.2}, {1, 1, 0}};
-        checkRandomLines(sweep(loop, {0.2, 0.3, 0.4, 0.3, 0.2, 0.1}, scene::SplineKind::Cubic),
-                         4, 60);
+        const std::vector<glm::dvec3> loop = {{-1, -1, 0}, {1, 0, 0},    {0, 1, 0.3},
+                                              {-1, 0, 0},  {1, -1, 0.2}, {1, 1, 0}};
+        checkRandomLines(sweep(loop, {0.2, 0.3, 0.4, 0.3, 0.2, 0.1}, scene::SplineKind::Cubic), 4,
+                         60);
     }
 }
