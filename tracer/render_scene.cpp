@@ -161,8 +161,12 @@ void RenderScene::meshCrossings(const CsgTreeNode& node, const CsgRay& q, QueryS
         }
         return true;
     });
+    // At one t, entries before exits: a line grazing the silhouette along an edge enters and
+    // leaves there, and the other order would skip the exit and stay inside.
     std::sort(scratch.csg.begin() + first, scratch.csg.end(),
-              [](const CsgCrossing& a, const CsgCrossing& b) { return a.t < b.t; });
+              [](const CsgCrossing& a, const CsgCrossing& b) {
+                  return a.t != b.t ? a.t < b.t : a.insideAfter > b.insideAfter;
+              });
     size_t kept = first;
     bool inside = false;
     for (size_t i = first; i < scratch.csg.size(); ++i) {
