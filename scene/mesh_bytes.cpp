@@ -16,7 +16,8 @@ template <typename T> void put(std::string& out, const T& value) {
 template <typename T> void putAll(std::string& out, const std::vector<T>& values) {
     static_assert(std::is_trivially_copyable_v<T>);
     put(out, uint64_t(values.size()));
-    out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+    if (!values.empty()) // an empty vector's data() may be null
+        out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
 }
 
 /// Reads values in order from the bytes, failing once they run out.
@@ -41,7 +42,7 @@ struct Reader {
             return;
         }
         values.resize(count);
-        std::memcpy(values.data(), bytes.data(), count * sizeof(T));
+        if (count > 0) std::memcpy(values.data(), bytes.data(), count * sizeof(T));
         bytes.remove_prefix(count * sizeof(T));
     }
 };
