@@ -155,18 +155,18 @@ TEST_CASE("Random lines through linear, cubic and B-spline sweeps", "[sphere_swe
         {-2, 0, 0}, {-1, 1.5, 0.5}, {0, -0.5, 1}, {1, 1, -0.5}, {2, 0, 0}};
     const std::vector<double> radii = {0.3, 0.5, 0.2, 0.6, 0.3};
     SECTION("linear") {
-        checkRandomLines(sweep(zigzag, radii, scene::SplineKind::Linear), 1, 60);
+        checkRandomLines(sweep(zigzag, radii, scene::SplineKind::Linear), 1, 30);
     }
     SECTION("cubic") {
-        checkRandomLines(sweep(zigzag, radii, scene::SplineKind::Cubic), 2, 60);
+        checkRandomLines(sweep(zigzag, radii, scene::SplineKind::Cubic), 2, 30);
     }
     SECTION("bspline") {
-        checkRandomLines(sweep(zigzag, radii, scene::SplineKind::BSpline), 3, 60);
+        checkRandomLines(sweep(zigzag, radii, scene::SplineKind::BSpline), 3, 30);
     }
     SECTION("a cubic loop that runs through itself") {
         const std::vector<glm::dvec3> loop = {{-1, -1, 0}, {1, 0, 0},    {0, 1, 0.3},
                                               {-1, 0, 0},  {1, -1, 0.2}, {1, 1, 0}};
         checkRandomLines(sweep(loop, {0.2, 0.3, 0.4, 0.3, 0.2, 0.1}, scene::SplineKind::Cubic), 4,
-                         60);
+                         30);
     }
 }
