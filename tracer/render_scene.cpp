@@ -134,18 +134,11 @@ void RenderScene::meshCrossings(const CsgTreeNode& node, const CsgRay& q, QueryS
     const MeshOperand& mesh = meshOperands[node.primitive];
     // The BVH is searched on (0, tMax): from a point before the mesh's bounds, so that the
     // whole line through them is.
-    double enter = -kInfinity, leave = kInfinity;
-    for (int k = 0; k < 3; ++k) {
-        if (q.ray.dir[k] == 0) continue;
-        double a = (node.bounds.lo[k] - q.ray.origin[k]) / q.ray.dir[k];
-        double b = (node.bounds.hi[k] - q.ray.origin[k]) / q.ray.dir[k];
-        enter = std::max(enter, std::min(a, b));
-        leave = std::min(leave, std::max(a, b));
-    }
-    if (!(enter <= leave) || !std::isfinite(enter) || !std::isfinite(leave)) return;
-    const double start = enter - 0.5 * (leave - enter) - 1;
+    LineSpan span;
+    if (!lineSpan(q.ray, node.bounds.lo, node.bounds.hi, span)) return;
+    const double start = span.enter - 0.5 * (span.exit - span.enter) - 1;
     const Ray from{q.ray.at(start), q.ray.dir};
-    const double length = 2 * (leave - start) + 1;
+    const double length = 2 * (span.exit - start) + 1;
     const size_t first = scratch.csg.size();
     mesh.bvh.traverse(LazyBoxRay(from), length, stats, [&](int32_t item) {
         const int32_t primitive = mesh.first + item;

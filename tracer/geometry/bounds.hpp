@@ -4,6 +4,9 @@
 #include "tracer/geometry/ray.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
 
 namespace crt::tracer {
 
@@ -37,6 +40,41 @@ struct Bounds3 {
         return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
     }
 };
+
+/// Where the whole line o + t·d (t over all reals) is inside the box from lo to hi, and by
+/// which faces it enters and leaves (2·axis, plus 1 for the `hi` side).
+struct LineSpan {
+    double enter = -kInfinity, exit = kInfinity;
+    uint32_t enterFace = 0, exitFace = 0;
+};
+
+/// The slab test over the whole line; false when the line misses the box (a line parallel to a
+/// slab is in the closed slab or misses it entirely).
+inline bool lineSpan(const Ray& ray, const Vec3& lo, const Vec3& hi, LineSpan& span) {
+    span = {};
+    for (int axis = 0; axis < 3; ++axis) {
+        const double o = ray.origin[axis], d = ray.dir[axis];
+        if (d == 0) {
+            if (o < lo[axis] || o > hi[axis]) return false;
+            continue;
+        }
+        double tLo = (lo[axis] - o) / d, tHi = (hi[axis] - o) / d;
+        auto faceLo = uint32_t(2 * axis), faceHi = uint32_t(2 * axis + 1);
+        if (tLo > tHi) {
+            std::swap(tLo, tHi);
+            std::swap(faceLo, faceHi);
+        }
+        if (tLo > span.enter) {
+            span.enter = tLo;
+            span.enterFace = faceLo;
+        }
+        if (tHi < span.exit) {
+            span.exit = tHi;
+            span.exitFace = faceHi;
+        }
+    }
+    return span.enter <= span.exit && std::isfinite(span.enter) && std::isfinite(span.exit);
+}
 
 inline Bounds3 unionOf(Bounds3 a, const Bounds3& b) {
     a.include(b);

@@ -3,7 +3,6 @@
 
 #include "tracer/geometry/geometry_math.hpp"
 
-#include <utility>
 
 namespace crt::tracer {
 
@@ -19,33 +18,10 @@ void BoxGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     out.count = 0;
     out.startsInside = false;
     if (empty_) return;
-    double tEnter = -kInfinity, tExit = kInfinity;
-    uint32_t faceEnter = 0, faceExit = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-        double o = ray.origin[axis], d = ray.dir[axis];
-        if (d == 0) {
-            // Parallel to this slab: the closed slab contains the line or misses it entirely.
-            if (o < lo_[axis] || o > hi_[axis]) return;
-            continue;
-        }
-        double tLo = (lo_[axis] - o) / d, tHi = (hi_[axis] - o) / d;
-        auto faceLo = uint32_t(2 * axis), faceHi = uint32_t(2 * axis + 1);
-        if (tLo > tHi) {
-            std::swap(tLo, tHi);
-            std::swap(faceLo, faceHi);
-        }
-        if (tLo > tEnter) {
-            tEnter = tLo;
-            faceEnter = faceLo;
-        }
-        if (tHi < tExit) {
-            tExit = tHi;
-            faceExit = faceHi;
-        }
-    }
-    if (!(tEnter <= tExit) || !std::isfinite(tEnter) || !std::isfinite(tExit)) return;
-    out.add(tEnter, faceEnter);
-    out.add(tExit, faceExit);
+    LineSpan span;
+    if (!lineSpan(ray, lo_, hi_, span)) return;
+    out.add(span.enter, span.enterFace);
+    out.add(span.exit, span.exitFace);
 }
 
 SurfacePoint BoxGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool) const {

@@ -57,23 +57,6 @@ SegmentTerms termsOf(const scene::CurveSegmentOf<glm::dvec4>& s) {
     return t;
 }
 
-/// Whether the whole line passes through the box.
-bool lineMeetsBox(const Ray& ray, const Bounds3& box) {
-    double t0 = -kInfinity, t1 = kInfinity;
-    for (int k = 0; k < 3; ++k) {
-        if (ray.dir[k] == 0) {
-            if (ray.origin[k] < box.lo[k] || ray.origin[k] > box.hi[k]) return false;
-            continue;
-        }
-        const double inverse = 1 / ray.dir[k];
-        double a = (box.lo[k] - ray.origin[k]) * inverse, b = (box.hi[k] - ray.origin[k]) * inverse;
-        if (a > b) std::swap(a, b);
-        t0 = std::max(t0, a);
-        t1 = std::min(t1, b);
-    }
-    return t0 <= t1;
-}
-
 } // namespace
 
 SphereSweepGeometry::SphereSweepGeometry(const scene::SphereSweepShape& desc) {
@@ -106,8 +89,10 @@ void SphereSweepGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     if (glm::dot(ray.dir, ray.dir) == 0) return;
     thread_local std::vector<Span> spans;
     spans.clear();
-    for (uint32_t i = 0; i < segments_->size(); ++i)
-        if (lineMeetsBox(ray, (*segments_)[i].bounds)) crossSegment(ray, i, spans);
+    for (uint32_t i = 0; i < segments_->size(); ++i) {
+        const Bounds3& box = (*segments_)[i].bounds;
+        if (LineSpan span; lineSpan(ray, box.lo, box.hi, span)) crossSegment(ray, i, spans);
+    }
     std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.t0 < b.t0; });
     // The ends of the union of the spans, each with the segment whose sphere it lies on.
     for (size_t i = 0; i < spans.size();) {
