@@ -29,13 +29,12 @@ MeshTriangleGeometry::MeshTriangleGeometry(std::shared_ptr<const MeshData> mesh,
         const MeshData::Triangle& tri = mesh_->triangles[index_];
         hasNormals_ = allValid(tri.n, mesh_->normals);
         hasUvs_ = allValid(tri.uv, mesh_->uvs);
-        outward_ = mesh_->closed && mesh_->inward ? -1 : 1;
     }
 }
 
 SurfacePoint MeshTriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {
     SurfacePoint sp = triangle_.surfaceAt(ray, crossing, wantUv);
-    if (outward_ < 0) sp.normal = sp.shadingNormal = -sp.normal;
+    if (woundInward()) sp.normal = sp.shadingNormal = -sp.normal;
     if (!hasNormals_ && !(hasUvs_ && wantUv)) return sp;
     const MeshData::Triangle& tri = mesh_->triangles[index_];
     Vec3 b = triangle_.barycentrics(ray, crossing);

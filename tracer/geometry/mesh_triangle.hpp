@@ -32,7 +32,9 @@ class MeshTriangleGeometry {
     /// A face of a closed mesh's solid.
     bool solid() const { return mesh_ && mesh_->closed; }
     /// For a closed mesh: negative where the line enters the solid, positive where it leaves.
-    double facing(const Ray& ray) const { return outward_ * triangle_.facing(ray); }
+    double facing(const Ray& ray) const {
+        return woundInward() ? -triangle_.facing(ray) : triangle_.facing(ray);
+    }
 
   private:
     /// dpdu and dpdv of the face's own uvs (zero when they are degenerate).
@@ -44,7 +46,10 @@ class MeshTriangleGeometry {
     size_t index_;
     bool hasNormals_ = false;
     bool hasUvs_ = false;
-    double outward_ = 1; ///< −1 for a closed mesh wound inward
+
+    /// A closed mesh whose outward normals are the left-hand ones: a fact of the mesh, read
+    /// from it rather than copied into each triangle.
+    bool woundInward() const { return mesh_ && mesh_->closed && mesh_->inward; }
 };
 
 } // namespace crt::tracer
