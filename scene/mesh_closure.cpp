@@ -11,27 +11,6 @@ namespace crt::scene {
 
 namespace {
 
-/// For each vertex, the smallest vertex number at the same position.
-std::vector<int32_t> weldedVertices(const MeshData& mesh) {
-    const size_t n = mesh.positions.size();
-    std::vector<int32_t> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    auto less = [&](int32_t a, int32_t b) {
-        const glm::dvec3 &p = mesh.positions[a], &q = mesh.positions[b];
-        if (p.x != q.x) return p.x < q.x;
-        if (p.y != q.y) return p.y < q.y;
-        if (p.z != q.z) return p.z < q.z;
-        return a < b;
-    };
-    std::sort(order.begin(), order.end(), less);
-    std::vector<int32_t> welded(n);
-    for (size_t i = 0; i < n; ++i) {
-        const bool same = i > 0 && mesh.positions[order[i]] == mesh.positions[order[i - 1]];
-        welded[order[i]] = same ? welded[order[i - 1]] : order[i];
-    }
-    return welded;
-}
-
 /// One side of an edge: its corners in the triangle's order.
 struct HalfEdge {
     int32_t from, to;
@@ -43,9 +22,29 @@ struct HalfEdge {
 
 } // namespace
 
+std::vector<int32_t> firstVertexAtPosition(const std::vector<glm::dvec3>& positions) {
+    const size_t n = positions.size();
+    std::vector<int32_t> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    auto less = [&](int32_t a, int32_t b) {
+        const glm::dvec3 &p = positions[a], &q = positions[b];
+        if (p.x != q.x) return p.x < q.x;
+        if (p.y != q.y) return p.y < q.y;
+        if (p.z != q.z) return p.z < q.z;
+        return a < b;
+    };
+    std::sort(order.begin(), order.end(), less);
+    std::vector<int32_t> first(n);
+    for (size_t i = 0; i < n; ++i) {
+        const bool same = i > 0 && positions[order[i]] == positions[order[i - 1]];
+        first[order[i]] = same ? first[order[i - 1]] : order[i];
+    }
+    return first;
+}
+
 MeshClosure meshClosure(const MeshData& mesh) {
     MeshClosure result;
-    const std::vector<int32_t> welded = weldedVertices(mesh);
+    const std::vector<int32_t> welded = firstVertexAtPosition(mesh.positions);
     std::vector<HalfEdge> edges;
     edges.reserve(3 * mesh.triangles.size());
     double volume = 0;

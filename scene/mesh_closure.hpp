@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace crt::scene {
 
@@ -20,6 +21,10 @@ struct MeshClosure {
     int32_t edgeFrom = -1, edgeTo = -1;
     std::string problem; ///< "has one triangle", "has 3 triangles", "runs the same way in both"
 };
+
+/// For each vertex, the smallest number of a vertex at the same position: files split a
+/// vertex where its normals or uvs differ (STL stores three of its own for each triangle).
+std::vector<int32_t> firstVertexAtPosition(const std::vector<glm::dvec3>& positions);
 
 /// Corners at the same position count as one vertex (files split vertices where their
 /// normals or uvs differ); triangles with two corners at one position have no area and are

@@ -20,8 +20,6 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <numeric>
-#include <tuple>
 #include <vector>
 
 namespace crt::scene {
@@ -157,22 +155,17 @@ void appendPlaced(const Placed& placed, bool withNormals, MeshData& out) {
 /// Makes triangles that meet at a position share its vertex, as the other formats do: an STL
 /// file stores three corners of its own for each triangle (and nothing else at them).
 void joinCorners(MeshData& mesh) {
-    std::vector<int32_t> order(mesh.positions.size());
-    std::iota(order.begin(), order.end(), 0);
-    auto key = [&](int32_t i) {
-        const glm::dvec3& p = mesh.positions[static_cast<size_t>(i)];
-        return std::tuple(p.x, p.y, p.z);
-    };
-    std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) { return key(a) < key(b); });
-    std::vector<int32_t> joined(order.size());
+    const std::vector<int32_t> first = firstVertexAtPosition(mesh.positions);
+    // The first vertex at each position stays, the others go; numbers close up.
+    std::vector<int32_t> kept(first.size());
     std::vector<glm::dvec3> positions;
-    for (size_t i = 0; i < order.size(); ++i) {
-        if (i == 0 || key(order[i]) != key(order[i - 1]))
-            positions.push_back(mesh.positions[static_cast<size_t>(order[i])]);
-        joined[static_cast<size_t>(order[i])] = static_cast<int32_t>(positions.size() - 1);
+    for (size_t i = 0; i < first.size(); ++i) {
+        if (first[i] != static_cast<int32_t>(i)) continue;
+        kept[i] = static_cast<int32_t>(positions.size());
+        positions.push_back(mesh.positions[i]);
     }
     for (MeshData::Triangle& t : mesh.triangles)
-        for (int32_t& v : t.v) v = joined[static_cast<size_t>(v)];
+        for (int32_t& v : t.v) v = kept[static_cast<size_t>(first[static_cast<size_t>(v)])];
     mesh.positions = std::move(positions);
 }
 
