@@ -48,11 +48,11 @@ struct CsgTreeNode {
     bool convex = false;
 };
 
-/// A mesh used in CSG: its triangles, primitives first … first + count − 1, and a BVH over
-/// them. A closed mesh's crossings alternate between entering and leaving its solid; an open
-/// one's (the clipped side of a Clip) bound nothing.
+/// A mesh used in CSG: its triangles, the primitives from `first` on, and a BVH over them
+/// (item i is primitive first + i). A closed mesh's crossings alternate between entering and
+/// leaving its solid; an open one's (the clipped side of a Clip) bound nothing.
 struct MeshOperand {
-    int32_t first = 0, count = 0;
+    int32_t first = 0;
     bool closed = false;
     Bvh bvh;
 };

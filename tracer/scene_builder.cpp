@@ -198,15 +198,15 @@ private:
     int32_t addMeshOperand(const scene::MeshShape& mesh, const Operand& op) {
         const int32_t first = addTriangles(mesh, op);
         if (first < 0) return -1; // error_ says why
+        const auto end = static_cast<int32_t>(scene_.primitives.size());
+        if (end == first) return -1;
         MeshOperand operand;
         operand.first = first;
-        operand.count = static_cast<int32_t>(scene_.primitives.size()) - first;
-        if (operand.count == 0) return -1;
         std::vector<Bounds3> bounds;
         CsgTreeNode leaf;
         leaf.kind = CsgNodeKind::Mesh;
-        for (int32_t i = 0; i < operand.count; ++i) {
-            bounds.push_back(worldBounds(scene_.primitives[first + i]));
+        for (int32_t p = first; p < end; ++p) {
+            bounds.push_back(worldBounds(scene_.primitives[p]));
             leaf.bounds.include(bounds.back());
         }
         operand.closed = isSolid(scene_.primitives[first].geometry);
