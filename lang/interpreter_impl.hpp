@@ -285,8 +285,9 @@ private:
     /// Reads and checks the mesh at `path` (found by findFile) into the scene, once per
     /// evaluation.
     void readMesh(const ObjectBuilder& b, const std::string& path);
-    /// Reads a PLY, STL or glTF file for readMesh, through Assimp.
-    void readAssimpMesh(const ObjectBuilder& b, const std::string& path);
+    /// readMesh's readers: of OBJ (a bad line is noted), and of PLY, STL and glTF (Assimp).
+    scene::MeshData readObjMesh(const ObjectBuilder& b, const std::string& path);
+    scene::MeshData readAssimpMesh(const ObjectBuilder& b, const std::string& path);
     /// The mesh data a Mesh names; null when its file was not read (files not checked).
     const scene::MeshData* meshDataOf(const scene::MeshShape& mesh) const;
     /// Why an entity that is a Mesh (or one moved) is not closed, naming an open edge ("its

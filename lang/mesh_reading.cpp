@@ -14,6 +14,17 @@
 
 namespace crt::lang {
 
+namespace {
+
+/// The error of a mesh file that cannot be read: "bad mesh 'NAME': why", and the option that
+/// raises the limit when the mesh is over it.
+std::string badMesh(const ObjectBuilder& b, std::string_view why, bool overLimit) {
+    return fmt::format("bad mesh '{}': {}{}", b.text("file", ""), why,
+                       overLimit ? "; raise the limit with --max-mesh-size" : "");
+}
+
+} // namespace
+
 scene::Shape Interpreter::meshShape(ObjectBuilder& b) {
     scene::MeshShape s;
     s.file = b.text("file", s.file);
@@ -86,23 +97,24 @@ std::shared_ptr<const scene::MeshData> Interpreter::writtenMesh(ObjectBuilder& b
 
 void Interpreter::readMesh(const ObjectBuilder& b, const std::string& path) {
     if (scene_.meshes.contains(path)) return;
-    const SourceRange where = b.where("file");
     std::error_code error;
     const uintmax_t fileSize = std::filesystem::file_size(path, error);
-    if (!error) checkRoom(fileSize); // the text is held while it is parsed
-    if (scene::isAssimpMeshFile(path)) {
-        readAssimpMesh(b, path);
-        return;
-    }
+    if (!error) checkRoom(fileSize); // the file is held while it is read
+    scene::MeshData mesh =
+        scene::isAssimpMeshFile(path) ? readAssimpMesh(b, path) : readObjMesh(b, path);
+    charge(mesh.byteSize());
+    scene_.meshes.emplace(path, std::make_shared<const scene::MeshData>(std::move(mesh)));
+}
+
+scene::MeshData Interpreter::readObjMesh(const ObjectBuilder& b, const std::string& path) {
+    const SourceRange where = b.where("file");
     std::optional<std::string> text = readFile(path);
     if (!text) fail(where, fmt::format("cannot read mesh '{}': {}", path, std::strerror(errno)));
-
     scene::ObjError problem;
     std::optional<scene::MeshData> mesh = parseObj(*text, options_.limits.maxMeshSize, problem);
     if (!mesh) {
-        std::string message = fmt::format("bad mesh '{}': {}", b.text("file", ""), problem.message);
-        if (problem.overLimit) message += "; raise the limit with --max-mesh-size";
-        Diagnostic& d = diagnostics_.error(where, std::move(message));
+        Diagnostic& d =
+            diagnostics_.error(where, badMesh(b, problem.message, problem.overLimit));
         // The file's line is shown as a note when the file can be a source (a text under 4 GiB).
         if (problem.line != 0 && problem.end <= std::numeric_limits<uint32_t>::max()) {
             const uint32_t file = compilation_.sources.add(path, std::move(*text));
@@ -111,11 +123,10 @@ void Interpreter::readMesh(const ObjectBuilder& b, const std::string& path) {
         }
         throw EvalError{};
     }
-    charge(mesh->byteSize());
-    scene_.meshes.emplace(path, std::make_shared<const scene::MeshData>(std::move(*mesh)));
+    return std::move(*mesh);
 }
 
-void Interpreter::readAssimpMesh(const ObjectBuilder& b, const std::string& path) {
+scene::MeshData Interpreter::readAssimpMesh(const ObjectBuilder& b, const std::string& path) {
     // A glTF's buffers are read as the mesh is: where the script may read.
     const scene::FileGate gate = [&](const std::string& file) {
         const FileCheck check = fileAccess().check(file);
@@ -125,12 +136,9 @@ void Interpreter::readAssimpMesh(const ObjectBuilder& b, const std::string& path
     std::optional<scene::MeshData> mesh =
         scene::readAssimpMesh(path, options_.limits.maxMeshSize, gate, problem);
     if (!mesh) {
-        std::string message = fmt::format("bad mesh '{}': {}", b.text("file", ""), problem.message);
-        if (problem.overLimit) message += "; raise the limit with --max-mesh-size";
-        fail(b.where("file"), message);
+        fail(b.where("file"), badMesh(b, problem.message, problem.overLimit));
     }
-    charge(mesh->byteSize());
-    scene_.meshes.emplace(path, std::make_shared<const scene::MeshData>(std::move(*mesh)));
+    return std::move(*mesh);
 }
 
 const scene::MeshData* Interpreter::meshDataOf(const scene::MeshShape& mesh) const {
