@@ -132,7 +132,8 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
     case AttrType::MaterialMap: checkMap(a, v, attr.type); return;
     case AttrType::MaterialList: checkMaterialList(a, v); return;
     case AttrType::Solid:
-        if (!isSolid(v)) notSolid(a.value->range, fmt::format("attribute '{}'", a.name), v);
+        if (!isSolid(v))
+            notSolid(a.value->range, fmt::format("attribute '{}' of {}", a.name, info.name), v);
         return;
     case AttrType::SolidList: checkSolidList(a, v); return;
     case AttrType::Entity:
@@ -280,10 +281,7 @@ bool ObjectBuilder::isSolid(const Value& v) const {
     return v.kind == ValueKind::Entity && in.scene_.entities[v.index].solid;
 }
 
-void ObjectBuilder::notSolid(SourceRange where, std::string_view what, const Value& v) {
-    // "attribute 'by' of Clipped", but "item 2 of 'objects'".
-    const std::string subject =
-        what.starts_with("item") ? std::string(what) : fmt::format("{} of {}", what, info.name);
+void ObjectBuilder::notSolid(SourceRange where, std::string_view subject, const Value& v) {
     if (v.kind == ValueKind::Entity) {
         if (std::string open = in.openMeshReason(v.index); !open.empty())
             in.fail(where, fmt::format("{} must be a solid, and this Mesh is not closed: {}",

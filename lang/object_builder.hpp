@@ -173,9 +173,9 @@ struct ObjectBuilder {
     bool isSolid(const Value& v) const;
     void missing(const AttributeInfo& attr);
     [[noreturn]] void wrongType(const Attribute& a, const Value& v, std::string_view wanted);
-    /// The error of a value that is not a solid where one must be (`what`: "attribute 'by'",
-    /// "item 2 of 'objects'"), naming an open edge when it is a Mesh.
-    [[noreturn]] void notSolid(SourceRange where, std::string_view what, const Value& v);
+    /// The error of a value that is not a solid where one must be (`subject`: "attribute 'by'
+    /// of Clipped", "item 2 of 'objects'"), naming an open edge when it is a Mesh.
+    [[noreturn]] void notSolid(SourceRange where, std::string_view subject, const Value& v);
     [[noreturn]] void floatForInt(const Attribute& a, const Value& v, std::string_view wanted);
     void finite(const Attribute& a, const Value& v, int components);
 };
