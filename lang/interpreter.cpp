@@ -407,8 +407,8 @@ const Value* Interpreter::flattenEntities(const Value& list, std::vector<Value>&
 void Interpreter::draw(const Value& value, const Node* where) {
     switch (value.kind) {
     case ValueKind::Entity:
-        primitivesDrawn_ = scene::saturatingAdd(primitivesDrawn_, primitiveCounts_[value.index]);
-        if (primitivesDrawn_ > options_.limits.render.maxPrimitives) {
+        primitivesStored_ = scene::saturatingAdd(primitivesStored_, primitiveCounts_[value.index]);
+        if (primitivesStored_ > options_.limits.render.maxPrimitives) {
             failAtLimit(
                 where->range,
                 fmt::format("the scene draws more than {} primitives (CSG operands and group "

@@ -296,6 +296,9 @@ private:
     std::string openMeshReason(uint32_t entity) const;
     /// The mesh of a Mesh's vertices, faces, normals and uvs, checked.
     std::shared_ptr<const scene::MeshData> writtenMesh(ObjectBuilder& b);
+    /// Counts a mesh's triangles, stored once however often it is drawn, against the limit
+    /// on primitives; `where` is the attribute that made the mesh.
+    void storeTriangles(const scene::MeshData& mesh, SourceRange where);
     /// What the script may read, made from the options when first needed.
     const FileAccess& fileAccess();
     int32_t addEntity(scene::EntityDesc entity, EntityInfo info);
@@ -366,7 +369,8 @@ private:
     std::vector<EntityInfo> entityInfo_;
     /// Per entity: the primitives it expands to (scene/primitive_count.hpp).
     std::vector<uint64_t> primitiveCounts_;
-    uint64_t primitivesDrawn_ = 0; ///< by the entities drawn so far, saturating
+    /// By the entities drawn so far and the triangles of the meshes made, saturating.
+    uint64_t primitivesStored_ = 0;
     std::vector<bool> reachable_; ///< per entity: drawn, or part of something drawn
     std::set<std::tuple<WarningKind, uint32_t, uint32_t>> warnedOnce_;
     std::vector<scene::LightDesc> lights_;

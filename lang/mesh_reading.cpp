@@ -92,7 +92,19 @@ std::shared_ptr<const scene::MeshData> Interpreter::writtenMesh(ObjectBuilder& b
     }
     scene::markClosure(*mesh);
     charge(mesh->byteSize());
+    storeTriangles(*mesh, b.where("faces"));
     return mesh;
+}
+
+void Interpreter::storeTriangles(const scene::MeshData& mesh, SourceRange where) {
+    primitivesStored_ = scene::saturatingAdd(primitivesStored_, mesh.triangles.size());
+    const uint64_t limit = options_.limits.render.maxPrimitives;
+    if (primitivesStored_ > limit) {
+        failAtLimit(where, fmt::format("the scene stores more than {} primitives with the {} "
+                                       "triangles of this mesh (stored once however often it is "
+                                       "drawn); raise the limit with --max-primitives",
+                                       limit, mesh.triangles.size()));
+    }
 }
 
 void Interpreter::readMesh(const ObjectBuilder& b, const std::string& path) {
@@ -103,6 +115,7 @@ void Interpreter::readMesh(const ObjectBuilder& b, const std::string& path) {
     scene::MeshData mesh =
         scene::isAssimpMeshFile(path) ? readAssimpMesh(b, path) : readObjMesh(b, path);
     charge(mesh.byteSize());
+    storeTriangles(mesh, b.where("file"));
     scene_.meshes.emplace(path, std::make_shared<const scene::MeshData>(std::move(mesh)));
 }
 

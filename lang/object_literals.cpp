@@ -325,7 +325,7 @@ int32_t Interpreter::addEntity(scene::EntityDesc entity, EntityInfo info) {
     }
     // Counted now, from the parts' counts, so that a shared entity doubled in a loop stops
     // here rather than when the renderer expands it.
-    const uint64_t primitives = scene::primitivesOf(entity, primitiveCounts_, scene_);
+    const uint64_t primitives = scene::primitivesOf(entity, primitiveCounts_);
     if (primitives > limits.render.maxPrimitives) {
         fail(info.range, fmt::format("this entity expands to more than {} primitives (CSG operands "
                                      "and group members count each time they are used); raise the "

@@ -7,14 +7,7 @@
 
 namespace crt::scene {
 
-uint64_t primitivesOf(const EntityDesc& entity, std::span<const uint64_t> earlier,
-                      const SceneDesc& scene) {
-    if (const auto* mesh = std::get_if<MeshShape>(&entity.shape)) {
-        if (mesh->written >= 0)
-            return std::max<uint64_t>(scene.writtenMeshes[static_cast<size_t>(mesh->written)]->triangles.size(), 1);
-        auto read = scene.meshes.find(fileToOpen(mesh->resolvedFile, mesh->file));
-        return read == scene.meshes.end() ? 1 : std::max<uint64_t>(read->second->triangles.size(), 1);
-    }
+uint64_t primitivesOf(const EntityDesc& entity, std::span<const uint64_t> earlier) {
     const bool combines = std::holds_alternative<CsgNode>(entity.shape) ||
                           std::holds_alternative<TransformNode>(entity.shape) ||
                           std::holds_alternative<GroupNode>(entity.shape) ||
@@ -33,7 +26,7 @@ uint64_t primitivesOf(const EntityDesc& entity, std::span<const uint64_t> earlie
 uint64_t drawnPrimitives(const SceneDesc& scene) {
     std::vector<uint64_t> counts;
     counts.reserve(scene.entities.size());
-    for (const EntityDesc& entity : scene.entities) counts.push_back(primitivesOf(entity, counts, scene));
+    for (const EntityDesc& entity : scene.entities) counts.push_back(primitivesOf(entity, counts));
     uint64_t total = 0;
     for (int32_t root : scene.drawn) total = saturatingAdd(total, counts[static_cast<size_t>(root)]);
     return total;

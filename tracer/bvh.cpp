@@ -299,7 +299,7 @@ WideRay::WideRay(const Ray& ray) {
     }
 }
 
-void Bvh::build(std::vector<Bounds3> itemBounds, unsigned threads) {
+void Bvh::build(std::vector<Bounds3> itemBounds, unsigned threads, std::vector<int32_t> ids) {
     nodes_.clear();
     items_.clear();
     fewItemBounds_.clear();
@@ -307,8 +307,9 @@ void Bvh::build(std::vector<Bounds3> itemBounds, unsigned threads) {
     if (itemBounds.empty()) return;
     std::vector<BuildItem> items(itemBounds.size());
     for (size_t i = 0; i < itemBounds.size(); ++i)
-        items[i] = {itemBounds[i], static_cast<int32_t>(i), 0};
+        items[i] = {itemBounds[i], ids.empty() ? static_cast<int32_t>(i) : ids[i], 0};
     itemBounds = {}; // the items hold them now; not kept through the build
+    ids = {};
     // Levels of the tree whose two subtrees are built by two threads: twice as many subtrees
     // as threads, so that an uneven split still leaves every thread busy.
     int parallelLevels = 0;
@@ -318,6 +319,7 @@ void Bvh::build(std::vector<Bounds3> itemBounds, unsigned threads) {
     items_ = std::move(builder.order);
     nodes_.reserve(builder.nodes.size() / 2 + 1);
     Collapser(builder.nodes, nodes_).collapse(0, depth_);
+    nodes_.shrink_to_fit(); // the reserve is a bound; the tree is stored for the whole render
     // The build leaves the items in the order of the leaves, as items_ lists them.
     if (items_.size() <= kFewItems)
         for (const BuildItem& item : items) {

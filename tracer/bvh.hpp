@@ -153,13 +153,18 @@ private:
 
 class Bvh {
 public:
-    /// Builds over items 0..n-1 with the given (finite) bounds, on up to `threads` threads;
-    /// the tree is the same whatever their number.
-    void build(std::vector<Bounds3> itemBounds, unsigned threads = 1);
+    /// Builds over n items with the given (finite) bounds, on up to `threads` threads; the
+    /// tree is the same whatever their number. Item i is ids[i], or i when there are no ids.
+    void build(std::vector<Bounds3> itemBounds, unsigned threads = 1, std::vector<int32_t> ids = {});
 
     bool empty() const { return nodes_.empty(); }
     size_t nodeCount() const { return nodes_.size(); }
     int depth() const { return depth_; }
+    /// The bytes its nodes and items take (beyond the Bvh itself).
+    uint64_t byteSize() const {
+        return nodes_.capacity() * sizeof(WideBvhNode) + items_.capacity() * sizeof(int32_t) +
+               fewItemBounds_.capacity() * sizeof(BoxFaces);
+    }
 
     /// Visits the items whose leaves the ray segment (0, tMax) reaches, nearer subtrees
     /// first; `tMax` may shrink while visiting (a nearest-hit search). visit(item) returns

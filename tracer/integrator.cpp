@@ -107,7 +107,7 @@ std::string SceneFeatures::names() const {
 }
 
 Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context,
-                       int32_t departed) const {
+                       Departure departed) const {
     Hit hit;
     Vec3 color;
     double distance = kInfinity;
@@ -251,7 +251,7 @@ Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) cons
     return c;
 }
 
-Vec3 Integrator::transmittance(const Ray& ray, double tMax, int32_t departed, TraceContext& context) const {
+Vec3 Integrator::transmittance(const Ray& ray, double tMax, Departure departed, TraceContext& context) const {
     ++context.stats.shadowRays;
     Vec3 through(1.0);
     const RenderScene& scene = scene_;

@@ -51,10 +51,10 @@ public:
     /// The color seen along `ray` (unit direction) with `depth` reflections/refractions left
     /// (besides each kind's own limit, counted in `context`);
     /// `pathLength` is the distance travelled from the camera to the ray's origin (falloff),
-    /// `medium` the material of the solid the ray travels in (-1: air), `departed` a primitive
-    /// the ray cannot meet again (RenderScene::departedPrimitive; -1: none).
+    /// `medium` the material of the solid the ray travels in (-1: air), `departed` what
+    /// the ray cannot meet again (RenderScene::departedPrimitive).
     Vec3 trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context,
-               int32_t departed = -1) const;
+               Departure departed = {}) const;
     /// A camera ray's color and alpha: as trace() in air, alpha 1; with a transparent
     /// background a ray that meets nothing is (0, 0, 0) with alpha 0 instead of the background.
     glm::dvec4 traceCamera(const Ray& ray, int depth, bool transparentBackground,
@@ -75,7 +75,7 @@ private:
     Vec3 seenThrough(const Ray& ray, const Hit& hit, TraceContext& context) const;
     Vec3 directLight(const ShadingPoint& sp, TraceContext& context) const;
     /// The fraction of light that reaches the point through the shadow ray (0: blocked).
-    Vec3 transmittance(const Ray& ray, double tMax, int32_t departed, TraceContext& context) const;
+    Vec3 transmittance(const Ray& ray, double tMax, Departure departed, TraceContext& context) const;
     Vec3 reflect(const ShadingPoint& sp, int depth, int32_t medium, TraceContext& context) const;
     /// The light along `refracted` into `nextMedium` (blurred around it on a glossy material).
     Vec3 refract(const ShadingPoint& sp, const Vec3& refracted, int depth, int32_t nextMedium,

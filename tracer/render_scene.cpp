@@ -14,7 +14,6 @@ bool insideOf(CsgNodeKind kind, bool left, bool right) {
     case CsgNodeKind::Difference: return left && !right;
     case CsgNodeKind::Intersection: return left && right;
     case CsgNodeKind::Leaf:
-    case CsgNodeKind::Mesh:
     case CsgNodeKind::Inverse:
     case CsgNodeKind::Clip: break; // none of these reaches the general merge
     }
@@ -32,10 +31,6 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const CsgRay& q, QueryScratch&
     const CsgTreeNode& node = csgNodes[nodeIndex];
     std::vector<CsgCrossing>& out = scratch.csg;
 
-    if (node.kind == CsgNodeKind::Mesh) {
-        meshCrossings(node, q, scratch, stats);
-        return false;
-    }
     if (node.kind != CsgNodeKind::Leaf && convexCrossings(nodeIndex, q, scratch, stats)) return false;
     if (node.kind == CsgNodeKind::Leaf) {
         const Primitive& p = primitives[node.primitive];
@@ -129,52 +124,6 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const CsgRay& q, QueryScratch&
     return startsInside;
 }
 
-void RenderScene::meshCrossings(const CsgTreeNode& node, const CsgRay& q, QueryScratch& scratch,
-                                RayStats& stats) const {
-    const MeshOperand& mesh = meshOperands[node.primitive];
-    // The BVH is searched on (0, tMax): from a point before the mesh's bounds, so that the
-    // whole line through them is.
-    LineSpan span;
-    if (!lineSpan(q.ray, node.bounds.lo, node.bounds.hi, span)) return;
-    const double start = span.enter - 0.5 * (span.exit - span.enter) - 1;
-    const Ray from{q.ray.at(start), q.ray.dir};
-    const double length = 2 * (span.exit - start) + 1;
-    const size_t first = scratch.csg.size();
-    mesh.bvh.traverse(LazyBoxRay(from), length, stats, [&](int32_t item) {
-        const int32_t primitive = mesh.first + item;
-        const Primitive& p = primitives[primitive];
-        const Ray local = objectRay(p, from);
-        CrossingList list;
-        ++stats.intersectionTests;
-        crossLine(p.geometry, local, list);
-        if (list.count > 0) {
-            const double facing = std::get<MeshTriangleGeometry>(p.geometry).facing(local);
-            // insideAfter holds whether it enters, until the walk below.
-            scratch.csg.push_back({start + list[0].t, primitive, list[0].part, facing < 0, false});
-        }
-        return true;
-    });
-    // At one t, entries before exits: a line grazing the silhouette along an edge enters and
-    // leaves there, and the other order would skip the exit and stay inside.
-    std::sort(scratch.csg.begin() + first, scratch.csg.end(),
-              [](const CsgCrossing& a, const CsgCrossing& b) {
-                  return a.t != b.t ? a.t < b.t : a.insideAfter > b.insideAfter;
-              });
-    size_t kept = first;
-    bool inside = false;
-    for (size_t i = first; i < scratch.csg.size(); ++i) {
-        CsgCrossing c = scratch.csg[i];
-        if (mesh.closed) {
-            if (c.insideAfter == inside) continue; // the same step again, at an edge
-            inside = c.insideAfter;
-        } else {
-            c.insideAfter = false;
-        }
-        scratch.csg[kept++] = c;
-    }
-    scratch.csg.resize(kept);
-}
-
 bool RenderScene::csgMayCross(int32_t root, const BoxRay& boxRay, double tMax) const {
     // In double precision and on (0, tMax), unlike the BVH's outward-rounded float boxes:
     // a ray leaving the surface of a CSG object whose face lies on its bounds (a box with
@@ -184,12 +133,12 @@ bool RenderScene::csgMayCross(int32_t root, const BoxRay& boxRay, double tMax) c
 }
 
 bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double tMax, Hit& hit,
-                                  QueryScratch& scratch, RayStats& stats) const {
+                                  QueryScratch& scratch, RayStats& stats, uint32_t skippedPart) const {
     if (object >= 0) {
         const Primitive& p = primitives[object];
         ++stats.intersectionTests;
         Crossing c{};
-        if (!firstCrossingIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, c)) return false;
+        if (!firstCrossingIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, c, skippedPart)) return false;
         hit = {c.t, object, c, false};
         return true;
     }
@@ -210,11 +159,11 @@ bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double 
 }
 
 bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats,
-                            int32_t departed) const {
+                            Departure departed) const {
     bool found = false;
     double nearest = tMax;
     for (const PlaneObject& plane : planes) {
-        if (plane.primitive == departed) continue;
+        if (departed.skips(plane.primitive)) continue;
         ++stats.intersectionTests;
         double t = planeCrossing(plane, ray);
         if (t > 0 && t < nearest) {
@@ -225,14 +174,16 @@ bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch&
     }
     const LazyBoxRay lazy(ray);
     for (int32_t object : unbounded) {
-        if (object != departed && nearestInObject(object, lazy, nearest, hit, scratch, stats)) {
+        if (!departed.skips(object) &&
+            nearestInObject(object, lazy, nearest, hit, scratch, stats, departed.skippedPart(object))) {
             nearest = hit.t;
             found = true;
         }
     }
     bvh.traverse(lazy, nearest, stats, [&](int32_t item) {
         const int32_t object = objects[item];
-        if (object != departed && nearestInObject(object, lazy, nearest, hit, scratch, stats)) {
+        if (!departed.skips(object) &&
+            nearestInObject(object, lazy, nearest, hit, scratch, stats, departed.skippedPart(object))) {
             nearest = hit.t;
             found = true;
         }
@@ -241,14 +192,30 @@ bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch&
     return found;
 }
 
-int32_t RenderScene::departedPrimitive(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const {
+Departure RenderScene::departedPrimitive(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const {
     // A face a CSG difference turned inside out: its normal points into the primitive.
-    if (hit.primitive < 0 || hit.flipNormal) return -1;
+    if (hit.primitive < 0 || hit.flipNormal) return {};
     // A face's plane or a convex solid's tangent plane has the whole primitive on one side;
     // the ray starts beyond it and moves away.
     const Geometry& geometry = primitives[hit.primitive].geometry;
-    if (isFlat(geometry) || (isBoundedConvex(geometry) && glm::dot(dir, si.normal) > 0)) return hit.primitive;
-    return -1;
+    if (isFlat(geometry) || (isBoundedConvex(geometry) && glm::dot(dir, si.normal) > 0)) return {hit.primitive};
+    if (std::holds_alternative<MeshGeometry>(geometry)) return {hit.primitive, hit.crossing.part};
+    return {};
+}
+
+uint64_t RenderScene::storedPrimitives() const {
+    uint64_t stored = primitives.size();
+    for (const auto& mesh : meshes) stored += mesh->data().triangles.size();
+    return stored;
+}
+
+uint64_t RenderScene::byteSize() const {
+    auto bytes = [](const auto& v) { return uint64_t(v.capacity()) * sizeof(v[0]); };
+    uint64_t total = sizeof(RenderScene) + bytes(primitives) + bytes(primitiveEntities) + bytes(transforms) +
+                     bytes(csgNodes) + bytes(meshes) + bytes(materials) + bytes(blends) + bytes(objects) +
+                     bytes(unbounded) + bytes(planes) + bvh.byteSize();
+    for (const auto& mesh : meshes) total += mesh->byteSize();
+    return total;
 }
 
 SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) const {

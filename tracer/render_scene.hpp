@@ -30,14 +30,13 @@ struct TransformPair {
 /// Merge: a union that keeps only its outer surface. Inverse: the complement of `left`
 /// (everything when left is -1, the inverse of nothing).
 /// Clip: the left child's crossings where the line is inside the right child (clipped_by).
-/// Mesh: a leaf of many primitives, the triangles of one mesh (RenderScene::meshOperands).
-enum class CsgNodeKind : uint8_t { Leaf, Union, Difference, Intersection, Merge, Inverse, Clip, Mesh };
+enum class CsgNodeKind : uint8_t { Leaf, Union, Difference, Intersection, Merge, Inverse, Clip };
 
 /// A node of a flattened CSG tree; a leaf refers to a primitive.
 struct CsgTreeNode {
     CsgNodeKind kind = CsgNodeKind::Leaf;
     int32_t left = -1, right = -1; ///< children (node indices) of an operator
-    int32_t primitive = -1;        ///< leaf; for a Mesh node, its index in meshOperands
+    int32_t primitive = -1;        ///< leaf
     Bounds3 bounds;                ///< world space; everything() when unbounded
     /// Whether queries test `bounds` before asking the node: not for leaves whose own
     /// crossing test costs about as much as the box test, nor for a difference (its bounds
@@ -46,15 +45,6 @@ struct CsgTreeNode {
     /// A bounded convex solid: a sphere, box, capped cylinder or cone, or an intersection of
     /// such. The line crosses it at most twice, so it is evaluated as one interval.
     bool convex = false;
-};
-
-/// A mesh used in CSG: its triangles, the primitives from `first` on, and a BVH over them
-/// (item i is primitive first + i). A closed mesh's crossings alternate between entering and
-/// leaving its solid; an open one's (the clipped side of a Clip) bound nothing.
-struct MeshOperand {
-    int32_t first = 0;
-    bool closed = false;
-    Bvh bvh;
 };
 
 /// A world ray prepared for CSG queries.
@@ -118,6 +108,18 @@ struct PlaneObject {
     int32_t primitive;
 };
 
+/// What a ray leaving a surface cannot meet again, so that queries need not test it
+/// (RenderScene::departedPrimitive): nothing, a whole primitive, or one face of a mesh.
+struct Departure {
+    int32_t primitive = -1;
+    uint32_t part = kNoPart; ///< the face; kNoPart: the whole primitive
+
+    /// Whether `object` (of the BVH or the unbounded list) need not be tested at all.
+    bool skips(int32_t object) const { return object == primitive && part == kNoPart; }
+    /// The face of `object` not to test (kNoPart: none).
+    uint32_t skippedPart(int32_t object) const { return object == primitive ? part : kNoPart; }
+};
+
 /// Per-thread scratch memory, so queries never allocate.
 struct QueryScratch {
     std::vector<CsgCrossing> csg;
@@ -141,24 +143,32 @@ public:
     std::vector<int32_t> primitiveEntities;
     std::vector<TransformPair> transforms;
     std::vector<CsgTreeNode> csgNodes;
-    std::vector<MeshOperand> meshOperands;
+    /// The meshes the primitives draw, each once however often it is drawn.
+    std::vector<std::shared_ptr<const TriangleMesh>> meshes;
     std::vector<ShadingMaterial> materials;
     std::vector<scene::BlendDesc> blends; ///< of the materials made of others
 
     /// Nearest hit with 0 < t < tMax. `departed` (from departedPrimitive) is not tested.
     bool intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats,
-                   int32_t departed = -1) const;
+                   Departure departed = {}) const;
     /// Calls visit(hit) for every surface crossing with 0 < t < tMax, in no particular
     /// order, until visit returns false; returns false if stopped early.
     /// `departed` (from departedPrimitive) is not tested.
     template <typename Visit>
-    bool forEachCrossing(const Ray& ray, double tMax, int32_t departed, QueryScratch& scratch, RayStats& stats,
-                         Visit&& visit) const;
-    /// The primitive that a ray from the hit's point (offset to the side it goes) in direction
-    /// `dir` cannot meet again, so that the queries need not test it: a flat one, or a bounded
-    /// convex solid the ray leaves outwards. -1 when it may: the ray enters the solid, or the
-    /// primitive is neither, or the hit is on a face a CSG difference turned inside out.
-    int32_t departedPrimitive(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const;
+    bool forEachCrossing(const Ray& ray, double tMax, Departure departed, QueryScratch& scratch,
+                         RayStats& stats, Visit&& visit) const;
+    /// What a ray from the hit's point (offset to the side it goes) in direction `dir` cannot
+    /// meet again, so that the queries need not test it: a flat primitive, a mesh's face, or a
+    /// bounded convex solid the ray leaves outwards. Nothing when it may: the ray enters the
+    /// solid, or the primitive is none of these, or the hit is on a face a CSG difference
+    /// turned inside out.
+    Departure departedPrimitive(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const;
+
+    /// The primitives stored: those drawn, and the meshes' triangles once each.
+    uint64_t storedPrimitives() const;
+    /// The bytes the scene holds: its primitives, transforms, CSG trees, BVH and meshes (not
+    /// what a shape keeps of its own, such as a prism's outline or a height field's grid).
+    uint64_t byteSize() const;
 
     /// The surface at the hit (uv only where the material reads it).
     SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
@@ -172,20 +182,15 @@ public:
 
 private:
     bool nearestInObject(int32_t object, const LazyBoxRay& ray, double tMax, Hit& hit, QueryScratch& scratch,
-                         RayStats& stats) const;
+                         RayStats& stats, uint32_t skippedPart) const;
     template <typename Visit>
     bool crossingsInObject(int32_t object, const LazyBoxRay& ray, double tMax, QueryScratch& scratch,
-                           RayStats& stats, Visit& visit) const;
+                           RayStats& stats, Visit& visit, uint32_t skippedPart) const;
     /// Whether the segment (0, tMax) can meet the CSG tree rooted at `root` (its bounds).
     bool csgMayCross(int32_t root, const BoxRay& boxRay, double tMax) const;
     /// Appends the node's crossings of the whole line to scratch.csg; returns whether the
     /// line starts inside. The caller has tested the node's bounds where that pays.
     bool csgCrossings(int32_t node, const CsgRay& ray, QueryScratch& scratch, RayStats& stats) const;
-    /// csgCrossings of a Mesh node: its triangles' crossings of the whole line, in order; of
-    /// a closed mesh only those that alternate between entering and leaving (a line through
-    /// an edge or a vertex meets the triangles around it more than once there).
-    void meshCrossings(const CsgTreeNode& node, const CsgRay& ray, QueryScratch& scratch,
-                       RayStats& stats) const;
     /// The crossings of an intersection of convex nodes, or of a difference of two, appended
     /// as csgCrossings appends them but without its general merge. False, with nothing
     /// appended, when the node is of neither kind or two crossings nearly coincide (the

@@ -11,12 +11,12 @@ inline double planeCrossing(const PlaneObject& plane, const Ray& ray) {
 
 template <typename Visit>
 bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, double tMax, QueryScratch& scratch,
-                                    RayStats& stats, Visit& visit) const {
+                                    RayStats& stats, Visit& visit, uint32_t skippedPart) const {
     if (object >= 0) {
         const Primitive& p = primitives[object];
         ++stats.intersectionTests;
         auto hit = [&](const Crossing& c) { return visit(Hit{c.t, object, c, false}); };
-        return crossingsIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, hit);
+        return crossingsIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, hit, skippedPart);
     }
     if (!csgMayCross(~object, ray.box(), tMax)) return true;
     size_t start = scratch.csg.size();
@@ -32,10 +32,10 @@ bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, doubl
 }
 
 template <typename Visit>
-bool RenderScene::forEachCrossing(const Ray& ray, double tMax, int32_t departed, QueryScratch& scratch,
+bool RenderScene::forEachCrossing(const Ray& ray, double tMax, Departure departed, QueryScratch& scratch,
                                   RayStats& stats, Visit&& visit) const {
     for (const PlaneObject& plane : planes) {
-        if (plane.primitive == departed) continue;
+        if (departed.skips(plane.primitive)) continue;
         ++stats.intersectionTests;
         double t = planeCrossing(plane, ray);
         if (t > 0 && t < tMax && !visit(Hit{t, plane.primitive, Crossing{t, 0}, false}))
@@ -43,10 +43,13 @@ bool RenderScene::forEachCrossing(const Ray& ray, double tMax, int32_t departed,
     }
     const LazyBoxRay lazy(ray);
     for (int32_t object : unbounded)
-        if (object != departed && !crossingsInObject(object, lazy, tMax, scratch, stats, visit)) return false;
+        if (!departed.skips(object) &&
+            !crossingsInObject(object, lazy, tMax, scratch, stats, visit, departed.skippedPart(object)))
+            return false;
     return bvh.traverse(lazy, tMax, stats, [&](int32_t item) {
         const int32_t object = objects[item];
-        return object == departed || crossingsInObject(object, lazy, tMax, scratch, stats, visit);
+        return departed.skips(object) ||
+               crossingsInObject(object, lazy, tMax, scratch, stats, visit, departed.skippedPart(object));
     });
 }
 

@@ -16,6 +16,7 @@
 
 #if defined(__linux__)
 #include <sched.h>
+#include <sys/resource.h>
 #endif
 
 namespace crt::tracer {
@@ -187,6 +188,13 @@ std::string isosurfaceWarnings(const scene::SceneDesc& desc, const RenderScene& 
     return warnings;
 }
 
+/// The most memory this process has held resident so far.
+uint64_t peakResidentBytes() {
+    rusage usage{};
+    if (getrusage(RUSAGE_SELF, &usage) != 0) return 0;
+    return static_cast<uint64_t>(usage.ru_maxrss) * 1024; // Linux counts kilobytes
+}
+
 /// Whether every tile is a non-empty rectangle inside the image; else says which is not.
 bool tilesFit(const std::vector<Tile>& tiles, int width, int height, std::string& error) {
     for (const Tile& t : tiles) {
@@ -244,7 +252,9 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     PixelSampler sampler(*prepared.integrator, *prepared.camera, settings, job.alpha);
     const int channels = job.alpha ? 4 : 3;
     outcome.buildSeconds = secondsSince(buildStart);
-    outcome.primitives = prepared.geometry->primitives.size();
+    outcome.primitives = prepared.geometry->storedPrimitives();
+    outcome.drawnPrimitives = prepared.geometry->primitives.size();
+    outcome.sceneBytes = prepared.geometry->byteSize();
     outcome.bvhNodes = prepared.geometry->bvh.nodeCount();
     outcome.bvhDepth = prepared.geometry->bvh.depth();
     outcome.shading = prepared.integrator->features().names();
@@ -292,6 +302,7 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
                                      : outcome.tilesDone < tileCount;
     outcome.ok = !outcome.cancelled;
     outcome.warnings = isosurfaceWarnings(desc, *prepared.geometry);
+    outcome.peakBytes = peakResidentBytes();
     return outcome;
 }
 

@@ -81,7 +81,10 @@ struct RenderOutcome {
     RayStats stats;
     double buildSeconds = 0;  ///< scene build: BVH, images, textures
     double renderSeconds = 0; ///< tracing
-    size_t primitives = 0;
+    uint64_t primitives = 0;     ///< stored: those drawn, and the meshes' triangles once each
+    uint64_t drawnPrimitives = 0; ///< of those, the ones drawn (a mesh drawn is one)
+    uint64_t sceneBytes = 0;     ///< what the render scene holds (RenderScene::byteSize)
+    uint64_t peakBytes = 0;      ///< the process's peak resident memory when the render ended
     size_t bvhNodes = 0;
     int bvhDepth = 0;
     uint64_t samples = 0; ///< camera samples per pixel (before depth of field)

@@ -19,6 +19,7 @@ public:
         : desc_(desc), scene_(scene), threads_(threads), error_(error) {}
 
     bool build() {
+        error_.clear(); // a mesh that cannot be read says so here
         scene_.materials.reserve(desc_.materials.size() + 1);
         for (const scene::MaterialDesc& m : desc_.materials) {
             scene_.materials.push_back({desc_.finishOf(m), m.color});
@@ -37,8 +38,9 @@ public:
                                  desc_.limits.maxPrimitives);
             return false;
         }
-        // Room for them from the start (a mesh counts as one until its file is read): a
-        // vector growing by doubling would copy and fault in its elements about twice.
+        // Room for them from the start (a mesh drawn is one primitive): a vector growing by
+        // doubling would copy and fault in its elements about twice.
+        storedPrimitives_ = drawn;
         scene_.primitives.reserve(drawn);
         scene_.primitiveEntities.reserve(drawn);
         scene_.objects.reserve(drawn);
@@ -83,10 +85,9 @@ private:
                 int32_t node = addCsg(op);
                 if (!error_.empty()) return false; // a mesh operand that cannot be read
                 if (node >= 0) scene_.objects.push_back(~node);
-            } else if (auto* m = std::get_if<scene::MeshShape>(&e.shape)) {
-                if (!addMesh(*m, op)) return false;
             } else {
                 int32_t p = addPrimitive(op);
+                if (!error_.empty()) return false; // a mesh that cannot be read
                 if (p >= 0) scene_.objects.push_back(p);
             }
         }
@@ -126,96 +127,63 @@ private:
     }
 
     int32_t addPrimitive(const Operand& op) {
-        const scene::Shape& shape = desc_.entities[op.entity].shape;
-        std::optional<Geometry> geometry;
-        if (auto* field = std::get_if<scene::HeightFieldShape>(&shape))
-            geometry = HeightFieldGeometry(heightGrids_.at(field->desc.get()), field->desc->smooth);
-        else
-            geometry = makeGeometry(shape, desc_.limits);
-        if (!geometry) return -1;
+        std::optional<Geometry> geometry = geometryOf(op);
+        if (!geometry) return -1; // nothing to draw, or error_ says why
         scene_.primitives.push_back(
             {std::move(*geometry), addTransform(op.transform), materialOf(op)});
         scene_.primitiveEntities.push_back(op.entity);
         return static_cast<int32_t>(scene_.primitives.size() - 1);
     }
 
-    /// The mesh's data, read once however often it is drawn; null (with error_ set) when it
-    /// cannot be read or its triangles would pass the primitive limit.
-    std::shared_ptr<const MeshData> meshData(const scene::MeshShape& mesh, const Operand& op) {
-        const scene::EntityDesc& e = desc_.entities[op.entity];
-        // The front end read the script's meshes; a description built otherwise names files.
-        const std::string& path = scene::fileToOpen(mesh.resolvedFile, mesh.file);
-        std::shared_ptr<const MeshData> data;
-        if (mesh.written >= 0) {
-            data = desc_.writtenMeshes[static_cast<size_t>(mesh.written)];
-        } else {
-            const auto& known = desc_.meshes.contains(path) ? desc_.meshes : meshes_;
-            auto cached = known.find(path);
-            if (cached == known.end()) {
-                std::optional<MeshData> read = scene::readMeshFile(path, scene::kDefaultMaxMeshSize, error_);
-                if (!read) return nullptr;
-                cached = meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*read))).first;
-            }
-            data = cached->second;
+    std::optional<Geometry> geometryOf(const Operand& op) {
+        const scene::Shape& shape = desc_.entities[op.entity].shape;
+        if (auto* field = std::get_if<scene::HeightFieldShape>(&shape))
+            return HeightFieldGeometry(heightGrids_.at(field->desc.get()), field->desc->smooth);
+        if (auto* mesh = std::get_if<scene::MeshShape>(&shape)) {
+            std::shared_ptr<const TriangleMesh> triangles = triangleMesh(*mesh, op);
+            if (!triangles) return std::nullopt;
+            return MeshGeometry(std::move(triangles));
         }
-        // The description counts a mesh as one primitive; here its triangles are known.
+        return makeGeometry(shape, desc_.limits);
+    }
+
+    /// The mesh's triangles under their BVH, read and built once however often it is drawn;
+    /// null (with error_ set) when it cannot be read or its triangles would pass the primitive
+    /// limit.
+    std::shared_ptr<const TriangleMesh> triangleMesh(const scene::MeshShape& mesh, const Operand& op) {
+        std::shared_ptr<const MeshData> data = meshData(mesh);
+        if (!data) return nullptr;
+        auto built = triangleMeshes_.find(data.get());
+        if (built != triangleMeshes_.end()) return built->second;
+        // The description counts each drawing of a mesh as one primitive; its triangles,
+        // stored once, count once, here where they are known.
         const size_t triangles = data->triangles.size();
         const uint64_t limit = desc_.limits.maxPrimitives;
-        if (triangles > limit - std::min<uint64_t>(scene_.primitives.size(), limit)) {
-            const std::string where = scene::spanLocation(desc_, e.source);
-            error_ = fmt::format("{}{}the scene expands to more than {} primitives with the {} "
+        storedPrimitives_ = scene::saturatingAdd(storedPrimitives_, triangles);
+        if (storedPrimitives_ > limit) {
+            const std::string where = scene::spanLocation(desc_, desc_.entities[op.entity].source);
+            error_ = fmt::format("{}{}the scene stores more than {} primitives with the {} "
                                  "triangles of {}; raise the limit with --max-primitives",
                                  where, where.empty() ? "" : ": error: ", limit, triangles,
-                                 mesh.written >= 0 ? "a Mesh" : path);
+                                 mesh.written >= 0 ? "a Mesh" : scene::fileToOpen(mesh.resolvedFile, mesh.file));
             return nullptr;
         }
-        return data;
+        auto made = std::make_shared<const TriangleMesh>(data, threads_);
+        triangleMeshes_.emplace(data.get(), made);
+        scene_.meshes.push_back(made);
+        return made;
     }
 
-    /// Adds the mesh's triangles as primitives; returns the first, or -1 on error.
-    int32_t addTriangles(const scene::MeshShape& mesh, const Operand& op) {
-        std::shared_ptr<const MeshData> data = meshData(mesh, op);
-        if (!data) return -1;
-        const auto first = static_cast<int32_t>(scene_.primitives.size());
-        const int32_t transform = addTransform(op.transform);
-        const int32_t material = materialOf(op);
-        for (size_t i = 0; i < data->triangles.size(); ++i) {
-            scene_.primitives.push_back({MeshTriangleGeometry(data, i), transform, material});
-            scene_.primitiveEntities.push_back(op.entity);
-        }
-        return first;
-    }
-
-    bool addMesh(const scene::MeshShape& mesh, const Operand& op) {
-        const int32_t first = addTriangles(mesh, op);
-        if (first < 0) return false;
-        for (auto p = static_cast<size_t>(first); p < scene_.primitives.size(); ++p)
-            scene_.objects.push_back(static_cast<int32_t>(p));
-        return true;
-    }
-
-    /// A mesh as a CSG operand: one leaf over its triangles, with a BVH of their own.
-    int32_t addMeshOperand(const scene::MeshShape& mesh, const Operand& op) {
-        const int32_t first = addTriangles(mesh, op);
-        if (first < 0) return -1; // error_ says why
-        const auto end = static_cast<int32_t>(scene_.primitives.size());
-        if (end == first) return -1;
-        MeshOperand operand;
-        operand.first = first;
-        std::vector<Bounds3> bounds;
-        CsgTreeNode leaf;
-        leaf.kind = CsgNodeKind::Mesh;
-        for (int32_t p = first; p < end; ++p) {
-            bounds.push_back(worldBounds(scene_.primitives[p]));
-            leaf.bounds.include(bounds.back());
-        }
-        operand.closed = isSolid(scene_.primitives[first].geometry);
-        operand.bvh.build(std::move(bounds), threads_);
-        leaf.primitive = static_cast<int32_t>(scene_.meshOperands.size());
-        leaf.testBounds = true;
-        scene_.meshOperands.push_back(std::move(operand));
-        scene_.csgNodes.push_back(leaf);
-        return static_cast<int32_t>(scene_.csgNodes.size() - 1);
+    /// The mesh's data: the front end's, or read here for a description built otherwise.
+    std::shared_ptr<const MeshData> meshData(const scene::MeshShape& mesh) {
+        if (mesh.written >= 0) return desc_.writtenMeshes[static_cast<size_t>(mesh.written)];
+        const std::string& path = scene::fileToOpen(mesh.resolvedFile, mesh.file);
+        const auto& known = desc_.meshes.contains(path) ? desc_.meshes : meshes_;
+        auto cached = known.find(path);
+        if (cached != known.end()) return cached->second;
+        std::optional<MeshData> read = scene::readMeshFile(path, scene::kDefaultMaxMeshSize, error_);
+        if (!read) return nullptr;
+        return meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*read))).first->second;
     }
 
     /// The operands of a chain of one associative operator, through transforms and groups.
@@ -253,7 +221,6 @@ private:
             scene_.csgNodes.push_back(node);
             return static_cast<int32_t>(scene_.csgNodes.size() - 1);
         }
-        if (auto* mesh = std::get_if<scene::MeshShape>(&e.shape)) return addMeshOperand(*mesh, operand);
         const scene::CsgNode* c = std::get_if<scene::CsgNode>(&e.shape);
         if (!c && !std::holds_alternative<scene::GroupNode>(e.shape)) {
             int32_t p = addPrimitive(operand);
@@ -411,6 +378,9 @@ private:
     std::string& error_;
     int32_t defaultMaterial_ = 0;
     std::map<std::string, std::shared_ptr<const MeshData>> meshes_;
+    std::map<const MeshData*, std::shared_ptr<const TriangleMesh>> triangleMeshes_;
+    /// The primitives drawn and the triangles of the meshes built so far.
+    uint64_t storedPrimitives_ = 0;
     std::map<const scene::HeightFieldDesc*, std::shared_ptr<const HeightGrid>> heightGrids_;
 };
 

@@ -72,6 +72,9 @@ struct RenderTotals {
         outcome.buildSeconds += r.buildSeconds;
         outcome.renderSeconds += r.renderSeconds;
         outcome.primitives = r.primitives;
+        outcome.drawnPrimitives = r.drawnPrimitives;
+        outcome.sceneBytes = std::max(outcome.sceneBytes, r.sceneBytes);
+        outcome.peakBytes = std::max(outcome.peakBytes, r.peakBytes);
         outcome.bvhNodes = r.bvhNodes;
         outcome.bvhDepth = r.bvhDepth;
         outcome.shading = r.shading;
@@ -86,15 +89,20 @@ struct RenderTotals {
 };
 
 void printStats(const RenderTotals& totals) {
+    constexpr double kMiB = 1 << 20;
     const tracer::RenderOutcome& r = totals.outcome;
     const tracer::RayStats& s = r.stats;
     std::cerr << fmt::format(
-        "crtc: stats: primitives {}, BVH nodes {}, BVH depth {}\n"
+        "crtc: stats: primitives {} ({} drawn, each mesh's triangles stored once), BVH nodes {}, "
+        "BVH depth {}\n"
+        "crtc: stats: memory: scene {:.2f} MiB ({:.0f} bytes a primitive), peak {:.1f} MiB\n"
         "crtc: stats: shading: {}\n"
         "crtc: stats: rays: camera {}, reflection {}, refraction {}, shadow {} (total {})\n"
         "crtc: stats: BVH nodes visited {}, intersection tests {}\n"
         "crtc: stats: build {:.3f}s, render {:.3f}s, frames reused unchanged {}\n",
-        r.primitives, r.bvhNodes, r.bvhDepth, r.shading, s.cameraRays, s.reflectionRays,
+        r.primitives, r.drawnPrimitives, r.bvhNodes, r.bvhDepth, r.sceneBytes / kMiB,
+        r.primitives > 0 ? double(r.sceneBytes) / double(r.primitives) : 0.0, r.peakBytes / kMiB,
+        r.shading, s.cameraRays, s.reflectionRays,
         s.refractionRays, s.shadowRays, s.totalRays(), s.nodesVisited, s.intersectionTests,
         r.buildSeconds, r.renderSeconds, totals.reusedFrames);
 }

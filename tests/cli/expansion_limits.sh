@@ -54,17 +54,21 @@ expect_status 1 "24,000,000 spheres never drawn, --max-entities 100000" "${limit
 expect_text "$work/err" "^$work/undrawn.crt:2:20: error: the script builds more than 100000 entities \(drawn or not\); raise the limit with --max-entities$" \
     "undrawn spheres: the entity error at the literal"
 
-# A mesh counts its triangles (the script reads it): three uses of a 4-triangle mesh are 12,
-# for --check as for a render.
+# A mesh's triangles are stored once however often it is drawn, and each drawing is one
+# primitive: three uses of a 4-triangle mesh are 4 + 3, for --check as for a render.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n' >"$work/tetra.obj"
 printf '%s\nm = Mesh { file -> "tetra.obj" }\nScene { m m m }\n' "$camera" >"$work/mesh.crt"
 for mode in --check "-o $work/mesh.png"; do
     # shellcheck disable=SC2086 # the mode is two words
-    expect_status 1 "three meshes of 4 triangles, --max-primitives 10, $mode" "$crtc" $mode --max-primitives 10 "$work/mesh.crt"
-    expect_text "$work/err" "^$work/mesh.crt:3:13: error: the scene draws more than 10 primitives" \
+    expect_status 1 "three meshes of 4 triangles, --max-primitives 6, $mode" "$crtc" $mode --max-primitives 6 "$work/mesh.crt"
+    expect_text "$work/err" "^$work/mesh.crt:3:13: error: the scene draws more than 6 primitives" \
+        "the mesh's drawings counted by $mode"
+    # shellcheck disable=SC2086
+    expect_status 1 "a mesh of 4 triangles, --max-primitives 3, $mode" "$crtc" $mode --max-primitives 3 "$work/mesh.crt"
+    expect_text "$work/err" "^$work/mesh.crt:2:20: error: the scene stores more than 3 primitives with the 4 triangles of this mesh" \
         "the mesh's triangles counted by $mode"
 done
-expect_status 0 "three meshes of 4 triangles, --max-primitives 12" "$crtc" --max-primitives 12 -o "$work/mesh.png" "$work/mesh.crt"
+expect_status 0 "three meshes of 4 triangles, --max-primitives 7" "$crtc" --max-primitives 7 -o "$work/mesh.png" "$work/mesh.crt"
 
 # Images: the size in the header is refused before any pixel is decoded. A 30000 x 30000
 # PNG (one bit a pixel, all zero: a few hundred KB) would decode to 13.5 GB of floats; so

@@ -22,6 +22,7 @@ SKIP = re.compile(r"<!-- transcript not checked: (.+?) -->")
 VARYING = [
     (re.compile(r"\d+\.\d+ Mrays/s"), "<rate> Mrays/s"),
     (re.compile(r"\d+\.\d+s\b"), "<time>s"),
+    (re.compile(r"peak \d+\.\d+ MiB"), "peak <memory> MiB"),
 ]
 PROGRESS = re.compile(r"^crtc: (frame .*)?\d+% \(\d+\.\d+s\)$")
 

@@ -45,7 +45,6 @@ bool isFlat(const Geometry& geometry) {
            std::holds_alternative<DiscGeometry>(geometry) ||
            std::holds_alternative<QuadGeometry>(geometry) ||
            std::holds_alternative<TriangleGeometry>(geometry) ||
-           std::holds_alternative<MeshTriangleGeometry>(geometry) ||
            std::holds_alternative<PolygonGeometry>(geometry);
 }
 
@@ -80,7 +79,8 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::Ren
             else if constexpr (std::is_same_v<S, scene::PolygonShape>)
                 return Geometry(PolygonGeometry(s));
             else if constexpr (std::is_same_v<S, scene::SmoothTriangleShape>)
-                return Geometry(MeshTriangleGeometry(s.mesh, 0));
+                return s.mesh ? std::optional<Geometry>(MeshGeometry(std::make_shared<const TriangleMesh>(s.mesh)))
+                              : std::nullopt;
             else if constexpr (std::is_same_v<S, scene::PrismShape>)
                 return Geometry(PrismGeometry(s));
             else if constexpr (std::is_same_v<S, scene::SorShape>)
@@ -103,10 +103,13 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::Ren
         shape);
 }
 
-bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit) {
+bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
+                 uint32_t skippedPart) {
     return std::visit(
         [&](const auto& g) {
-            if constexpr (requires { g.crossingsIn(ray, tMin, tMax, visit); }) {
+            if constexpr (requires { g.crossingsIn(ray, tMin, tMax, visit, skippedPart); }) {
+                return g.crossingsIn(ray, tMin, tMax, visit, skippedPart);
+            } else if constexpr (requires { g.crossingsIn(ray, tMin, tMax, visit); }) {
                 return g.crossingsIn(ray, tMin, tMax, visit);
             } else {
                 CrossingList list;
@@ -119,7 +122,10 @@ bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double t
         geometry);
 }
 
-bool firstCrossingIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out) {
+bool firstCrossingIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out,
+                     uint32_t skippedPart) {
+    if (auto* mesh = std::get_if<MeshGeometry>(&geometry))
+        return mesh->firstCrossingIn(ray, tMin, tMax, out, skippedPart);
     bool found = false;
     auto first = [&](const Crossing& c) {
         out = c;

@@ -9,7 +9,7 @@
 #include "tracer/geometry/height_field.hpp"
 #include "tracer/geometry/isosurface.hpp"
 #include "tracer/geometry/lathe.hpp"
-#include "tracer/geometry/mesh_triangle.hpp"
+#include "tracer/geometry/mesh.hpp"
 #include "tracer/geometry/plane.hpp"
 #include "tracer/geometry/polygon.hpp"
 #include "tracer/geometry/prism.hpp"
@@ -30,7 +30,7 @@ namespace crt::tracer {
 /// One primitive in its object space.
 using Geometry =
     std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry, ConeGeometry,
-                 TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshTriangleGeometry,
+                 TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshGeometry,
                  SuperellipsoidGeometry, PolygonGeometry, PrismGeometry, SorGeometry, LatheGeometry,
                  TextGeometry, BlobGeometry, IsosurfaceGeometry, HeightFieldGeometry,
                  SphereSweepGeometry>;
@@ -56,16 +56,20 @@ bool isFlat(const Geometry& geometry);
 bool hasCheapCrossings(const Geometry& geometry);
 
 /// The primitive of a plain shape; nullopt for CSG, transform and group nodes, for meshes
-/// (which become one MeshTriangleGeometry per triangle once the file is read) and for height
-/// fields (HeightFieldGeometry, once their heights are read).
+/// (MeshGeometry, once the file is read) and for height fields (HeightFieldGeometry, once
+/// their heights are read).
 /// `limits`: the work a primitive may do for one line (an isosurface's evaluations).
 std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::RenderLimits& limits = {});
 
 /// Visits the crossings with tMin < t < tMax in order until the visitor returns false (then
 /// false): crossLine's, or a search of the window alone where the primitive has one (an
-/// isosurface, whose search along the line is long).
-bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit);
-/// The first crossing with tMin < t < tMax, for nearest-hit queries: crossingsIn's first.
-bool firstCrossingIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out);
+/// isosurface, whose search along the line is long; a mesh's BVH). `skippedPart`: a face the
+/// ray leaves from, which a mesh need not test (kNoPart: none).
+bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
+                 uint32_t skippedPart = kNoPart);
+/// The first crossing with tMin < t < tMax, for nearest-hit queries: crossingsIn's first, or
+/// a nearest-first search where the primitive has one (a mesh). `skippedPart` as above.
+bool firstCrossingIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out,
+                     uint32_t skippedPart = kNoPart);
 
 } // namespace crt::tracer

@@ -24,6 +24,9 @@ struct Crossing {
     uint32_t part;
 };
 
+/// No part: a face index that names none.
+inline constexpr uint32_t kNoPart = ~0u;
+
 /// The crossings of one line, ascending. Eight are kept in place (a torus has four, a
 /// star-shaped superellipsoid up to six, most primitives two or fewer); a shape with more,
 /// such as a prism with many walls, spills the rest to the heap.

@@ -26,8 +26,7 @@ Bounds3 TriangleGeometry::bounds() const {
     return b; // the vertices themselves: exact
 }
 
-bool TriangleGeometry::intersect(const Ray& ray, double& t, Vec3& weights) const {
-    if (empty_) return false;
+bool crossTriangle(const Vec3 (&p)[3], const Ray& ray, double& t, Vec3& weights) {
     // Translate to the origin, permute so the direction's largest component is z, and shear
     // the direction onto +z: the test becomes 2D edge functions at (0, 0), evaluated the same
     // way for an edge shared by two triangles.
@@ -39,7 +38,7 @@ bool TriangleGeometry::intersect(const Ray& ray, double& t, Vec3& weights) const
     double sx = -ray.dir[kx] / dz, sy = -ray.dir[ky] / dz, sz = 1 / dz;
     double x[3], y[3], z[3];
     for (int i = 0; i < 3; ++i) {
-        Vec3 q = p_[i] - ray.origin;
+        Vec3 q = p[i] - ray.origin;
         x[i] = q[kx] + sx * q[kz];
         y[i] = q[ky] + sy * q[kz];
         z[i] = q[kz] * sz;
@@ -53,6 +52,10 @@ bool TriangleGeometry::intersect(const Ray& ray, double& t, Vec3& weights) const
     t = (e0 * z[0] + e1 * z[1] + e2 * z[2]) / det;
     weights = Vec3(e0, e1, e2) / det;
     return std::isfinite(t);
+}
+
+bool TriangleGeometry::intersect(const Ray& ray, double& t, Vec3& weights) const {
+    return !empty_ && crossTriangle(p_, ray, t, weights);
 }
 
 CRT_FMA_VERSIONS void TriangleGeometry::crossLine(const Ray& ray, CrossingList& out) const {

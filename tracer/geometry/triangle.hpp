@@ -6,6 +6,12 @@
 
 namespace crt::tracer {
 
+/// The watertight line-triangle test (Woop et al.) on corners p: the line's parameter t and
+/// the barycentric weights of the three corners, or false. A line through a shared edge or
+/// vertex of a mesh crosses at least one of the triangles around it; a line parallel to the
+/// triangle, or a degenerate triangle, crosses nothing.
+bool crossTriangle(const Vec3 (&p)[3], const Ray& ray, double& t, Vec3& weights);
+
 /// The triangle (a, b, c). Normal: (b − a) × (c − a), normalised (right-hand rule).
 /// UV: the barycentric weights of b and c.
 class TriangleGeometry {

@@ -12,6 +12,9 @@ FrameDone frameDoneOf(const tracer::RenderOutcome& outcome) {
     done.buildSeconds = outcome.buildSeconds;
     done.renderSeconds = outcome.renderSeconds;
     done.primitives = outcome.primitives;
+    done.drawnPrimitives = outcome.drawnPrimitives;
+    done.sceneBytes = outcome.sceneBytes;
+    done.peakBytes = outcome.peakBytes;
     done.bvhNodes = outcome.bvhNodes;
     done.bvhDepth = outcome.bvhDepth;
     done.ok = outcome.ok ? 1 : 0;
@@ -25,6 +28,9 @@ tracer::RenderOutcome outcomeOf(const FrameDone& done) {
     outcome.buildSeconds = done.buildSeconds;
     outcome.renderSeconds = done.renderSeconds;
     outcome.primitives = done.primitives;
+    outcome.drawnPrimitives = done.drawnPrimitives;
+    outcome.sceneBytes = done.sceneBytes;
+    outcome.peakBytes = done.peakBytes;
     outcome.bvhNodes = done.bvhNodes;
     outcome.bvhDepth = done.bvhDepth;
     outcome.ok = done.ok != 0;

@@ -32,7 +32,8 @@ struct FrameDone {
     int32_t frame = 0;
     uint64_t rays[7]{}; ///< camera, reflection, refraction, shadow, nodes, tests, cached
     double buildSeconds = 0, renderSeconds = 0;
-    uint64_t primitives = 0, bvhNodes = 0;
+    uint64_t primitives = 0, drawnPrimitives = 0, bvhNodes = 0;
+    uint64_t sceneBytes = 0, peakBytes = 0;
     int32_t bvhDepth = 0;
     int32_t ok = 0;
 };

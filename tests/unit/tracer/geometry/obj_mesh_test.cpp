@@ -176,35 +176,61 @@ TEST_CASE("obj: reading files") {
     fs::remove(path);
 }
 
-TEST_CASE("mesh triangle: interpolated normals and UVs") {
-    auto mesh =
+TEST_CASE("mesh: interpolated normals and UVs, each crossing naming its triangle") {
+    auto data =
         std::make_shared<MeshData>(parseOk("v 0 0 0\nv 1 0 0\nv 0 1 0\n"
                                            "vt 0 0\nvt 1 0\nvt 0 1\n"
                                            "vn 0 0 -1\nvn 1 0 -1\nvn 0 1 -1\n"
                                            "f 1/1/1 2/2/2 3/3/3\nf 1 2 3\nf 1//1 2//2 3//3\n"));
-    MeshTriangleGeometry g(mesh, 0);
+    MeshGeometry g(std::make_shared<const TriangleMesh>(data));
     CHECK_FALSE(g.solid());
     Ray ray{{0.25, 0.25, 1}, {0, 0, -1}};
     CrossingList list;
     g.crossLine(ray, list);
-    REQUIRE(list.count == 1);
-    SurfacePoint sp = g.surfaceAt(ray, list[0]);
+    REQUIRE(list.count == 3); // the three triangles lie on one another
+    Crossing first{list[0].t, 0};
+    SurfacePoint sp = g.surfaceAt(ray, first);
     CHECK(sp.uv.x == Approx(0.25));
     CHECK(sp.uv.y == Approx(0.25));
     checkUnit(sp.shadingNormal);
     CHECK(glm::length(sp.shadingNormal - glm::normalize(Vec3(0.25, 0.25, -1))) < 1e-12);
-    // The winding says +z, the vertex normals say −z: the geometric normal follows them.
+    // The face turns toward its vertex normals.
     CHECK(sp.normal == Vec3(0, 0, -1));
     CHECK(sp.point == Vec3(0.25, 0.25, 0));
 
-    MeshTriangleGeometry plain(mesh, 1); // no normals, no UVs
-    sp = plain.surfaceAt(ray, list[0]);
+    sp = g.surfaceAt(ray, Crossing{list[0].t, 1}); // no normals, no UVs
     CHECK(sp.normal == Vec3(0, 0, 1));
     CHECK(sp.shadingNormal == sp.normal);
     CHECK(sp.uv.x == Approx(0.25)); // barycentric
 
-    MeshTriangleGeometry outOfRange(mesh, 7);
-    outOfRange.crossLine(ray, list);
+    Crossing nearest{};
+    REQUIRE(g.firstCrossingIn(ray, 0, kInfinity, nearest, kNoPart));
+    CHECK(nearest.t == 1);
+    // The face a ray leaves from is not met again; the others still are.
+    int met = 0;
+    auto count = [&](const Crossing& c) {
+        CHECK(c.part != 1);
+        ++met;
+        return true;
+    };
+    g.crossingsIn(ray, 0, kInfinity, count, 1);
+    CHECK(met == 2);
+}
+
+TEST_CASE("mesh: triangles out of range, not finite or of no area are crossed by no line") {
+    auto data = std::make_shared<MeshData>();
+    data->positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}, {kInfinity, 0, 0}};
+    data->triangles = {{{0, 1, 7}, {-1, -1, -1}, {-1, -1, -1}},
+                       {{0, 1, 3}, {-1, -1, -1}, {-1, -1, -1}},
+                       {{0, 1, 4}, {-1, -1, -1}, {-1, -1, -1}}};
+    MeshGeometry g(std::make_shared<const TriangleMesh>(data));
+    CHECK(g.bounds().empty());
+    CrossingList list;
+    g.crossLine(Ray{{0.5, 0, 1}, {0, 0, -1}}, list);
     CHECK(list.count == 0);
-    CHECK(outOfRange.bounds().empty());
+    data->triangles.push_back({{0, 1, 2}, {-1, -1, -1}, {-1, -1, -1}});
+    MeshGeometry one(std::make_shared<const TriangleMesh>(data));
+    one.crossLine(Ray{{0.25, 0.25, 1}, {0, 0, -1}}, list);
+    REQUIRE(list.count == 1);
+    CHECK(list[0].part == 3);
 }

@@ -89,7 +89,7 @@ TEST_CASE("BVH: every crossing query agrees with brute force counts", "[bvh]") {
     for (int i = 0; i < 500; ++i) {
         Ray ray{Vec3(rng.uniform() * 10, 12, rng.uniform() * 10), glm::normalize(Vec3(rng.uniform() - 0.5, -1, rng.uniform() - 0.5))};
         int counted = 0;
-        scene->forEachCrossing(ray, kInfinity, -1, scratch, stats, [&](const Hit&) {
+        scene->forEachCrossing(ray, kInfinity, {}, scratch, stats, [&](const Hit&) {
             ++counted;
             return true;
         });

@@ -53,7 +53,7 @@ using CrossingSet = std::vector<std::pair<double, int32_t>>;
 
 CrossingSet crossings(const RenderScene& scene, const Ray& ray, QueryScratch& scratch, RayStats& stats) {
     CrossingSet out;
-    scene.forEachCrossing(ray, kInfinity, -1, scratch, stats, [&](const Hit& hit) {
+    scene.forEachCrossing(ray, kInfinity, {}, scratch, stats, [&](const Hit& hit) {
         out.emplace_back(hit.t, hit.primitive);
         return true;
     });

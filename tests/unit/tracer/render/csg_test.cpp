@@ -23,7 +23,7 @@ struct Probe {
     bool hit(const Ray& ray, Hit& hit) { return scene->intersect(ray, kInfinity, hit, scratch, stats); }
     int crossings(const Ray& ray) {
         int n = 0;
-        scene->forEachCrossing(ray, kInfinity, -1, scratch, stats,
+        scene->forEachCrossing(ray, kInfinity, {}, scratch, stats,
                                [&](const Hit&) { return ++n, true; });
         return n;
     }

@@ -1,0 +1,190 @@
+// A triangle mesh as one primitive: its BVH, line crossings and surface points.
+#include "tracer/geometry/mesh.hpp"
+
+#include "tracer/geometry/triangle.hpp"
+
+#include <algorithm>
+
+namespace crt::tracer {
+
+namespace {
+
+template <class T> bool allValid(const int32_t (&idx)[3], const std::vector<T>& values) {
+    for (int32_t i : idx)
+        if (i < 0 || size_t(i) >= values.size()) return false;
+    return true;
+}
+
+/// A crossing of one triangle while a closed mesh's crossings are gathered: whether the line
+/// enters the solid there rides in the part's top bit until they are sorted and walked.
+constexpr uint32_t kEnters = 1u << 31;
+
+} // namespace
+
+TriangleMesh::TriangleMesh(std::shared_ptr<const MeshData> data, unsigned threads)
+    : data_(std::move(data)) {
+    std::vector<Bounds3> bounds;
+    std::vector<int32_t> ids;
+    bounds.reserve(data_->triangles.size());
+    for (size_t i = 0; i < data_->triangles.size(); ++i) {
+        if (!allValid(data_->triangles[i].v, data_->positions)) continue;
+        Vec3 p[3];
+        corners(static_cast<uint32_t>(i), p);
+        Bounds3 b = Bounds3::of(p[0], p[1]);
+        b.include(p[2]);
+        const double area = glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+        if (!b.finite() || !(area > 0) || !std::isfinite(area)) continue;
+        bounds.push_back(b);
+        ids.push_back(static_cast<int32_t>(i));
+        bounds_.include(b);
+    }
+    // Item i is triangle i unless some were left out.
+    if (ids.size() == data_->triangles.size()) ids.clear();
+    bvh_.build(std::move(bounds), threads, std::move(ids));
+}
+
+void MeshGeometry::crossLine(const Ray& ray, CrossingList& out) const {
+    out.count = 0;
+    out.startsInside = false;
+    // The BVH is searched on (0, tMax): from a point before the mesh's bounds, so that the
+    // whole line through them is.
+    const Bounds3& b = mesh_->bounds();
+    LineSpan span;
+    if (b.empty() || !lineSpan(ray, b.lo, b.hi, span)) return;
+    const double start = span.enter - 0.5 * (span.exit - span.enter) - 1;
+    const Ray from{ray.at(start), ray.dir};
+    const double length = 2 * (span.exit - start) + 1;
+    const bool closed = solid();
+    const bool inward = mesh_->data().inward;
+    RayStats unused;
+    mesh_->bvh().traverse(LazyBoxRay(from), length, unused, [&](int32_t item) {
+        Vec3 p[3];
+        mesh_->corners(static_cast<uint32_t>(item), p);
+        double t;
+        Vec3 weights;
+        if (!crossTriangle(p, from, t, weights)) return true;
+        auto part = static_cast<uint32_t>(item);
+        if (closed) {
+            // Against the outward normal: the right-hand one, or the left-hand one inward.
+            const double facing = glm::dot(glm::cross(p[1] - p[0], p[2] - p[0]), ray.dir);
+            if ((facing < 0) != inward) part |= kEnters;
+        }
+        out.add(start + t, part);
+        return true;
+    });
+    Crossing* first = &out[0];
+    // At one t, entries before exits: a line grazing the silhouette along an edge enters and
+    // leaves there, and the other order would skip the exit and stay inside.
+    std::sort(first, first + out.count, [](const Crossing& a, const Crossing& c) {
+        return a.t != c.t ? a.t < c.t : (a.part & kEnters) > (c.part & kEnters);
+    });
+    if (!closed) return;
+    int kept = 0;
+    bool inside = false;
+    for (int i = 0; i < out.count; ++i) {
+        const bool enters = (out[i].part & kEnters) != 0;
+        if (enters == inside) continue; // the same step again, at an edge
+        inside = enters;
+        out[kept++] = {out[i].t, out[i].part & ~kEnters};
+    }
+    out.count = kept;
+}
+
+bool MeshGeometry::crossingsIn(const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
+                               uint32_t skippedPart) const {
+    CrossingList list;
+    RayStats unused;
+    mesh_->bvh().traverse(LazyBoxRay(ray), tMax, unused, [&](int32_t item) {
+        const auto part = static_cast<uint32_t>(item);
+        if (part == skippedPart) return true;
+        Vec3 p[3];
+        mesh_->corners(part, p);
+        double t;
+        Vec3 weights;
+        if (crossTriangle(p, ray, t, weights) && t > tMin && t < tMax) list.add(t, part);
+        return true;
+    });
+    list.sortByT();
+    for (int i = 0; i < list.count; ++i)
+        if (!visit(list[i])) return false;
+    return true;
+}
+
+bool MeshGeometry::firstCrossingIn(const Ray& ray, double tMin, double tMax, Crossing& out,
+                                   uint32_t skippedPart) const {
+    double nearest = tMax; // the traversal skips what lies beyond it as it shrinks
+    bool found = false;
+    RayStats unused;
+    mesh_->bvh().traverse(LazyBoxRay(ray), nearest, unused, [&](int32_t item) {
+        const auto part = static_cast<uint32_t>(item);
+        if (part == skippedPart) return true;
+        Vec3 p[3];
+        mesh_->corners(part, p);
+        double t;
+        Vec3 weights;
+        if (crossTriangle(p, ray, t, weights) && t > tMin && t < nearest) {
+            nearest = t;
+            out = {t, part};
+            found = true;
+        }
+        return true;
+    });
+    return found;
+}
+
+SurfacePoint MeshGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {
+    const MeshData& data = mesh_->data();
+    Vec3 corners[3];
+    mesh_->corners(crossing.part, corners);
+    const TriangleGeometry face(scene::TriangleShape{corners[0], corners[1], corners[2]});
+    SurfacePoint sp = face.surfaceAt(ray, crossing, wantUv);
+    if (solid() && data.inward) sp.normal = sp.shadingNormal = -sp.normal;
+    const MeshData::Triangle& tri = data.triangles[crossing.part];
+    const bool hasNormals = allValid(tri.n, data.normals);
+    const bool hasUvs = wantUv && allValid(tri.uv, data.uvs);
+    if (!hasNormals && !hasUvs) return sp;
+    const Vec3 b = face.barycentrics(ray, crossing);
+    if (hasNormals) {
+        Vec3 n = b.x * data.normals[size_t(tri.n[0])] + b.y * data.normals[size_t(tri.n[1])] +
+                 b.z * data.normals[size_t(tri.n[2])];
+        double len = glm::length(n);
+        if (len > 0 && std::isfinite(len)) {
+            sp.shadingNormal = n / len;
+            // A solid's winding says which side is out; a surface's vertex normals do.
+            if (glm::dot(sp.normal, sp.shadingNormal) < 0) {
+                if (solid())
+                    sp.shadingNormal = -sp.shadingNormal;
+                else
+                    sp.normal = -sp.normal;
+            }
+        }
+    }
+    if (hasUvs) {
+        const Vec2 uv[3] = {data.uvs[size_t(tri.uv[0])], data.uvs[size_t(tri.uv[1])],
+                            data.uvs[size_t(tri.uv[2])]};
+        sp.uv = b.x * uv[0] + b.y * uv[1] + b.z * uv[2];
+        tangentsFromUvs(tri, uv, sp);
+    }
+    return sp;
+}
+
+void MeshGeometry::tangentsFromUvs(const MeshData::Triangle& tri, const Vec2 (&uv)[3],
+                                   SurfacePoint& sp) const {
+    // The corners' positions and uvs relate by p − p2 = (u − u2)·dpdu + (v − v2)·dpdv (pbrt's
+    // solution of that 2×2 system). Corners whose uvs are collinear parameterise nothing.
+    const MeshData& data = mesh_->data();
+    const Vec3& p0 = data.positions[size_t(tri.v[0])];
+    const Vec3& p1 = data.positions[size_t(tri.v[1])];
+    const Vec3& p2 = data.positions[size_t(tri.v[2])];
+    Vec2 duv02 = uv[0] - uv[2], duv12 = uv[1] - uv[2];
+    Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
+    double det = differenceOfProducts(duv02.x, duv12.y, duv02.y, duv12.x);
+    if (!(std::abs(det) > 1e-12 * (sumAbs(Vec3(duv02, 0)) * sumAbs(Vec3(duv12, 0))))) {
+        sp.dpdu = sp.dpdv = Vec3(0.0);
+        return;
+    }
+    sp.dpdu = (duv12.y * dp02 - duv02.y * dp12) / det;
+    sp.dpdv = (duv02.x * dp12 - duv12.x * dp02) / det;
+}
+
+} // namespace crt::tracer
