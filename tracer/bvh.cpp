@@ -317,15 +317,16 @@ void Bvh::build(std::vector<Bounds3> itemBounds, unsigned threads, std::vector<i
     Builder builder(items, items.size());
     builder.build(0, items.size(), 0, parallelLevels);
     items_ = std::move(builder.order);
-    nodes_.reserve(builder.nodes.size() / 2 + 1);
-    Collapser(builder.nodes, nodes_).collapse(0, depth_);
-    nodes_.shrink_to_fit(); // the reserve is a bound; the tree is stored for the whole render
     // The build leaves the items in the order of the leaves, as items_ lists them.
     if (items_.size() <= kFewItems)
         for (const BuildItem& item : items) {
             const Bounds3& b = item.bounds;
             fewItemBounds_.push_back({{b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z}});
         }
+    items = {}; // not held while the wide tree is made beside the binary one
+    nodes_.reserve(builder.nodes.size() / 2 + 1);
+    Collapser(builder.nodes, nodes_).collapse(0, depth_);
+    nodes_.shrink_to_fit(); // the reserve is a bound; the tree is stored for the whole render
 }
 
 } // namespace crt::tracer
