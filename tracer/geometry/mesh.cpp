@@ -15,6 +15,24 @@ template <class T> bool allValid(const int32_t (&idx)[3], const std::vector<T>& 
     return true;
 }
 
+/// Calls crossed(t, triangle, corners) for each triangle but `skipped` that the line crosses
+/// within the BVH's search of (0, tMax); tMax may shrink meanwhile (a nearest-hit search).
+template <typename Crossed>
+void forEachCrossedTriangle(const TriangleMesh& mesh, const Ray& ray, const double& tMax, uint32_t skipped,
+                            Crossed&& crossed) {
+    RayStats unused;
+    mesh.bvh().traverse(LazyBoxRay(ray), tMax, unused, [&](int32_t item) {
+        const auto triangle = static_cast<uint32_t>(item);
+        if (triangle == skipped) return true;
+        Vec3 p[3];
+        mesh.corners(triangle, p);
+        double t;
+        Vec3 weights;
+        if (crossTriangle(p, ray, t, weights)) crossed(t, triangle, p);
+        return true;
+    });
+}
+
 /// A crossing of one triangle while a closed mesh's crossings are gathered: whether the line
 /// enters the solid there rides in the part's top bit until they are sorted and walked.
 constexpr uint32_t kEnters = 1u << 31;
@@ -56,21 +74,14 @@ void MeshGeometry::crossLine(const Ray& ray, CrossingList& out) const {
     const double length = 2 * (span.exit - start) + 1;
     const bool closed = solid();
     const bool inward = mesh_->data().inward;
-    RayStats unused;
-    mesh_->bvh().traverse(LazyBoxRay(from), length, unused, [&](int32_t item) {
-        Vec3 p[3];
-        mesh_->corners(static_cast<uint32_t>(item), p);
-        double t;
-        Vec3 weights;
-        if (!crossTriangle(p, from, t, weights)) return true;
-        auto part = static_cast<uint32_t>(item);
+    forEachCrossedTriangle(*mesh_, from, length, kNoPart, [&](double t, uint32_t triangle, const Vec3 (&p)[3]) {
+        uint32_t part = triangle;
         if (closed) {
             // Against the outward normal: the right-hand one, or the left-hand one inward.
             const double facing = glm::dot(glm::cross(p[1] - p[0], p[2] - p[0]), ray.dir);
             if ((facing < 0) != inward) part |= kEnters;
         }
         out.add(start + t, part);
-        return true;
     });
     Crossing* first = &out[0];
     // At one t, entries before exits: a line grazing the silhouette along an edge enters and
@@ -93,16 +104,8 @@ void MeshGeometry::crossLine(const Ray& ray, CrossingList& out) const {
 bool MeshGeometry::crossingsIn(const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
                                uint32_t skippedPart) const {
     CrossingList list;
-    RayStats unused;
-    mesh_->bvh().traverse(LazyBoxRay(ray), tMax, unused, [&](int32_t item) {
-        const auto part = static_cast<uint32_t>(item);
-        if (part == skippedPart) return true;
-        Vec3 p[3];
-        mesh_->corners(part, p);
-        double t;
-        Vec3 weights;
-        if (crossTriangle(p, ray, t, weights) && t > tMin && t < tMax) list.add(t, part);
-        return true;
+    forEachCrossedTriangle(*mesh_, ray, tMax, skippedPart, [&](double t, uint32_t triangle, const Vec3 (&)[3]) {
+        if (t > tMin && t < tMax) list.add(t, triangle);
     });
     list.sortByT();
     for (int i = 0; i < list.count; ++i)
@@ -114,20 +117,12 @@ bool MeshGeometry::firstCrossingIn(const Ray& ray, double tMin, double tMax, Cro
                                    uint32_t skippedPart) const {
     double nearest = tMax; // the traversal skips what lies beyond it as it shrinks
     bool found = false;
-    RayStats unused;
-    mesh_->bvh().traverse(LazyBoxRay(ray), nearest, unused, [&](int32_t item) {
-        const auto part = static_cast<uint32_t>(item);
-        if (part == skippedPart) return true;
-        Vec3 p[3];
-        mesh_->corners(part, p);
-        double t;
-        Vec3 weights;
-        if (crossTriangle(p, ray, t, weights) && t > tMin && t < nearest) {
+    forEachCrossedTriangle(*mesh_, ray, nearest, skippedPart, [&](double t, uint32_t triangle, const Vec3 (&)[3]) {
+        if (t > tMin && t < nearest) {
             nearest = t;
-            out = {t, part};
+            out = {t, triangle};
             found = true;
         }
-        return true;
     });
     return found;
 }
