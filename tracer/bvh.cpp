@@ -19,31 +19,79 @@ constexpr int kMaxDepth = 56; // below the traversal stack's 64 entries
 // millisecond or less, not worth a thread of their own.
 constexpr size_t kParallelItems = 8192;
 
+/// Frees a vector's memory (assigning {} keeps it: that assigns an empty initializer list).
+template <typename T> void release(std::vector<T>& v) { std::vector<T>().swap(v); }
+
+float roundDown(double v) {
+    float f = static_cast<float>(v);
+    return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+
+float roundUp(double v) {
+    float f = static_cast<float>(v);
+    return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+/// A box in single precision, its faces rounded outwards from the bounds it stands for: as
+/// the wide tree stores boxes, and in half the bytes of a Bounds3, so that the build's items
+/// and nodes take 32 bytes each.
+struct FloatBox {
+    float lo[3] = {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
+                   std::numeric_limits<float>::infinity()};
+    float hi[3] = {-std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                   -std::numeric_limits<float>::infinity()};
+
+    static FloatBox outward(const Bounds3& b) {
+        FloatBox f;
+        for (int axis = 0; axis < 3; ++axis) {
+            f.lo[axis] = roundDown(b.lo[axis]);
+            f.hi[axis] = roundUp(b.hi[axis]);
+        }
+        return f;
+    }
+    void include(const FloatBox& o) {
+        for (int axis = 0; axis < 3; ++axis) {
+            lo[axis] = std::min(lo[axis], o.lo[axis]);
+            hi[axis] = std::max(hi[axis], o.hi[axis]);
+        }
+    }
+    // Measured on the faces clamped to the finite floats, so that a box reaching past them
+    // (its faces rounded to infinity) still has a centroid and an area to compare.
+    double clampedLo(int axis) const { return std::max(lo[axis], -std::numeric_limits<float>::max()); }
+    double clampedHi(int axis) const { return std::min(hi[axis], std::numeric_limits<float>::max()); }
+    double centroid(int axis) const { return 0.5 * (clampedLo(axis) + clampedHi(axis)); }
+    double surfaceArea() const {
+        double e[3];
+        for (int axis = 0; axis < 3; ++axis) e[axis] = std::max(clampedHi(axis) - clampedLo(axis), 0.0);
+        return 2 * (e[0] * e[1] + e[1] * e[2] + e[2] * e[0]);
+    }
+};
+
 /// A node of the binary tree the build makes before it is collapsed into the wide one: a
 /// leaf holds items[offset .. offset+count); an interior node's first child follows it
 /// directly and its second child is nodes[offset].
 struct BinaryNode {
-    Bounds3 bounds;
+    FloatBox bounds;
     int32_t offset = 0;
     uint16_t count = 0;
 };
 
 struct BuildItem {
-    Bounds3 bounds;
-    int32_t index;
-    uint8_t bin; ///< set by bestSplit for the node being split (in what was padding)
+    FloatBox bounds;
+    int32_t index; ///< the item's position in the build's input
+    uint8_t bin;   ///< set by bestSplit for the node being split (in what was padding)
 
-    // Derived from the bounds rather than stored: the same bits, 24 bytes less an item.
-    double centroid(int axis) const { return 0.5 * (bounds.lo[axis] + bounds.hi[axis]); }
+    double centroid(int axis) const { return bounds.centroid(axis); }
 };
 
 /// The bounds of some items and of their centroids (which choose the split axis and bins).
 struct RangeBounds {
-    Bounds3 bounds, centroids;
+    FloatBox bounds;
+    Bounds3 centroids;
 
     void include(const BuildItem& item) {
         bounds.include(item.bounds);
-        centroids.include(item.bounds.centroid());
+        centroids.include(Vec3(item.centroid(0), item.centroid(1), item.centroid(2)));
     }
 };
 
@@ -135,8 +183,8 @@ private:
             nodes.push_back(node);
         }
         order.insert(order.end(), subtree.order.begin(), subtree.order.end());
-        subtree.nodes = {};
-        subtree.order = {};
+        release(subtree.nodes);
+        release(subtree.order);
     }
 
     static int binOf(double c, const Bounds3& centroids, int axis) {
@@ -153,7 +201,7 @@ private:
     /// The bin after which to split, or -1 when a leaf is cheaper; leaves each item's bin in
     /// it, for the partition that follows.
     int bestSplit(size_t begin, size_t end, int axis, const RangeBounds& range, size_t count) {
-        Bounds3 bins[kBins];
+        FloatBox bins[kBins];
         int binCount[kBins] = {};
         for (size_t i = begin; i < end; ++i) {
             int b = binOf(items_[i].centroid(axis), range.centroids, axis);
@@ -162,14 +210,14 @@ private:
             bins[b].include(items_[i].bounds);
         }
         double costs[kBins - 1] = {};
-        Bounds3 below;
+        FloatBox below;
         int countBelow = 0;
         for (int i = 0; i < kBins - 1; ++i) {
             below.include(bins[i]);
             countBelow += binCount[i];
             costs[i] = countBelow * below.surfaceArea();
         }
-        Bounds3 above;
+        FloatBox above;
         int countAbove = 0;
         for (int i = kBins - 1; i >= 1; --i) {
             above.include(bins[i]);
@@ -199,16 +247,6 @@ private:
 
     std::vector<BuildItem>& items_;
 };
-
-float roundDown(double v) {
-    float f = static_cast<float>(v);
-    return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-
-float roundUp(double v) {
-    float f = static_cast<float>(v);
-    return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
 
 /// Turns the binary tree into the 4-wide one: each wide node takes a binary node's two
 /// children and keeps opening the interior child of largest surface area until it has four
@@ -256,8 +294,8 @@ public:
             if (slot >= childCount) continue;
             const BinaryNode& c = binary_[children[slot]];
             for (int axis = 0; axis < 3; ++axis) {
-                filled.faces[axis][slot] = roundDown(c.bounds.lo[axis]);
-                filled.faces[3 + axis][slot] = roundUp(c.bounds.hi[axis]);
+                filled.faces[axis][slot] = c.bounds.lo[axis];
+                filled.faces[3 + axis][slot] = c.bounds.hi[axis];
             }
             if (c.count > 0) {
                 filled.child[slot] = ~c.offset;
@@ -307,23 +345,25 @@ void Bvh::build(std::vector<Bounds3> itemBounds, unsigned threads, std::vector<i
     if (itemBounds.empty()) return;
     std::vector<BuildItem> items(itemBounds.size());
     for (size_t i = 0; i < itemBounds.size(); ++i)
-        items[i] = {itemBounds[i], ids.empty() ? static_cast<int32_t>(i) : ids[i], 0};
-    itemBounds = {}; // the items hold them now; not kept through the build
-    ids = {};
+        items[i] = {FloatBox::outward(itemBounds[i]), static_cast<int32_t>(i), 0};
+    // A handful of items keep their exact boxes (fewItemBounds_); else the items hold them now.
+    if (itemBounds.size() > kFewItems) release(itemBounds);
     // Levels of the tree whose two subtrees are built by two threads: twice as many subtrees
     // as threads, so that an uneven split still leaves every thread busy.
     int parallelLevels = 0;
     while (threads > 1 && (1u << parallelLevels) < 2 * threads) ++parallelLevels;
     Builder builder(items, items.size());
     builder.build(0, items.size(), 0, parallelLevels);
+    release(items); // not held while the wide tree is made beside the binary one
+    // The build leaves the input positions in the order of the leaves.
     items_ = std::move(builder.order);
-    // The build leaves the items in the order of the leaves, as items_ lists them.
-    if (items_.size() <= kFewItems)
-        for (const BuildItem& item : items) {
-            const Bounds3& b = item.bounds;
+    for (int32_t& item : items_) {
+        if (!itemBounds.empty()) {
+            const Bounds3& b = itemBounds[static_cast<size_t>(item)];
             fewItemBounds_.push_back({{b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z}});
         }
-    items = {}; // not held while the wide tree is made beside the binary one
+        if (!ids.empty()) item = ids[static_cast<size_t>(item)];
+    }
     nodes_.reserve(builder.nodes.size() / 2 + 1);
     Collapser(builder.nodes, nodes_).collapse(0, depth_);
     nodes_.shrink_to_fit(); // the reserve is a bound; the tree is stored for the whole render
