@@ -257,7 +257,7 @@ Vec3 Integrator::transmittance(const Ray& ray, double tMax, Departure departed, 
     const RenderScene& scene = scene_;
     scene_.forEachCrossing(ray, tMax, departed, context.scratch, context.stats,
                            [&](const Hit& hit) {
-                               const int32_t index = scene.primitives[hit.primitive].material;
+                               const int32_t index = scene.materialOf(hit);
                                const ShadingMaterial& m = scene.materials[index];
                                if (!mixer_.isPlain(index)) {
                                    through *= seenThrough(ray, hit, context);

@@ -17,9 +17,9 @@ std::optional<PickResult> pick(const scene::SceneDesc& scene, double x, double y
     PickResult result;
     if (!geometry->intersect(ray, kInfinity, hit, scratch, stats)) return result;
     result.hit = true;
-    result.entity = geometry->primitiveEntities[static_cast<size_t>(hit.primitive)];
+    result.entity = geometry->entityOf(hit);
     // The render scene's materials are the description's, then the default.
-    const int32_t material = geometry->primitives[static_cast<size_t>(hit.primitive)].material;
+    const int32_t material = geometry->materialOf(hit);
     if (static_cast<size_t>(material) < scene.materials.size()) result.material = material;
     result.distance = hit.t;
     result.point = ray.at(hit.t);

@@ -133,13 +133,22 @@ bool RenderScene::csgMayCross(int32_t root, const BoxRay& boxRay, double tMax) c
 }
 
 bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double tMax, Hit& hit,
-                                  QueryScratch& scratch, RayStats& stats, uint32_t skippedPart) const {
+                                  QueryScratch& scratch, RayStats& stats, const Departure& departed) const {
     if (object >= 0) {
+        if (departed.skips(object)) return false;
         const Primitive& p = primitives[object];
         ++stats.intersectionTests;
         Crossing c{};
-        if (!firstCrossingIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, c, skippedPart)) return false;
+        if (!firstCrossingIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, c, departed.skippedPart(object)))
+            return false;
         hit = {c.t, object, c, false};
+        return true;
+    }
+    if (isInstanceObject(object)) {
+        const int32_t i = kFirstInstanceObject - object;
+        if (!prototypeOf(i).intersect(instanceRay(i, ray.ray()), tMax, hit, scratch, stats, departed.inside(i)))
+            return false;
+        hit.instance = i;
         return true;
     }
     if (!csgMayCross(~object, ray.box(), tMax)) return false;
@@ -174,16 +183,14 @@ bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch&
     }
     const LazyBoxRay lazy(ray);
     for (int32_t object : unbounded) {
-        if (!departed.skips(object) &&
-            nearestInObject(object, lazy, nearest, hit, scratch, stats, departed.skippedPart(object))) {
+        if (nearestInObject(object, lazy, nearest, hit, scratch, stats, departed)) {
             nearest = hit.t;
             found = true;
         }
     }
     bvh.traverse(lazy, nearest, stats, [&](int32_t item) {
         const int32_t object = objects[item];
-        if (!departed.skips(object) &&
-            nearestInObject(object, lazy, nearest, hit, scratch, stats, departed.skippedPart(object))) {
+        if (nearestInObject(object, lazy, nearest, hit, scratch, stats, departed)) {
             nearest = hit.t;
             found = true;
         }
@@ -193,6 +200,14 @@ bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch&
 }
 
 Departure RenderScene::departedPrimitive(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const {
+    if (hit.instance >= 0) {
+        // In the prototype's space the ray and the normal keep the sign of their dot product.
+        Hit inner = hit;
+        inner.instance = -1;
+        Departure departed = prototypeOf(hit.instance).departedPrimitive(inner, si, dir);
+        if (departed.primitive >= 0) departed.instance = hit.instance;
+        return departed;
+    }
     // A face a CSG difference turned inside out: its normal points into the primitive.
     if (hit.primitive < 0 || hit.flipNormal) return {};
     // A face's plane or a convex solid's tangent plane has the whole primitive on one side;
@@ -204,46 +219,77 @@ Departure RenderScene::departedPrimitive(const Hit& hit, const SurfaceInteractio
 }
 
 uint64_t RenderScene::storedPrimitives() const {
-    uint64_t stored = primitives.size();
+    uint64_t stored = primitives.size() + instances.size();
     for (const auto& mesh : meshes) stored += mesh->data().triangles.size();
+    for (const auto& prototype : prototypes) stored += prototype->storedPrimitives();
     return stored;
 }
 
 uint64_t RenderScene::byteSize() const {
     auto bytes = [](const auto& v) { return uint64_t(v.capacity()) * sizeof(v[0]); };
     uint64_t total = sizeof(RenderScene) + bytes(primitives) + bytes(primitiveEntities) + bytes(transforms) +
-                     bytes(csgNodes) + bytes(meshes) + bytes(materials) + bytes(blends) + bytes(objects) +
-                     bytes(unbounded) + bytes(planes) + bvh.byteSize();
+                     bytes(csgNodes) + bytes(meshes) + bytes(materials) + bytes(blends) + bytes(prototypes) +
+                     bytes(instances) + bytes(objects) + bytes(unbounded) + bytes(planes) + bvh.byteSize();
     for (const auto& mesh : meshes) total += mesh->byteSize();
+    for (const auto& prototype : prototypes) total += prototype->byteSize();
     return total;
 }
 
+int32_t RenderScene::materialOf(const Hit& hit) const {
+    if (hit.instance < 0) return primitives[static_cast<size_t>(hit.primitive)].material;
+    const int32_t own = prototypeOf(hit.instance).primitives[static_cast<size_t>(hit.primitive)].material;
+    return own >= 0 ? own : instances[static_cast<size_t>(hit.instance)].material;
+}
+
+int32_t RenderScene::entityOf(const Hit& hit) const {
+    const RenderScene& owner = hit.instance < 0 ? *this : prototypeOf(hit.instance);
+    return owner.primitiveEntities[static_cast<size_t>(hit.primitive)];
+}
+
+namespace {
+
+/// Moves the surface by toWorld (its object point, uv and material stay as they are).
+void moveSurface(const Transform& toWorld, SurfaceInteraction& si) {
+    si.pointError = toWorld.pointError(si.point, si.pointError);
+    si.point = toWorld.point(si.point);
+    si.normal = toWorld.normal(si.normal);
+    si.shadingNormal = toWorld.normal(si.shadingNormal);
+    si.dpdu = toWorld.vector(si.dpdu);
+    si.dpdv = toWorld.vector(si.dpdv);
+}
+
+} // namespace
+
 SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) const {
+    const int32_t material = materialOf(hit);
+    const ShadingMaterial& m = materials[static_cast<size_t>(material)];
+    if (hit.instance < 0) return primitiveInteraction(ray, hit, material, m);
+    Hit inner = hit;
+    inner.instance = -1;
+    SurfaceInteraction si =
+        prototypeOf(hit.instance).primitiveInteraction(instanceRay(hit.instance, ray), inner, material, m);
+    const int32_t transform = instances[static_cast<size_t>(hit.instance)].transform;
+    if (transform >= 0) moveSurface(transforms[static_cast<size_t>(transform)].toWorld, si);
+    return si;
+}
+
+SurfaceInteraction RenderScene::primitiveInteraction(const Ray& ray, const Hit& hit, int32_t material,
+                                                     const ShadingMaterial& m) const {
     const Primitive& p = primitives[hit.primitive];
-    const ShadingMaterial& m = materials[p.material];
     SurfacePoint sp = surfaceAt(p.geometry, objectRay(p, ray), hit.crossing, m.readsSurface());
     SurfaceInteraction si;
     si.objectPoint = sp.point;
     si.uv = sp.uv;
     if (m.readsSurface()) si.mappingAxis = mappingAxis(p.geometry);
-    si.material = p.material;
+    si.material = material;
     si.solid = isSolid(p.geometry);
-    if (p.transform < 0) {
-        si.point = sp.point;
-        si.pointError = sp.pointError;
-        si.normal = sp.normal;
-        si.shadingNormal = sp.shadingNormal;
-        si.dpdu = sp.dpdu;
-        si.dpdv = sp.dpdv;
-    } else {
-        const Transform& toWorld = transforms[p.transform].toWorld;
-        si.point = toWorld.point(sp.point);
-        si.pointError = toWorld.pointError(sp.point, sp.pointError);
-        si.normal = toWorld.normal(sp.normal);
-        si.shadingNormal = toWorld.normal(sp.shadingNormal);
-        si.dpdu = toWorld.vector(sp.dpdu);
-        si.dpdv = toWorld.vector(sp.dpdv);
-    }
+    si.point = sp.point;
+    si.pointError = sp.pointError;
+    si.normal = sp.normal;
+    si.shadingNormal = sp.shadingNormal;
+    si.dpdu = sp.dpdu;
+    si.dpdv = sp.dpdv;
+    if (p.transform >= 0) moveSurface(transforms[p.transform].toWorld, si);
     if (hit.flipNormal) {
         si.normal = -si.normal;
         si.shadingNormal = -si.shadingNormal;

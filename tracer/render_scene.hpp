@@ -81,9 +81,10 @@ struct ConvexSpan {
 /// What a ray hit: enough to compute the surface later, only for the hit that wins.
 struct Hit {
     double t = kInfinity;
-    int32_t primitive = -1;
+    int32_t primitive = -1; ///< of the instance's prototype when `instance` >= 0
     Crossing crossing{};
     bool flipNormal = false;
+    int32_t instance = -1;
 };
 
 /// The surface at a hit, in world space.
@@ -109,15 +110,45 @@ struct PlaneObject {
 };
 
 /// What a ray leaving a surface cannot meet again, so that queries need not test it
-/// (RenderScene::departedPrimitive): nothing, a whole primitive, or one face of a mesh.
+/// (RenderScene::departedPrimitive): nothing, a whole primitive, or one face of a mesh; of the
+/// scene, or of an instance's prototype.
 struct Departure {
     int32_t primitive = -1;
     uint32_t part = kNoPart; ///< the face; kNoPart: the whole primitive
+    int32_t instance = -1;   ///< whose prototype holds the primitive; -1: the scene itself
 
-    /// Whether `object` (of the BVH or the unbounded list) need not be tested at all.
-    bool skips(int32_t object) const { return object == primitive && part == kNoPart; }
-    /// The face of `object` not to test (kNoPart: none).
-    uint32_t skippedPart(int32_t object) const { return object == primitive ? part : kNoPart; }
+    /// Whether primitive `object` of the scene need not be tested at all.
+    bool skips(int32_t object) const { return instance < 0 && object == primitive && part == kNoPart; }
+    /// The face of primitive `object` of the scene not to test (kNoPart: none).
+    uint32_t skippedPart(int32_t object) const {
+        return instance < 0 && object == primitive ? part : kNoPart;
+    }
+    /// What the query of instance i's prototype need not test.
+    Departure inside(int32_t i) const { return instance == i ? Departure{primitive, part} : Departure{}; }
+};
+
+/// Called with hits until it returns false: a reference to any callable bool(const Hit&),
+/// cheap to pass (it owns nothing). A prototype's crossings are visited through one, so that
+/// visiting them is not a new template for each level of visitor wrapped around another.
+class HitVisitor {
+  public:
+    template <typename F>
+    HitVisitor(F& f) // NOLINT: made implicitly from the callable it refers to
+        : context_(&f), call_([](void* c, const Hit& h) { return (*static_cast<F*>(c))(h); }) {}
+    bool operator()(const Hit& h) const { return call_(context_, h); }
+
+  private:
+    void* context_;
+    bool (*call_)(void*, const Hit&);
+};
+
+/// A drawing of a shared entity: its prototype (RenderScene::prototypes, built once however
+/// often the entity is drawn), moved by `transform`, with `material` for its parts that have
+/// none.
+struct Instance {
+    int32_t prototype = 0;
+    int32_t transform = -1;
+    int32_t material = 0;
 };
 
 /// Per-thread scratch memory, so queries never allocate.
@@ -147,6 +178,11 @@ public:
     std::vector<std::shared_ptr<const TriangleMesh>> meshes;
     std::vector<ShadingMaterial> materials;
     std::vector<scene::BlendDesc> blends; ///< of the materials made of others
+    /// The entities drawn more than once, each built once in its own space, with no materials
+    /// of its own (a primitive's material is -1 where the instance gives it), and their
+    /// drawings.
+    std::vector<std::unique_ptr<const RenderScene>> prototypes;
+    std::vector<Instance> instances;
 
     /// Nearest hit with 0 < t < tMax. `departed` (from departedPrimitive) is not tested.
     bool intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats,
@@ -164,7 +200,8 @@ public:
     /// turned inside out.
     Departure departedPrimitive(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const;
 
-    /// The primitives stored: those drawn, and the meshes' triangles once each.
+    /// The primitives stored: those drawn, each instance as one, and the meshes' triangles and
+    /// the prototypes' primitives once each.
     uint64_t storedPrimitives() const;
     /// The bytes the scene holds: its primitives, transforms, CSG trees, BVH and meshes (not
     /// what a shape keeps of its own, such as a prism's outline or a height field's grid).
@@ -172,20 +209,41 @@ public:
 
     /// The surface at the hit (uv only where the material reads it).
     SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
+    /// The material at the hit (an index into materials).
+    int32_t materialOf(const Hit& hit) const;
+    /// The SceneDesc entity the hit primitive was built from.
+    int32_t entityOf(const Hit& hit) const;
 
-    /// Objects of the acceleration structure: a primitive (>= 0) or a CSG root (~node).
+    /// Objects of the acceleration structure: a primitive (>= 0), a CSG root (~node), or an
+    /// instance (instanceObject(i)).
     std::vector<int32_t> objects;
     std::vector<int32_t> unbounded; ///< objects kept outside the BVH (unbounded CSG)
     std::vector<PlaneObject> planes; ///< plain planes, also outside the BVH
     Bvh bvh;
     Bounds3 bounds; ///< of the bounded objects
 
+    /// Instance objects take the numbers below the CSG roots' (which are at most 2^30).
+    static constexpr int32_t kFirstInstanceObject = -(1 << 30) - 1;
+    static int32_t instanceObject(int32_t instance) { return kFirstInstanceObject - instance; }
+    static bool isInstanceObject(int32_t object) { return object <= kFirstInstanceObject; }
+
 private:
     bool nearestInObject(int32_t object, const LazyBoxRay& ray, double tMax, Hit& hit, QueryScratch& scratch,
-                         RayStats& stats, uint32_t skippedPart) const;
+                         RayStats& stats, const Departure& departed) const;
     template <typename Visit>
     bool crossingsInObject(int32_t object, const LazyBoxRay& ray, double tMax, QueryScratch& scratch,
-                           RayStats& stats, Visit& visit, uint32_t skippedPart) const;
+                           RayStats& stats, Visit& visit, const Departure& departed) const;
+    /// The ray in instance i's prototype's space (its t unchanged).
+    Ray instanceRay(int32_t i, const Ray& ray) const {
+        const int32_t t = instances[static_cast<size_t>(i)].transform;
+        return t < 0 ? ray : transforms[static_cast<size_t>(t)].toObject.ray(ray);
+    }
+    const RenderScene& prototypeOf(int32_t instance) const {
+        return *prototypes[static_cast<size_t>(instances[static_cast<size_t>(instance)].prototype)];
+    }
+    /// The surface at a hit on one of this scene's own primitives, shaded with `material`.
+    SurfaceInteraction primitiveInteraction(const Ray& ray, const Hit& hit, int32_t material,
+                                            const ShadingMaterial& m) const;
     /// Whether the segment (0, tMax) can meet the CSG tree rooted at `root` (its bounds).
     bool csgMayCross(int32_t root, const BoxRay& boxRay, double tMax) const;
     /// Appends the node's crossings of the whole line to scratch.csg; returns whether the

@@ -11,12 +11,22 @@ inline double planeCrossing(const PlaneObject& plane, const Ray& ray) {
 
 template <typename Visit>
 bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, double tMax, QueryScratch& scratch,
-                                    RayStats& stats, Visit& visit, uint32_t skippedPart) const {
+                                    RayStats& stats, Visit& visit, const Departure& departed) const {
     if (object >= 0) {
+        if (departed.skips(object)) return true;
         const Primitive& p = primitives[object];
         ++stats.intersectionTests;
         auto hit = [&](const Crossing& c) { return visit(Hit{c.t, object, c, false}); };
-        return crossingsIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, hit, skippedPart);
+        return crossingsIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, hit, departed.skippedPart(object));
+    }
+    if (isInstanceObject(object)) {
+        const int32_t i = kFirstInstanceObject - object;
+        auto inInstance = [&](Hit hit) {
+            hit.instance = i;
+            return visit(hit);
+        };
+        return prototypeOf(i).forEachCrossing(instanceRay(i, ray.ray()), tMax, departed.inside(i), scratch, stats,
+                                              HitVisitor(inInstance));
     }
     if (!csgMayCross(~object, ray.box(), tMax)) return true;
     size_t start = scratch.csg.size();
@@ -43,13 +53,9 @@ bool RenderScene::forEachCrossing(const Ray& ray, double tMax, Departure departe
     }
     const LazyBoxRay lazy(ray);
     for (int32_t object : unbounded)
-        if (!departed.skips(object) &&
-            !crossingsInObject(object, lazy, tMax, scratch, stats, visit, departed.skippedPart(object)))
-            return false;
+        if (!crossingsInObject(object, lazy, tMax, scratch, stats, visit, departed)) return false;
     return bvh.traverse(lazy, tMax, stats, [&](int32_t item) {
-        const int32_t object = objects[item];
-        return departed.skips(object) ||
-               crossingsInObject(object, lazy, tMax, scratch, stats, visit, departed.skippedPart(object));
+        return crossingsInObject(objects[item], lazy, tMax, scratch, stats, visit, departed);
     });
 }
 

@@ -175,17 +175,17 @@ void traceTile(const PixelSampler& sampler, const Tile& tile, int channels, std:
     }
 }
 
-/// The warnings of the scene's isosurfaces, each once however often it is drawn.
-std::string isosurfaceWarnings(const scene::SceneDesc& desc, const RenderScene& scene) {
-    std::string warnings;
-    std::vector<const scene::IsosurfaceDesc*> seen;
+/// The warnings of the scene's isosurfaces (its prototypes' too), each once however often it
+/// is drawn.
+void isosurfaceWarnings(const scene::SceneDesc& desc, const RenderScene& scene,
+                        std::vector<const scene::IsosurfaceDesc*>& seen, std::string& warnings) {
     for (const Primitive& p : scene.primitives) {
         auto* iso = std::get_if<IsosurfaceGeometry>(&p.geometry);
         if (!iso || std::find(seen.begin(), seen.end(), &iso->desc()) != seen.end()) continue;
         seen.push_back(&iso->desc());
         warnings += iso->warnings(scene::spanLocation(desc, iso->desc().source));
     }
-    return warnings;
+    for (const auto& prototype : scene.prototypes) isosurfaceWarnings(desc, *prototype, seen, warnings);
 }
 
 /// The most memory this process has held resident so far.
@@ -253,7 +253,7 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     const int channels = job.alpha ? 4 : 3;
     outcome.buildSeconds = secondsSince(buildStart);
     outcome.primitives = prepared.geometry->storedPrimitives();
-    outcome.drawnPrimitives = prepared.geometry->primitives.size();
+    outcome.drawnPrimitives = prepared.geometry->primitives.size() + prepared.geometry->instances.size();
     outcome.sceneBytes = prepared.geometry->byteSize();
     outcome.bvhNodes = prepared.geometry->bvh.nodeCount();
     outcome.bvhDepth = prepared.geometry->bvh.depth();
@@ -301,7 +301,8 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     outcome.cancelled = job.nextTile ? job.cancel && job.cancel->load()
                                      : outcome.tilesDone < tileCount;
     outcome.ok = !outcome.cancelled;
-    outcome.warnings = isosurfaceWarnings(desc, *prepared.geometry);
+    std::vector<const scene::IsosurfaceDesc*> seen;
+    isosurfaceWarnings(desc, *prepared.geometry, seen, outcome.warnings);
     outcome.peakBytes = peakResidentBytes();
     return outcome;
 }

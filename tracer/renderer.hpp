@@ -81,8 +81,8 @@ struct RenderOutcome {
     RayStats stats;
     double buildSeconds = 0;  ///< scene build: BVH, images, textures
     double renderSeconds = 0; ///< tracing
-    uint64_t primitives = 0;     ///< stored: those drawn, and the meshes' triangles once each
-    uint64_t drawnPrimitives = 0; ///< of those, the ones drawn (a mesh drawn is one)
+    uint64_t primitives = 0;      ///< stored: RenderScene::storedPrimitives
+    uint64_t drawnPrimitives = 0; ///< drawn: a mesh or an instance of a shared entity is one
     uint64_t sceneBytes = 0;     ///< what the render scene holds (RenderScene::byteSize)
     uint64_t peakBytes = 0;      ///< the process's peak resident memory when the render ended
     size_t bvhNodes = 0;

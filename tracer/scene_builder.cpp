@@ -13,10 +13,22 @@
 
 namespace crt::tracer {
 
+/// An entity drawn at least this often, through transforms, groups and unions, and made of
+/// at least this many primitives, is built once as a prototype that each drawing instances.
+/// Below that a copy costs about what an instance does, and is reached by one BVH less.
+constexpr uint64_t kMinInstanceUses = 2;
+constexpr uint64_t kMinInstancePrimitives = 16;
+
 class RenderSceneBuilder {
 public:
     RenderSceneBuilder(const scene::SceneDesc& desc, RenderScene& scene, unsigned threads, std::string& error)
-        : desc_(desc), scene_(scene), threads_(threads), error_(error) {}
+        : desc_(desc), scene_(scene), root_(scene), threads_(threads), error_(error), shared_(ownShared_) {}
+
+    /// A builder of a prototype of `parent`'s scene: its parts with no material get -1 (the
+    /// instance gives it), and it draws no instances of its own.
+    RenderSceneBuilder(RenderSceneBuilder& parent, RenderScene& prototype)
+        : desc_(parent.desc_), scene_(prototype), root_(parent.root_), threads_(parent.threads_),
+          error_(parent.error_), shared_(parent.shared_), defaultMaterial_(-1), instancing_(false) {}
 
     bool build() {
         error_.clear(); // a mesh that cannot be read says so here
@@ -28,6 +40,7 @@ public:
         scene_.materials.emplace_back(); // the default material
         scene_.blends = desc_.blends;
         if (!readHeightGrids()) return false;
+        countUses();
         // Counted before anything is expanded: a shared entity doubled in a loop would
         // otherwise fill memory here. Evaluation refuses such a scene already; this is for
         // descriptions made otherwise.
@@ -40,7 +53,7 @@ public:
         }
         // Room for them from the start (a mesh drawn is one primitive): a vector growing by
         // doubling would copy and fault in its elements about twice.
-        storedPrimitives_ = drawn;
+        shared_.storedPrimitives = drawn;
         scene_.primitives.reserve(drawn);
         scene_.primitiveEntities.reserve(drawn);
         scene_.objects.reserve(drawn);
@@ -65,14 +78,17 @@ private:
     };
 
     /// Draws an entity: groups and unions are drawn as their members (a union keeps every
-    /// surface, so at the top level it is no different from drawing both operands).
+    /// surface, so at the top level it is no different from drawing both operands); an entity
+    /// drawn often enough is an instance of its prototype.
     bool addDrawn(int32_t root, const Transform& rootTransform) {
         std::vector<Operand> pending{{root, rootTransform}};
         while (!pending.empty()) {
             Operand op = std::move(pending.back());
             pending.pop_back();
             const scene::EntityDesc& e = desc_.entities[op.entity];
-            if (auto* t = std::get_if<scene::TransformNode>(&e.shape)) {
+            if (instanced(op.entity)) {
+                if (!addInstance(op)) return false;
+            } else if (auto* t = std::get_if<scene::TransformNode>(&e.shape)) {
                 pending.push_back(op.below(e, *t));
             } else if (auto* g = std::get_if<scene::GroupNode>(&e.shape)) {
                 for (auto it = g->members.rbegin(); it != g->members.rend(); ++it)
@@ -99,6 +115,62 @@ private:
         return own >= 0 ? own : op.material >= 0 ? op.material : defaultMaterial_;
     }
 
+    /// How often each entity is drawn through transforms, groups and unions (saturating),
+    /// and the primitives it expands to: what decides which are instanced.
+    void countUses() {
+        shared_.expansion.reserve(desc_.entities.size());
+        for (const scene::EntityDesc& e : desc_.entities)
+            shared_.expansion.push_back(scene::primitivesOf(e, shared_.expansion));
+        shared_.uses.assign(desc_.entities.size(), 0);
+        for (int32_t root : desc_.drawn) shared_.uses[static_cast<size_t>(root)] += 1;
+        // Parts come before what is made of them: walking back, an entity's count is complete
+        // before it is handed down.
+        for (size_t i = desc_.entities.size(); i-- > 0;) {
+            const uint64_t uses = shared_.uses[i];
+            if (uses == 0) continue;
+            auto handDown = [&](int32_t part) {
+                const auto p = static_cast<size_t>(part);
+                if (p < i) shared_.uses[p] = scene::saturatingAdd(shared_.uses[p], uses);
+            };
+            const scene::Shape& shape = desc_.entities[i].shape;
+            if (auto* t = std::get_if<scene::TransformNode>(&shape)) {
+                handDown(t->child);
+            } else if (auto* g = std::get_if<scene::GroupNode>(&shape)) {
+                for (int32_t m : g->members) handDown(m);
+            } else if (auto* c = std::get_if<scene::CsgNode>(&shape); c && c->op == scene::CsgOp::Union) {
+                handDown(c->left);
+                handDown(c->right);
+            }
+        }
+    }
+
+    bool instanced(int32_t entity) const {
+        const auto e = static_cast<size_t>(entity);
+        return instancing_ && shared_.uses[e] >= kMinInstanceUses && shared_.expansion[e] >= kMinInstancePrimitives &&
+               !std::holds_alternative<scene::TransformNode>(desc_.entities[e].shape);
+    }
+
+    /// Draws the entity as an instance of its prototype (built on its first drawing).
+    bool addInstance(const Operand& op) {
+        auto known = shared_.prototypes.find(op.entity);
+        if (known == shared_.prototypes.end()) {
+            auto prototype = std::make_unique<RenderScene>();
+            RenderSceneBuilder builder(*this, *prototype);
+            if (!builder.addDrawn(op.entity, Transform())) return false;
+            builder.finishAcceleration();
+            known = shared_.prototypes.emplace(op.entity, static_cast<int32_t>(scene_.prototypes.size())).first;
+            scene_.prototypes.push_back(std::move(prototype));
+        }
+        const RenderScene& prototype = *scene_.prototypes[static_cast<size_t>(known->second)];
+        const bool bounded = prototype.unbounded.empty() && prototype.planes.empty();
+        if (bounded && prototype.bounds.empty()) return true; // nothing to draw
+        const int32_t transform = addTransform(op.transform);
+        scene_.objects.push_back(RenderScene::instanceObject(static_cast<int32_t>(scene_.instances.size())));
+        scene_.instances.push_back({known->second, transform, op.material >= 0 ? op.material : defaultMaterial_});
+        instanceBounds_.push_back(bounded ? worldBounds(prototype.bounds, transform) : Bounds3::everything());
+        return true;
+    }
+
     int32_t addTransform(const Transform& toWorld) {
         if (toWorld.isIdentity()) return -1;
         if (!scene_.transforms.empty()) {
@@ -114,14 +186,14 @@ private:
     bool readHeightGrids() {
         for (const scene::EntityDesc& e : desc_.entities) {
             auto* field = std::get_if<scene::HeightFieldShape>(&e.shape);
-            if (!field || heightGrids_.contains(field->desc.get())) continue;
+            if (!field || shared_.heightGrids.contains(field->desc.get())) continue;
             std::shared_ptr<const HeightGrid> grid = readHeightGrid(*field->desc, desc_.limits, error_);
             if (!grid) {
                 const std::string where = scene::spanLocation(desc_, e.source);
                 if (!where.empty()) error_ = where + ": error: " + error_;
                 return false;
             }
-            heightGrids_.emplace(field->desc.get(), std::move(grid));
+            shared_.heightGrids.emplace(field->desc.get(), std::move(grid));
         }
         return true;
     }
@@ -138,7 +210,7 @@ private:
     std::optional<Geometry> geometryOf(const Operand& op) {
         const scene::Shape& shape = desc_.entities[op.entity].shape;
         if (auto* field = std::get_if<scene::HeightFieldShape>(&shape))
-            return HeightFieldGeometry(heightGrids_.at(field->desc.get()), field->desc->smooth);
+            return HeightFieldGeometry(shared_.heightGrids.at(field->desc.get()), field->desc->smooth);
         if (auto* mesh = std::get_if<scene::MeshShape>(&shape)) {
             std::shared_ptr<const TriangleMesh> triangles = triangleMesh(*mesh, op);
             if (!triangles) return std::nullopt;
@@ -153,14 +225,14 @@ private:
     std::shared_ptr<const TriangleMesh> triangleMesh(const scene::MeshShape& mesh, const Operand& op) {
         std::shared_ptr<const MeshData> data = meshData(mesh);
         if (!data) return nullptr;
-        auto built = triangleMeshes_.find(data.get());
-        if (built != triangleMeshes_.end()) return built->second;
+        auto built = shared_.triangleMeshes.find(data.get());
+        if (built != shared_.triangleMeshes.end()) return built->second;
         // The description counts each drawing of a mesh as one primitive; its triangles,
         // stored once, count once, here where they are known.
         const size_t triangles = data->triangles.size();
         const uint64_t limit = desc_.limits.maxPrimitives;
-        storedPrimitives_ = scene::saturatingAdd(storedPrimitives_, triangles);
-        if (storedPrimitives_ > limit) {
+        shared_.storedPrimitives = scene::saturatingAdd(shared_.storedPrimitives, triangles);
+        if (shared_.storedPrimitives > limit) {
             const std::string where = scene::spanLocation(desc_, desc_.entities[op.entity].source);
             error_ = fmt::format("{}{}the scene stores more than {} primitives with the {} "
                                  "triangles of {}; raise the limit with --max-primitives",
@@ -169,8 +241,8 @@ private:
             return nullptr;
         }
         auto made = std::make_shared<const TriangleMesh>(data, threads_);
-        triangleMeshes_.emplace(data.get(), made);
-        scene_.meshes.push_back(made);
+        shared_.triangleMeshes.emplace(data.get(), made);
+        root_.meshes.push_back(made);
         return made;
     }
 
@@ -178,12 +250,12 @@ private:
     std::shared_ptr<const MeshData> meshData(const scene::MeshShape& mesh) {
         if (mesh.written >= 0) return desc_.writtenMeshes[static_cast<size_t>(mesh.written)];
         const std::string& path = scene::fileToOpen(mesh.resolvedFile, mesh.file);
-        const auto& known = desc_.meshes.contains(path) ? desc_.meshes : meshes_;
+        const auto& known = desc_.meshes.contains(path) ? desc_.meshes : shared_.meshes;
         auto cached = known.find(path);
         if (cached != known.end()) return cached->second;
         std::optional<MeshData> read = scene::readMeshFile(path, scene::kDefaultMaxMeshSize, error_);
         if (!read) return nullptr;
-        return meshes_.emplace(path, std::make_shared<const MeshData>(std::move(*read))).first->second;
+        return shared_.meshes.emplace(path, std::make_shared<const MeshData>(std::move(*read))).first->second;
     }
 
     /// The operands of a chain of one associative operator, through transforms and groups.
@@ -318,10 +390,11 @@ private:
         return static_cast<int32_t>(scene_.csgNodes.size() - 1);
     }
 
-    Bounds3 worldBounds(const Primitive& p) const {
-        Bounds3 local = geometryBounds(p.geometry);
-        if (p.transform < 0 || !local.finite()) return p.transform < 0 ? local : Bounds3::everything();
-        const Transform& t = scene_.transforms[p.transform].toWorld;
+    Bounds3 worldBounds(const Primitive& p) const { return worldBounds(geometryBounds(p.geometry), p.transform); }
+
+    Bounds3 worldBounds(const Bounds3& local, int32_t transform) const {
+        if (transform < 0 || !local.finite()) return transform < 0 ? local : Bounds3::everything();
+        const Transform& t = scene_.transforms[static_cast<size_t>(transform)].toWorld;
         Bounds3 world;
         for (int corner = 0; corner < 8; ++corner) {
             Vec3 c((corner & 1) ? local.hi.x : local.lo.x, (corner & 2) ? local.hi.y : local.lo.y,
@@ -334,7 +407,10 @@ private:
     }
 
     Bounds3 objectBounds(int32_t object) const {
-        return object >= 0 ? worldBounds(scene_.primitives[object]) : scene_.csgNodes[~object].bounds;
+        if (object >= 0) return worldBounds(scene_.primitives[object]);
+        if (RenderScene::isInstanceObject(object))
+            return instanceBounds_[static_cast<size_t>(RenderScene::kFirstInstanceObject - object)];
+        return scene_.csgNodes[~object].bounds;
     }
 
     /// Keeps a plain plane in the inline-tested list; false for anything else.
@@ -372,16 +448,29 @@ private:
         scene_.bvh.build(std::move(bounds), threads_);
     }
 
+    /// What the builders of a scene and of its prototypes share: files read once, meshes
+    /// built once, the count against the primitive limit, and what is instanced.
+    struct Shared {
+        std::map<std::string, std::shared_ptr<const MeshData>> meshes;
+        std::map<const MeshData*, std::shared_ptr<const TriangleMesh>> triangleMeshes;
+        std::map<const scene::HeightFieldDesc*, std::shared_ptr<const HeightGrid>> heightGrids;
+        /// The primitives drawn and the triangles of the meshes built so far.
+        uint64_t storedPrimitives = 0;
+        std::vector<uint64_t> uses;      ///< per entity: how often it is drawn
+        std::vector<uint64_t> expansion; ///< per entity: the primitives it expands to
+        std::map<int32_t, int32_t> prototypes; ///< entity -> its prototype
+    };
+
     const scene::SceneDesc& desc_;
     RenderScene& scene_;
+    RenderScene& root_; ///< the scene whose prototype this builds, or scene_ itself
     unsigned threads_;
     std::string& error_;
+    Shared ownShared_;
+    Shared& shared_;
     int32_t defaultMaterial_ = 0;
-    std::map<std::string, std::shared_ptr<const MeshData>> meshes_;
-    std::map<const MeshData*, std::shared_ptr<const TriangleMesh>> triangleMeshes_;
-    /// The primitives drawn and the triangles of the meshes built so far.
-    uint64_t storedPrimitives_ = 0;
-    std::map<const scene::HeightFieldDesc*, std::shared_ptr<const HeightGrid>> heightGrids_;
+    bool instancing_ = true;
+    std::vector<Bounds3> instanceBounds_; ///< of each instance, in world space
 };
 
 std::unique_ptr<RenderScene> buildRenderScene(const scene::SceneDesc& desc, std::string& error,

@@ -93,8 +93,8 @@ void printStats(const RenderTotals& totals) {
     const tracer::RenderOutcome& r = totals.outcome;
     const tracer::RayStats& s = r.stats;
     std::cerr << fmt::format(
-        "crtc: stats: primitives {} ({} drawn, each mesh's triangles stored once), BVH nodes {}, "
-        "BVH depth {}\n"
+        "crtc: stats: primitives {} stored, {} drawn (a shared mesh or entity is stored once), "
+        "BVH nodes {}, BVH depth {}\n"
         "crtc: stats: memory: scene {:.2f} MiB ({:.0f} bytes a primitive), peak {:.1f} MiB\n"
         "crtc: stats: shading: {}\n"
         "crtc: stats: rays: camera {}, reflection {}, refraction {}, shadow {} (total {})\n"

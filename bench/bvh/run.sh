@@ -11,8 +11,8 @@ echo "| spheres | BVH nodes | depth | rays | nodes visited / ray | intersection 
 echo "| --- | --- | --- | --- | --- | --- | --- |"
 for n in 10 46 100; do
     stats=$("$crtc" --time "$n" --stats -q --max-entities 2000000 "$here/spheres.crt" -o "$out/s.png" 2>&1)
-    prims=$(sed -n 's/.*primitives \([0-9]*\), BVH nodes \([0-9]*\).*/\1/p' <<<"$stats")
-    nodes=$(sed -n 's/.*primitives \([0-9]*\), BVH nodes \([0-9]*\).*/\2/p' <<<"$stats")
+    prims=$(sed -n 's/.*primitives \([0-9]*\) stored.*/\1/p' <<<"$stats")
+    nodes=$(sed -n 's/.*, BVH nodes \([0-9]*\),.*/\1/p' <<<"$stats")
     depth=$(sed -n 's/.*BVH depth \([0-9]*\).*/\1/p' <<<"$stats")
     rays=$(sed -n 's/.*(total \([0-9]*\)).*/\1/p' <<<"$stats")
     visited=$(sed -n 's/.*BVH nodes visited \([0-9]*\), intersection tests \([0-9]*\).*/\1/p' <<<"$stats")
