@@ -51,12 +51,13 @@ public:
                                  desc_.limits.maxPrimitives);
             return false;
         }
-        // Room for them from the start (a mesh drawn is one primitive): a vector growing by
-        // doubling would copy and fault in its elements about twice.
+        // Room for them from the start (a mesh drawn is one primitive, an instance none): a
+        // vector growing by doubling would copy and fault in its elements about twice.
         shared_.storedPrimitives = drawn;
-        scene_.primitives.reserve(drawn);
-        scene_.primitiveEntities.reserve(drawn);
-        scene_.objects.reserve(drawn);
+        const uint64_t copied = copiedPrimitives();
+        scene_.primitives.reserve(copied);
+        scene_.primitiveEntities.reserve(copied);
+        scene_.objects.reserve(copied);
         for (int32_t root : desc_.drawn)
             if (!addDrawn(root, Transform())) return false;
         finishAcceleration();
@@ -142,6 +143,28 @@ private:
                 handDown(c->right);
             }
         }
+    }
+
+    /// The primitives the drawn entities expand to where they are not instanced.
+    uint64_t copiedPrimitives() const {
+        std::vector<uint64_t> copied(desc_.entities.size(), 0);
+        for (size_t i = 0; i < desc_.entities.size(); ++i) {
+            if (instanced(static_cast<int32_t>(i))) continue;
+            auto of = [&](int32_t part) { return static_cast<size_t>(part) < i ? copied[static_cast<size_t>(part)] : 1; };
+            const scene::Shape& shape = desc_.entities[i].shape;
+            if (auto* t = std::get_if<scene::TransformNode>(&shape)) {
+                copied[i] = of(t->child);
+            } else if (auto* g = std::get_if<scene::GroupNode>(&shape)) {
+                for (int32_t m : g->members) copied[i] = scene::saturatingAdd(copied[i], of(m));
+            } else if (auto* c = std::get_if<scene::CsgNode>(&shape); c && c->op == scene::CsgOp::Union) {
+                copied[i] = scene::saturatingAdd(of(c->left), of(c->right));
+            } else {
+                copied[i] = shared_.expansion[i];
+            }
+        }
+        uint64_t total = 0;
+        for (int32_t root : desc_.drawn) total = scene::saturatingAdd(total, copied[static_cast<size_t>(root)]);
+        return total;
     }
 
     bool instanced(int32_t entity) const {
