@@ -256,30 +256,22 @@ class Collapser {
 public:
     Collapser(const std::vector<BinaryNode>& binary, std::vector<WideBvhNode>& wide) : binary_(binary), wide_(wide) {}
 
+    /// The wide nodes the subtree at binaryIndex collapses to (so that they can be stored in
+    /// one allocation of the right size).
+    size_t count(int32_t binaryIndex) const {
+        int32_t children[4];
+        const size_t childCount = gather(binaryIndex, children);
+        size_t total = 1;
+        for (size_t slot = 0; slot < childCount; ++slot)
+            if (binary_[children[slot]].count == 0) total += count(children[slot]);
+        return total;
+    }
+
     int32_t collapse(int32_t binaryIndex, int& depth) {
         int32_t wideIndex = static_cast<int32_t>(wide_.size());
         wide_.emplace_back();
         int32_t children[4];
-        size_t childCount = 0;
-        const BinaryNode& node = binary_[binaryIndex];
-        if (node.count > 0) {
-            children[childCount++] = binaryIndex; // a lone leaf at the root
-        } else {
-            children[childCount++] = binaryIndex + 1;
-            children[childCount++] = node.offset;
-            while (childCount < 4) {
-                int widest = -1;
-                for (size_t i = 0; i < childCount; ++i) {
-                    const BinaryNode& c = binary_[children[i]];
-                    if (c.count == 0 && (widest < 0 || c.bounds.surfaceArea() > binary_[children[widest]].bounds.surfaceArea()))
-                        widest = static_cast<int>(i);
-                }
-                if (widest < 0) break;
-                int32_t opened = children[widest];
-                children[widest] = opened + 1;
-                children[childCount++] = binary_[opened].offset;
-            }
-        }
+        const size_t childCount = gather(binaryIndex, children);
         WideBvhNode filled;
         const float inf = std::numeric_limits<float>::infinity();
         for (int axis = 0; axis < 3; ++axis) {
@@ -311,6 +303,32 @@ public:
     }
 
 private:
+    /// The binary nodes that become the wide node's children: the binary node's two, then
+    /// the interior child of largest surface area opened until there are four.
+    size_t gather(int32_t binaryIndex, int32_t (&children)[4]) const {
+        size_t childCount = 0;
+        const BinaryNode& node = binary_[binaryIndex];
+        if (node.count > 0) {
+            children[childCount++] = binaryIndex; // a lone leaf at the root
+            return childCount;
+        }
+        children[childCount++] = binaryIndex + 1;
+        children[childCount++] = node.offset;
+        while (childCount < 4) {
+            int widest = -1;
+            for (size_t i = 0; i < childCount; ++i) {
+                const BinaryNode& c = binary_[children[i]];
+                if (c.count == 0 && (widest < 0 || c.bounds.surfaceArea() > binary_[children[widest]].bounds.surfaceArea()))
+                    widest = static_cast<int>(i);
+            }
+            if (widest < 0) break;
+            int32_t opened = children[widest];
+            children[widest] = opened + 1;
+            children[childCount++] = binary_[opened].offset;
+        }
+        return childCount;
+    }
+
     const std::vector<BinaryNode>& binary_;
     std::vector<WideBvhNode>& wide_;
 };
@@ -337,17 +355,14 @@ WideRay::WideRay(const Ray& ray) {
     }
 }
 
-void Bvh::build(std::vector<Bounds3> itemBounds, unsigned threads, std::vector<int32_t> ids) {
+void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::vector<int32_t> ids) {
     nodes_.clear();
     items_.clear();
     fewItemBounds_.clear();
     depth_ = 0;
-    if (itemBounds.empty()) return;
-    std::vector<BuildItem> items(itemBounds.size());
-    for (size_t i = 0; i < itemBounds.size(); ++i)
-        items[i] = {FloatBox::outward(itemBounds[i]), static_cast<int32_t>(i), 0};
-    // A handful of items keep their exact boxes (fewItemBounds_); else the items hold them now.
-    if (itemBounds.size() > kFewItems) release(itemBounds);
+    if (count == 0) return;
+    std::vector<BuildItem> items(count);
+    for (size_t i = 0; i < count; ++i) items[i] = {FloatBox::outward(boundsOf(i)), static_cast<int32_t>(i), 0};
     // Levels of the tree whose two subtrees are built by two threads: twice as many subtrees
     // as threads, so that an uneven split still leaves every thread busy.
     int parallelLevels = 0;
@@ -358,15 +373,15 @@ void Bvh::build(std::vector<Bounds3> itemBounds, unsigned threads, std::vector<i
     // The build leaves the input positions in the order of the leaves.
     items_ = std::move(builder.order);
     for (int32_t& item : items_) {
-        if (!itemBounds.empty()) {
-            const Bounds3& b = itemBounds[static_cast<size_t>(item)];
+        if (count <= kFewItems) { // these keep their exact boxes
+            const Bounds3 b = boundsOf(static_cast<size_t>(item));
             fewItemBounds_.push_back({{b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z}});
         }
         if (!ids.empty()) item = ids[static_cast<size_t>(item)];
     }
-    nodes_.reserve(builder.nodes.size() / 2 + 1);
-    Collapser(builder.nodes, nodes_).collapse(0, depth_);
-    nodes_.shrink_to_fit(); // the reserve is a bound; the tree is stored for the whole render
+    Collapser collapser(builder.nodes, nodes_);
+    nodes_.reserve(collapser.count(0));
+    collapser.collapse(0, depth_);
 }
 
 } // namespace crt::tracer

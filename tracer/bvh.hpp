@@ -155,7 +155,15 @@ class Bvh {
 public:
     /// Builds over n items with the given (finite) bounds, on up to `threads` threads; the
     /// tree is the same whatever their number. Item i is ids[i], or i when there are no ids.
-    void build(std::vector<Bounds3> itemBounds, unsigned threads = 1, std::vector<int32_t> ids = {});
+    void build(const std::vector<Bounds3>& itemBounds, unsigned threads = 1, std::vector<int32_t> ids = {}) {
+        build(itemBounds.size(), [&](size_t i) { return itemBounds[i]; }, threads, std::move(ids));
+    }
+    /// The same, asking boundsOf(i) for item i's bounds (once, or twice with few items) rather
+    /// than holding them all: a mesh's triangles need not have their boxes stored twice.
+    template <typename BoundsOf>
+    void build(size_t count, BoundsOf&& boundsOf, unsigned threads = 1, std::vector<int32_t> ids = {}) {
+        buildFrom(count, ItemBounds(boundsOf), threads, std::move(ids));
+    }
 
     bool empty() const { return nodes_.empty(); }
     size_t nodeCount() const { return nodes_.size(); }
@@ -188,6 +196,20 @@ public:
     static constexpr size_t kFewItems = 4;
 
 private:
+    /// A reference to a callable Bounds3(size_t), cheap to pass.
+    class ItemBounds {
+      public:
+        template <typename F>
+        explicit ItemBounds(F& f)
+            : context_(&f), call_([](void* c, size_t i) { return Bounds3((*static_cast<F*>(c))(i)); }) {}
+        Bounds3 operator()(size_t i) const { return call_(context_, i); }
+
+      private:
+        void* context_;
+        Bounds3 (*call_)(void*, size_t);
+    };
+    void buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::vector<int32_t> ids);
+
     /// The deepest the wide tree may be: a branch of the binary build up to 56 deep
     /// collapses to at most that many wide levels, and each level pushes at most 3.
     static constexpr int kMaxWideDepth = 64;

@@ -145,7 +145,7 @@ bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double 
         return true;
     }
     if (isInstanceObject(object)) {
-        const int32_t i = kFirstInstanceObject - object;
+        const int32_t i = instanceOfObject(object);
         if (!prototypeOf(i).intersect(instanceRay(i, ray.ray()), tMax, hit, scratch, stats, departed.inside(i)))
             return false;
         hit.instance = i;

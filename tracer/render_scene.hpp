@@ -226,6 +226,7 @@ public:
     static constexpr int32_t kFirstInstanceObject = -(1 << 30) - 1;
     static int32_t instanceObject(int32_t instance) { return kFirstInstanceObject - instance; }
     static bool isInstanceObject(int32_t object) { return object <= kFirstInstanceObject; }
+    static int32_t instanceOfObject(int32_t object) { return kFirstInstanceObject - object; }
 
 private:
     bool nearestInObject(int32_t object, const LazyBoxRay& ray, double tMax, Hit& hit, QueryScratch& scratch,

@@ -20,7 +20,7 @@ bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, doubl
         return crossingsIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, hit, departed.skippedPart(object));
     }
     if (isInstanceObject(object)) {
-        const int32_t i = kFirstInstanceObject - object;
+        const int32_t i = instanceOfObject(object);
         auto inInstance = [&](Hit hit) {
             hit.instance = i;
             return visit(hit);

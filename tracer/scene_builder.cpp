@@ -432,7 +432,7 @@ private:
     Bounds3 objectBounds(int32_t object) const {
         if (object >= 0) return worldBounds(scene_.primitives[object]);
         if (RenderScene::isInstanceObject(object))
-            return instanceBounds_[static_cast<size_t>(RenderScene::kFirstInstanceObject - object)];
+            return instanceBounds_[static_cast<size_t>(RenderScene::instanceOfObject(object))];
         return scene_.csgNodes[~object].bounds;
     }
 

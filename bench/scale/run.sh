@@ -137,7 +137,7 @@ for m in "${mesh_list[@]}"; do
     for k in "${copy_list[@]}"; do
         write_scenes "$m" "$k"
         echo "rendering $m x $k ..." >&2
-        timed "crtc.$m.$k" "$crtc" --allow-read "$here/generated" --threads "$threads" --stats -o "$out/$m.$k.crtc.png" "$out/$m.$k.crt"
+        timed "crtc.$m.$k" "$crtc" --allow-read "$here/generated" --max-primitives 20000000 --threads "$threads" --stats -o "$out/$m.$k.crtc.png" "$out/$m.$k.crt"
         crtc_seconds=$seconds crtc_peak=$peak
         timed "povray.$m.$k" env HOME="$povhome" "$povray" "+I$out/$m.$k.pov" "+O$out/$m.$k.pov.png" +FN \
             "+W$width" "+H$height" -D -V -P -A "+WT$threads" File_Gamma=1.0

@@ -41,24 +41,38 @@ constexpr uint32_t kEnters = 1u << 31;
 
 TriangleMesh::TriangleMesh(std::shared_ptr<const MeshData> data, unsigned threads)
     : data_(std::move(data)) {
-    std::vector<Bounds3> bounds;
-    std::vector<int32_t> ids;
-    bounds.reserve(data_->triangles.size());
-    for (size_t i = 0; i < data_->triangles.size(); ++i) {
-        if (!allValid(data_->triangles[i].v, data_->positions)) continue;
+    auto boundsOf = [&](size_t i) {
         Vec3 p[3];
         corners(static_cast<uint32_t>(i), p);
         Bounds3 b = Bounds3::of(p[0], p[1]);
         b.include(p[2]);
+        return b;
+    };
+    auto drawable = [&](size_t i) {
+        if (!allValid(data_->triangles[i].v, data_->positions)) return false;
+        Vec3 p[3];
+        corners(static_cast<uint32_t>(i), p);
         const double area = glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-        if (!b.finite() || !(area > 0) || !std::isfinite(area)) continue;
-        bounds.push_back(b);
-        ids.push_back(static_cast<int32_t>(i));
-        bounds_.include(b);
+        return boundsOf(i).finite() && area > 0 && std::isfinite(area);
+    };
+    const size_t n = data_->triangles.size();
+    std::vector<int32_t> ids; // the triangles the BVH holds, listed once one is left out
+    bool leftOut = false;
+    for (size_t i = 0; i < n; ++i) {
+        const bool drawn = drawable(i);
+        if (drawn) bounds_.include(boundsOf(i));
+        if (!drawn && !leftOut) {
+            leftOut = true;
+            for (size_t k = 0; k < i; ++k) ids.push_back(static_cast<int32_t>(k));
+        }
+        if (drawn && leftOut) ids.push_back(static_cast<int32_t>(i));
     }
-    // Item i is triangle i unless some were left out.
-    if (ids.size() == data_->triangles.size()) ids.clear();
-    bvh_.build(std::move(bounds), threads, std::move(ids));
+    if (!leftOut) {
+        bvh_.build(n, boundsOf, threads);
+        return;
+    }
+    auto keptBounds = [&](size_t item) { return boundsOf(static_cast<size_t>(ids[item])); };
+    bvh_.build(ids.size(), keptBounds, threads, ids);
 }
 
 void MeshGeometry::crossLine(const Ray& ray, CrossingList& out) const {
