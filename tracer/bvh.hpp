@@ -2,6 +2,7 @@
 #pragma once
 
 #include "tracer/geometry/bounds.hpp"
+#include "tracer/geometry/function_ref.hpp"
 #include "tracer/stats.hpp"
 
 #include <cstdint>
@@ -196,18 +197,7 @@ public:
     static constexpr size_t kFewItems = 4;
 
 private:
-    /// A reference to a callable Bounds3(size_t), cheap to pass.
-    class ItemBounds {
-      public:
-        template <typename F>
-        explicit ItemBounds(F& f)
-            : context_(&f), call_([](void* c, size_t i) { return Bounds3((*static_cast<F*>(c))(i)); }) {}
-        Bounds3 operator()(size_t i) const { return call_(context_, i); }
-
-      private:
-        void* context_;
-        Bounds3 (*call_)(void*, size_t);
-    };
+    using ItemBounds = FunctionRef<Bounds3(size_t)>;
     void buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::vector<int32_t> ids);
 
     /// The deepest the wide tree may be: a branch of the binary build up to 56 deep

@@ -127,20 +127,10 @@ struct Departure {
     Departure inside(int32_t i) const { return instance == i ? Departure{primitive, part} : Departure{}; }
 };
 
-/// Called with hits until it returns false: a reference to any callable bool(const Hit&),
-/// cheap to pass (it owns nothing). A prototype's crossings are visited through one, so that
-/// visiting them is not a new template for each level of visitor wrapped around another.
-class HitVisitor {
-  public:
-    template <typename F>
-    HitVisitor(F& f) // NOLINT: made implicitly from the callable it refers to
-        : context_(&f), call_([](void* c, const Hit& h) { return (*static_cast<F*>(c))(h); }) {}
-    bool operator()(const Hit& h) const { return call_(context_, h); }
-
-  private:
-    void* context_;
-    bool (*call_)(void*, const Hit&);
-};
+/// Called with hits until it returns false. A prototype's crossings are visited through one,
+/// so that visiting them is not a new template for each level of visitor wrapped around
+/// another.
+using HitVisitor = FunctionRef<bool(const Hit&)>;
 
 /// A drawing of a shared entity: its prototype (RenderScene::prototypes, built once however
 /// often the entity is drawn), moved by `transform`, with `material` for its parts that have

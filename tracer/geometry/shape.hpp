@@ -8,6 +8,7 @@
 #pragma once
 
 #include "tracer/geometry/bounds.hpp"
+#include "tracer/geometry/function_ref.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -62,19 +63,8 @@ class CrossingList {
     std::unique_ptr<Crossing[]> heap_;
 };
 
-/// Called with crossings in order, until it returns false: a reference to any callable
-/// bool(const Crossing&), cheap to pass (it owns nothing).
-class CrossingVisitor {
-  public:
-    template <typename F>
-    CrossingVisitor(F& f) // NOLINT: made implicitly from the callable it refers to
-        : context_(&f), call_([](void* c, const Crossing& x) { return (*static_cast<F*>(c))(x); }) {}
-    bool operator()(const Crossing& c) const { return call_(context_, c); }
-
-  private:
-    void* context_;
-    bool (*call_)(void*, const Crossing&);
-};
+/// Called with crossings in order, until it returns false.
+using CrossingVisitor = FunctionRef<bool(const Crossing&)>;
 
 /// The surface where a crossing happened, in object space.
 struct SurfacePoint {
