@@ -144,13 +144,8 @@ bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double 
         hit = {c.t, object, c, false};
         return true;
     }
-    if (isInstanceObject(object)) {
-        const int32_t i = instanceOfObject(object);
-        if (!prototypeOf(i).intersect(instanceRay(i, ray.ray()), tMax, hit, scratch, stats, departed.inside(i)))
-            return false;
-        hit.instance = i;
-        return true;
-    }
+    if (isInstanceObject(object)) [[unlikely]]
+        return nearestInInstance(instanceOfObject(object), ray.ray(), tMax, hit, scratch, stats, departed);
     if (!csgMayCross(~object, ray.box(), tMax)) return false;
     size_t start = scratch.csg.size();
     csgCrossings(~object, CsgRay(ray.ray(), ray.box()), scratch, stats);
@@ -165,6 +160,23 @@ bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double 
     }
     scratch.csg.resize(start);
     return found;
+}
+
+bool RenderScene::nearestInInstance(int32_t i, const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch,
+                                    RayStats& stats, const Departure& departed) const {
+    if (!prototypeOf(i).intersect(instanceRay(i, ray), tMax, hit, scratch, stats, departed.inside(i))) return false;
+    hit.instance = i;
+    return true;
+}
+
+bool RenderScene::crossingsInInstance(int32_t i, const Ray& ray, double tMax, QueryScratch& scratch, RayStats& stats,
+                                      HitVisitor visit, const Departure& departed) const {
+    auto inInstance = [&](Hit hit) {
+        hit.instance = i;
+        return visit(hit);
+    };
+    return prototypeOf(i).forEachCrossing(instanceRay(i, ray), tMax, departed.inside(i), scratch, stats,
+                                          HitVisitor(inInstance));
 }
 
 bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch, RayStats& stats,
@@ -199,15 +211,18 @@ bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch&
     return found;
 }
 
+Departure RenderScene::departedInInstance(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const {
+    // In the prototype's space the ray and the normal keep the sign of their dot product.
+    Hit inner = hit;
+    inner.instance = -1;
+    Departure departed = prototypeOf(hit.instance).departedPrimitive(inner, si, dir);
+    if (departed.primitive >= 0) departed.instance = hit.instance;
+    return departed;
+}
+
 Departure RenderScene::departedPrimitive(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const {
-    if (hit.instance >= 0) {
-        // In the prototype's space the ray and the normal keep the sign of their dot product.
-        Hit inner = hit;
-        inner.instance = -1;
-        Departure departed = prototypeOf(hit.instance).departedPrimitive(inner, si, dir);
-        if (departed.primitive >= 0) departed.instance = hit.instance;
-        return departed;
-    }
+    if (hit.instance >= 0) [[unlikely]]
+        return departedInInstance(hit, si, dir);
     // A face a CSG difference turned inside out: its normal points into the primitive.
     if (hit.primitive < 0 || hit.flipNormal) return {};
     // A face's plane or a convex solid's tangent plane has the whole primitive on one side;
@@ -235,8 +250,7 @@ uint64_t RenderScene::byteSize() const {
     return total;
 }
 
-int32_t RenderScene::materialOf(const Hit& hit) const {
-    if (hit.instance < 0) return primitives[static_cast<size_t>(hit.primitive)].material;
+int32_t RenderScene::instanceMaterial(const Hit& hit) const {
     const int32_t own = prototypeOf(hit.instance).primitives[static_cast<size_t>(hit.primitive)].material;
     return own >= 0 ? own : instances[static_cast<size_t>(hit.instance)].material;
 }
@@ -260,21 +274,9 @@ void moveSurface(const Transform& toWorld, SurfaceInteraction& si) {
 
 } // namespace
 
-SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) const {
-    const int32_t material = materialOf(hit);
-    const ShadingMaterial& m = materials[static_cast<size_t>(material)];
-    if (hit.instance < 0) return primitiveInteraction(ray, hit, material, m);
-    Hit inner = hit;
-    inner.instance = -1;
-    SurfaceInteraction si =
-        prototypeOf(hit.instance).primitiveInteraction(instanceRay(hit.instance, ray), inner, material, m);
-    const int32_t transform = instances[static_cast<size_t>(hit.instance)].transform;
-    if (transform >= 0) moveSurface(transforms[static_cast<size_t>(transform)].toWorld, si);
-    return si;
-}
-
-SurfaceInteraction RenderScene::primitiveInteraction(const Ray& ray, const Hit& hit, int32_t material,
-                                                     const ShadingMaterial& m) const {
+[[gnu::always_inline]] inline SurfaceInteraction RenderScene::primitiveInteraction(const Ray& ray, const Hit& hit,
+                                                                                   int32_t material,
+                                                                                   const ShadingMaterial& m) const {
     const Primitive& p = primitives[hit.primitive];
     SurfacePoint sp = surfaceAt(p.geometry, objectRay(p, ray), hit.crossing, m.readsSurface());
     SurfaceInteraction si;
@@ -296,5 +298,20 @@ SurfaceInteraction RenderScene::primitiveInteraction(const Ray& ray, const Hit& 
     }
     return si;
 }
+
+SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) const {
+    const int32_t material = materialOf(hit);
+    const ShadingMaterial& m = materials[static_cast<size_t>(material)];
+    if (hit.instance < 0) [[likely]]
+        return primitiveInteraction(ray, hit, material, m);
+    Hit inner = hit;
+    inner.instance = -1;
+    SurfaceInteraction si =
+        prototypeOf(hit.instance).primitiveInteraction(instanceRay(hit.instance, ray), inner, material, m);
+    const int32_t transform = instances[static_cast<size_t>(hit.instance)].transform;
+    if (transform >= 0) moveSurface(transforms[static_cast<size_t>(transform)].toWorld, si);
+    return si;
+}
+
 
 } // namespace crt::tracer

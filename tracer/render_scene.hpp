@@ -200,7 +200,11 @@ public:
     /// The surface at the hit (uv only where the material reads it).
     SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
     /// The material at the hit (an index into materials).
-    int32_t materialOf(const Hit& hit) const;
+    int32_t materialOf(const Hit& hit) const {
+        if (hit.instance < 0) [[likely]]
+            return primitives[static_cast<size_t>(hit.primitive)].material;
+        return instanceMaterial(hit);
+    }
     /// The SceneDesc entity the hit primitive was built from.
     int32_t entityOf(const Hit& hit) const;
 
@@ -224,6 +228,16 @@ private:
     template <typename Visit>
     bool crossingsInObject(int32_t object, const LazyBoxRay& ray, double tMax, QueryScratch& scratch,
                            RayStats& stats, Visit& visit, const Departure& departed) const;
+    /// materialOf a hit on an instance: its prototype's primitive's, else the instance's.
+    int32_t instanceMaterial(const Hit& hit) const;
+    /// departedPrimitive of a hit on an instance.
+    Departure departedInInstance(const Hit& hit, const SurfaceInteraction& si, const Vec3& dir) const;
+    /// The queries of an instance's prototype, kept out of line: most scenes have none, and
+    /// their hot loops stay small.
+    [[gnu::noinline]] bool nearestInInstance(int32_t i, const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch,
+                                             RayStats& stats, const Departure& departed) const;
+    [[gnu::noinline]] bool crossingsInInstance(int32_t i, const Ray& ray, double tMax, QueryScratch& scratch,
+                                               RayStats& stats, HitVisitor visit, const Departure& departed) const;
     /// The ray in instance i's prototype's space (its t unchanged).
     Ray instanceRay(int32_t i, const Ray& ray) const {
         const int32_t t = instances[static_cast<size_t>(i)].transform;

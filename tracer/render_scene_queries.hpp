@@ -19,15 +19,9 @@ bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, doubl
         auto hit = [&](const Crossing& c) { return visit(Hit{c.t, object, c, false}); };
         return crossingsIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, hit, departed.skippedPart(object));
     }
-    if (isInstanceObject(object)) {
-        const int32_t i = instanceOfObject(object);
-        auto inInstance = [&](Hit hit) {
-            hit.instance = i;
-            return visit(hit);
-        };
-        return prototypeOf(i).forEachCrossing(instanceRay(i, ray.ray()), tMax, departed.inside(i), scratch, stats,
-                                              HitVisitor(inInstance));
-    }
+    if (isInstanceObject(object)) [[unlikely]]
+        return crossingsInInstance(instanceOfObject(object), ray.ray(), tMax, scratch, stats, HitVisitor(visit),
+                                   departed);
     if (!csgMayCross(~object, ray.box(), tMax)) return true;
     size_t start = scratch.csg.size();
     csgCrossings(~object, CsgRay(ray.ray(), ray.box()), scratch, stats);
