@@ -116,6 +116,23 @@ private:
         return own >= 0 ? own : op.material >= 0 ? op.material : defaultMaterial_;
     }
 
+    /// Calls f(part) for each part the shape is drawn as (a transform's child, a group's
+    /// members, a union's operands: what addDrawn walks through); false for a shape drawn as
+    /// itself.
+    template <typename F> static bool forEachDrawnPart(const scene::Shape& shape, F&& f) {
+        if (auto* t = std::get_if<scene::TransformNode>(&shape)) {
+            f(t->child);
+        } else if (auto* g = std::get_if<scene::GroupNode>(&shape)) {
+            for (int32_t m : g->members) f(m);
+        } else if (auto* c = std::get_if<scene::CsgNode>(&shape); c && c->op == scene::CsgOp::Union) {
+            f(c->left);
+            f(c->right);
+        } else {
+            return false;
+        }
+        return true;
+    }
+
     /// How often each entity is drawn through transforms, groups and unions (saturating),
     /// and the primitives it expands to: what decides which are instanced.
     void countUses() {
@@ -129,19 +146,10 @@ private:
         for (size_t i = desc_.entities.size(); i-- > 0;) {
             const uint64_t uses = shared_.uses[i];
             if (uses == 0) continue;
-            auto handDown = [&](int32_t part) {
+            forEachDrawnPart(desc_.entities[i].shape, [&](int32_t part) {
                 const auto p = static_cast<size_t>(part);
                 if (p < i) shared_.uses[p] = scene::saturatingAdd(shared_.uses[p], uses);
-            };
-            const scene::Shape& shape = desc_.entities[i].shape;
-            if (auto* t = std::get_if<scene::TransformNode>(&shape)) {
-                handDown(t->child);
-            } else if (auto* g = std::get_if<scene::GroupNode>(&shape)) {
-                for (int32_t m : g->members) handDown(m);
-            } else if (auto* c = std::get_if<scene::CsgNode>(&shape); c && c->op == scene::CsgOp::Union) {
-                handDown(c->left);
-                handDown(c->right);
-            }
+            });
         }
     }
 
@@ -150,17 +158,11 @@ private:
         std::vector<uint64_t> copied(desc_.entities.size(), 0);
         for (size_t i = 0; i < desc_.entities.size(); ++i) {
             if (instanced(static_cast<int32_t>(i))) continue;
-            auto of = [&](int32_t part) { return static_cast<size_t>(part) < i ? copied[static_cast<size_t>(part)] : 1; };
-            const scene::Shape& shape = desc_.entities[i].shape;
-            if (auto* t = std::get_if<scene::TransformNode>(&shape)) {
-                copied[i] = of(t->child);
-            } else if (auto* g = std::get_if<scene::GroupNode>(&shape)) {
-                for (int32_t m : g->members) copied[i] = scene::saturatingAdd(copied[i], of(m));
-            } else if (auto* c = std::get_if<scene::CsgNode>(&shape); c && c->op == scene::CsgOp::Union) {
-                copied[i] = scene::saturatingAdd(of(c->left), of(c->right));
-            } else {
-                copied[i] = shared_.expansion[i];
-            }
+            const bool drawnAsParts = forEachDrawnPart(desc_.entities[i].shape, [&](int32_t part) {
+                const auto p = static_cast<size_t>(part);
+                copied[i] = scene::saturatingAdd(copied[i], p < i ? copied[p] : 1);
+            });
+            if (!drawnAsParts) copied[i] = shared_.expansion[i];
         }
         uint64_t total = 0;
         for (int32_t root : desc_.drawn) total = scene::saturatingAdd(total, copied[static_cast<size_t>(root)]);

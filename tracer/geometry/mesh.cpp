@@ -48,19 +48,22 @@ TriangleMesh::TriangleMesh(std::shared_ptr<const MeshData> data, unsigned thread
         b.include(p[2]);
         return b;
     };
-    auto drawable = [&](size_t i) {
+    // A triangle is left out when a corner is out of range or not finite, or it has no area.
+    auto drawable = [&](size_t i, Bounds3& b) {
         if (!allValid(data_->triangles[i].v, data_->positions)) return false;
+        b = boundsOf(i);
         Vec3 p[3];
         corners(static_cast<uint32_t>(i), p);
         const double area = glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-        return boundsOf(i).finite() && area > 0 && std::isfinite(area);
+        return b.finite() && area > 0 && std::isfinite(area);
     };
     const size_t n = data_->triangles.size();
     std::vector<int32_t> ids; // the triangles the BVH holds, listed once one is left out
     bool leftOut = false;
     for (size_t i = 0; i < n; ++i) {
-        const bool drawn = drawable(i);
-        if (drawn) bounds_.include(boundsOf(i));
+        Bounds3 b;
+        const bool drawn = drawable(i, b);
+        if (drawn) bounds_.include(b);
         if (!drawn && !leftOut) {
             leftOut = true;
             for (size_t k = 0; k < i; ++k) ids.push_back(static_cast<int32_t>(k));
