@@ -133,7 +133,7 @@ bool RenderScene::csgMayCross(int32_t root, const BoxRay& boxRay, double tMax) c
 }
 
 bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double tMax, Hit& hit,
-                                  QueryScratch& scratch, RayStats& stats, const Departure& departed) const {
+                                  QueryScratch& scratch, RayStats& stats, Departure departed) const {
     if (object >= 0) {
         if (departed.skips(object)) return false;
         const Primitive& p = primitives[object];
@@ -163,14 +163,14 @@ bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double 
 }
 
 bool RenderScene::nearestInInstance(int32_t i, const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch,
-                                    RayStats& stats, const Departure& departed) const {
+                                    RayStats& stats, Departure departed) const {
     if (!prototypeOf(i).intersect(instanceRay(i, ray), tMax, hit, scratch, stats, departed.inside(i))) return false;
     hit.instance = i;
     return true;
 }
 
 bool RenderScene::crossingsInInstance(int32_t i, const Ray& ray, double tMax, QueryScratch& scratch, RayStats& stats,
-                                      HitVisitor visit, const Departure& departed) const {
+                                      HitVisitor visit, Departure departed) const {
     auto inInstance = [&](Hit hit) {
         hit.instance = i;
         return visit(hit);
@@ -183,8 +183,9 @@ bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch&
                             Departure departed) const {
     bool found = false;
     double nearest = tMax;
+    const int32_t skipped = departed.skippedPrimitive();
     for (const PlaneObject& plane : planes) {
-        if (departed.skips(plane.primitive)) continue;
+        if (plane.primitive == skipped) continue;
         ++stats.intersectionTests;
         double t = planeCrossing(plane, ray);
         if (t > 0 && t < nearest) {

@@ -117,8 +117,10 @@ struct Departure {
     uint32_t part = kNoPart; ///< the face; kNoPart: the whole primitive
     int32_t instance = -1;   ///< whose prototype holds the primitive; -1: the scene itself
 
-    /// Whether primitive `object` of the scene need not be tested at all.
-    bool skips(int32_t object) const { return instance < 0 && object == primitive && part == kNoPart; }
+    /// The scene's primitive no query need test at all (-1: none).
+    int32_t skippedPrimitive() const { return instance < 0 && part == kNoPart ? primitive : -1; }
+    /// Whether primitive `object` (>= 0) of the scene need not be tested at all.
+    bool skips(int32_t object) const { return object == skippedPrimitive(); }
     /// The face of primitive `object` of the scene not to test (kNoPart: none).
     uint32_t skippedPart(int32_t object) const {
         return instance < 0 && object == primitive ? part : kNoPart;
@@ -224,10 +226,10 @@ public:
 
 private:
     bool nearestInObject(int32_t object, const LazyBoxRay& ray, double tMax, Hit& hit, QueryScratch& scratch,
-                         RayStats& stats, const Departure& departed) const;
+                         RayStats& stats, Departure departed) const;
     template <typename Visit>
     bool crossingsInObject(int32_t object, const LazyBoxRay& ray, double tMax, QueryScratch& scratch,
-                           RayStats& stats, Visit& visit, const Departure& departed) const;
+                           RayStats& stats, Visit& visit, Departure departed) const;
     /// materialOf a hit on an instance: its prototype's primitive's, else the instance's.
     int32_t instanceMaterial(const Hit& hit) const;
     /// departedPrimitive of a hit on an instance.
@@ -235,9 +237,9 @@ private:
     /// The queries of an instance's prototype, kept out of line: most scenes have none, and
     /// their hot loops stay small.
     [[gnu::noinline]] bool nearestInInstance(int32_t i, const Ray& ray, double tMax, Hit& hit, QueryScratch& scratch,
-                                             RayStats& stats, const Departure& departed) const;
+                                             RayStats& stats, Departure departed) const;
     [[gnu::noinline]] bool crossingsInInstance(int32_t i, const Ray& ray, double tMax, QueryScratch& scratch,
-                                               RayStats& stats, HitVisitor visit, const Departure& departed) const;
+                                               RayStats& stats, HitVisitor visit, Departure departed) const;
     /// The ray in instance i's prototype's space (its t unchanged).
     Ray instanceRay(int32_t i, const Ray& ray) const {
         const int32_t t = instances[static_cast<size_t>(i)].transform;

@@ -11,7 +11,7 @@ inline double planeCrossing(const PlaneObject& plane, const Ray& ray) {
 
 template <typename Visit>
 bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, double tMax, QueryScratch& scratch,
-                                    RayStats& stats, Visit& visit, const Departure& departed) const {
+                                    RayStats& stats, Visit& visit, Departure departed) const {
     if (object >= 0) {
         if (departed.skips(object)) return true;
         const Primitive& p = primitives[object];
@@ -38,8 +38,9 @@ bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, doubl
 template <typename Visit>
 bool RenderScene::forEachCrossing(const Ray& ray, double tMax, Departure departed, QueryScratch& scratch,
                                   RayStats& stats, Visit&& visit) const {
+    const int32_t skipped = departed.skippedPrimitive();
     for (const PlaneObject& plane : planes) {
-        if (departed.skips(plane.primitive)) continue;
+        if (plane.primitive == skipped) continue;
         ++stats.intersectionTests;
         double t = planeCrossing(plane, ray);
         if (t > 0 && t < tMax && !visit(Hit{t, plane.primitive, Crossing{t, 0}, false}))
