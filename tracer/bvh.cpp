@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <future>
 #include <limits>
 #include <numeric>
@@ -32,66 +34,110 @@ float roundUp(double v) {
     return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-/// A box in single precision, its faces rounded outwards from the bounds it stands for: as
-/// the wide tree stores boxes, and in half the bytes of a Bounds3, so that the build's items
-/// and nodes take 32 bytes each.
-struct FloatBox {
-    float lo[3] = {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
-                   std::numeric_limits<float>::infinity()};
-    float hi[3] = {-std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
-                   -std::numeric_limits<float>::infinity()};
+/// A box in single precision held in four lanes (x, y, z, and one it does not use), so that
+/// growing it is one vector min and one vector max.
+struct Box4 {
+    static constexpr float inf = std::numeric_limits<float>::infinity();
+    Float4 lo = {inf, inf, inf, inf};
+    Float4 hi = {-inf, -inf, -inf, -inf};
 
-    static FloatBox outward(const Bounds3& b) {
-        FloatBox f;
-        for (int axis = 0; axis < 3; ++axis) {
-            f.lo[axis] = roundDown(b.lo[axis]);
-            f.hi[axis] = roundUp(b.hi[axis]);
-        }
-        return f;
+    void include(Float4 l, Float4 h) {
+        lo = l < lo ? l : lo;
+        hi = h > hi ? h : hi;
     }
-    void include(const FloatBox& o) {
-        for (int axis = 0; axis < 3; ++axis) {
-            lo[axis] = std::min(lo[axis], o.lo[axis]);
-            hi[axis] = std::max(hi[axis], o.hi[axis]);
-        }
-    }
+    void include(const Box4& o) { include(o.lo, o.hi); }
+    double extent(int axis) const { return double(hi[axis]) - lo[axis]; }
     // Measured on the faces clamped to the finite floats, so that a box reaching past them
-    // (its faces rounded to infinity) still has a centroid and an area to compare.
-    double clampedLo(int axis) const { return std::max(lo[axis], -std::numeric_limits<float>::max()); }
-    double clampedHi(int axis) const { return std::min(hi[axis], std::numeric_limits<float>::max()); }
-    double centroid(int axis) const { return 0.5 * (clampedLo(axis) + clampedHi(axis)); }
+    // (its faces rounded to infinity) still has an area to compare.
     double surfaceArea() const {
         double e[3];
-        for (int axis = 0; axis < 3; ++axis) e[axis] = std::max(clampedHi(axis) - clampedLo(axis), 0.0);
+        for (int axis = 0; axis < 3; ++axis)
+            e[axis] = std::max(std::min(double(hi[axis]), kFloatMax) - std::max(double(lo[axis]), -kFloatMax), 0.0);
         return 2 * (e[0] * e[1] + e[1] * e[2] + e[2] * e[0]);
     }
+
+    static constexpr double kFloatMax = std::numeric_limits<float>::max();
 };
 
 /// A node of the binary tree the build makes before it is collapsed into the wide one: a
 /// leaf holds items[offset .. offset+count); an interior node's first child follows it
-/// directly and its second child is nodes[offset].
+/// directly and its second child is nodes[offset]. Its box is kept in 24 bytes, not a
+/// Box4's 32, as a large build holds twice as many nodes as items.
 struct BinaryNode {
-    FloatBox bounds;
+    float lo[3], hi[3];
     int32_t offset = 0;
     uint16_t count = 0;
+
+    void setBounds(const Box4& box) {
+        for (int axis = 0; axis < 3; ++axis) {
+            lo[axis] = box.lo[axis];
+            hi[axis] = box.hi[axis];
+        }
+    }
+    double surfaceArea() const {
+        Box4 box;
+        box.lo = Float4{lo[0], lo[1], lo[2], 0};
+        box.hi = Float4{hi[0], hi[1], hi[2], 0};
+        return box.surfaceArea();
+    }
 };
 
-struct BuildItem {
-    FloatBox bounds;
+/// An item of the build: its bounds rounded outwards to float. The faces and the two
+/// integers are laid out so that each group of four is one Float4 load, the integer's lane
+/// ignored: an item takes 32 bytes.
+struct alignas(16) BuildItem {
+    float lo[3];
     int32_t index; ///< the item's position in the build's input
-    uint8_t bin;   ///< set by bestSplit for the node being split (in what was padding)
+    float hi[3];
+    uint32_t bin; ///< set by bestSplit for the node being split
 
-    double centroid(int axis) const { return bounds.centroid(axis); }
+    BuildItem(const Bounds3& b, int32_t i) : index(i), bin(0) {
+        for (int axis = 0; axis < 3; ++axis) {
+            lo[axis] = roundDown(b.lo[axis]);
+            hi[axis] = roundUp(b.hi[axis]);
+        }
+    }
+    BuildItem() = default;
+
+    Float4 loLanes() const { return lanes(0); }
+    Float4 hiLanes() const { return lanes(sizeof(Float4)); }
+    /// The centre of the box clamped to the finite floats (so that one reaching past them
+    /// still has a centre), in lanes 0-2; lane 3 is 0.
+    Float4 centroid() const {
+        constexpr float big = std::numeric_limits<float>::max();
+        const Float4 l = loLanes(), h = hiLanes();
+        const Float4 clampedLo = l > -big ? l : Float4{-big, -big, -big, -big};
+        const Float4 clampedHi = h < big ? h : Float4{big, big, big, big};
+        // Halves added, not the sum halved, so that two faces near the largest float do not
+        // overflow.
+        return 0.5f * clampedLo + 0.5f * clampedHi;
+    }
+
+private:
+    /// The three faces at byte `offset` in lanes 0-2, loaded as one (a narrower copy would
+    /// stall the load that follows it), and 0 in lane 3 rather than the integer's bits, which
+    /// read as a float may be a denormal that slows arithmetic down.
+    Float4 lanes(size_t offset) const {
+        Float4 v;
+        std::memcpy(&v, reinterpret_cast<const char*>(this) + offset, sizeof v);
+        return reinterpret_cast<Float4>(reinterpret_cast<Int4>(v) & Int4{-1, -1, -1, 0});
+    }
 };
+static_assert(sizeof(BuildItem) == 2 * sizeof(Float4) && offsetof(BuildItem, hi) == sizeof(Float4));
 
 /// The bounds of some items and of their centroids (which choose the split axis and bins).
 struct RangeBounds {
-    FloatBox bounds;
-    Bounds3 centroids;
+    Box4 bounds;
+    Box4 centroids;
 
     void include(const BuildItem& item) {
-        bounds.include(item.bounds);
-        centroids.include(Vec3(item.centroid(0), item.centroid(1), item.centroid(2)));
+        bounds.include(item.loLanes(), item.hiLanes());
+        const Float4 c = item.centroid();
+        centroids.include(c, c);
+    }
+    void include(const RangeBounds& other) {
+        bounds.include(other.bounds);
+        centroids.include(other.centroids);
     }
 };
 
@@ -111,61 +157,73 @@ public:
     std::vector<BinaryNode> nodes;
     std::vector<int32_t> order; ///< item indices in the order of the leaves
 
-    /// Builds the subtree over items [begin, end); below `parallelLevels` levels from here,
-    /// one thread. Returns the depth of its deepest leaf.
-    int build(size_t begin, size_t end, int depth, int parallelLevels) {
+    /// Where to split a node: after bin `bin` (-1: nowhere), and the bounds of the two sides.
+    struct Split {
+        int bin = -1;
+        RangeBounds below, above;
+    };
+
+    /// Builds the subtree over items [begin, end), whose bounds are `range`; below
+    /// `parallelLevels` levels from here, one thread. Returns the depth of its deepest leaf.
+    int build(size_t begin, size_t end, const RangeBounds& range, int depth, int parallelLevels) {
         int32_t nodeIndex = static_cast<int32_t>(nodes.size());
         nodes.emplace_back();
-        const RangeBounds range = boundsOf(begin, end);
-        nodes[nodeIndex].bounds = range.bounds;
+        nodes[nodeIndex].setBounds(range.bounds);
         size_t count = end - begin;
         int axis = 0;
-        Vec3 extent = range.centroids.extent();
-        if (extent.y > extent[axis]) axis = 1;
-        if (extent.z > extent[axis]) axis = 2;
+        if (range.centroids.extent(1) > range.centroids.extent(axis)) axis = 1;
+        if (range.centroids.extent(2) > range.centroids.extent(axis)) axis = 2;
+        const bool spread = range.centroids.extent(axis) > 0;
 
         bool mustSplit = count > 0xFFFF;
-        if ((count <= 1 || extent[axis] <= 0 || depth >= kMaxDepth) && !mustSplit) return makeLeaf(nodeIndex, begin, end, depth);
+        if ((count <= 1 || !spread || depth >= kMaxDepth) && !mustSplit) return makeLeaf(nodeIndex, begin, end, depth);
 
-        size_t mid = begin + count / 2;
-        bool median = true;
-        if (extent[axis] > 0 && count > 2) {
-            int split = bestSplit(begin, end, axis, range, count);
-            if (split < 0 && !mustSplit) return makeLeaf(nodeIndex, begin, end, depth);
-            if (split >= 0) {
-                auto it = std::partition(items_.begin() + begin, items_.begin() + end,
-                                         [&](const BuildItem& item) { return item.bin <= split; });
-                mid = static_cast<size_t>(it - items_.begin());
-                median = mid == begin || mid == end;
-                if (median) mid = begin + count / 2;
-            }
+        Split split;
+        if (spread && count > 2) {
+            split = bestSplit(begin, end, axis, range, count);
+            if (split.bin < 0 && !mustSplit) return makeLeaf(nodeIndex, begin, end, depth);
         }
-        if (median) {
+        size_t mid = begin + count / 2;
+        if (split.bin >= 0) {
+            auto it = std::partition(items_.begin() + begin, items_.begin() + end,
+                                     [&](const BuildItem& item) { return static_cast<int>(item.bin) <= split.bin; });
+            mid = static_cast<size_t>(it - items_.begin());
+        }
+        if (split.bin < 0 || mid == begin || mid == end) {
+            mid = begin + count / 2;
             std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
-                             [axis](const BuildItem& a, const BuildItem& b) { return a.centroid(axis) < b.centroid(axis); });
+                             [axis](const BuildItem& a, const BuildItem& b) { return a.centroid()[axis] < b.centroid()[axis]; });
+            split.below = boundsOf(begin, mid);
+            split.above = boundsOf(mid, end);
         }
         if (parallelLevels > 0 && count >= kParallelItems)
-            return buildChildrenInParallel(nodeIndex, begin, mid, end, depth, parallelLevels - 1);
-        int leftDepth = build(begin, mid, depth + 1, 0);
+            return buildChildrenInParallel(nodeIndex, begin, mid, end, split, depth, parallelLevels - 1);
+        int leftDepth = build(begin, mid, split.below, depth + 1, 0);
         nodes[nodeIndex].offset = static_cast<int32_t>(nodes.size());
-        int rightDepth = build(mid, end, depth + 1, 0);
+        int rightDepth = build(mid, end, split.above, depth + 1, 0);
         return std::max(leftDepth, rightDepth);
+    }
+
+    RangeBounds boundsOf(size_t begin, size_t end) const {
+        RangeBounds range;
+        for (size_t i = begin; i < end; ++i) range.include(items_[i]);
+        return range;
     }
 
 private:
     /// The children of nodes[nodeIndex], over items [begin, mid) and [mid, end): the first
     /// built on a thread of its own (or later on this one, when no thread can be had).
-    int buildChildrenInParallel(int32_t nodeIndex, size_t begin, size_t mid, size_t end, int depth,
-                                int parallelLevels) {
+    int buildChildrenInParallel(int32_t nodeIndex, size_t begin, size_t mid, size_t end, const Split& split,
+                                int depth, int parallelLevels) {
         Builder left(items_, mid - begin), right(items_, end - mid);
-        auto buildLeft = [&] { return left.build(begin, mid, depth + 1, parallelLevels); };
+        auto buildLeft = [&] { return left.build(begin, mid, split.below, depth + 1, parallelLevels); };
         std::future<int> leftDepth;
         try {
             leftDepth = std::async(std::launch::async, buildLeft);
         } catch (const std::system_error&) {
             leftDepth = std::async(std::launch::deferred, buildLeft);
         }
-        const int rightDepth = right.build(mid, end, depth + 1, parallelLevels);
+        const int rightDepth = right.build(mid, end, split.above, depth + 1, parallelLevels);
         const int depthReached = std::max(leftDepth.get(), rightDepth);
         append(std::move(left));
         nodes[nodeIndex].offset = static_cast<int32_t>(nodes.size());
@@ -187,40 +245,35 @@ private:
         release(subtree.order);
     }
 
-    static int binOf(double c, const Bounds3& centroids, int axis) {
-        double f = (c - centroids.lo[axis]) / (centroids.hi[axis] - centroids.lo[axis]);
-        return std::clamp(static_cast<int>(f * kBins), 0, kBins - 1);
-    }
-
-    RangeBounds boundsOf(size_t begin, size_t end) const {
-        RangeBounds range;
-        for (size_t i = begin; i < end; ++i) range.include(items_[i]);
-        return range;
-    }
-
-    /// The bin after which to split, or -1 when a leaf is cheaper; leaves each item's bin in
-    /// it, for the partition that follows.
-    int bestSplit(size_t begin, size_t end, int axis, const RangeBounds& range, size_t count) {
-        FloatBox bins[kBins];
+    /// The cheapest split by the surface area heuristic, or none (bin -1) when a leaf is
+    /// cheaper; leaves each item's bin in it, for the partition that follows.
+    Split bestSplit(size_t begin, size_t end, int axis, const RangeBounds& range, size_t count) {
+        RangeBounds bins[kBins];
         int binCount[kBins] = {};
+        const double lo = range.centroids.lo[axis];
+        const double scale = kBins / range.centroids.extent(axis);
         for (size_t i = begin; i < end; ++i) {
-            int b = binOf(items_[i].centroid(axis), range.centroids, axis);
-            items_[i].bin = static_cast<uint8_t>(b);
+            BuildItem& item = items_[i];
+            const Float4 centroid = item.centroid();
+            const int b = std::clamp(static_cast<int>((centroid[axis] - lo) * scale), 0, kBins - 1);
+            item.bin = static_cast<uint32_t>(b);
             ++binCount[b];
-            bins[b].include(items_[i].bounds);
+            bins[b].bounds.include(item.loLanes(), item.hiLanes());
+            bins[b].centroids.include(centroid, centroid);
         }
+        // The cost of each split: the items on each side times the area of their bounds.
         double costs[kBins - 1] = {};
-        FloatBox below;
+        Box4 below;
         int countBelow = 0;
         for (int i = 0; i < kBins - 1; ++i) {
-            below.include(bins[i]);
+            below.include(bins[i].bounds);
             countBelow += binCount[i];
             costs[i] = countBelow * below.surfaceArea();
         }
-        FloatBox above;
+        Box4 above;
         int countAbove = 0;
         for (int i = kBins - 1; i >= 1; --i) {
-            above.include(bins[i]);
+            above.include(bins[i].bounds);
             countAbove += binCount[i];
             costs[i - 1] += countAbove * above.surfaceArea();
         }
@@ -234,8 +287,10 @@ private:
         }
         double area = range.bounds.surfaceArea();
         double splitCost = 0.5 + (area > 0 ? bestCost / area : 0);
-        if (count <= kMaxLeafItems && splitCost >= static_cast<double>(count)) return -1;
-        return best;
+        if (count <= kMaxLeafItems && splitCost >= static_cast<double>(count)) return {};
+        Split split{best, {}, {}};
+        for (int i = 0; i < kBins; ++i) (i <= best ? split.below : split.above).include(bins[i]);
+        return split;
     }
 
     int makeLeaf(int32_t nodeIndex, size_t begin, size_t end, int depth) {
@@ -286,8 +341,8 @@ public:
             if (slot >= childCount) continue;
             const BinaryNode& c = binary_[children[slot]];
             for (int axis = 0; axis < 3; ++axis) {
-                filled.faces[axis][slot] = c.bounds.lo[axis];
-                filled.faces[3 + axis][slot] = c.bounds.hi[axis];
+                filled.faces[axis][slot] = c.lo[axis];
+                filled.faces[3 + axis][slot] = c.hi[axis];
             }
             if (c.count > 0) {
                 filled.child[slot] = ~c.offset;
@@ -318,7 +373,7 @@ private:
             int widest = -1;
             for (size_t i = 0; i < childCount; ++i) {
                 const BinaryNode& c = binary_[children[i]];
-                if (c.count == 0 && (widest < 0 || c.bounds.surfaceArea() > binary_[children[widest]].bounds.surfaceArea()))
+                if (c.count == 0 && (widest < 0 || c.surfaceArea() > binary_[children[widest]].surfaceArea()))
                     widest = static_cast<int>(i);
             }
             if (widest < 0) break;
@@ -361,14 +416,15 @@ void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::ve
     fewItemBounds_.clear();
     depth_ = 0;
     if (count == 0) return;
-    std::vector<BuildItem> items(count);
-    for (size_t i = 0; i < count; ++i) items[i] = {FloatBox::outward(boundsOf(i)), static_cast<int32_t>(i), 0};
+    std::vector<BuildItem> items;
+    items.reserve(count);
+    for (size_t i = 0; i < count; ++i) items.emplace_back(boundsOf(i), static_cast<int32_t>(i));
     // Levels of the tree whose two subtrees are built by two threads: twice as many subtrees
     // as threads, so that an uneven split still leaves every thread busy.
     int parallelLevels = 0;
     while (threads > 1 && (1u << parallelLevels) < 2 * threads) ++parallelLevels;
     Builder builder(items, items.size());
-    builder.build(0, items.size(), 0, parallelLevels);
+    builder.build(0, items.size(), builder.boundsOf(0, items.size()), 0, parallelLevels);
     release(items); // not held while the wide tree is made beside the binary one
     // The build leaves the input positions in the order of the leaves.
     items_ = std::move(builder.order);
