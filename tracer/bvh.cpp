@@ -309,7 +309,12 @@ private:
 /// its subtree.
 class Collapser {
 public:
-    Collapser(const std::vector<BinaryNode>& binary, std::vector<WideBvhNode>& wide) : binary_(binary), wide_(wide) {}
+    /// `order`: the items in the order of the binary leaves, as positions in the build's input;
+    /// `ids`: what each position stands for (empty: the position itself). The wide tree goes
+    /// to `wide`, the items of its leaves of more than one to `items`.
+    Collapser(const std::vector<BinaryNode>& binary, const std::vector<int32_t>& order,
+              const std::vector<int32_t>& ids, std::vector<WideBvhNode>& wide, std::vector<int32_t>& items)
+        : binary_(binary), order_(order), ids_(ids), wide_(wide), items_(items) {}
 
     /// The wide nodes the subtree at binaryIndex collapses to (so that they can be stored in
     /// one allocation of the right size).
@@ -345,7 +350,7 @@ public:
                 filled.faces[3 + axis][slot] = c.hi[axis];
             }
             if (c.count > 0) {
-                filled.child[slot] = ~c.offset;
+                filled.child[slot] = leafChild(c);
                 filled.count[slot] = c.count;
             } else {
                 int below = 0;
@@ -384,8 +389,23 @@ private:
         return childCount;
     }
 
+    /// A leaf's `child` in the wide tree: its item, or where its items start in items_.
+    int32_t leafChild(const BinaryNode& leaf) {
+        auto id = [&](size_t k) {
+            const int32_t position = order_[static_cast<size_t>(leaf.offset) + k];
+            return ids_.empty() ? position : ids_[static_cast<size_t>(position)];
+        };
+        if (leaf.count == 1) return id(0);
+        const auto first = static_cast<int32_t>(items_.size());
+        for (size_t k = 0; k < leaf.count; ++k) items_.push_back(id(k));
+        return first;
+    }
+
     const std::vector<BinaryNode>& binary_;
+    const std::vector<int32_t>& order_;
+    const std::vector<int32_t>& ids_;
     std::vector<WideBvhNode>& wide_;
+    std::vector<int32_t>& items_;
 };
 
 } // namespace
@@ -413,7 +433,7 @@ WideRay::WideRay(const Ray& ray) {
 void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::vector<int32_t> ids) {
     nodes_.clear();
     items_.clear();
-    fewItemBounds_.clear();
+    fewItems_.clear();
     depth_ = 0;
     if (count == 0) return;
     std::vector<BuildItem> items;
@@ -427,17 +447,17 @@ void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::ve
     builder.build(0, items.size(), builder.boundsOf(0, items.size()), 0, parallelLevels);
     release(items); // not held while the wide tree is made beside the binary one
     // The build leaves the input positions in the order of the leaves.
-    items_ = std::move(builder.order);
-    for (int32_t& item : items_) {
-        if (count <= kFewItems) { // these keep their exact boxes
-            const Bounds3 b = boundsOf(static_cast<size_t>(item));
-            fewItemBounds_.push_back({{b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z}});
+    if (count <= kFewItems) {
+        for (int32_t position : builder.order) {
+            const Bounds3 b = boundsOf(static_cast<size_t>(position)); // exact, not rounded to float
+            const int32_t item = ids.empty() ? position : ids[static_cast<size_t>(position)];
+            fewItems_.push_back({{b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z}, item});
         }
-        if (!ids.empty()) item = ids[static_cast<size_t>(item)];
     }
-    Collapser collapser(builder.nodes, nodes_);
+    Collapser collapser(builder.nodes, builder.order, ids, nodes_, items_);
     nodes_.reserve(collapser.count(0));
     collapser.collapse(0, depth_);
+    items_.shrink_to_fit();
 }
 
 } // namespace crt::tracer

@@ -92,7 +92,9 @@ inline int laneMask(Int4 lanes) {
 /// A node of the 4-wide BVH: the boxes of up to four children side by side, axis by axis,
 /// so that one ray is tested against all four at once. Boxes are the double-precision
 /// bounds rounded outwards to float; an unused slot has an empty box (lo > hi) that no ray
-/// hits. A child >= 0 is a node; a leaf is ~first with items[first .. first + count).
+/// hits. A slot of count 0 is a node, `child` its index. A leaf of one item holds the item
+/// itself in `child` (most leaves: no look-up in `items`, and 4 bytes less an item); a leaf
+/// of more is items[child .. child + count).
 struct alignas(16) WideBvhNode {
     Float4 faces[6]; ///< lo.x, lo.y, lo.z, hi.x, hi.y, hi.z of the four boxes
     int32_t child[4];
@@ -172,7 +174,7 @@ public:
     /// The bytes its nodes and items take (beyond the Bvh itself).
     uint64_t byteSize() const {
         return nodes_.capacity() * sizeof(WideBvhNode) + items_.capacity() * sizeof(int32_t) +
-               fewItemBounds_.capacity() * sizeof(BoxFaces);
+               fewItems_.capacity() * sizeof(FewItem);
     }
 
     /// Visits the items whose leaves the ray segment (0, tMax) reaches, nearer subtrees
@@ -181,19 +183,19 @@ public:
     template <typename Visit>
     bool traverse(const LazyBoxRay& ray, const double& tMax, RayStats& stats, Visit&& visit) const {
         if (nodes_.empty()) return true;
-        if (!fewItemBounds_.empty()) {
+        if (!fewItems_.empty()) {
             // A handful of items: their boxes one by one in double precision, which is
             // cheaper than preparing a ray for four-wide float tests.
             const BoxRay& boxRay = ray.box();
-            stats.nodesVisited += fewItemBounds_.size();
-            for (size_t i = 0; i < fewItemBounds_.size(); ++i)
-                if (boxRay.hits(fewItemBounds_[i].faces, 0.0, tMax) && !visit(items_[i])) return false;
+            stats.nodesVisited += fewItems_.size();
+            for (const FewItem& few : fewItems_)
+                if (boxRay.hits(few.faces, 0.0, tMax) && !visit(few.item)) return false;
             return true;
         }
         return traverseWide(ray.ray(), tMax, stats, visit);
     }
 
-    /// Up to this many items, traversal tests each item's box (fewItemBounds_).
+    /// Up to this many items, traversal tests each item's box (fewItems_).
     static constexpr size_t kFewItems = 4;
 
 private:
@@ -222,13 +224,10 @@ private:
         Pending current{0, 0, 0};
         Float4 limit = WideRay::widenedLimit4(tMax); // tMax changes only in visit()
         while (true) {
-            if (current.child < 0) {
-                const int32_t first = ~current.child;
-                for (uint32_t i = 0; i < current.count; ++i) {
-                    if (!visit(items_[first + int32_t(i)])) {
-                        stats.nodesVisited += tested;
-                        return false;
-                    }
+            if (current.count > 0) {
+                if (!visitLeaf(current.child, current.count, visit)) {
+                    stats.nodesVisited += tested;
+                    return false;
                 }
                 limit = WideRay::widenedLimit4(tMax);
             } else {
@@ -272,12 +271,21 @@ private:
         }
     }
 
+    template <typename Visit>
+    bool visitLeaf(int32_t child, uint32_t count, Visit& visit) const {
+        if (count == 1) return visit(child);
+        for (uint32_t i = 0; i < count; ++i)
+            if (!visit(items_[static_cast<size_t>(child) + i])) return false;
+        return true;
+    }
+
     std::vector<WideBvhNode> nodes_;
-    std::vector<int32_t> items_;
-    struct BoxFaces {
+    std::vector<int32_t> items_; ///< of the leaves of more than one item
+    struct FewItem {
         double faces[6]; ///< as BoxRay indexes them
+        int32_t item;
     };
-    std::vector<BoxFaces> fewItemBounds_; ///< with at most kFewItems items, theirs in order
+    std::vector<FewItem> fewItems_; ///< with at most kFewItems items, them and their boxes
     int depth_ = 0;
 };
 

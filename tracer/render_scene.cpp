@@ -201,8 +201,7 @@ bool RenderScene::intersect(const Ray& ray, double tMax, Hit& hit, QueryScratch&
             found = true;
         }
     }
-    bvh.traverse(lazy, nearest, stats, [&](int32_t item) {
-        const int32_t object = objects[item];
+    bvh.traverse(lazy, nearest, stats, [&](int32_t object) {
         if (nearestInObject(object, lazy, nearest, hit, scratch, stats, departed)) {
             nearest = hit.t;
             found = true;
@@ -230,7 +229,7 @@ Departure RenderScene::departedPrimitive(const Hit& hit, const SurfaceInteractio
     // the ray starts beyond it and moves away.
     const Geometry& geometry = primitives[hit.primitive].geometry;
     if (isFlat(geometry) || (isBoundedConvex(geometry) && glm::dot(dir, si.normal) > 0)) return {hit.primitive};
-    if (std::holds_alternative<MeshGeometry>(geometry)) return {hit.primitive, hit.crossing.part};
+    if (holds<MeshGeometry>(geometry)) return {hit.primitive, hit.crossing.part};
     return {};
 }
 
@@ -245,7 +244,8 @@ uint64_t RenderScene::byteSize() const {
     auto bytes = [](const auto& v) { return uint64_t(v.capacity()) * sizeof(v[0]); };
     uint64_t total = sizeof(RenderScene) + bytes(primitives) + bytes(primitiveEntities) + bytes(transforms) +
                      bytes(csgNodes) + bytes(meshes) + bytes(materials) + bytes(blends) + bytes(prototypes) +
-                     bytes(instances) + bytes(objects) + bytes(unbounded) + bytes(planes) + bvh.byteSize();
+                     bytes(instances) + bytes(unbounded) + bytes(planes) + bvh.byteSize();
+    for (const Primitive& p : primitives) total += outOfLineBytes(p.geometry);
     for (const auto& mesh : meshes) total += mesh->byteSize();
     for (const auto& prototype : prototypes) total += prototype->byteSize();
     return total;

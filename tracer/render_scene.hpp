@@ -210,9 +210,8 @@ public:
     /// The SceneDesc entity the hit primitive was built from.
     int32_t entityOf(const Hit& hit) const;
 
-    /// Objects of the acceleration structure: a primitive (>= 0), a CSG root (~node), or an
-    /// instance (instanceObject(i)).
-    std::vector<int32_t> objects;
+    /// Objects are what the BVH holds: a primitive (>= 0), a CSG root (~node), or an instance
+    /// (instanceObject(i)). These are kept outside it:
     std::vector<int32_t> unbounded; ///< objects kept outside the BVH (unbounded CSG)
     std::vector<PlaneObject> planes; ///< plain planes, also outside the BVH
     Bvh bvh;

@@ -49,8 +49,8 @@ bool RenderScene::forEachCrossing(const Ray& ray, double tMax, Departure departe
     const LazyBoxRay lazy(ray);
     for (int32_t object : unbounded)
         if (!crossingsInObject(object, lazy, tMax, scratch, stats, visit, departed)) return false;
-    return bvh.traverse(lazy, tMax, stats, [&](int32_t item) {
-        return crossingsInObject(objects[item], lazy, tMax, scratch, stats, visit, departed);
+    return bvh.traverse(lazy, tMax, stats, [&](int32_t object) {
+        return crossingsInObject(object, lazy, tMax, scratch, stats, visit, departed);
     });
 }
 

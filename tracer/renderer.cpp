@@ -180,7 +180,7 @@ void traceTile(const PixelSampler& sampler, const Tile& tile, int channels, std:
 void isosurfaceWarnings(const scene::SceneDesc& desc, const RenderScene& scene,
                         std::vector<const scene::IsosurfaceDesc*>& seen, std::string& warnings) {
     for (const Primitive& p : scene.primitives) {
-        auto* iso = std::get_if<IsosurfaceGeometry>(&p.geometry);
+        auto* iso = shapeIf<IsosurfaceGeometry>(p.geometry);
         if (!iso || std::find(seen.begin(), seen.end(), &iso->desc()) != seen.end()) continue;
         seen.push_back(&iso->desc());
         warnings += iso->warnings(scene::spanLocation(desc, iso->desc().source));

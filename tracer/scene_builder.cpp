@@ -57,7 +57,7 @@ public:
         const uint64_t copied = copiedPrimitives();
         scene_.primitives.reserve(copied);
         scene_.primitiveEntities.reserve(copied);
-        scene_.objects.reserve(copied);
+        objects_.reserve(copied);
         for (int32_t root : desc_.drawn)
             if (!addDrawn(root, Transform())) return false;
         finishAcceleration();
@@ -101,11 +101,11 @@ private:
                        std::holds_alternative<scene::InverseNode>(e.shape)) {
                 int32_t node = addCsg(op);
                 if (!error_.empty()) return false; // a mesh operand that cannot be read
-                if (node >= 0) scene_.objects.push_back(~node);
+                if (node >= 0) objects_.push_back(~node);
             } else {
                 int32_t p = addPrimitive(op);
                 if (!error_.empty()) return false; // a mesh that cannot be read
-                if (p >= 0) scene_.objects.push_back(p);
+                if (p >= 0) objects_.push_back(p);
             }
         }
         return true;
@@ -190,7 +190,7 @@ private:
         const bool bounded = prototype.unbounded.empty() && prototype.planes.empty();
         if (bounded && prototype.bounds.empty()) return true; // nothing to draw
         const int32_t transform = addTransform(op.transform);
-        scene_.objects.push_back(RenderScene::instanceObject(static_cast<int32_t>(scene_.instances.size())));
+        objects_.push_back(RenderScene::instanceObject(static_cast<int32_t>(scene_.instances.size())));
         scene_.instances.push_back({known->second, transform, op.material >= 0 ? op.material : defaultMaterial_});
         instanceBounds_.push_back(bounded ? worldBounds(prototype.bounds, transform) : Bounds3::everything());
         return true;
@@ -442,7 +442,7 @@ private:
     bool addPlane(int32_t object) {
         if (object < 0) return false;
         const Primitive& p = scene_.primitives[object];
-        const PlaneGeometry* plane = std::get_if<PlaneGeometry>(&p.geometry);
+        const PlaneGeometry* plane = shapeIf<PlaneGeometry>(p.geometry);
         if (!plane) return false;
         if (plane->empty()) return true; // a zero normal: nothing to draw
         Vec3 normal = plane->normal(), point = plane->position();
@@ -457,8 +457,8 @@ private:
 
     void finishAcceleration() {
         std::vector<int32_t> bounded;
-        std::vector<Bounds3> bounds;
-        for (int32_t object : scene_.objects) {
+        bounded.reserve(objects_.size());
+        for (int32_t object : objects_) {
             Bounds3 b = objectBounds(object);
             if (b.empty()) continue; // an intersection of disjoint solids
             if (!b.finite()) {
@@ -466,11 +466,13 @@ private:
                 continue;
             }
             bounded.push_back(object);
-            bounds.push_back(b);
             scene_.bounds.include(b);
         }
-        scene_.objects = std::move(bounded);
-        scene_.bvh.build(std::move(bounds), threads_);
+        std::vector<int32_t>().swap(objects_);
+        // The bounds are asked for again rather than held: for a million primitives they would
+        // take 48 MB.
+        const size_t count = bounded.size();
+        scene_.bvh.build(count, [&](size_t i) { return objectBounds(bounded[i]); }, threads_, bounded);
     }
 
     /// What the builders of a scene and of its prototypes share: files read once, meshes
@@ -496,6 +498,9 @@ private:
     int32_t defaultMaterial_ = 0;
     bool instancing_ = true;
     std::vector<Bounds3> instanceBounds_; ///< of each instance, in world space
+    /// What the acceleration structure is to hold: primitives, CSG roots (~node) and
+    /// instances (RenderScene::instanceObject).
+    std::vector<int32_t> objects_;
 };
 
 std::unique_ptr<RenderScene> buildRenderScene(const scene::SceneDesc& desc, std::string& error,

@@ -6,20 +6,21 @@
 namespace crt::tracer {
 
 Bounds3 geometryBounds(const Geometry& geometry) {
-    return std::visit([](const auto& g) { return g.bounds(); }, geometry);
+    return std::visit([](const auto& g) { return shapeOf(g).bounds(); }, geometry);
 }
 
 void crossLine(const Geometry& geometry, const Ray& ray, CrossingList& out) {
-    std::visit([&](const auto& g) { g.crossLine(ray, out); }, geometry);
+    std::visit([&](const auto& g) { shapeOf(g).crossLine(ray, out); }, geometry);
 }
 
 SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing& crossing, bool wantUv) {
-    return std::visit([&](const auto& g) { return g.surfaceAt(ray, crossing, wantUv); }, geometry);
+    return std::visit([&](const auto& g) { return shapeOf(g).surfaceAt(ray, crossing, wantUv); }, geometry);
 }
 
 MappingAxis mappingAxis(const Geometry& geometry) {
     return std::visit(
-        [](const auto& g) {
+        [](const auto& stored) {
+            const auto& g = shapeOf(stored);
             if constexpr (requires { g.mappingAxis(); })
                 return g.mappingAxis();
             else
@@ -29,29 +30,38 @@ MappingAxis mappingAxis(const Geometry& geometry) {
 }
 
 bool isSolid(const Geometry& geometry) {
-    return std::visit([](const auto& g) { return g.solid(); }, geometry);
+    return std::visit([](const auto& g) { return shapeOf(g).solid(); }, geometry);
+}
+
+size_t outOfLineBytes(const Geometry& geometry) {
+    return std::visit(
+        [](const auto& stored) {
+            using Shape = std::decay_t<decltype(shapeOf(stored))>;
+            return std::is_same_v<std::decay_t<decltype(stored)>, Shape> ? size_t(0) : sizeof(Shape);
+        },
+        geometry);
 }
 
 bool isBoundedConvex(const Geometry& geometry) {
-    if (std::holds_alternative<SphereGeometry>(geometry) || std::holds_alternative<BoxGeometry>(geometry)) return true;
-    if (auto* c = std::get_if<CylinderGeometry>(&geometry)) return c->solid();
-    if (auto* c = std::get_if<ConeGeometry>(&geometry)) return c->solid();
-    if (auto* s = std::get_if<SuperellipsoidGeometry>(&geometry)) return s->convex();
+    if (holds<SphereGeometry>(geometry) || holds<BoxGeometry>(geometry)) return true;
+    if (auto* c = shapeIf<CylinderGeometry>(geometry)) return c->solid();
+    if (auto* c = shapeIf<ConeGeometry>(geometry)) return c->solid();
+    if (auto* s = shapeIf<SuperellipsoidGeometry>(geometry)) return s->convex();
     return false;
 }
 
 bool isFlat(const Geometry& geometry) {
-    return std::holds_alternative<PlaneGeometry>(geometry) ||
-           std::holds_alternative<DiscGeometry>(geometry) ||
-           std::holds_alternative<QuadGeometry>(geometry) ||
-           std::holds_alternative<TriangleGeometry>(geometry) ||
-           std::holds_alternative<PolygonGeometry>(geometry);
+    return holds<PlaneGeometry>(geometry) ||
+           holds<DiscGeometry>(geometry) ||
+           holds<QuadGeometry>(geometry) ||
+           holds<TriangleGeometry>(geometry) ||
+           holds<PolygonGeometry>(geometry);
 }
 
 bool hasCheapCrossings(const Geometry& geometry) {
-    return std::holds_alternative<SphereGeometry>(geometry) || std::holds_alternative<BoxGeometry>(geometry) ||
-           std::holds_alternative<PlaneGeometry>(geometry) || std::holds_alternative<DiscGeometry>(geometry) ||
-           std::holds_alternative<QuadGeometry>(geometry) || std::holds_alternative<TriangleGeometry>(geometry);
+    return holds<SphereGeometry>(geometry) || holds<BoxGeometry>(geometry) ||
+           holds<PlaneGeometry>(geometry) || holds<DiscGeometry>(geometry) ||
+           holds<QuadGeometry>(geometry) || holds<TriangleGeometry>(geometry);
 }
 
 std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::RenderLimits& limits) {
@@ -106,7 +116,8 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::Ren
 bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
                  uint32_t skippedPart) {
     return std::visit(
-        [&](const auto& g) {
+        [&](const auto& stored) {
+            const auto& g = shapeOf(stored);
             if constexpr (requires { g.crossingsIn(ray, tMin, tMax, visit, skippedPart); }) {
                 return g.crossingsIn(ray, tMin, tMax, visit, skippedPart);
             } else if constexpr (requires { g.crossingsIn(ray, tMin, tMax, visit); }) {
@@ -124,7 +135,7 @@ bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double t
 
 bool firstCrossingIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out,
                      uint32_t skippedPart) {
-    if (auto* mesh = std::get_if<MeshGeometry>(&geometry))
+    if (auto* mesh = shapeIf<MeshGeometry>(geometry))
         return mesh->firstCrossingIn(ray, tMin, tMax, out, skippedPart);
     bool found = false;
     auto first = [&](const Crossing& c) {

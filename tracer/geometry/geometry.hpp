@@ -10,6 +10,7 @@
 #include "tracer/geometry/isosurface.hpp"
 #include "tracer/geometry/lathe.hpp"
 #include "tracer/geometry/mesh.hpp"
+#include "tracer/geometry/out_of_line.hpp"
 #include "tracer/geometry/plane.hpp"
 #include "tracer/geometry/polygon.hpp"
 #include "tracer/geometry/prism.hpp"
@@ -22,18 +23,58 @@
 #include "tracer/geometry/torus.hpp"
 #include "tracer/geometry/triangle.hpp"
 
+#include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <variant>
 
 namespace crt::tracer {
 
-/// One primitive in its object space.
+/// Shapes up to a sphere's size are held in a Geometry itself, larger ones out of line: the
+/// shapes scenes hold by the million (spheres, drawings of a mesh) then take a primitive of
+/// 48 bytes, and the others one pointer chase more.
+inline constexpr size_t kInlineShapeBytes = sizeof(SphereGeometry);
+
+/// How a Geometry holds a shape of type T.
+template <typename T>
+using StoredShape = std::conditional_t<(sizeof(T) <= kInlineShapeBytes), T, OutOfLine<T>>;
+
+/// One primitive in its object space. Ask for a shape with shapeIf<T> or holds<T>, which do
+/// not depend on how it is held.
 using Geometry =
-    std::variant<SphereGeometry, BoxGeometry, PlaneGeometry, CylinderGeometry, ConeGeometry,
-                 TorusGeometry, DiscGeometry, QuadGeometry, TriangleGeometry, MeshGeometry,
-                 SuperellipsoidGeometry, PolygonGeometry, PrismGeometry, SorGeometry, LatheGeometry,
-                 TextGeometry, BlobGeometry, IsosurfaceGeometry, HeightFieldGeometry,
-                 SphereSweepGeometry>;
+    std::variant<StoredShape<SphereGeometry>, StoredShape<BoxGeometry>, StoredShape<PlaneGeometry>,
+                 StoredShape<CylinderGeometry>, StoredShape<ConeGeometry>, StoredShape<TorusGeometry>,
+                 StoredShape<DiscGeometry>, StoredShape<QuadGeometry>, StoredShape<TriangleGeometry>,
+                 StoredShape<MeshGeometry>, StoredShape<SuperellipsoidGeometry>, StoredShape<PolygonGeometry>,
+                 StoredShape<PrismGeometry>, StoredShape<SorGeometry>, StoredShape<LatheGeometry>,
+                 StoredShape<TextGeometry>, StoredShape<BlobGeometry>, StoredShape<IsosurfaceGeometry>,
+                 StoredShape<HeightFieldGeometry>, StoredShape<SphereSweepGeometry>>;
+
+/// The shape a Geometry's alternative holds, however it is held.
+template <typename T>
+const T& shapeOf(const T& shape) {
+    return shape;
+}
+template <typename T>
+const T& shapeOf(const OutOfLine<T>& shape) {
+    return *shape;
+}
+
+/// The geometry's shape if it is a T, else null.
+template <typename T>
+const T* shapeIf(const Geometry& geometry) {
+    const auto* stored = std::get_if<StoredShape<T>>(&geometry);
+    return stored ? &shapeOf(*stored) : nullptr;
+}
+
+template <typename T>
+bool holds(const Geometry& geometry) {
+    return std::holds_alternative<StoredShape<T>>(geometry);
+}
+
+/// The bytes the geometry holds beyond itself: its shape's, when that is out of line (not
+/// what the shape keeps of its own, such as a prism's outline).
+size_t outOfLineBytes(const Geometry& geometry);
 
 /// Object-space bounds (Bounds3::everything() for a plane, empty for a degenerate shape).
 Bounds3 geometryBounds(const Geometry& geometry);

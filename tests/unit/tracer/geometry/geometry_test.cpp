@@ -6,16 +6,16 @@ namespace scene = crt::scene;
 using namespace crt::tracer::test;
 
 TEST_CASE("geometry: makeGeometry covers the plain shapes only") {
-    CHECK(std::holds_alternative<SphereGeometry>(*makeGeometry(scene::SphereShape{{0, 0, 0}, 1})));
-    CHECK(std::holds_alternative<BoxGeometry>(*makeGeometry(scene::BoxShape{{0, 0, 0}, {1, 1, 1}})));
-    CHECK(std::holds_alternative<PlaneGeometry>(*makeGeometry(scene::PlaneShape{})));
-    CHECK(std::holds_alternative<CylinderGeometry>(*makeGeometry(scene::CylinderShape{})));
-    CHECK(std::holds_alternative<ConeGeometry>(*makeGeometry(scene::ConeShape{})));
-    CHECK(std::holds_alternative<TorusGeometry>(*makeGeometry(scene::TorusShape{})));
-    CHECK(std::holds_alternative<DiscGeometry>(*makeGeometry(scene::DiscShape{})));
-    CHECK(std::holds_alternative<QuadGeometry>(*makeGeometry(scene::QuadShape{})));
-    CHECK(std::holds_alternative<TriangleGeometry>(*makeGeometry(scene::TriangleShape{})));
-    CHECK(std::holds_alternative<SuperellipsoidGeometry>(
+    CHECK(holds<SphereGeometry>(*makeGeometry(scene::SphereShape{{0, 0, 0}, 1})));
+    CHECK(holds<BoxGeometry>(*makeGeometry(scene::BoxShape{{0, 0, 0}, {1, 1, 1}})));
+    CHECK(holds<PlaneGeometry>(*makeGeometry(scene::PlaneShape{})));
+    CHECK(holds<CylinderGeometry>(*makeGeometry(scene::CylinderShape{})));
+    CHECK(holds<ConeGeometry>(*makeGeometry(scene::ConeShape{})));
+    CHECK(holds<TorusGeometry>(*makeGeometry(scene::TorusShape{})));
+    CHECK(holds<DiscGeometry>(*makeGeometry(scene::DiscShape{})));
+    CHECK(holds<QuadGeometry>(*makeGeometry(scene::QuadShape{})));
+    CHECK(holds<TriangleGeometry>(*makeGeometry(scene::TriangleShape{})));
+    CHECK(holds<SuperellipsoidGeometry>(
         *makeGeometry(scene::SuperellipsoidShape{})));
     CHECK_FALSE(makeGeometry(scene::MeshShape{"a.obj", ""}));
     CHECK_FALSE(makeGeometry(scene::CsgNode{}));

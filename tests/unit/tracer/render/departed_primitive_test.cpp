@@ -80,7 +80,7 @@ TEST_CASE("A ray skips the primitive it leaves only when it cannot meet it again
             }
             ++skipped;
             CHECK(departed.primitive == hit.primitive);
-            const bool mesh = std::holds_alternative<MeshGeometry>(geometry);
+            const bool mesh = holds<MeshGeometry>(geometry);
             if (mesh) {
                 ++meshFaces;
                 CHECK(departed.part == hit.crossing.part);
@@ -112,8 +112,8 @@ TEST_CASE("A torus or an open cylinder is never skipped: a ray leaving it may me
     auto scene = shapes();
     for (size_t p = 0; p < scene->primitives.size(); ++p) {
         const Geometry& geometry = scene->primitives[p].geometry;
-        const bool torus = std::holds_alternative<TorusGeometry>(geometry);
-        const bool open = std::holds_alternative<CylinderGeometry>(geometry) && !isSolid(geometry);
+        const bool torus = holds<TorusGeometry>(geometry);
+        const bool open = holds<CylinderGeometry>(geometry) && !isSolid(geometry);
         if (!torus && !open) continue;
         Hit hit{1.0, static_cast<int32_t>(p), Crossing{1.0, 0}, false};
         SurfaceInteraction si;
