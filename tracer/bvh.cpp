@@ -2,12 +2,15 @@
 #include "tracer/bvh.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <future>
 #include <limits>
+#include <memory>
 #include <numeric>
+#include <optional>
 #include <system_error>
 
 namespace crt::tracer {
@@ -24,14 +27,23 @@ constexpr size_t kParallelItems = 8192;
 /// Frees a vector's memory (assigning {} keeps it: that assigns an empty initializer list).
 template <typename T> void release(std::vector<T>& v) { std::vector<T>().swap(v); }
 
+/// The float next to f towards -infinity or +infinity (as std::nextafter, without a call into
+/// the maths library for each face of each item).
+float nextDown(float f) {
+    if (f == 0) return -std::numeric_limits<float>::denorm_min();
+    const auto bits = std::bit_cast<int32_t>(f);
+    return std::bit_cast<float>(f > 0 ? bits - 1 : bits + 1);
+}
+float nextUp(float f) { return -nextDown(-f); }
+
 float roundDown(double v) {
     float f = static_cast<float>(v);
-    return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+    return static_cast<double>(f) > v ? nextDown(f) : f;
 }
 
 float roundUp(double v) {
     float f = static_cast<float>(v);
-    return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+    return static_cast<double>(f) < v ? nextUp(f) : f;
 }
 
 /// A box in single precision held in four lanes (x, y, z, and one it does not use), so that
@@ -65,8 +77,8 @@ struct Box4 {
 /// Box4's 32, as a large build holds twice as many nodes as items.
 struct BinaryNode {
     float lo[3], hi[3];
-    int32_t offset = 0;
-    uint16_t count = 0;
+    int32_t offset;
+    uint16_t count;
 
     void setBounds(const Box4& box) {
         for (int axis = 0; axis < 3; ++axis) {
@@ -103,9 +115,9 @@ struct alignas(16) BuildItem {
     Float4 hiLanes() const { return lanes(sizeof(Float4)); }
     /// The centre of the box clamped to the finite floats (so that one reaching past them
     /// still has a centre), in lanes 0-2; lane 3 is 0.
-    Float4 centroid() const {
+    Float4 centroid() const { return centroidOf(loLanes(), hiLanes()); }
+    static Float4 centroidOf(Float4 l, Float4 h) {
         constexpr float big = std::numeric_limits<float>::max();
-        const Float4 l = loLanes(), h = hiLanes();
         const Float4 clampedLo = l > -big ? l : Float4{-big, -big, -big, -big};
         const Float4 clampedHi = h < big ? h : Float4{big, big, big, big};
         // Halves added, not the sum halved, so that two faces near the largest float do not
@@ -142,33 +154,30 @@ struct RangeBounds {
 };
 
 /// Builds the binary tree over `items` (reordering them), depth-first: a node, its first
-/// subtree, its second. Near the root the two subtrees are built by two threads into builders
-/// of their own and then appended in that order, so the tree is the same whatever the
-/// number of threads.
+/// subtree, its second. A subtree over n items takes at most 2n - 1 nodes, so each has its
+/// place in `nodes` fixed by its items alone: near the root the two subtrees are built by
+/// two threads straight into their places, and the tree is the same whatever the number of
+/// threads. A leaf's items are where the build leaves them in `items`.
 class Builder {
 public:
-    /// A builder for a subtree of `count` items: a binary tree with leaves of one item or
-    /// more has fewer than 2 · count nodes.
-    Builder(std::vector<BuildItem>& items, size_t count) : items_(items) {
-        nodes.reserve(2 * count);
-        order.reserve(count);
-    }
+    explicit Builder(std::vector<BuildItem>& items)
+        : nodes(std::make_unique_for_overwrite<BinaryNode[]>(2 * items.size() - 1)), items_(items) {}
 
-    std::vector<BinaryNode> nodes;
-    std::vector<int32_t> order; ///< item indices in the order of the leaves
+    /// Not initialised: each node is written by the thread that builds it, and the places
+    /// between subtrees that no node refers to are never touched.
+    std::unique_ptr<BinaryNode[]> nodes;
 
-    /// Where to split a node: after bin `bin` (-1: nowhere), and the bounds of the two sides.
+    /// Where to split a node's items, and the bounds of the two sides.
     struct Split {
-        int bin = -1;
+        size_t mid; ///< the first item of the second side
         RangeBounds below, above;
     };
 
-    /// Builds the subtree over items [begin, end), whose bounds are `range`; below
-    /// `parallelLevels` levels from here, one thread. Returns the depth of its deepest leaf.
-    int build(size_t begin, size_t end, const RangeBounds& range, int depth, int parallelLevels) {
-        int32_t nodeIndex = static_cast<int32_t>(nodes.size());
-        nodes.emplace_back();
-        nodes[nodeIndex].setBounds(range.bounds);
+    /// Builds the subtree over items [begin, end), whose bounds are `range`, at nodes[node]
+    /// onwards; below `parallelLevels` levels from here, one thread. Returns the depth of its
+    /// deepest leaf.
+    int build(size_t begin, size_t end, size_t node, const RangeBounds& range, int depth, int parallelLevels) {
+        nodes[node].setBounds(range.bounds);
         size_t count = end - begin;
         int axis = 0;
         if (range.centroids.extent(1) > range.centroids.extent(axis)) axis = 1;
@@ -176,32 +185,31 @@ public:
         const bool spread = range.centroids.extent(axis) > 0;
 
         bool mustSplit = count > 0xFFFF;
-        if ((count <= 1 || !spread || depth >= kMaxDepth) && !mustSplit) return makeLeaf(nodeIndex, begin, end, depth);
+        if ((count <= 1 || !spread || depth >= kMaxDepth) && !mustSplit) return makeLeaf(node, begin, end, depth);
 
-        Split split;
-        if (spread && count > 2) {
-            split = bestSplit(begin, end, axis, range, count);
-            if (split.bin < 0 && !mustSplit) return makeLeaf(nodeIndex, begin, end, depth);
+        std::optional<Split> split = chooseSplit(begin, end, axis, range);
+        if (!split) {
+            if (!mustSplit) return makeLeaf(node, begin, end, depth);
+            split = medianSplit(begin, end, axis);
         }
-        size_t mid = begin + count / 2;
-        if (split.bin >= 0) {
-            auto it = std::partition(items_.begin() + begin, items_.begin() + end,
-                                     [&](const BuildItem& item) { return static_cast<int>(item.bin) <= split.bin; });
-            mid = static_cast<size_t>(it - items_.begin());
+        // The first subtree follows its parent; the second comes after the most the first
+        // can take.
+        const size_t second = node + 2 * (split->mid - begin);
+        nodes[node].offset = static_cast<int32_t>(second);
+        nodes[node].count = 0;
+        auto buildFirst = [&, split] {
+            return build(begin, split->mid, node + 1, split->below, depth + 1, std::max(parallelLevels - 1, 0));
+        };
+        std::future<int> firstDepth;
+        if (parallelLevels > 0 && count >= kParallelItems) {
+            try {
+                firstDepth = std::async(std::launch::async, buildFirst);
+            } catch (const std::system_error&) {
+                // no thread to be had: built below, on this one
+            }
         }
-        if (split.bin < 0 || mid == begin || mid == end) {
-            mid = begin + count / 2;
-            std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
-                             [axis](const BuildItem& a, const BuildItem& b) { return a.centroid()[axis] < b.centroid()[axis]; });
-            split.below = boundsOf(begin, mid);
-            split.above = boundsOf(mid, end);
-        }
-        if (parallelLevels > 0 && count >= kParallelItems)
-            return buildChildrenInParallel(nodeIndex, begin, mid, end, split, depth, parallelLevels - 1);
-        int leftDepth = build(begin, mid, split.below, depth + 1, 0);
-        nodes[nodeIndex].offset = static_cast<int32_t>(nodes.size());
-        int rightDepth = build(mid, end, split.above, depth + 1, 0);
-        return std::max(leftDepth, rightDepth);
+        const int secondDepth = build(split->mid, end, second, split->above, depth + 1, std::max(parallelLevels - 1, 0));
+        return std::max(firstDepth.valid() ? firstDepth.get() : buildFirst(), secondDepth);
     }
 
     RangeBounds boundsOf(size_t begin, size_t end) const {
@@ -211,55 +219,102 @@ public:
     }
 
 private:
-    /// The children of nodes[nodeIndex], over items [begin, mid) and [mid, end): the first
-    /// built on a thread of its own (or later on this one, when no thread can be had).
-    int buildChildrenInParallel(int32_t nodeIndex, size_t begin, size_t mid, size_t end, const Split& split,
-                                int depth, int parallelLevels) {
-        Builder left(items_, mid - begin), right(items_, end - mid);
-        auto buildLeft = [&] { return left.build(begin, mid, split.below, depth + 1, parallelLevels); };
-        std::future<int> leftDepth;
-        try {
-            leftDepth = std::async(std::launch::async, buildLeft);
-        } catch (const std::system_error&) {
-            leftDepth = std::async(std::launch::deferred, buildLeft);
-        }
-        const int rightDepth = right.build(mid, end, split.above, depth + 1, parallelLevels);
-        const int depthReached = std::max(leftDepth.get(), rightDepth);
-        append(std::move(left));
-        nodes[nodeIndex].offset = static_cast<int32_t>(nodes.size());
-        append(std::move(right));
-        return depthReached;
+    /// The split the surface area heuristic prefers, or none when a leaf is cheaper (the cost
+    /// of a leaf is its items; of a split, half an item plus each side's items weighted by
+    /// the share of the node's area its bounds take). Falls back on the median where the
+    /// heuristic's split leaves a side empty.
+    std::optional<Split> chooseSplit(size_t begin, size_t end, int axis, const RangeBounds& range) {
+        const size_t count = end - begin;
+        if (range.centroids.extent(axis) <= 0) return std::nullopt;
+        if (count <= static_cast<size_t>(kBins)) return sortedSplit(begin, end, axis, range);
+        std::optional<Split> split = binnedSplit(begin, end, axis, range);
+        if (split && (split->mid == begin || split->mid == end)) return medianSplit(begin, end, axis);
+        return split;
     }
 
-    /// Appends a subtree built apart, its node and item offsets moved past ours, and frees
-    /// it (so that at most one subtree is held twice).
-    void append(Builder&& subtree) {
-        const auto nodeBase = static_cast<int32_t>(nodes.size());
-        const auto orderBase = static_cast<int32_t>(order.size());
-        for (BinaryNode node : subtree.nodes) {
-            node.offset += node.count > 0 ? orderBase : nodeBase;
-            nodes.push_back(node);
-        }
-        order.insert(order.end(), subtree.order.begin(), subtree.order.end());
-        release(subtree.nodes);
-        release(subtree.order);
+    /// Whether a split of this cost (the sum over its sides of items times area) beats a leaf.
+    static bool splitPays(double cost, const RangeBounds& range, size_t count) {
+        const double area = range.bounds.surfaceArea();
+        return count > kMaxLeafItems || 0.5 + (area > 0 ? cost / area : 0) < static_cast<double>(count);
     }
 
-    /// The cheapest split by the surface area heuristic, or none (bin -1) when a leaf is
-    /// cheaper; leaves each item's bin in it, for the partition that follows.
-    Split bestSplit(size_t begin, size_t end, int axis, const RangeBounds& range, size_t count) {
-        RangeBounds bins[kBins];
-        int binCount[kBins] = {};
+    /// Halves at the median centroid along `axis`.
+    Split medianSplit(size_t begin, size_t end, int axis) {
+        const size_t mid = begin + (end - begin) / 2;
+        std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
+                         [axis](const BuildItem& a, const BuildItem& b) { return a.centroid()[axis] < b.centroid()[axis]; });
+        return {mid, boundsOf(begin, mid), boundsOf(mid, end)};
+    }
+
+    /// A few items: sorted along the axis, every split between two of them is weighed (bins
+    /// would be mostly empty, and setting them up costs more than the items).
+    std::optional<Split> sortedSplit(size_t begin, size_t end, int axis, const RangeBounds& range) {
+        const size_t count = end - begin;
+        // Sorted by insertion on keys computed once (a comparison computing two centroids
+        // would cost more than the rest of the split).
+        struct Keyed {
+            float key;
+            BuildItem item;
+        };
+        Keyed sorted[kBins];
+        for (size_t i = 0; i < count; ++i) {
+            Keyed k{items_[begin + i].centroid()[axis], items_[begin + i]};
+            size_t at = i;
+            for (; at > 0 && sorted[at - 1].key > k.key; --at) sorted[at] = sorted[at - 1];
+            sorted[at] = k;
+        }
+        auto first = items_.begin() + static_cast<std::ptrdiff_t>(begin);
+        for (size_t i = 0; i < count; ++i) first[static_cast<std::ptrdiff_t>(i)] = sorted[i].item;
+        double aboveArea[kBins];
+        Box4 above;
+        for (size_t i = count - 1; i >= 1; --i) {
+            above.include(first[static_cast<std::ptrdiff_t>(i)].loLanes(), first[static_cast<std::ptrdiff_t>(i)].hiLanes());
+            aboveArea[i] = above.surfaceArea();
+        }
+        Box4 below;
+        size_t best = 0;
+        double bestCost = kInfinity;
+        for (size_t i = 1; i < count; ++i) {
+            below.include(first[static_cast<std::ptrdiff_t>(i - 1)].loLanes(), first[static_cast<std::ptrdiff_t>(i - 1)].hiLanes());
+            const double cost = double(i) * below.surfaceArea() + double(count - i) * aboveArea[i];
+            if (cost < bestCost) {
+                bestCost = cost;
+                best = i;
+            }
+        }
+        if (!splitPays(bestCost, range, count)) return std::nullopt;
+        const size_t mid = begin + best;
+        return Split{mid, boundsOf(begin, mid), boundsOf(mid, end)};
+    }
+
+    /// Many items: binned by centroid along the axis, the splits between bins weighed.
+    std::optional<Split> binnedSplit(size_t begin, size_t end, int axis, const RangeBounds& range) {
+        const size_t count = end - begin;
+        // Neighbouring items mostly fall into the same bin, and growing a bin waits for its
+        // last update: two sets of bins, for the even and the odd items, halve that wait.
+        RangeBounds lanes[2][kBins];
+        int laneCount[2][kBins] = {};
         const double lo = range.centroids.lo[axis];
         const double scale = kBins / range.centroids.extent(axis);
         for (size_t i = begin; i < end; ++i) {
             BuildItem& item = items_[i];
-            const Float4 centroid = item.centroid();
+            // Both halves read before the bin is written into the second: a read overlapping
+            // a write just made waits for it.
+            const Float4 l = item.loLanes(), h = item.hiLanes();
+            const Float4 centroid = BuildItem::centroidOf(l, h);
             const int b = std::clamp(static_cast<int>((centroid[axis] - lo) * scale), 0, kBins - 1);
+            const size_t lane = i & 1;
+            ++laneCount[lane][b];
+            lanes[lane][b].bounds.include(l, h);
+            lanes[lane][b].centroids.include(centroid, centroid);
             item.bin = static_cast<uint32_t>(b);
-            ++binCount[b];
-            bins[b].bounds.include(item.loLanes(), item.hiLanes());
-            bins[b].centroids.include(centroid, centroid);
+        }
+        RangeBounds bins[kBins];
+        int binCount[kBins];
+        for (int b = 0; b < kBins; ++b) {
+            bins[b] = lanes[0][b];
+            bins[b].include(lanes[1][b]);
+            binCount[b] = laneCount[0][b] + laneCount[1][b];
         }
         // The cost of each split: the items on each side times the area of their bounds.
         double costs[kBins - 1] = {};
@@ -285,18 +340,18 @@ private:
                 best = i;
             }
         }
-        double area = range.bounds.surfaceArea();
-        double splitCost = 0.5 + (area > 0 ? bestCost / area : 0);
-        if (count <= kMaxLeafItems && splitCost >= static_cast<double>(count)) return {};
-        Split split{best, {}, {}};
+        if (!splitPays(bestCost, range, count)) return std::nullopt;
+        Split split{begin, {}, {}};
         for (int i = 0; i < kBins; ++i) (i <= best ? split.below : split.above).include(bins[i]);
+        auto second = std::partition(items_.begin() + begin, items_.begin() + end,
+                                     [&](const BuildItem& item) { return static_cast<int>(item.bin) <= best; });
+        split.mid = static_cast<size_t>(second - items_.begin());
         return split;
     }
 
-    int makeLeaf(int32_t nodeIndex, size_t begin, size_t end, int depth) {
-        nodes[nodeIndex].offset = static_cast<int32_t>(order.size());
-        nodes[nodeIndex].count = static_cast<uint16_t>(end - begin);
-        for (size_t i = begin; i < end; ++i) order.push_back(items_[i].index);
+    int makeLeaf(size_t node, size_t begin, size_t end, int depth) {
+        nodes[node].offset = static_cast<int32_t>(begin);
+        nodes[node].count = static_cast<uint16_t>(end - begin);
         return depth;
     }
 
@@ -312,7 +367,7 @@ public:
     /// `order`: the items in the order of the binary leaves, as positions in the build's input;
     /// `ids`: what each position stands for (empty: the position itself). The wide tree goes
     /// to `wide`, the items of its leaves of more than one to `items`.
-    Collapser(const std::vector<BinaryNode>& binary, const std::vector<int32_t>& order,
+    Collapser(const BinaryNode* binary, const std::vector<int32_t>& order,
               const std::vector<int32_t>& ids, std::vector<WideBvhNode>& wide, std::vector<int32_t>& items)
         : binary_(binary), order_(order), ids_(ids), wide_(wide), items_(items) {}
 
@@ -401,7 +456,7 @@ private:
         return first;
     }
 
-    const std::vector<BinaryNode>& binary_;
+    const BinaryNode* binary_;
     const std::vector<int32_t>& order_;
     const std::vector<int32_t>& ids_;
     std::vector<WideBvhNode>& wide_;
@@ -443,18 +498,20 @@ void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::ve
     // as threads, so that an uneven split still leaves every thread busy.
     int parallelLevels = 0;
     while (threads > 1 && (1u << parallelLevels) < 2 * threads) ++parallelLevels;
-    Builder builder(items, items.size());
-    builder.build(0, items.size(), builder.boundsOf(0, items.size()), 0, parallelLevels);
+    Builder builder(items);
+    builder.build(0, items.size(), 0, builder.boundsOf(0, items.size()), 0, parallelLevels);
+    // The input positions in the order the build left them, which is the leaves' order.
+    std::vector<int32_t> order(count);
+    for (size_t i = 0; i < count; ++i) order[i] = items[i].index;
     release(items); // not held while the wide tree is made beside the binary one
-    // The build leaves the input positions in the order of the leaves.
     if (count <= kFewItems) {
-        for (int32_t position : builder.order) {
+        for (int32_t position : order) {
             const Bounds3 b = boundsOf(static_cast<size_t>(position)); // exact, not rounded to float
             const int32_t item = ids.empty() ? position : ids[static_cast<size_t>(position)];
             fewItems_.push_back({{b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z}, item});
         }
     }
-    Collapser collapser(builder.nodes, builder.order, ids, nodes_, items_);
+    Collapser collapser(builder.nodes.get(), order, ids, nodes_, items_);
     nodes_.reserve(collapser.count(0));
     collapser.collapse(0, depth_);
     items_.shrink_to_fit();
