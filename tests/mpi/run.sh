@@ -3,7 +3,7 @@
 # bits as crtc alone; a rank that fails or is killed ends the job with an error and no image.
 # Under mpirun, a missing MPI module is a clear error (tests/cli/loaded_libraries.sh checks
 # that crtc alone loads no MPI library).
-#   run.sh stills|animation|frames|frame_failure|frame_continue|failure|killed|interrupted|missing_module CRTC
+#   run.sh stills|animation|frames|frame_failure|frame_continue|failure|killed|interrupted|missing_module|transport CRTC
 set -u
 case_name=$1
 crtc=$(realpath "$2") # absolute: some checks run crtc from other folders
@@ -20,8 +20,7 @@ fi
 # A container without a network: shared memory between the processes, no kernel-assisted copy
 # (which ptrace restrictions forbid); root may run MPI jobs here.
 export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
-# No InfiniBand either: not trying UCX first saves 0.2 s of every job's start (docs/distributed.md).
-export OMPI_MCA_pml=ob1
+# No transport is named (OMPI_MCA_pml): crtc chooses its own, as for a user's plain mpirun.
 export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # Under the sanitizers: what OpenMPI's and OpenImageIO's libraries keep until exit is not ours;
 # their allocations are recognised by the whole stack (the fast unwinder stops in libraries
@@ -322,6 +321,24 @@ interrupted() {
     [ ! -e "$work/out.png" ] || fail "an image was written although the job was interrupted"
     [ -e "$work/.out.png.crtc-resume" ] || fail "the interrupted job left no resume log: $(ls -A "$work")"
     ls -A "$work" | grep -q "\.tmp$" && fail "a temporary file was left: $(ls -A "$work")"
+}
+
+# Unless the job names a transport, crtc takes OpenMPI's ob1 rather than let it try UCX first,
+# which takes some 0.2 s of every start (docs/distributed.md); one the job names is kept.
+transport() {
+    OMPI_MCA_pml_base_verbose=10 expect_status 0 "a job naming no transport" \
+        mpi 2 --quiet --threads 1 "$here/still.crt" --width 8 --height 8 -o "$work/out.png"
+    # Each rank opens ob1 alone (OpenMPI left to itself opens every transport it has).
+    [ "$(cat "$work/out" "$work/err" | grep -c "components_open: found loaded component")" = 2 ] &&
+        [ "$(cat "$work/out" "$work/err" | grep -c "components_open: found loaded component ob1")" = 2 ] ||
+        fail "ob1 alone was not opened by both ranks: $(grep -h "components_open: found" "$work/out" "$work/err")"
+    OMPI_MCA_pml=cm OMPI_MCA_pml_base_verbose=10 mpi 2 --quiet --threads 1 "$here/still.crt" \
+        --width 8 --height 8 -o "$work/named.png" >"$work/out" 2>"$work/err"
+    # Only the named one is opened (here it finds no network to run on, and the job fails).
+    grep -q "components_open: found loaded component ob1" "$work/out" "$work/err" &&
+        fail "crtc replaced the transport the job named"
+    grep -q "components_open: found loaded component cm" "$work/out" "$work/err" ||
+        fail "the job's own transport was not tried: $(head -5 "$work/err")"
 }
 
 missing_module() {
