@@ -143,6 +143,7 @@ void Interpreter::evaluateResolved() {
     globalValues_.resize(globals_.size());
     try {
         execRecovering(compilation_.main.items);
+        if (!diagnostics_.hasErrors()) checkStoredPrimitives();
         // After an error, what is unused or unlit is most likely so because of it.
         if (!diagnostics_.hasErrors()) {
             assembleScene();
@@ -289,7 +290,6 @@ void Interpreter::reserveLike(size_t entitiesBefore, size_t materialsBefore, uin
     try {
         const size_t entities = reserveFor(scene_.entities, entitiesBefore);
         entityInfo_.reserve(entities);
-        primitiveCounts_.reserve(entities);
         reserveFor(scene_.materials, materialsBefore);
     } catch (const std::bad_alloc&) {
         // The vectors grow as they go instead.
@@ -407,16 +407,8 @@ const Value* Interpreter::flattenEntities(const Value& list, std::vector<Value>&
 void Interpreter::draw(const Value& value, const Node* where) {
     switch (value.kind) {
     case ValueKind::Entity:
-        primitivesStored_ = scene::saturatingAdd(primitivesStored_, primitiveCounts_[value.index]);
-        if (primitivesStored_ > options_.limits.render.maxPrimitives) {
-            failAtLimit(
-                where->range,
-                fmt::format("the scene draws more than {} primitives (CSG operands and group "
-                            "members count each time they are used); raise the limit with "
-                            "--max-primitives",
-                            options_.limits.render.maxPrimitives));
-        }
         scene_.drawn.push_back(static_cast<int32_t>(value.index));
+        drawnAt_.push_back(where->range);
         return;
     case ValueKind::List: {
         std::vector<Value> entities;
@@ -434,6 +426,19 @@ void Interpreter::draw(const Value& value, const Node* where) {
                              fmt::format("this {} is not drawn; only entities are",
                                          typeName(value)));
         return;
+    }
+}
+
+void Interpreter::checkStoredPrimitives() {
+    const uint64_t limit = options_.limits.render.maxPrimitives;
+    const scene::SceneStorage storage = scene::storageOf(scene_);
+    for (size_t i = 0; i < storage.storedAfter.size(); ++i) {
+        if (scene::saturatingAdd(storage.storedAfter[i], meshTriangles_) <= limit) continue;
+        failAtLimit(drawnAt_[i],
+                    fmt::format("the scene stores more than {} primitives (copies count each time; "
+                                "an entity of {} or more drawn again is stored once); raise the "
+                                "limit with --max-primitives",
+                                limit, scene::kMinInstancePrimitives));
     }
 }
 

@@ -5,6 +5,7 @@
 #include "interpreter.hpp"
 
 #include "scene/function_program.hpp"
+#include "scene/instancing.hpp"
 #include "scene/primitive_count.hpp"
 
 #include <fmt/format.h>
@@ -299,6 +300,9 @@ private:
     /// Counts a mesh's triangles, stored once however often it is drawn, against the limit
     /// on primitives; `where` is the attribute that made the mesh.
     void storeTriangles(const scene::MeshData& mesh, SourceRange where);
+    /// Refuses a scene that stores more primitives than the limit (counted as the renderer
+    /// stores them, scene/instancing.hpp), at the drawing that passes it.
+    void checkStoredPrimitives();
     /// What the script may read, made from the options when first needed.
     const FileAccess& fileAccess();
     int32_t addEntity(scene::EntityDesc entity, EntityInfo info);
@@ -367,10 +371,9 @@ private:
     // scene under construction
     scene::SceneDesc scene_;
     std::vector<EntityInfo> entityInfo_;
-    /// Per entity: the primitives it expands to (scene/primitive_count.hpp).
-    std::vector<uint64_t> primitiveCounts_;
-    /// By the entities drawn so far and the triangles of the meshes made, saturating.
-    uint64_t primitivesStored_ = 0;
+    std::vector<SourceRange> drawnAt_; ///< per SceneDesc::drawn entry: what drew it
+    /// The triangles of the meshes made, each stored once however often it is drawn; saturating.
+    uint64_t meshTriangles_ = 0;
     std::vector<bool> reachable_; ///< per entity: drawn, or part of something drawn
     std::set<std::tuple<WarningKind, uint32_t, uint32_t>> warnedOnce_;
     std::vector<scene::LightDesc> lights_;

@@ -97,9 +97,9 @@ std::shared_ptr<const scene::MeshData> Interpreter::writtenMesh(ObjectBuilder& b
 }
 
 void Interpreter::storeTriangles(const scene::MeshData& mesh, SourceRange where) {
-    primitivesStored_ = scene::saturatingAdd(primitivesStored_, mesh.triangles.size());
+    meshTriangles_ = scene::saturatingAdd(meshTriangles_, mesh.triangles.size());
     const uint64_t limit = options_.limits.render.maxPrimitives;
-    if (primitivesStored_ > limit) {
+    if (meshTriangles_ > limit) {
         failAtLimit(where, fmt::format("the scene stores more than {} primitives with the {} "
                                        "triangles of this mesh (stored once however often it is "
                                        "drawn); raise the limit with --max-primitives",

@@ -323,18 +323,8 @@ int32_t Interpreter::addEntity(scene::EntityDesc entity, EntityInfo info) {
                                 "the limit with --max-entities",
                                 limits.maxEntities));
     }
-    // Counted now, from the parts' counts, so that a shared entity doubled in a loop stops
-    // here rather than when the renderer expands it.
-    const uint64_t primitives = scene::primitivesOf(entity, primitiveCounts_);
-    if (primitives > limits.render.maxPrimitives) {
-        fail(info.range, fmt::format("this entity expands to more than {} primitives (CSG operands "
-                                     "and group members count each time they are used); raise the "
-                                     "limit with --max-primitives",
-                                     limits.render.maxPrimitives));
-    }
     scene_.entities.push_back(std::move(entity));
     entityInfo_.push_back(info);
-    primitiveCounts_.push_back(primitives);
     return static_cast<int32_t>(scene_.entities.size() - 1);
 }
 

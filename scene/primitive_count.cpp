@@ -23,13 +23,4 @@ uint64_t primitivesOf(const EntityDesc& entity, std::span<const uint64_t> earlie
     return count;
 }
 
-uint64_t drawnPrimitives(const SceneDesc& scene) {
-    std::vector<uint64_t> counts;
-    counts.reserve(scene.entities.size());
-    for (const EntityDesc& entity : scene.entities) counts.push_back(primitivesOf(entity, counts));
-    uint64_t total = 0;
-    for (int32_t root : scene.drawn) total = saturatingAdd(total, counts[static_cast<size_t>(root)]);
-    return total;
-}
-
 } // namespace crt::scene

@@ -511,10 +511,11 @@ inline const std::string& fileToOpen(const std::string& resolved, const std::str
 /// How much rendering a scene may load: chosen outside the script (crtc's --max-primitives,
 /// --max-image-pixels), carried with the description so that every renderer of it sees them.
 struct RenderLimits {
-    /// Primitives after CSG, groups and shared entities are expanded (primitive_count.hpp),
-    /// and a mesh's triangles. A render peaks at about 650 bytes a primitive (1,000,000
-    /// spheres: 650 MB), so the default, ~3 GB, fits in the default evaluation budget
-    /// (Limits::maxMemory, 4 GiB) and is far above a hand-made scene.
+    /// Primitives stored, as the renderer stores them (instancing.hpp: an entity of 16 or
+    /// more drawn again is stored once, each drawing one more), and a mesh's triangles. A
+    /// render peaks at about 300 bytes a primitive (1,000,000 spheres: 300 MB), so the
+    /// default, ~1.5 GB, fits in the default evaluation budget (Limits::maxMemory, 4 GiB) and
+    /// is far above a hand-made scene.
     uint64_t maxPrimitives = 5'000'000;
     /// Pixels of one image a texture or background reads (width × height from its header).
     uint64_t maxImagePixels = 100'000'000;

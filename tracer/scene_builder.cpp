@@ -3,6 +3,7 @@
 #include "tracer/render_scene.hpp"
 
 #include "scene/mesh_file.hpp"
+#include "scene/instancing.hpp"
 #include "scene/primitive_count.hpp"
 #include "tracer/height_grid_reading.hpp"
 
@@ -12,12 +13,6 @@
 #include <map>
 
 namespace crt::tracer {
-
-/// An entity drawn at least this often, through transforms, groups and unions, and made of
-/// at least this many primitives, is built once as a prototype that each drawing instances.
-/// Below that a copy costs about what an instance does, and is reached by one BVH less.
-constexpr uint64_t kMinInstanceUses = 2;
-constexpr uint64_t kMinInstancePrimitives = 16;
 
 class RenderSceneBuilder {
 public:
@@ -40,20 +35,20 @@ public:
         scene_.materials.emplace_back(); // the default material
         scene_.blends = desc_.blends;
         if (!readHeightGrids()) return false;
-        countUses();
-        // Counted before anything is expanded: a shared entity doubled in a loop would
-        // otherwise fill memory here. Evaluation refuses such a scene already; this is for
-        // descriptions made otherwise.
-        const uint64_t drawn = scene::drawnPrimitives(desc_);
-        if (drawn > desc_.limits.maxPrimitives) {
-            error_ = fmt::format("the scene expands to more than {} primitives; raise the limit "
+        // Counted before anything is expanded (a shared entity doubled in a loop would
+        // otherwise fill memory here), by the rule the front end counts by. Evaluation refuses
+        // such a scene already; this is for descriptions made otherwise.
+        shared_.storage = scene::storageOf(desc_);
+        const uint64_t stored = shared_.storage.stored();
+        if (stored > desc_.limits.maxPrimitives) {
+            error_ = fmt::format("the scene stores more than {} primitives; raise the limit "
                                  "with --max-primitives",
                                  desc_.limits.maxPrimitives);
             return false;
         }
         // Room for them from the start (a mesh drawn is one primitive, an instance none): a
         // vector growing by doubling would copy and fault in its elements about twice.
-        shared_.storedPrimitives = drawn;
+        shared_.storedPrimitives = stored;
         const uint64_t copied = copiedPrimitives();
         scene_.primitives.reserve(copied);
         scene_.primitiveEntities.reserve(copied);
@@ -116,53 +111,16 @@ private:
         return own >= 0 ? own : op.material >= 0 ? op.material : defaultMaterial_;
     }
 
-    /// Calls f(part) for each part the shape is drawn as (a transform's child, a group's
-    /// members, a union's operands: what addDrawn walks through); false for a shape drawn as
-    /// itself.
-    template <typename F> static bool forEachDrawnPart(const scene::Shape& shape, F&& f) {
-        if (auto* t = std::get_if<scene::TransformNode>(&shape)) {
-            f(t->child);
-        } else if (auto* g = std::get_if<scene::GroupNode>(&shape)) {
-            for (int32_t m : g->members) f(m);
-        } else if (auto* c = std::get_if<scene::CsgNode>(&shape); c && c->op == scene::CsgOp::Union) {
-            f(c->left);
-            f(c->right);
-        } else {
-            return false;
-        }
-        return true;
-    }
-
-    /// How often each entity is drawn through transforms, groups and unions (saturating),
-    /// and the primitives it expands to: what decides which are instanced.
-    void countUses() {
-        shared_.expansion.reserve(desc_.entities.size());
-        for (const scene::EntityDesc& e : desc_.entities)
-            shared_.expansion.push_back(scene::primitivesOf(e, shared_.expansion));
-        shared_.uses.assign(desc_.entities.size(), 0);
-        for (int32_t root : desc_.drawn) shared_.uses[static_cast<size_t>(root)] += 1;
-        // Parts come before what is made of them: walking back, an entity's count is complete
-        // before it is handed down.
-        for (size_t i = desc_.entities.size(); i-- > 0;) {
-            const uint64_t uses = shared_.uses[i];
-            if (uses == 0) continue;
-            forEachDrawnPart(desc_.entities[i].shape, [&](int32_t part) {
-                const auto p = static_cast<size_t>(part);
-                if (p < i) shared_.uses[p] = scene::saturatingAdd(shared_.uses[p], uses);
-            });
-        }
-    }
-
     /// The primitives the drawn entities expand to where they are not instanced.
     uint64_t copiedPrimitives() const {
         std::vector<uint64_t> copied(desc_.entities.size(), 0);
         for (size_t i = 0; i < desc_.entities.size(); ++i) {
             if (instanced(static_cast<int32_t>(i))) continue;
-            const bool drawnAsParts = forEachDrawnPart(desc_.entities[i].shape, [&](int32_t part) {
+            const bool drawnAsParts = scene::forEachDrawnPart(desc_.entities[i].shape, [&](int32_t part) {
                 const auto p = static_cast<size_t>(part);
                 copied[i] = scene::saturatingAdd(copied[i], p < i ? copied[p] : 1);
             });
-            if (!drawnAsParts) copied[i] = shared_.expansion[i];
+            if (!drawnAsParts) copied[i] = shared_.storage.expansion[i];
         }
         uint64_t total = 0;
         for (int32_t root : desc_.drawn) total = scene::saturatingAdd(total, copied[static_cast<size_t>(root)]);
@@ -170,9 +128,7 @@ private:
     }
 
     bool instanced(int32_t entity) const {
-        const auto e = static_cast<size_t>(entity);
-        return instancing_ && shared_.uses[e] >= kMinInstanceUses && shared_.expansion[e] >= kMinInstancePrimitives &&
-               !std::holds_alternative<scene::TransformNode>(desc_.entities[e].shape);
+        return instancing_ && shared_.storage.instanced[static_cast<size_t>(entity)];
     }
 
     /// Draws the entity as an instance of its prototype (built on its first drawing).
@@ -483,8 +439,7 @@ private:
         std::map<const scene::HeightFieldDesc*, std::shared_ptr<const HeightGrid>> heightGrids;
         /// The primitives drawn and the triangles of the meshes built so far.
         uint64_t storedPrimitives = 0;
-        std::vector<uint64_t> uses;      ///< per entity: how often it is drawn
-        std::vector<uint64_t> expansion; ///< per entity: the primitives it expands to
+        scene::SceneStorage storage; ///< what is instanced
         std::map<int32_t, int32_t> prototypes; ///< entity -> its prototype
     };
 

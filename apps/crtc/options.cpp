@@ -283,7 +283,7 @@ void addEvaluationOptions(CLI::App& app, Options& o) {
         ->type_name("N")
         ->group(group);
     app.add_option("--max-primitives", limits.render.maxPrimitives,
-                   fmt::format("primitives after CSG and group expansion (default {})",
+                   fmt::format("primitives stored after CSG, groups and instancing (default {})",
                                limits.render.maxPrimitives))
         ->check(anyNumber<uint64_t>("a non-negative integer"))
         ->type_name("N")

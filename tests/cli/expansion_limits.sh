@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # What a small script or file can make the renderer hold ends in an error before it is held:
-# entities built (drawn or not), primitives after CSG and group expansion (counted before the
-# expansion, by --check too), and images whose header claims more pixels (or values) than allowed.
+# entities built (drawn or not), primitives stored after CSG and group expansion and instancing
+# (counted before the expansion, by --check too), and images whose header claims more pixels (or
+# values) than allowed.
 set -u
 crtc=$1
 sanitized=${2:-0} # 1 for an AddressSanitizer build: its shadow memory needs all the address space
@@ -22,30 +23,42 @@ else
 fi
 camera='Settings { width -> 8 height -> 8 }'
 
-# CSG doubling: 26 entities, 2^25 primitives. Stopped where the count passes the limit.
+# CSG doubling: 26 entities, 2^25 primitives. The shared half is stored once, but instances are
+# one level deep: it is 2^24 copies. The drawing that passes the limit is the error.
 printf '%s\ng = Sphere { center -> vec3(0, 0, 0) radius -> 1 }\nfor i in range(25) { g = g + g }\nScene { g }\n' \
     "$camera" >"$work/csg.crt"
 for command in --check --dump-scene ""; do
     expect_status 1 "CSG doubled 25 times (${command:-render})" "${limited[@]}" "$crtc" $command -o "$work/csg.png" "$work/csg.crt"
-    expect_text "$work/err" "^$work/csg.crt:3:26: error: this entity expands to more than 5000000 primitives \(CSG operands and group members count each time they are used\); raise the limit with --max-primitives$" \
-        "CSG doubled (${command:-render}): the primitive error at the union"
+    expect_text "$work/err" "^$work/csg.crt:4:9: error: the scene stores more than 5000000 primitives \(copies count each time; an entity of 16 or more drawn again is stored once\); raise the limit with --max-primitives$" \
+        "CSG doubled (${command:-render}): the primitive error at the drawing"
 done
 [ -e "$work/csg.png" ] && fail "CSG doubled: an image was written"
-expect_status 0 "CSG doubled 25 times, --max-primitives 2^25" "$crtc" --check --max-primitives 33554432 "$work/csg.crt"
+expect_status 0 "CSG doubled 25 times, --max-primitives 2^24 + 2" "$crtc" --check --max-primitives 16777218 "$work/csg.crt"
+expect_status 1 "CSG doubled 25 times, --max-primitives 2^24 + 1" "$crtc" --check --max-primitives 16777217 "$work/csg.crt"
 
 # A macro group doubled 20 times: 21 entities, 2^20 primitives.
 printf '%s\ntwice = Macro (x) {\n    x\n    x\n}\ng = Sphere { center -> vec3(0, 0, 0) radius -> 1 }\nfor i in range(20) { g = twice(g) }\nScene { g }\n' \
     "$camera" >"$work/group.crt"
 expect_status 1 "a group doubled 20 times, --max-primitives 1000" "$crtc" --check --max-entities 1000 --max-primitives 1000 "$work/group.crt"
-expect_text "$work/err" "^$work/group.crt:7:26: error: this entity expands to more than 1000 primitives" \
-    "the doubled group: the error at the macro call"
+expect_text "$work/err" "^$work/group.crt:8:9: error: the scene stores more than 1000 primitives" \
+    "the doubled group: the error at the drawing"
 
-# The drawn total: each entity within the limit, the scene over it.
-printf '%s\ng = Sphere { center -> vec3(0, 0, 0) radius -> 1 }\nfor i in range(6) { g = g + g }\nScene {\n    for i in range(20) { g }\n}\n' \
+# The drawn total. An entity of 8 primitives drawn 20 times is 20 copies of it: 160.
+printf '%s\ng = Sphere { center -> vec3(0, 0, 0) radius -> 1 }\nfor i in range(3) { g = g + g }\nScene {\n    for i in range(20) { g }\n}\n' \
     "$camera" >"$work/drawn.crt"
-expect_status 1 "20 draws of 64 primitives, --max-primitives 1000" "$crtc" --check --max-primitives 1000 "$work/drawn.crt"
-expect_text "$work/err" "^$work/drawn.crt:5:26: error: the scene draws more than 1000 primitives" "the drawn total: the error at the draw"
-expect_status 0 "20 draws of 64 primitives, --max-primitives 1280" "$crtc" --check --max-primitives 1280 "$work/drawn.crt"
+expect_status 1 "20 draws of 8 primitives, --max-primitives 159" "$crtc" --check --max-primitives 159 "$work/drawn.crt"
+expect_text "$work/err" "^$work/drawn.crt:5:26: error: the scene stores more than 159 primitives" "the drawn total: the error at the draw"
+expect_status 0 "20 draws of 8 primitives, --max-primitives 160" "$crtc" --check --max-primitives 160 "$work/drawn.crt"
+
+# One of 16 or more drawn again is stored once, each drawing one more: a forest of 10,000
+# drawings of a 1,024-primitive tree stores 11,024 (10,240,000 as copies), for --check and
+# for a render alike.
+printf '%s\ntree = Sphere { center -> vec3(0, 0, 0) radius -> 1 }\nfor i in range(10) { tree = tree + tree }\nScene {\n    for i in range(10000) { tree <translate vec3(i, 0, 0)> }\n}\n' \
+    "$camera" >"$work/forest.crt"
+expect_status 0 "a forest of 10,000 trees of 1,024 primitives, --max-primitives 11024" "$crtc" --check --max-primitives 11024 "$work/forest.crt"
+expect_status 1 "a forest of 10,000 trees of 1,024 primitives, --max-primitives 11023" "$crtc" --check --max-primitives 11023 "$work/forest.crt"
+expect_text "$work/err" "^$work/forest.crt:5:29: error: the scene stores more than 11023 primitives" "the forest: the error at the last drawing"
+expect_status 0 "the forest rendered with the default limit" "${limited[@]}" "$crtc" -o "$work/forest.png" "$work/forest.crt"
 
 # Entities built and never drawn count: a loop making spheres it throws away.
 printf '%s\nmake = Macro (i) { Sphere { center -> vec3(i, 0, 0) radius -> 1 } }\ni = 0\nwhile (i < 24000000) {\n    s = make(i)\n    i = i + 1\n}\nScene { s }\n' \
@@ -61,7 +74,7 @@ printf '%s\nm = Mesh { file -> "tetra.obj" }\nScene { m m m }\n' "$camera" >"$wo
 for mode in --check "-o $work/mesh.png"; do
     # shellcheck disable=SC2086 # the mode is two words
     expect_status 1 "three meshes of 4 triangles, --max-primitives 6, $mode" "$crtc" $mode --max-primitives 6 "$work/mesh.crt"
-    expect_text "$work/err" "^$work/mesh.crt:3:13: error: the scene draws more than 6 primitives" \
+    expect_text "$work/err" "^$work/mesh.crt:3:13: error: the scene stores more than 6 primitives" \
         "the mesh's drawings counted by $mode"
     # shellcheck disable=SC2086
     expect_status 1 "a mesh of 4 triangles, --max-primitives 3, $mode" "$crtc" $mode --max-primitives 3 "$work/mesh.crt"
