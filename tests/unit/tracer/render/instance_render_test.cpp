@@ -1,10 +1,13 @@
 // An entity drawn many times (a group, a CSG solid) is built once and instanced: the picture
 // is the one its copies make, each drawing with its own transform and material, shadows and
-// reflections between the drawings included.
+// reflections between the drawings included; picking names what copies would name.
 #include "analytic_util.hpp"
 #include "scene_builder_util.hpp"
 
+#include "tracer/pick.hpp"
 #include "tracer/render_scene.hpp"
+
+#include <set>
 
 using namespace crt::tracer;
 namespace scene = crt::scene;
@@ -106,4 +109,34 @@ TEST_CASE("A ray leaving an instance's face skips that face only", "[render][ins
                                });
     }
     CHECK(instanceHits > 200);
+}
+
+TEST_CASE("Picking a drawing of a shared entity names its part and the drawing's material", "[render][instance]") {
+    const scene::SceneDesc shared = forest(true), copied = forest(false);
+    // The shared tree is the description's only group; its parts come before it.
+    int32_t sharedTree = -1;
+    for (size_t e = 0; e < shared.entities.size() && sharedTree < 0; ++e)
+        if (std::holds_alternative<scene::GroupNode>(shared.entities[e].shape)) sharedTree = static_cast<int32_t>(e);
+    REQUIRE(sharedTree > 0);
+    std::string error;
+    int treeParts = 0;
+    std::set<int32_t> materials;
+    for (int y = 2; y < kHeight; y += 4) {
+        for (int x = 2; x < kWidth; x += 4) {
+            const auto a = pick(shared, x, y, error), b = pick(copied, x, y, error);
+            REQUIRE(a);
+            REQUIRE(b);
+            CHECK(a->hit == b->hit);
+            CHECK(a->material == b->material);
+            CHECK(a->distance == b->distance);
+            const scene::EntityDesc& picked = shared.entities[static_cast<size_t>(a->entity)];
+            if (a->hit && !std::holds_alternative<scene::PlaneShape>(picked.shape)) {
+                CHECK(a->entity < sharedTree);
+                ++treeParts;
+                materials.insert(a->material);
+            }
+        }
+    }
+    CHECK(treeParts > 50);
+    CHECK(materials.size() > 8); // the drawings' own colours, not one
 }
