@@ -33,17 +33,18 @@ SceneStorage storageOf(const SceneDesc& scene) {
     for (size_t i = 0; i < count; ++i)
         s.instanced[i] = s.uses[i] >= kMinInstanceUses && s.expansion[i] >= kMinInstancePrimitives &&
                          !std::holds_alternative<TransformNode>(scene.entities[i].shape);
-    // What one drawing of an entity stores besides the prototypes it reaches: an instance is
-    // one primitive; an entity drawn as its parts, theirs; any other, all it expands to.
-    std::vector<uint64_t> copies(count, 0);
+    // What one drawing of an entity stores besides the prototypes it reaches: an instance
+    // (one primitive), or for an entity drawn as its parts, theirs, or all it expands to.
+    std::vector<uint64_t> copies(count, 0), instances(count, 0);
     for (size_t i = 0; i < count; ++i) {
         if (s.instanced[i]) {
-            copies[i] = 1;
+            instances[i] = 1;
             continue;
         }
         const bool drawnAsParts = forEachDrawnPart(scene.entities[i].shape, [&](int32_t part) {
             const auto p = static_cast<size_t>(part);
             copies[i] = saturatingAdd(copies[i], p < i ? copies[p] : 1);
+            if (p < i) instances[i] = saturatingAdd(instances[i], instances[p]);
         });
         if (!drawnAsParts) copies[i] = s.expansion[i];
     }
@@ -52,7 +53,10 @@ SceneStorage storageOf(const SceneDesc& scene) {
     std::vector<int32_t> pending;
     uint64_t stored = 0;
     for (int32_t root : scene.drawn) {
-        stored = saturatingAdd(stored, copies[static_cast<size_t>(root)]);
+        const auto r = static_cast<size_t>(root);
+        s.copied = saturatingAdd(s.copied, copies[r]);
+        s.instances = saturatingAdd(s.instances, instances[r]);
+        stored = saturatingAdd(stored, saturatingAdd(copies[r], instances[r]));
         pending.push_back(root);
         while (!pending.empty()) {
             const auto e = static_cast<size_t>(pending.back());

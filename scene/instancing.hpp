@@ -18,6 +18,8 @@
 
 namespace crt::scene {
 
+/// Below these a copy costs about as much memory as an instance does, and a ray reaches it
+/// through one BVH less.
 inline constexpr uint64_t kMinInstanceUses = 2;
 inline constexpr uint64_t kMinInstancePrimitives = 16;
 
@@ -46,6 +48,9 @@ struct SceneStorage {
     /// Per drawn root (in the order of SceneDesc::drawn): the primitives stored once it and
     /// those before it are drawn (a prototype counts where it is first reached).
     std::vector<uint64_t> storedAfter;
+
+    /// Of those, the primitives stored as copies outside every prototype, and the instances.
+    uint64_t copied = 0, instances = 0;
 
     /// The primitives the whole scene stores (mesh triangles aside).
     uint64_t stored() const { return storedAfter.empty() ? 0 : storedAfter.back(); }

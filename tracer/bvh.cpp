@@ -250,8 +250,8 @@ private:
     /// would be mostly empty, and setting them up costs more than the items).
     std::optional<Split> sortedSplit(size_t begin, size_t end, int axis, const RangeBounds& range) {
         const size_t count = end - begin;
-        // Sorted by insertion on keys computed once (a comparison computing two centroids
-        // would cost more than the rest of the split).
+        // Sorted by insertion on keys computed once, not by a comparison computing two
+        // centroids each time.
         struct Keyed {
             float key;
             BuildItem item;
@@ -263,19 +263,19 @@ private:
             for (; at > 0 && sorted[at - 1].key > k.key; --at) sorted[at] = sorted[at - 1];
             sorted[at] = k;
         }
-        auto first = items_.begin() + static_cast<std::ptrdiff_t>(begin);
-        for (size_t i = 0; i < count; ++i) first[static_cast<std::ptrdiff_t>(i)] = sorted[i].item;
+        for (size_t i = 0; i < count; ++i) items_[begin + i] = sorted[i].item;
+        // The area of the items from i on, then the cost of splitting before each i.
         double aboveArea[kBins];
         Box4 above;
         for (size_t i = count - 1; i >= 1; --i) {
-            above.include(first[static_cast<std::ptrdiff_t>(i)].loLanes(), first[static_cast<std::ptrdiff_t>(i)].hiLanes());
+            above.include(sorted[i].item.loLanes(), sorted[i].item.hiLanes());
             aboveArea[i] = above.surfaceArea();
         }
         Box4 below;
         size_t best = 0;
         double bestCost = kInfinity;
         for (size_t i = 1; i < count; ++i) {
-            below.include(first[static_cast<std::ptrdiff_t>(i - 1)].loLanes(), first[static_cast<std::ptrdiff_t>(i - 1)].hiLanes());
+            below.include(sorted[i - 1].item.loLanes(), sorted[i - 1].item.hiLanes());
             const double cost = double(i) * below.surfaceArea() + double(count - i) * aboveArea[i];
             if (cost < bestCost) {
                 bestCost = cost;

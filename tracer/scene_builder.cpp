@@ -2,8 +2,8 @@
 // unions into primitives, rebalances CSG chains, reads meshes, and builds the BVH.
 #include "tracer/render_scene.hpp"
 
-#include "scene/mesh_file.hpp"
 #include "scene/instancing.hpp"
+#include "scene/mesh_file.hpp"
 #include "scene/primitive_count.hpp"
 #include "tracer/height_grid_reading.hpp"
 
@@ -49,10 +49,10 @@ public:
         // Room for them from the start (a mesh drawn is one primitive, an instance none): a
         // vector growing by doubling would copy and fault in its elements about twice.
         shared_.storedPrimitives = stored;
-        const uint64_t copied = copiedPrimitives();
+        const uint64_t copied = shared_.storage.copied;
         scene_.primitives.reserve(copied);
         scene_.primitiveEntities.reserve(copied);
-        objects_.reserve(copied);
+        objects_.reserve(copied + shared_.storage.instances);
         for (int32_t root : desc_.drawn)
             if (!addDrawn(root, Transform())) return false;
         finishAcceleration();
@@ -109,22 +109,6 @@ private:
     int32_t materialOf(const Operand& op) const {
         const int32_t own = desc_.entities[op.entity].material;
         return own >= 0 ? own : op.material >= 0 ? op.material : defaultMaterial_;
-    }
-
-    /// The primitives the drawn entities expand to where they are not instanced.
-    uint64_t copiedPrimitives() const {
-        std::vector<uint64_t> copied(desc_.entities.size(), 0);
-        for (size_t i = 0; i < desc_.entities.size(); ++i) {
-            if (instanced(static_cast<int32_t>(i))) continue;
-            const bool drawnAsParts = scene::forEachDrawnPart(desc_.entities[i].shape, [&](int32_t part) {
-                const auto p = static_cast<size_t>(part);
-                copied[i] = scene::saturatingAdd(copied[i], p < i ? copied[p] : 1);
-            });
-            if (!drawnAsParts) copied[i] = shared_.storage.expansion[i];
-        }
-        uint64_t total = 0;
-        for (int32_t root : desc_.drawn) total = scene::saturatingAdd(total, copied[static_cast<size_t>(root)]);
-        return total;
     }
 
     bool instanced(int32_t entity) const {

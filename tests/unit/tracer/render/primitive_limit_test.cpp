@@ -35,6 +35,8 @@ TEST_CASE("what a scene stores is counted as the renderer stores it", "[limits]"
     CHECK(storage.instanced[static_cast<size_t>(g)]);
     CHECK_FALSE(storage.instanced[static_cast<size_t>(moved)]); // a transform: its child repeats
     CHECK(storage.storedAfter == std::vector<uint64_t>{1024 + 3, 1024 + 4});
+    CHECK(storage.copied == 1); // the sphere; the rest are 3 instances and the prototype
+    CHECK(storage.instances == 3);
     std::string error;
     auto built = buildRenderScene(m.desc, error);
     REQUIRE(built);
