@@ -197,9 +197,8 @@ public:
         const size_t second = node + 2 * (split->mid - begin);
         nodes[node].offset = static_cast<int32_t>(second);
         nodes[node].count = 0;
-        auto buildFirst = [&, split] {
-            return build(begin, split->mid, node + 1, split->below, depth + 1, std::max(parallelLevels - 1, 0));
-        };
+        const int levelsBelow = std::max(parallelLevels - 1, 0);
+        auto buildFirst = [&, split] { return build(begin, split->mid, node + 1, split->below, depth + 1, levelsBelow); };
         std::future<int> firstDepth;
         if (parallelLevels > 0 && count >= kParallelItems) {
             try {
@@ -208,7 +207,7 @@ public:
                 // no thread to be had: built below, on this one
             }
         }
-        const int secondDepth = build(split->mid, end, second, split->above, depth + 1, std::max(parallelLevels - 1, 0));
+        const int secondDepth = build(split->mid, end, second, split->above, depth + 1, levelsBelow);
         return std::max(firstDepth.valid() ? firstDepth.get() : buildFirst(), secondDepth);
     }
 

@@ -41,19 +41,22 @@ constexpr uint32_t kEnters = 1u << 31;
 
 TriangleMesh::TriangleMesh(std::shared_ptr<const MeshData> data, unsigned threads)
     : data_(std::move(data)) {
-    auto boundsOf = [&](size_t i) {
-        Vec3 p[3];
-        corners(static_cast<uint32_t>(i), p);
+    auto boundsOfCorners = [](const Vec3 (&p)[3]) {
         Bounds3 b = Bounds3::of(p[0], p[1]);
         b.include(p[2]);
         return b;
     };
+    auto boundsOf = [&](size_t i) {
+        Vec3 p[3];
+        corners(static_cast<uint32_t>(i), p);
+        return boundsOfCorners(p);
+    };
     // A triangle is left out when a corner is out of range or not finite, or it has no area.
     auto drawable = [&](size_t i, Bounds3& b) {
         if (!allValid(data_->triangles[i].v, data_->positions)) return false;
-        b = boundsOf(i);
         Vec3 p[3];
         corners(static_cast<uint32_t>(i), p);
+        b = boundsOfCorners(p);
         const double area = glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
         return b.finite() && area > 0 && std::isfinite(area);
     };
