@@ -517,6 +517,8 @@ struct RenderLimits {
     /// default, ~1.5 GB, fits in the default evaluation budget (Limits::maxMemory, 4 GiB) and
     /// is far above a hand-made scene.
     uint64_t maxPrimitives = 5'000'000;
+    /// The most maxPrimitives may be: what the renderer can number (about 13 GB of spheres).
+    static constexpr uint64_t kMostPrimitives = (uint64_t{1} << 27) - 1;
     /// Pixels of one image a texture or background reads (width × height from its header).
     uint64_t maxImagePixels = 100'000'000;
     /// Evaluations of an isosurface's function along one line before the search gives up

@@ -11,6 +11,7 @@
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <stdexcept>
 #include <system_error>
 
 namespace crt::tracer {
@@ -392,11 +393,9 @@ public:
             filled.faces[axis] = Float4{inf, inf, inf, inf};
             filled.faces[3 + axis] = Float4{-inf, -inf, -inf, -inf};
         }
-        filled.used = static_cast<uint32_t>(childCount);
         depth = 1;
         for (size_t slot = 0; slot < 4; ++slot) {
-            filled.child[slot] = 0;
-            filled.count[slot] = 0;
+            filled.child[slot] = WideChild::node(0);
             if (slot >= childCount) continue;
             const BinaryNode& c = binary_[children[slot]];
             for (int axis = 0; axis < 3; ++axis) {
@@ -405,10 +404,9 @@ public:
             }
             if (c.count > 0) {
                 filled.child[slot] = leafChild(c);
-                filled.count[slot] = c.count;
             } else {
                 int below = 0;
-                filled.child[slot] = collapse(children[slot], below);
+                filled.child[slot] = WideChild::node(static_cast<uint32_t>(collapse(children[slot], below)));
                 depth = std::max(depth, 1 + below);
             }
         }
@@ -444,15 +442,16 @@ private:
     }
 
     /// A leaf's `child` in the wide tree: its item, or where its items start in items_.
-    int32_t leafChild(const BinaryNode& leaf) {
+    uint32_t leafChild(const BinaryNode& leaf) {
         auto id = [&](size_t k) {
             const int32_t position = order_[static_cast<size_t>(leaf.offset) + k];
             return ids_.empty() ? position : ids_[static_cast<size_t>(position)];
         };
-        if (leaf.count == 1) return id(0);
-        const auto first = static_cast<int32_t>(items_.size());
+        if (leaf.count == 1) return WideChild::item(static_cast<uint32_t>(id(0)));
+        const auto start = static_cast<uint32_t>(items_.size());
+        items_.push_back(leaf.count);
         for (size_t k = 0; k < leaf.count; ++k) items_.push_back(id(k));
-        return first;
+        return WideChild::items(start);
     }
 
     const BinaryNode* binary_;
@@ -490,6 +489,11 @@ void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::ve
     fewItems_.clear();
     depth_ = 0;
     if (count == 0) return;
+    const bool numberable = count < WideChild::kMaxItems / 2 &&
+                            std::all_of(ids.begin(), ids.end(), [](int32_t id) {
+                                return id >= 0 && static_cast<uint32_t>(id) < WideChild::kMaxItems;
+                            });
+    if (!numberable) throw std::length_error("BVH items must be numbers below 2^30, fewer than 2^29");
     std::vector<BuildItem> items;
     items.reserve(count);
     for (size_t i = 0; i < count; ++i) items.emplace_back(boundsOf(i), static_cast<int32_t>(i));

@@ -5,6 +5,7 @@
 #include "tracer/geometry/function_ref.hpp"
 #include "tracer/stats.hpp"
 
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -89,17 +90,37 @@ inline int laneMask(Int4 lanes) {
 #endif
 }
 
+/// What a slot of a wide node leads to, in 32 bits: an inner node's index, or (top bit set)
+/// a leaf. A leaf of one item holds the item itself (most leaves: no look-up in `items`,
+/// and 4 bytes less an item); a leaf of more, where it starts in `items`: its count, then
+/// its items.
+struct WideChild {
+    /// Items are numbers below this (and there are fewer than half as many).
+    static constexpr uint32_t kMaxItems = 1u << 30;
+
+    static uint32_t node(uint32_t index) { return index; }
+    static uint32_t item(uint32_t item) { return kLeaf | kOneItem | item; }
+    static uint32_t items(uint32_t start) { return kLeaf | start; }
+    static bool isLeaf(uint32_t child) { return (child & kLeaf) != 0; }
+    static bool isOneItem(uint32_t child) { return (child & kOneItem) != 0; }
+    /// The item of a leaf of one, where the leaf starts in `items` for others.
+    static uint32_t index(uint32_t child) { return child & (kMaxItems - 1); }
+
+private:
+    static constexpr uint32_t kLeaf = 1u << 31;
+    static constexpr uint32_t kOneItem = 1u << 30;
+};
+
 /// A node of the 4-wide BVH: the boxes of up to four children side by side, axis by axis,
-/// so that one ray is tested against all four at once. Boxes are the double-precision
-/// bounds rounded outwards to float; an unused slot has an empty box (lo > hi) that no ray
-/// hits. A slot of count 0 is a node, `child` its index. A leaf of one item holds the item
-/// itself in `child` (most leaves: no look-up in `items`, and 4 bytes less an item); a leaf
-/// of more is items[child .. child + count).
+/// so that one ray is tested against all four at once, and where each leads (WideChild).
+/// Boxes are the double-precision bounds rounded outwards to float; an unused slot has an
+/// empty box (lo > hi) that no ray hits.
 struct alignas(16) WideBvhNode {
     Float4 faces[6]; ///< lo.x, lo.y, lo.z, hi.x, hi.y, hi.z of the four boxes
-    int32_t child[4];
-    uint16_t count[4];
-    uint32_t used; ///< slots holding a child
+    uint32_t child[4];
+
+    /// Slots holding a child (their boxes are not empty).
+    int used() const { return std::popcount(static_cast<unsigned>(laneMask(faces[0] <= faces[3]))); }
 };
 
 /// A ray prepared for four-box tests in float. The ray origin is rounded to float with a
@@ -157,7 +178,8 @@ private:
 class Bvh {
 public:
     /// Builds over n items with the given (finite) bounds, on up to `threads` threads; the
-    /// tree is the same whatever their number. Item i is ids[i], or i when there are no ids.
+    /// tree is the same whatever their number. Item i is ids[i], or i when there are no ids;
+    /// items are below WideChild::kMaxItems (std::length_error otherwise).
     void build(const std::vector<Bounds3>& itemBounds, unsigned threads = 1, std::vector<int32_t> ids = {}) {
         build(itemBounds.size(), [&](size_t i) { return itemBounds[i]; }, threads, std::move(ids));
     }
@@ -215,29 +237,28 @@ private:
         // Children met are taken nearest first; the others wait on the stack with their
         // entry distance and are dropped when popped if a nearer hit was found meanwhile.
         struct Pending {
-            int32_t child;
-            uint32_t count;
+            uint32_t child;
             float entry;
         };
         Pending stack[3 * kMaxWideDepth + 4];
         int top = 0;
-        Pending current{0, 0, 0};
+        Pending current{WideChild::node(0), 0};
         Float4 limit = WideRay::widenedLimit4(tMax); // tMax changes only in visit()
         while (true) {
-            if (current.count > 0) {
-                if (!visitLeaf(current.child, current.count, visit)) {
+            if (WideChild::isLeaf(current.child)) {
+                if (!visitLeaf(current.child, visit)) {
                     stats.nodesVisited += tested;
                     return false;
                 }
                 limit = WideRay::widenedLimit4(tMax);
             } else {
                 const WideBvhNode& node = nodes_[current.child];
-                tested += node.used;
+                tested += static_cast<uint64_t>(node.used());
                 Float4 entry;
                 int met = wideRay.hits(node, limit, entry);
                 if (met != 0 && (met & (met - 1)) == 0) { // one child: no ordering
                     const int slot = __builtin_ctz(static_cast<unsigned>(met));
-                    current = {node.child[slot], node.count[slot], entry[slot]};
+                    current = {node.child[slot], entry[slot]};
                     continue;
                 }
                 if (met != 0) {
@@ -246,7 +267,7 @@ private:
                     int n = 0;
                     for (int slot = 0; slot < 4; ++slot) {
                         if (!(met & (1 << slot))) continue;
-                        Pending p{node.child[slot], node.count[slot], entry[slot]};
+                        Pending p{node.child[slot], entry[slot]};
                         int at = n++;
                         while (at > 0 && order[at - 1].entry > p.entry) {
                             order[at] = order[at - 1];
@@ -272,15 +293,17 @@ private:
     }
 
     template <typename Visit>
-    bool visitLeaf(int32_t child, uint32_t count, Visit& visit) const {
-        if (count == 1) return visit(child);
-        for (uint32_t i = 0; i < count; ++i)
-            if (!visit(items_[static_cast<size_t>(child) + i])) return false;
+    bool visitLeaf(uint32_t child, Visit& visit) const {
+        const uint32_t index = WideChild::index(child);
+        if (WideChild::isOneItem(child)) return visit(static_cast<int32_t>(index));
+        const auto count = static_cast<uint32_t>(items_[index]);
+        for (uint32_t i = 1; i <= count; ++i)
+            if (!visit(items_[index + i])) return false;
         return true;
     }
 
     std::vector<WideBvhNode> nodes_;
-    std::vector<int32_t> items_; ///< of the leaves of more than one item
+    std::vector<int32_t> items_; ///< the leaves of more than one item: count, items
     struct FewItem {
         double faces[6]; ///< as BoxRay indexes them
         int32_t item;

@@ -134,7 +134,7 @@ bool RenderScene::csgMayCross(int32_t root, const BoxRay& boxRay, double tMax) c
 
 bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double tMax, Hit& hit,
                                   QueryScratch& scratch, RayStats& stats, Departure departed) const {
-    if (object >= 0) {
+    if (isPrimitiveObject(object)) {
         if (departed.skips(object)) return false;
         const Primitive& p = primitives[object];
         ++stats.intersectionTests;
@@ -146,9 +146,9 @@ bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double 
     }
     if (isInstanceObject(object)) [[unlikely]]
         return nearestInInstance(instanceOfObject(object), ray.ray(), tMax, hit, scratch, stats, departed);
-    if (!csgMayCross(~object, ray.box(), tMax)) return false;
+    if (!csgMayCross(csgNodeOfObject(object), ray.box(), tMax)) return false;
     size_t start = scratch.csg.size();
-    csgCrossings(~object, CsgRay(ray.ray(), ray.box()), scratch, stats);
+    csgCrossings(csgNodeOfObject(object), CsgRay(ray.ray(), ray.box()), scratch, stats);
     bool found = false;
     for (size_t i = start; i < scratch.csg.size(); ++i) {
         const CsgCrossing& c = scratch.csg[i];

@@ -210,18 +210,22 @@ public:
     /// The SceneDesc entity the hit primitive was built from.
     int32_t entityOf(const Hit& hit) const;
 
-    /// Objects are what the BVH holds: a primitive (>= 0), a CSG root (~node), or an instance
-    /// (instanceObject(i)). These are kept outside it:
+    /// Objects are what the BVH holds, numbered below WideChild::kMaxItems: a primitive (from
+    /// 0), a CSG root (csgObject(node)) or an instance (instanceObject(i)). These are kept
+    /// outside it:
     std::vector<int32_t> unbounded; ///< objects kept outside the BVH (unbounded CSG)
     std::vector<PlaneObject> planes; ///< plain planes, also outside the BVH
     Bvh bvh;
     Bounds3 bounds; ///< of the bounded objects
 
-    /// Instance objects take the numbers below the CSG roots' (which are at most 2^30).
-    static constexpr int32_t kFirstInstanceObject = -(1 << 30) - 1;
-    static int32_t instanceObject(int32_t instance) { return kFirstInstanceObject - instance; }
-    static bool isInstanceObject(int32_t object) { return object <= kFirstInstanceObject; }
-    static int32_t instanceOfObject(int32_t object) { return kFirstInstanceObject - object; }
+    static constexpr int32_t kFirstCsgObject = 1 << 28;
+    static constexpr int32_t kFirstInstanceObject = 1 << 29;
+    static bool isPrimitiveObject(int32_t object) { return object < kFirstCsgObject; }
+    static int32_t csgObject(int32_t node) { return kFirstCsgObject + node; }
+    static int32_t csgNodeOfObject(int32_t object) { return object - kFirstCsgObject; }
+    static int32_t instanceObject(int32_t instance) { return kFirstInstanceObject + instance; }
+    static bool isInstanceObject(int32_t object) { return object >= kFirstInstanceObject; }
+    static int32_t instanceOfObject(int32_t object) { return object - kFirstInstanceObject; }
 
 private:
     bool nearestInObject(int32_t object, const LazyBoxRay& ray, double tMax, Hit& hit, QueryScratch& scratch,

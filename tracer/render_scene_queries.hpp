@@ -12,7 +12,7 @@ inline double planeCrossing(const PlaneObject& plane, const Ray& ray) {
 template <typename Visit>
 bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, double tMax, QueryScratch& scratch,
                                     RayStats& stats, Visit& visit, Departure departed) const {
-    if (object >= 0) {
+    if (isPrimitiveObject(object)) {
         if (departed.skips(object)) return true;
         const Primitive& p = primitives[object];
         ++stats.intersectionTests;
@@ -22,9 +22,9 @@ bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, doubl
     if (isInstanceObject(object)) [[unlikely]]
         return crossingsInInstance(instanceOfObject(object), ray.ray(), tMax, scratch, stats, HitVisitor(visit),
                                    departed);
-    if (!csgMayCross(~object, ray.box(), tMax)) return true;
+    if (!csgMayCross(csgNodeOfObject(object), ray.box(), tMax)) return true;
     size_t start = scratch.csg.size();
-    csgCrossings(~object, CsgRay(ray.ray(), ray.box()), scratch, stats);
+    csgCrossings(csgNodeOfObject(object), CsgRay(ray.ray(), ray.box()), scratch, stats);
     bool keepGoing = true;
     for (size_t i = start; i < scratch.csg.size() && keepGoing; ++i) {
         const CsgCrossing& c = scratch.csg[i];

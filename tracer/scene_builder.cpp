@@ -14,6 +14,13 @@
 
 namespace crt::tracer {
 
+// The scene's objects and a mesh's triangles are BVH items: numbers below WideChild::kMaxItems.
+// The primitive limit keeps primitives and instances below theirs; CSG nodes (which inverses
+// may multiply) are counted.
+constexpr size_t kMostCsgNodes = RenderScene::kFirstInstanceObject - RenderScene::kFirstCsgObject;
+static_assert(scene::RenderLimits::kMostPrimitives < RenderScene::kFirstCsgObject);
+static_assert(RenderScene::kFirstInstanceObject + scene::RenderLimits::kMostPrimitives < WideChild::kMaxItems);
+
 class RenderSceneBuilder {
 public:
     RenderSceneBuilder(const scene::SceneDesc& desc, RenderScene& scene, unsigned threads, std::string& error)
@@ -96,7 +103,11 @@ private:
                        std::holds_alternative<scene::InverseNode>(e.shape)) {
                 int32_t node = addCsg(op);
                 if (!error_.empty()) return false; // a mesh operand that cannot be read
-                if (node >= 0) objects_.push_back(~node);
+                if (scene_.csgNodes.size() > kMostCsgNodes) {
+                    error_ = fmt::format("the scene's CSG trees take more than {} nodes", kMostCsgNodes);
+                    return false;
+                }
+                if (node >= 0) objects_.push_back(RenderScene::csgObject(node));
             } else {
                 int32_t p = addPrimitive(op);
                 if (!error_.empty()) return false; // a mesh that cannot be read
@@ -372,15 +383,15 @@ private:
     }
 
     Bounds3 objectBounds(int32_t object) const {
-        if (object >= 0) return worldBounds(scene_.primitives[object]);
+        if (RenderScene::isPrimitiveObject(object)) return worldBounds(scene_.primitives[object]);
         if (RenderScene::isInstanceObject(object))
             return instanceBounds_[static_cast<size_t>(RenderScene::instanceOfObject(object))];
-        return scene_.csgNodes[~object].bounds;
+        return scene_.csgNodes[RenderScene::csgNodeOfObject(object)].bounds;
     }
 
     /// Keeps a plain plane in the inline-tested list; false for anything else.
     bool addPlane(int32_t object) {
-        if (object < 0) return false;
+        if (!RenderScene::isPrimitiveObject(object)) return false;
         const Primitive& p = scene_.primitives[object];
         const PlaneGeometry* plane = shapeIf<PlaneGeometry>(p.geometry);
         if (!plane) return false;
@@ -437,8 +448,8 @@ private:
     int32_t defaultMaterial_ = 0;
     bool instancing_ = true;
     std::vector<Bounds3> instanceBounds_; ///< of each instance, in world space
-    /// What the acceleration structure is to hold: primitives, CSG roots (~node) and
-    /// instances (RenderScene::instanceObject).
+    /// What the acceleration structure is to hold: primitives, CSG roots (RenderScene::csgObject)
+    /// and instances (RenderScene::instanceObject).
     std::vector<int32_t> objects_;
 };
 

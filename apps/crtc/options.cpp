@@ -285,7 +285,8 @@ void addEvaluationOptions(CLI::App& app, Options& o) {
     app.add_option("--max-primitives", limits.render.maxPrimitives,
                    fmt::format("primitives stored after CSG, groups and instancing (default {})",
                                limits.render.maxPrimitives))
-        ->check(anyNumber<uint64_t>("a non-negative integer"))
+        ->check(numberIn<uint64_t>(0, scene::RenderLimits::kMostPrimitives,
+                                   fmt::format("an integer from 0 to {}", scene::RenderLimits::kMostPrimitives)))
         ->type_name("N")
         ->group(group);
     app.add_option("--max-image-pixels", limits.render.maxImagePixels,
