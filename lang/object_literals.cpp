@@ -862,6 +862,13 @@ void Interpreter::buildSettings(const ObjectBuilder& b) {
     if (seed < 0) problem("seed", "seed must not be negative");
     s.seed = static_cast<uint64_t>(seed);
     s.ambient = b.color("ambient", s.ambient);
+    if (b.get("integrator")) {
+        const std::string integrator = b.lowerText("integrator");
+        for (size_t i = 0; i < std::size(scene::kIntegratorNames); ++i)
+            if (integrator == scene::kIntegratorNames[i]) s.integrator = static_cast<scene::Integrator>(i);
+    }
+    s.samples = count("samples", s.samples, scene::kPathSamplesRange);
+    s.bounces = count("bounces", s.bounces, scene::kBouncesRange);
     recordSettingsLinks(b);
 }
 

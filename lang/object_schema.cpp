@@ -48,7 +48,13 @@ constexpr AttributeInfo kSettings[] = {
     {"shadowsamples", A::Int, false, "16", "Samples per area or cylinder light."},
     {"glossysamples", A::Int, false, "16", "Rays per glossy reflection."},
     {"seed", A::Int, false, "0", "Seed of the renderer's sampling."},
-    {"ambient", A::Color, false, "rgb(0,0,0)", "Global ambient light."},
+    {"ambient", A::Color, false, "rgb(0,0,0)", "Global ambient light (whitted only)."},
+    {"integrator", A::Choice, false, "\"whitted\"",
+     "How light is carried: whitted (direct light, mirrors and glass) or path (path tracing: "
+     "light bounces off every surface).",
+     scene::kIntegratorNames},
+    {"samples", A::Int, false, "64", "Path integrator: paths traced per pixel."},
+    {"bounces", A::Int, false, "8", "Path integrator: surfaces a path may bounce off."},
 };
 
 constexpr AttributeInfo kCamera[] = {

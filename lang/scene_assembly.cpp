@@ -228,6 +228,10 @@ SourceRange Interpreter::unlitSceneRange() const {
 bool Interpreter::sceneIsLit() const {
     const scene::Color& ambient = scene_.settings.ambient;
     if (!scene_.lights.empty() || ambient.r > 0 || ambient.g > 0 || ambient.b > 0) return true;
+    // Under the path integrator the background lights what it surrounds.
+    const scene::BackgroundDesc& sky = scene_.background;
+    const bool dark = sky.kind == scene::BackgroundKind::Solid && sky.color.r <= 0 && sky.color.g <= 0 && sky.color.b <= 0;
+    if (scene_.settings.integrator == scene::Integrator::Path && !dark) return true;
     // The materials left are those the drawn entities use.
     return std::any_of(scene_.materials.begin(), scene_.materials.end(),
                        [&](const scene::MaterialDesc& m) {

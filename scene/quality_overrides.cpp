@@ -7,6 +7,7 @@ void applyQuality(SceneDesc& scene, const QualityOverrides& overrides) {
     SettingsDesc& s = scene.settings;
     if (overrides.draft) {
         s.supersampling = 1;
+        s.samples = 1;
         s.antialias = Antialias::Grid;
         s.dofSamples = 1;
         scene.camera.aperture = 0; // a pinhole: one lens sample would only add noise
@@ -18,6 +19,8 @@ void applyQuality(SceneDesc& scene, const QualityOverrides& overrides) {
     if (overrides.shadowSamples) s.shadowSamples = *overrides.shadowSamples;
     if (overrides.glossySamples) s.glossySamples = *overrides.glossySamples;
     if (overrides.antialias) s.antialias = *overrides.antialias;
+    if (overrides.integrator) s.integrator = *overrides.integrator;
+    if (overrides.samples) s.samples = *overrides.samples;
 }
 
 } // namespace crt::scene

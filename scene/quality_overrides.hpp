@@ -17,9 +17,12 @@ struct QualityOverrides {
     std::optional<int> shadowSamples;
     std::optional<int> glossySamples;
     std::optional<Antialias> antialias;
+    std::optional<Integrator> integrator;
+    std::optional<int> samples; ///< paths a pixel (the path integrator's)
 
     bool any() const {
-        return draft || supersampling || dofSamples || shadowSamples || glossySamples || antialias;
+        return draft || supersampling || dofSamples || shadowSamples || glossySamples || antialias ||
+               integrator || samples;
     }
 };
 

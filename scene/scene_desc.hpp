@@ -467,6 +467,11 @@ enum class Antialias : uint8_t { Grid, Adaptive, ShowAdaptive, Stratified };
 inline constexpr std::string_view kAntialiasNames[] = {"grid", "adaptive", "showadaptive",
                                                        "stratified"};
 
+/// How light is carried: Whitted's first bounce (spec §6), or path tracing (docs/rendering.md).
+enum class Integrator : uint8_t { Whitted, Path };
+/// The names of Integrator's values, as scripts and the command line spell them, in its order.
+inline constexpr std::string_view kIntegratorNames[] = {"whitted", "path"};
+
 /// The counts a setting of samples may take, whether a script or the command line sets it.
 struct CountRange {
     int min, max;
@@ -475,6 +480,8 @@ inline constexpr CountRange kSupersamplingRange{1, 64};
 inline constexpr CountRange kDofSamplesRange{1, 100'000};
 inline constexpr CountRange kShadowSamplesRange{1, 4096};
 inline constexpr CountRange kGlossySamplesRange{1, 4096};
+inline constexpr CountRange kPathSamplesRange{1, 1'000'000};
+inline constexpr CountRange kBouncesRange{0, 1000};
 
 struct SettingsDesc {
     std::string title, author, date, notes;
@@ -494,6 +501,9 @@ struct SettingsDesc {
     int glossySamples = 16;
     uint64_t seed = 0;
     Color ambient{0, 0, 0, 1};
+    Integrator integrator = Integrator::Whitted;
+    int samples = 64; ///< path: paths a pixel
+    int bounces = 8;  ///< path: surfaces a path may bounce off
 
     int reflectionLimit() const { return reflectionDepth < 0 ? recursionDepth : reflectionDepth; }
     int refractionLimit() const { return refractionDepth < 0 ? recursionDepth : refractionDepth; }

@@ -329,6 +329,13 @@ Json settingsJson(const SettingsDesc& s) {
     // Only when set apart from recursiondepth, so dumps of scenes without them are unchanged.
     if (s.reflectionDepth >= 0) json["reflectiondepth"] = s.reflectionDepth;
     if (s.refractionDepth >= 0) json["refractiondepth"] = s.refractionDepth;
+    // The path integrator's, likewise: all three when it is chosen, else those set apart
+    // from their defaults.
+    const SettingsDesc defaults;
+    const bool path = s.integrator != defaults.integrator;
+    if (path) json["integrator"] = kIntegratorNames[static_cast<int>(s.integrator)];
+    if (path || s.samples != defaults.samples) json["samples"] = s.samples;
+    if (path || s.bounces != defaults.bounces) json["bounces"] = s.bounces;
     return json;
 }
 

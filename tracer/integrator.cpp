@@ -2,6 +2,7 @@
 #include "tracer/integrator.hpp"
 
 #include "tracer/bump.hpp"
+#include "tracer/surface_split.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -57,25 +58,10 @@ struct Integrator::ShadingPoint {
     double diffuse;    ///< the material's, less what reflection takes with conserveenergy
 };
 
-namespace {
-
-/// Mirror reflection at a point seen along `toViewer` where its normal is `n`: from
-/// reflectivitymin facing the viewer to reflectivity at grazing (POV-Ray's
-/// reflection { min max falloff }).
-double reflectivityAt(const ShadingMaterial& m, const Vec3& toViewer, const Vec3& n) {
-    if (m.reflectivityMin < 0 || m.reflectivityMin == m.reflectivity) return m.reflectivity;
-    double cosView = std::clamp(glm::dot(toViewer, n), 0.0, 1.0);
-    return m.reflectivityMin +
-           (m.reflectivity - m.reflectivityMin) * std::pow(1 - cosView, m.reflectionFalloff);
-}
-
-} // namespace
-
 Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& settings,
-                       std::vector<Light> lights, const Background& background,
-                       std::vector<Texture> textures)
-    : scene_(scene), settings_(settings), lights_(std::move(lights)), background_(background),
-      textures_(std::move(textures)), mixer_(scene.materials, scene.blends, textures_),
+                       const std::vector<Light>& lights, const Background& background,
+                       const std::vector<Texture>& textures)
+    : scene_(scene), settings_(settings), lights_(lights), background_(background), textures_(textures), mixer_(scene.materials, scene.blends, textures_),
       ambient_(rgb(settings.ambient)), reflectionLimit_(settings.reflectionLimit()),
       refractionLimit_(settings.refractionLimit()) {
     for (size_t i = 0; i < scene.materials.size(); ++i) {
@@ -170,35 +156,15 @@ Vec3 Integrator::shadeMaterial(ShadingPoint& sp, int32_t material, const Vec3& c
     sp.tint = m.metallic ? sp.color : Vec3(1.0);
     if (m.bump >= 0) sp.n = bumpedNormal(textures_[m.bump], sp.si, sp.n);
 
-    double kr = reflectivityAt(m, sp.v, sp.n), kt = m.transparency;
-    sp.diffuse = m.conserveEnergy ? m.diffuse * std::max(0.0, 1 - kr - kt) : m.diffuse;
+    const SurfaceSplit split = splitAt(m, sp.d, sp.n, sp.entering, sp.si.solid);
+    double kr = split.kr, kt = split.kt;
+    sp.diffuse = m.conserveEnergy ? m.diffuse * std::max(0.0, 1 - split.reflectivity - m.transparency) : m.diffuse;
     Vec3 c = rgb(m.emission) + ambient_ * sp.color * sp.diffuse;
     c += directLight(sp, context);
     if (depth <= 0) return c;
 
-    Vec3 refracted(0.0);
-    bool refracts = false;
-    if (kt > 0) {
-        // Snell's law against air; a surface without inside (a quad, a disc) is a thin sheet.
-        double eta = sp.si.solid ? (sp.entering ? 1.0 / m.ior : m.ior) : 1.0;
-        double cosI = std::min(1.0, glm::dot(sp.v, sp.n));
-        double sin2T = eta * eta * std::max(0.0, 1 - cosI * cosI);
-        if (sin2T >= 1) {
-            kr += kt; // total internal reflection
-            kt = 0;
-        } else {
-            double cosT = std::sqrt(1 - sin2T);
-            refracted = glm::normalize(eta * sp.d + (eta * cosI - cosT) * sp.n);
-            refracts = true;
-            if (m.fresnel) {
-                double rs = (eta * cosI - cosT) / (eta * cosI + cosT);
-                double rp = (eta * cosT - cosI) / (eta * cosT + cosI);
-                double f = 0.5 * (rs * rs + rp * rp);
-                kr += kt * f;
-                kt *= 1 - f;
-            }
-        }
-    }
+    const Vec3& refracted = split.refracted;
+    const bool refracts = split.refracts;
     // Each kind of bounce also has its own limit (reflectiondepth, refractiondepth).
     if (kr > 0 && context.reflections < reflectionLimit_) {
         ++context.reflections;

@@ -45,8 +45,9 @@ struct SceneFeatures {
 
 class Integrator {
 public:
-    Integrator(const RenderScene& scene, const scene::SettingsDesc& settings, std::vector<Light> lights,
-               const Background& background, std::vector<Texture> textures);
+    /// Reads the scene, lights, background and textures while it lives.
+    Integrator(const RenderScene& scene, const scene::SettingsDesc& settings, const std::vector<Light>& lights,
+               const Background& background, const std::vector<Texture>& textures);
 
     /// The color seen along `ray` (unit direction) with `depth` reflections/refractions left
     /// (besides each kind's own limit, counted in `context`);
@@ -83,9 +84,9 @@ private:
 
     const RenderScene& scene_;
     const scene::SettingsDesc& settings_;
-    std::vector<Light> lights_;
+    const std::vector<Light>& lights_;
     const Background& background_;
-    std::vector<Texture> textures_;
+    const std::vector<Texture>& textures_;
     MaterialMixer mixer_;
     SceneFeatures features_;
     Vec3 ambient_;

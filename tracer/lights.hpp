@@ -9,6 +9,8 @@
 namespace crt::tracer {
 
 inline Vec3 rgb(const scene::Color& c) { return {c.r, c.g, c.b}; }
+/// The brightness of a linear colour as the eye weighs it (Rec. 709).
+inline double luminance(const Vec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
 /// One sample of a light seen from a point.
 struct LightSample {

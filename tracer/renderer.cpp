@@ -4,6 +4,7 @@
 
 #include "tracer/camera.hpp"
 #include "tracer/integrator.hpp"
+#include "tracer/path_integrator.hpp"
 #include "tracer/scene_images.hpp"
 
 #include <fmt/format.h>
@@ -34,15 +35,18 @@ public:
     /// background get partial alpha.
     using Color = glm::dvec4;
 
-    PixelSampler(const Integrator& integrator, const Camera& camera, const scene::SettingsDesc& settings,
-                 bool transparentBackground)
-        : integrator_(integrator), camera_(camera), settings_(settings),
+    /// `path`: the path integrator, when the scene chose it; `lens`: whether its paths start
+    /// on the lens (an aperture).
+    PixelSampler(const Integrator& integrator, const PathIntegrator* path, bool lens, const Camera& camera,
+                 const scene::SettingsDesc& settings, bool transparentBackground)
+        : integrator_(integrator), path_(path), pathLens_(lens), camera_(camera), settings_(settings),
           dofSamples_(camera.usesLens() ? std::max(settings.dofSamples, 1) : 1),
           bounces_(settings.bounceLimit()), transparentBackground_(transparentBackground) {}
 
     /// The pixel's color and alpha (coverage; the color is premultiplied by it).
     Color pixel(int x, int y, TraceContext& context) const {
         uint64_t pixelIndex = static_cast<uint64_t>(y) * settings_.width + x;
+        if (path_) return pathPixel(x, y, pixelIndex, context);
         bool adaptive = settings_.antialias == scene::Antialias::Adaptive ||
                         settings_.antialias == scene::Antialias::ShowAdaptive;
         if (adaptive) {
@@ -65,6 +69,20 @@ public:
     }
 
 private:
+    /// The mean of `samples` paths, each through its own point of the pixel (and of the lens).
+    Color pathPixel(int x, int y, uint64_t pixelIndex, TraceContext& context) const {
+        Color sum(0.0);
+        for (int k = 0; k < settings_.samples; ++k) {
+            context.rng = SampleRng(settings_.seed, pixelIndex, static_cast<uint64_t>(k));
+            const Vec2 offset = context.rng.uniform2();
+            const Ray ray = pathLens_ ? camera_.lensRay(x + offset.x, y + offset.y, context.rng.uniform2())
+                                      : camera_.ray(x + offset.x, y + offset.y);
+            ++context.stats.cameraRays;
+            sum += path_->traceCamera(ray, transparentBackground_, context);
+        }
+        return sum / static_cast<double>(settings_.samples);
+    }
+
     /// Where stratified sample `k` lies in its grid cell, in [0, 1)². Its own stream of the
     /// pixel's random numbers, apart from the stream the sample then traces with, so the
     /// position is not correlated with the sample's light and lens choices.
@@ -118,6 +136,8 @@ private:
     }
 
     const Integrator& integrator_;
+    const PathIntegrator* path_;
+    bool pathLens_;
     const Camera& camera_;
     const scene::SettingsDesc& settings_;
     int dofSamples_;
@@ -130,6 +150,7 @@ scene::SettingsDesc withBudget(scene::SettingsDesc settings, const SampleBudget&
     if (budget.grid > 0) {
         settings.antialias = scene::Antialias::Grid;
         settings.supersampling = budget.grid;
+        settings.samples = budget.grid * budget.grid;
     }
     return settings;
 }
@@ -139,7 +160,10 @@ struct PreparedScene {
     std::unique_ptr<RenderScene> geometry;
     SceneImages images;
     std::unique_ptr<Background> background;
+    std::vector<Light> lights;
+    std::vector<Texture> textures;
     std::unique_ptr<Integrator> integrator;
+    std::unique_ptr<PathIntegrator> path; ///< when the scene chose it
     std::unique_ptr<Camera> camera;
 };
 
@@ -148,16 +172,15 @@ bool prepare(const scene::SceneDesc& desc, unsigned threads, PreparedScene& out,
     out.geometry = buildRenderScene(desc, error, threads);
     if (!out.geometry) return false;
     if (!loadSceneImages(desc, out.images, error)) return false;
-    std::vector<Light> lights;
-    for (const scene::LightDesc& l : desc.lights) lights.emplace_back(l, s.shadowSamples);
-    std::vector<Texture> textures;
+    for (const scene::LightDesc& l : desc.lights) out.lights.emplace_back(l, s.shadowSamples);
     for (const scene::TextureDesc& t : desc.textures)
-        textures.emplace_back(t, out.images.find(scene::fileToOpen(t.resolvedFile, t.file)));
+        out.textures.emplace_back(t, out.images.find(scene::fileToOpen(t.resolvedFile, t.file)));
     out.background = std::make_unique<Background>(
         desc.background,
         out.images.find(scene::fileToOpen(desc.background.resolvedImage, desc.background.image)));
-    out.integrator = std::make_unique<Integrator>(*out.geometry, s, std::move(lights),
-                                                  *out.background, std::move(textures));
+    out.integrator = std::make_unique<Integrator>(*out.geometry, s, out.lights, *out.background, out.textures);
+    if (s.integrator == scene::Integrator::Path)
+        out.path = std::make_unique<PathIntegrator>(*out.geometry, s, out.lights, *out.background, out.textures);
     out.camera = std::make_unique<Camera>(desc.camera, s.width, s.height, s.dofSamples);
     return true;
 }
@@ -249,7 +272,8 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     PreparedScene prepared;
     if (!prepare(desc, jobThreads, prepared, outcome.error)) return outcome;
     const scene::SettingsDesc settings = withBudget(desc.settings, job.samples);
-    PixelSampler sampler(*prepared.integrator, *prepared.camera, settings, job.alpha);
+    PixelSampler sampler(*prepared.integrator, prepared.path.get(), desc.camera.aperture > 0, *prepared.camera, settings,
+                         job.alpha);
     const int channels = job.alpha ? 4 : 3;
     outcome.buildSeconds = secondsSince(buildStart);
     outcome.primitives = prepared.geometry->storedPrimitives();
@@ -258,8 +282,8 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     outcome.bvhNodes = prepared.geometry->bvh.nodeCount();
     outcome.bvhDepth = prepared.geometry->bvh.depth();
     outcome.shading = prepared.integrator->features().names();
-    outcome.samples = settings.antialias == scene::Antialias::Grid ||
-                              settings.antialias == scene::Antialias::Stratified
+    outcome.samples = prepared.path ? static_cast<uint64_t>(settings.samples)
+                      : settings.antialias == scene::Antialias::Grid || settings.antialias == scene::Antialias::Stratified
                           ? static_cast<uint64_t>(settings.supersampling) * settings.supersampling
                           : 4;
 

@@ -46,8 +46,8 @@ struct TileResult {
 
 /// The camera samples a pixel gets.
 struct SampleBudget {
-    /// 0: as the scene's settings say (grid or adaptive anti-aliasing); n > 0: an n × n grid,
-    /// whatever the scene asks for (a quick preview's 1).
+    /// 0: as the scene's settings say (grid or adaptive anti-aliasing); n > 0: an n × n grid
+    /// (n² paths under the path integrator), whatever the scene asks for (a quick preview's 1).
     int grid = 0;
 };
 

@@ -26,6 +26,11 @@ public:
     Vec3 vector(const Vec3& v) const { return linear_ * v; }
     /// A normal stays perpendicular to the surface under non-uniform scale: the inverse transpose.
     Vec3 normal(const Vec3& n) const { return glm::normalize(normalMatrix_ * n); }
+    /// How much the transform scales the area of a surface element of unit normal n:
+    /// |det L| · |L⁻ᵀ n| (the cofactor matrix maps the element's area vector).
+    double areaScale(const Vec3& n) const {
+        return std::abs(glm::determinant(linear_)) * glm::length(normalMatrix_ * n);
+    }
     Ray ray(const Ray& r) const { return {point(r.origin), vector(r.dir)}; }
 
     /// Bound of the rounding error of point(p), given p's own error bound (pbrt's

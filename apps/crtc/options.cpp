@@ -181,6 +181,18 @@ void addQualityOptions(CLI::App& app, Options& o) {
                 if (name == scene::kAntialiasNames[i])
                     q.antialias = static_cast<scene::Antialias>(i);
         });
+    app.add_option("--integrator", "whitted or path (path tracing: light bounces off every surface)")
+        ->type_name("NAME")
+        ->group(group)
+        ->check(oneOf({scene::kIntegratorNames[0].data(), scene::kIntegratorNames[1].data()}))
+        ->each([&q](const std::string& name) {
+            for (size_t i = 0; i < std::size(scene::kIntegratorNames); ++i)
+                if (name == scene::kIntegratorNames[i]) q.integrator = static_cast<scene::Integrator>(i);
+        });
+    app.add_option("--samples", q.samples, "paths a pixel (the path integrator's)")
+        ->check(sampleCount(scene::kPathSamplesRange))
+        ->type_name("N")
+        ->group(group);
     app.add_option("--dofsamples", q.dofSamples, "lens samples a camera sample (depth of field)")
         ->check(sampleCount(scene::kDofSamplesRange))
         ->type_name("N")

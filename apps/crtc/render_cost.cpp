@@ -12,6 +12,12 @@ RenderCost estimateRenderCost(const scene::SceneDesc& scene) {
     const scene::SettingsDesc& s = scene.settings;
     RenderCost cost;
     cost.pixels = static_cast<double>(s.width) * s.height;
+    if (s.integrator == scene::Integrator::Path) {
+        // Each bounce: the ray on, a shadow ray to each light and one to an emitting surface.
+        cost.cameraSamplesPerPixel = s.samples;
+        cost.raysPerCameraSample = (s.bounces + 1.0) * (2.0 + static_cast<double>(scene.lights.size()));
+        return cost;
+    }
     double grid = static_cast<double>(s.supersampling) * s.supersampling;
     if (s.antialias == scene::Antialias::Adaptive || s.antialias == scene::Antialias::ShowAdaptive) {
         // Four samples a region, each region split in four down to aadepth levels.

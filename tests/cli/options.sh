@@ -64,6 +64,17 @@ expect_status 0 "--draft shadows" "$crtc" --draft --stats -o "$work/s1.png" "$wo
     fail "--shadowsamples 64 traces more shadow rays than --draft's one"
 if cmp -s "$work/dof.png" "$work/draft.png"; then fail "--draft renders the same image as the script's quality"; fi
 
+# The path integrator from the command line: its samples are the paths a pixel.
+expect_status 0 "--integrator path --samples 5" "$crtc" --integrator path --samples 5 -o "$work/path.png" "$work/dof.crt"
+expect_text "$work/err" "^crtc: 40x30, 5 samples/pixel," "--samples: paths a pixel"
+if cmp -s "$work/dof.png" "$work/path.png"; then fail "--integrator path renders the Whitted image"; fi
+expect_status 0 "--integrator path --draft" "$crtc" --integrator path --draft -o "$work/pd.png" "$work/dof.crt"
+expect_text "$work/err" "^crtc: 40x30, 1 sample/pixel," "--draft: one path a pixel"
+expect_status 2 "bad --integrator" "$crtc" --integrator radiosity "$work/dof.crt"
+expect_text "$work/err" "--integrator takes whitted or path, not 'radiosity'" "--integrator choices"
+expect_status 2 "--samples out of range" "$crtc" --samples 0 "$work/dof.crt"
+expect_text "$work/err" "--samples needs an integer from 1 to 1000000, not '0'" "--samples range"
+
 # A region is the same pixels as the whole image's.
 expect_status 0 "--region" "$crtc" --region 8:4:36:21 -o "$work/region.png" "$work/dof.crt"
 expect_text "$work/err" "^crtc: 28x17," "the region's size"

@@ -62,3 +62,14 @@ SurfacePoint DiscGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, b
 }
 
 } // namespace crt::tracer
+
+namespace crt::tracer {
+
+double DiscGeometry::area() const { return empty_ ? 0 : kPi * (radius_ * radius_ - hole_ * hole_); }
+
+AreaSample DiscGeometry::sampleArea(const Vec2& u) const {
+    const double r = std::sqrt(hole_ * hole_ + u.x * (radius_ * radius_ - hole_ * hole_)), phi = 2 * kPi * u.y;
+    return {center_ + r * (std::cos(phi) * frame_.u + std::sin(phi) * frame_.v), frame_.w};
+}
+
+} // namespace crt::tracer

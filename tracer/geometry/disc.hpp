@@ -1,6 +1,7 @@
 // The disc primitive (with an optional hole: an annulus); a surface, not a solid.
 #pragma once
 
+#include "tracer/geometry/area_sample.hpp"
 #include "tracer/geometry/geometry_math.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -22,6 +23,10 @@ class DiscGeometry {
     SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// A surface without an inside: not usable in CSG.
     bool solid() const { return false; }
+
+    /// Its area, and a point of it uniform by area for u uniform in [0, 1)².
+    double area() const;
+    AreaSample sampleArea(const Vec2& u) const;
 
   private:
     Vec3 center_;

@@ -29,6 +29,30 @@ MappingAxis mappingAxis(const Geometry& geometry) {
         geometry);
 }
 
+double sampledArea(const Geometry& geometry) {
+    return std::visit(
+        [](const auto& stored) {
+            const auto& g = shapeOf(stored);
+            if constexpr (requires { g.sampleArea(Vec2(0.0)); })
+                return g.area();
+            else
+                return 0.0;
+        },
+        geometry);
+}
+
+AreaSample sampleArea(const Geometry& geometry, const Vec2& u) {
+    return std::visit(
+        [&](const auto& stored) {
+            const auto& g = shapeOf(stored);
+            if constexpr (requires { g.sampleArea(u); })
+                return g.sampleArea(u);
+            else
+                return AreaSample{};
+        },
+        geometry);
+}
+
 bool isSolid(const Geometry& geometry) {
     return std::visit([](const auto& g) { return shapeOf(g).solid(); }, geometry);
 }

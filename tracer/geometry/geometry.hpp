@@ -86,6 +86,11 @@ void crossLine(const Geometry& geometry, const Ray& ray, CrossingList& out);
 SurfacePoint surfaceAt(const Geometry& geometry, const Ray& ray, const Crossing& crossing, bool wantUv = true);
 /// What spherical and cylindrical image mappings wrap around on this primitive.
 MappingAxis mappingAxis(const Geometry& geometry);
+/// The area of a shape whose points can be drawn uniformly by area (a sphere, a disc, a quad,
+/// a triangle), else 0.
+double sampledArea(const Geometry& geometry);
+/// A point of such a shape, uniform by area for u uniform in [0, 1)².
+AreaSample sampleArea(const Geometry& geometry, const Vec2& u);
 /// Whether the primitive bounds a volume (usable in CSG).
 bool isSolid(const Geometry& geometry);
 /// Whether the primitive is a bounded convex solid (a line crosses it at most twice).

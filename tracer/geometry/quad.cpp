@@ -64,3 +64,11 @@ SurfacePoint QuadGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, b
 }
 
 } // namespace crt::tracer
+
+namespace crt::tracer {
+
+double QuadGeometry::area() const { return empty_ ? 0 : glm::length(glm::cross(edgeA_, edgeB_)); }
+
+AreaSample QuadGeometry::sampleArea(const Vec2& u) const { return {corner_ + u.x * edgeA_ + u.y * edgeB_, normal_}; }
+
+} // namespace crt::tracer

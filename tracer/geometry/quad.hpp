@@ -1,6 +1,7 @@
 // The quad primitive: a bounded parallelogram; a surface, not a solid.
 #pragma once
 
+#include "tracer/geometry/area_sample.hpp"
 #include "tracer/geometry/geometry_math.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -21,6 +22,10 @@ class QuadGeometry {
     SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// A surface without an inside: not usable in CSG.
     bool solid() const { return false; }
+
+    /// Its area, and a point of it uniform by area for u uniform in [0, 1)².
+    double area() const;
+    AreaSample sampleArea(const Vec2& u) const;
 
   private:
     Vec3 corner_;

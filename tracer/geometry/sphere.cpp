@@ -70,3 +70,15 @@ SurfacePoint SphereGeometry::surfaceAt(const Ray& ray, const Crossing& crossing,
 }
 
 } // namespace crt::tracer
+
+namespace crt::tracer {
+
+double SphereGeometry::area() const { return 4 * kPi * radius_ * radius_; }
+
+AreaSample SphereGeometry::sampleArea(const Vec2& u) const {
+    const double z = 1 - 2 * u.x, r = std::sqrt(std::max(0.0, 1 - z * z)), phi = 2 * kPi * u.y;
+    const Vec3 n(r * std::cos(phi), r * std::sin(phi), z);
+    return {center_ + radius_ * n, n};
+}
+
+} // namespace crt::tracer

@@ -1,6 +1,7 @@
 // The sphere primitive: exact line crossings and refined surface points.
 #pragma once
 
+#include "tracer/geometry/area_sample.hpp"
 #include "tracer/geometry/mapping_axis.hpp"
 #include "tracer/geometry/shape.hpp"
 #include "scene/scene_desc.hpp"
@@ -22,6 +23,9 @@ class SphereGeometry {
     SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// Usable in CSG: the crossings bound an inside.
     bool solid() const { return true; }
+    /// Its area, and a point of it uniform by area for u uniform in [0, 1)².
+    double area() const;
+    AreaSample sampleArea(const Vec2& u) const;
     /// About the centre, +y up.
     MappingAxis mappingAxis() const { return {center_, Vec3(0, 1, 0)}; }
 

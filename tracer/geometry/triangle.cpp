@@ -103,3 +103,11 @@ SurfacePoint TriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossin
 }
 
 } // namespace crt::tracer
+
+namespace crt::tracer {
+
+double TriangleGeometry::area() const { return empty_ ? 0 : triangleArea(p_); }
+
+AreaSample TriangleGeometry::sampleArea(const Vec2& u) const { return sampleTriangle(p_, u); }
+
+} // namespace crt::tracer

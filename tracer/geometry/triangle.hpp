@@ -1,6 +1,7 @@
 // The triangle primitive: watertight line crossing in double; a surface, not a solid.
 #pragma once
 
+#include "tracer/geometry/area_sample.hpp"
 #include "tracer/geometry/geometry_math.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -34,6 +35,10 @@ class TriangleGeometry {
     double facing(const Ray& ray) const { return glm::dot(normal_, ray.dir); }
     /// The barycentric weights of a, b and c at a crossing (for interpolating vertex data).
     Vec3 barycentrics(const Ray& ray, const Crossing& crossing) const;
+
+    /// Its area, and a point of it uniform by area for u uniform in [0, 1)².
+    double area() const;
+    AreaSample sampleArea(const Vec2& u) const;
 
   private:
     /// The watertight test: the line's parameter and the barycentric weights, or false.

@@ -28,6 +28,7 @@ scene::SceneDesc passScene(const scene::SceneDesc& scene, const RenderPass& pass
     if (pass.draft) {
         desc.camera.aperture = 0;
         s.dofSamples = 1;
+        s.samples = 1;
         s.shadowSamples = 1;
         s.glossySamples = 1;
     }

@@ -1,0 +1,163 @@
+// The path integrator against scenes whose light has a closed form: each image's mean within
+// three standard errors of it, the error estimated from the spread of its pixels (each an
+// independent estimate).
+#include "analytic_util.hpp"
+#include "scene_builder_util.hpp"
+
+#include <cmath>
+
+using namespace crt::tracer;
+namespace scene = crt::scene;
+using namespace crt::tracer::test;
+
+namespace {
+
+constexpr int kSize = 16;
+
+/// The mean of the pixels' channel `channel` over [x0, x1) × [y0, y1), and its standard error.
+struct Estimate {
+    double mean = 0, standardError = 0;
+};
+
+Estimate estimate(const PixelBuffer& image, int channel, int x0 = 0, int y0 = 0, int x1 = kSize, int y1 = kSize) {
+    double sum = 0, sum2 = 0;
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const double v = pixelAt(image, x, y)[channel];
+            sum += v, sum2 += v * v, ++n;
+        }
+    const double mean = sum / n;
+    const double variance = std::max(0.0, sum2 / n - mean * mean) * n / (n - 1);
+    return {mean, std::sqrt(variance / n)};
+}
+
+/// Within three standard errors, and the rounding of the image's floats.
+void checkWithin3Se(const Estimate& e, double expected) {
+    INFO("mean " << e.mean << " standard error " << e.standardError << " expected " << expected);
+    CHECK(std::abs(e.mean - expected) <= 3 * e.standardError + 1e-6 * expected);
+}
+
+scene::SceneDesc pathScene(const scene::CameraDesc& camera, int samples, int bounces) {
+    scene::SceneDesc desc = blankScene(kSize, kSize, camera);
+    desc.settings.integrator = scene::Integrator::Path;
+    desc.settings.samples = samples;
+    desc.settings.bounces = bounces;
+    return desc;
+}
+
+ShadingMaterial diffuse(double albedo, double emission = 0) {
+    ShadingMaterial m;
+    m.color = scene::Color{albedo, albedo, albedo, 1};
+    m.diffuse = 1;
+    m.emission = scene::Color{emission, emission, emission, 1};
+    return m;
+}
+
+} // namespace
+
+TEST_CASE("path: inside a closed glowing sphere the light is the geometric series of its albedo",
+          "[render][path]") {
+    // Every bounce meets the sphere again: Le · (1 + ρ + … + ρ^bounces).
+    constexpr double kAlbedo = 0.6, kEmission = 0.5;
+    for (int bounces : {0, 1, 8}) {
+        SceneMaker m;
+        m.desc = pathScene(lookAt({0.1, -0.2, 0.05}, {1, 0, 0}, 90), 64, bounces);
+        m.draw(m.sphere({0, 0, 0}, 1, m.material(diffuse(kAlbedo, kEmission))));
+        const PixelBuffer image = renderOk(m.desc);
+        const double expected = kEmission * (1 - std::pow(kAlbedo, bounces + 1)) / (1 - kAlbedo);
+        INFO("bounces " << bounces);
+        checkWithin3Se(estimate(image, 0), expected);
+    }
+}
+
+TEST_CASE("path: a white sphere under a uniform white sky is the sky (the white furnace)", "[render][path]") {
+    SceneMaker m;
+    m.desc = pathScene(lookAt({0, 0, -3}, {0, 0, 0}, 45), 16, 8);
+    m.desc.background.color = scene::Color{1, 1, 1, 1};
+    m.draw(m.sphere({0, 0, 0}, 1, m.material(diffuse(1))));
+    const PixelBuffer image = renderOk(m.desc);
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            INFO("pixel " << x << "," << y);
+            CHECK(std::abs(pixelAt(image, x, y).y - 1) < 1e-6);
+        }
+}
+
+TEST_CASE("path: a Lambertian plane under a uniform sky sends back its albedo times the sky", "[render][path]") {
+    constexpr double kAlbedo = 0.35, kSky = 2;
+    SceneMaker m;
+    m.desc = pathScene(lookAt({0, 5, -1}, {0, 0, 0}, 30), 16, 4);
+    m.desc.background.color = scene::Color{kSky, kSky, kSky, 1};
+    m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(kAlbedo))));
+    const PixelBuffer image = renderOk(m.desc);
+    checkWithin3Se(estimate(image, 1), kAlbedo * kSky);
+}
+
+TEST_CASE("path: a point under a glowing disc or sphere gets the irradiance of its solid angle",
+          "[render][path]") {
+    // Seen from straight above, the floor's centre lies under the emitter: its radiance is
+    // ρ/π · E, with E = π Le r²/(h² + r²) under a disc of radius r at height h, and
+    // E = π Le (r/d)² under a sphere of radius r whose centre is d above it. The light comes
+    // both from light sampling and from the bounces' own hits, weighed by MIS, and (the disc
+    // scaled by 2) through the emitter's transform.
+    constexpr double kAlbedo = 0.8, kEmission = 3, kHeight = 2;
+    struct Case {
+        const char* name;
+        double radius;
+        bool sphere;
+        double scale;
+    };
+    for (const Case& c : {Case{"disc", 0.5, false, 1}, Case{"disc scaled", 0.25, false, 2},
+                          Case{"sphere", 0.5, true, 1}}) {
+        SceneMaker m;
+        scene::CameraDesc camera = lookAt({0, 1, 0}, {0, 0, 0}, 1); // the floor's centre fills the view
+        camera.up = {0, 0, 1};
+        m.desc = pathScene(camera, 256, 1);
+        m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(kAlbedo))));
+        const int32_t glow = m.material(diffuse(0, kEmission));
+        const double r = c.radius * c.scale;
+        int32_t emitter = c.sphere ? m.sphere({0, kHeight, 0}, c.radius, glow)
+                                   : m.entity(scene::DiscShape{{0, kHeight / c.scale, 0}, {0, 1, 0}, c.radius}, glow, false);
+        if (c.scale != 1) emitter = m.transformed(emitter, {scale({c.scale, c.scale, c.scale})});
+        m.draw(emitter);
+        const PixelBuffer image = renderOk(m.desc);
+        const double irradiance = c.sphere ? kPi * kEmission * r * r / (kHeight * kHeight)
+                                           : kPi * kEmission * r * r / (kHeight * kHeight + r * r);
+        INFO(c.name);
+        checkWithin3Se(estimate(image, 0), kAlbedo / kPi * irradiance);
+    }
+}
+
+TEST_CASE("path: a point light lights a Lambertian surface as under the Whitted integrator", "[render][path]") {
+    // A light of colour L gives a white diffuse surface L·cos θ under both (docs/rendering.md).
+    SceneMaker m;
+    scene::CameraDesc camera = lookAt({0, 1, 0}, {0, 0, 0}, 1);
+    camera.up = {0, 0, 1};
+    m.desc = pathScene(camera, 4, 3);
+    m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(0.5))));
+    scene::LightDesc light;
+    light.kind = scene::LightKind::Point;
+    light.origin = {3, 4, 0};
+    light.color = scene::Color{2, 2, 2, 1};
+    m.desc.lights.push_back(light);
+    const PixelBuffer path = renderOk(m.desc);
+    m.desc.settings.integrator = scene::Integrator::Whitted;
+    const PixelBuffer whitted = renderOk(m.desc);
+    const double expected = 0.5 * 2 * 4 / 5; // ρ · L · cos θ
+    CHECK(std::abs(pixelAt(whitted, kSize / 2, kSize / 2).x - expected) < 1e-3);
+    CHECK(std::abs(pixelAt(path, kSize / 2, kSize / 2).x - expected) < 1e-3);
+}
+
+TEST_CASE("path: the same scene and seed give the same bits on any number of threads", "[render][path]") {
+    SceneMaker m;
+    m.desc = pathScene(lookAt({0, 1, -4}, {0, 0.5, 0}, 50), 8, 6);
+    m.desc.background.color = scene::Color{0.3, 0.4, 0.9, 1};
+    m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(0.7))));
+    m.draw(m.sphere({0, 0.6, 0}, 0.6, m.material(diffuse(0.2, 4))));
+    const PixelBuffer one = renderOk(m.desc, 1);
+    const PixelBuffer two = renderOk(m.desc, 2);
+    CHECK(one.pixels == two.pixels);
+    m.desc.settings.seed = 7;
+    CHECK(renderOk(m.desc, 2).pixels != one.pixels);
+}

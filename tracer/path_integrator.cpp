@@ -1,0 +1,226 @@
+// Unidirectional path tracing: at every vertex, light sampling (each light, one emitting
+// surface chosen by power) and BSDF sampling, weighted by the power heuristic; Russian
+// roulette past the third bounce.
+#include "tracer/path_integrator.hpp"
+
+#include "tracer/bump.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace crt::tracer {
+
+namespace {
+
+/// Veach's power heuristic (β = 2): the weight of a sample drawn with density `mine` where
+/// another strategy draws it with density `other`.
+double powerHeuristic(double mine, double other) {
+    const double a = mine * mine, b = other * other;
+    return a + b > 0 ? a / (a + b) : 0;
+}
+
+/// Bounces after which Russian roulette may end a path.
+constexpr int kRouletteAfter = 3;
+
+} // namespace
+
+struct PathIntegrator::Vertex {
+    Hit hit;
+    SurfaceInteraction si;
+    Vec3 n;            ///< shading normal, facing the incoming ray (bumped)
+    double pathLength; ///< from the camera to this point (lights' falloff)
+};
+
+PathIntegrator::PathIntegrator(const RenderScene& scene, const scene::SettingsDesc& settings,
+                               const std::vector<Light>& lights, const Background& background,
+                               const std::vector<Texture>& textures)
+    : scene_(scene), settings_(settings), lights_(lights), background_(background), textures_(textures),
+      mixer_(scene.materials, scene.blends, textures), emitters_(scene) {}
+
+int32_t PathIntegrator::drawMaterial(const SurfaceInteraction& si, Vec3& color, Vec3& beta,
+                                     TraceContext& context) const {
+    const int32_t index = si.material;
+    if (mixer_.isPlain(index)) {
+        color = Vec3(mixer_.colorAt(scene_.materials[static_cast<size_t>(index)], si));
+        return index;
+    }
+    // One of the shares, or the light passing, drawn by weight: the draw's estimate of the
+    // sum of them all is the drawn one over its chance.
+    const size_t first = context.shares.size();
+    const Vec3 passes = mixer_.resolve(index, si, 1, context.shares);
+    const double passing = luminance(passes);
+    double total = passing;
+    for (size_t i = first; i < context.shares.size(); ++i) total += context.shares[i].weight;
+    int32_t chosen = -1;
+    if (total <= 0) {
+        beta = Vec3(0.0);
+    } else {
+        double pick = context.rng.uniform() * total;
+        for (size_t i = first; i < context.shares.size(); ++i) {
+            const MaterialShare& share = context.shares[i];
+            const bool last = i + 1 == context.shares.size() && passing <= 0;
+            if (pick < share.weight || last) {
+                chosen = share.material;
+                color = share.color;
+                beta *= total;
+                break;
+            }
+            pick -= share.weight;
+        }
+        if (chosen < 0) beta *= passes * (total / passing);
+    }
+    context.shares.resize(first);
+    return chosen;
+}
+
+Vec3 PathIntegrator::visibility(const Ray& ray, double tMax, Departure departed, TraceContext& context) const {
+    ++context.stats.shadowRays;
+    Vec3 through(1.0);
+    scene_.forEachCrossing(ray, tMax, departed, context.scratch, context.stats, [&](const Hit& hit) {
+        const int32_t index = scene_.materialOf(hit);
+        if (mixer_.isPlain(index)) {
+            through = Vec3(0.0);
+        } else {
+            const SurfaceInteraction si = scene_.interaction(ray, hit);
+            size_t first = context.shares.size();
+            through *= mixer_.resolve(index, si, 1, context.shares);
+            context.shares.resize(first);
+        }
+        return through != Vec3(0.0);
+    });
+    return through;
+}
+
+Vec3 PathIntegrator::fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const {
+    Vec3 sum(0.0);
+    for (const Light& light : lights_) {
+        // One point of an area or cylinder light, drawn among its samples: their mean.
+        const int count = light.sampleCount();
+        const int index = count > 1 ? std::min(static_cast<int>(context.rng.uniform() * count), count - 1) : 0;
+        const Vec2 jitter = count > 1 ? context.rng.uniform2() : Vec2(0.5);
+        const LightSample ls = light.sample(v.si.point, index, jitter);
+        if (ls.color == Vec3(0.0)) continue;
+        const Vec3 f = bsdf.evalCos(ls.toLight);
+        if (f == Vec3(0.0)) continue;
+        const Vec3 origin = offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ls.toLight);
+        const Ray shadow = ls.atInfinity ? Ray{origin, ls.toLight} : Ray{origin, ls.target - origin};
+        const Vec3 visible = visibility(shadow, ls.atInfinity ? kInfinity : 1.0,
+                                        scene_.departedPrimitive(v.hit, v.si, ls.toLight), context);
+        if (visible == Vec3(0.0)) continue;
+        double strength = kPi * count; // a light of colour L lights a white Lambertian surface to L·cos θ
+        if (light.falloff() > 0 && !ls.atInfinity) {
+            const double d = ls.distance + v.pathLength;
+            strength *= light.falloff() / (d * d);
+        }
+        if (light.attenuates()) strength *= light.attenuation(ls.distance);
+        sum += visible * f * ls.color * strength;
+    }
+    return sum;
+}
+
+Vec3 PathIntegrator::fromEmitter(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const {
+    EmitterSample es;
+    const double pick = context.rng.uniform();
+    const Vec2 u = context.rng.uniform2();
+    if (!emitters_.sample(v.si.point, pick, u, es)) return Vec3(0.0);
+    const Vec3 toEmitter = glm::normalize(es.point - v.si.point);
+    const Vec3 f = bsdf.evalCos(toEmitter);
+    if (f == Vec3(0.0)) return Vec3(0.0);
+    const Vec3 origin = offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, toEmitter);
+    // Stops short of the emitter's own surface, which the rounding of the point may put a
+    // hair in front of the ray's end.
+    constexpr double kShortOfEmitter = 1 - 1e-7;
+    const Vec3 visible = visibility(Ray{origin, es.point - origin}, kShortOfEmitter,
+                                    scene_.departedPrimitive(v.hit, v.si, toEmitter), context);
+    if (visible == Vec3(0.0)) return Vec3(0.0);
+    const double weight = powerHeuristic(es.pdf, bsdf.pdf(toEmitter));
+    return visible * f * es.radiance * (weight / es.pdf);
+}
+
+Vec3 PathIntegrator::directLight(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const {
+    return fromLights(v, bsdf, context) + fromEmitter(v, bsdf, context);
+}
+
+glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBackground, TraceContext& context) const {
+    Vec3 radiance(0.0), beta(1.0);
+    Ray ray = cameraRay;
+    Departure departed;
+    int32_t medium = -1;
+    // The last scattering vertex: where a BSDF-sampled ray started, and its density (0 for a
+    // mirror, glass or the camera: no light sampling competes with those).
+    Vec3 scatteredFrom(0.0);
+    double scatterPdf = 0;
+    double pathLength = 0;
+    int bounce = 0;
+    for (int crossings = 0;; ++crossings) {
+        Vertex v;
+        const bool found = scene_.intersect(ray, kInfinity, v.hit, context.scratch, context.stats, departed);
+        if (medium >= 0) {
+            // Beer–Lambert absorption along the path inside the solid.
+            const Vec3 a = rgb(scene_.materials[static_cast<size_t>(medium)].absorption);
+            for (int i = 0; i < 3; ++i)
+                if (a[i] > 0) beta[i] *= found ? std::exp(-a[i] * v.hit.t) : 0.0;
+        }
+        if (!found) {
+            if (crossings == 0 && transparentBackground) return glm::dvec4(0.0);
+            radiance += beta * background_.radiance(ray.dir);
+            break;
+        }
+        v.si = scene_.interaction(ray, v.hit);
+        v.pathLength = pathLength += v.hit.t;
+        const bool entering = glm::dot(ray.dir, v.si.normal) < 0;
+        const Vec3 facingNormal = entering ? v.si.normal : -v.si.normal;
+        Vec3 color;
+        const int32_t material = drawMaterial(v.si, color, beta, context);
+        if (material < 0) {
+            // Through the surface unbent, as if it were not there: the last scattering
+            // vertex stays the one light sampling was weighed against.
+            if (beta == Vec3(0.0) || crossings > 4 * settings_.bounces + 16) break;
+            ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ray.dir), ray.dir};
+            departed = scene_.departedPrimitive(v.hit, v.si, ray.dir);
+            continue;
+        }
+        const ShadingMaterial& m = scene_.materials[static_cast<size_t>(material)];
+        const Vec3 emission = rgb(m.emission);
+        if (emission != Vec3(0.0)) {
+            const double weight =
+                scatterPdf > 0 ? powerHeuristic(scatterPdf, emitters_.pdf(v.hit, scatteredFrom, v.si.point, v.si.normal))
+                               : 1.0;
+            radiance += beta * emission * weight;
+        }
+        if (bounce >= settings_.bounces) break;
+
+        v.n = glm::dot(v.si.shadingNormal, ray.dir) > 0 ? -v.si.shadingNormal : v.si.shadingNormal;
+        if (m.bump >= 0) v.n = bumpedNormal(textures_[static_cast<size_t>(m.bump)], v.si, v.n);
+        const Bsdf bsdf(m, color, ray.dir, v.n, facingNormal, entering, v.si.solid);
+        if (bsdf.reachable()) radiance += beta * directLight(v, bsdf, context);
+
+        BsdfSample next;
+        const double pick = context.rng.uniform();
+        const Vec2 u = context.rng.uniform2();
+        if (!bsdf.sample(pick, u, next)) break;
+        beta *= next.weight;
+        if (beta == Vec3(0.0)) break;
+        scatteredFrom = v.si.point;
+        scatterPdf = next.pdf;
+        if (next.transmitted) {
+            ++context.stats.refractionRays;
+            if (v.si.solid) medium = entering ? material : -1;
+        } else {
+            ++context.stats.reflectionRays;
+        }
+        ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, next.wi), next.wi};
+        departed = scene_.departedPrimitive(v.hit, v.si, next.wi);
+        ++bounce;
+        if (bounce > kRouletteAfter) {
+            // Russian roulette: a path carrying little light ends with the chance it lacks,
+            // and one that goes on carries that much more.
+            const double keep = std::min(1.0, std::max({beta.r, beta.g, beta.b}));
+            if (context.rng.uniform() >= keep) break;
+            beta /= keep;
+        }
+    }
+    return {radiance, 1};
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,51 @@
+// Path tracing (Settings.integrator "path"): light that bounces off every surface, with
+// next-event estimation and multiple importance sampling (docs/rendering.md, "Path tracing").
+#pragma once
+
+#include "tracer/background.hpp"
+#include "tracer/bsdf.hpp"
+#include "tracer/emitters.hpp"
+#include "tracer/integrator.hpp"
+
+#include <vector>
+
+namespace crt::tracer {
+
+class PathIntegrator {
+public:
+    /// Reads the scene, lights, background and textures while it lives.
+    PathIntegrator(const RenderScene& scene, const scene::SettingsDesc& settings, const std::vector<Light>& lights,
+                   const Background& background, const std::vector<Texture>& textures);
+
+    /// One path's estimate of the light along a camera ray, and alpha: 0 when the ray meets
+    /// nothing and the background is transparent (the colour is then black), else 1.
+    glm::dvec4 traceCamera(const Ray& ray, bool transparentBackground, TraceContext& context) const;
+
+    const Emitters& emitters() const { return emitters_; }
+
+private:
+    /// Where a path is: the surface it reached and what it knows of how it got there.
+    struct Vertex;
+    /// The plain material the path meets at the hit (one share of a blend, drawn by weight),
+    /// or -1 when it passes the surface unbent; `beta` takes the draw's weight.
+    int32_t drawMaterial(const SurfaceInteraction& si, Vec3& color, Vec3& beta, TraceContext& context) const;
+    /// The light arriving from the lights and emitting surfaces, sent on by the BSDF towards
+    /// the path's previous vertex.
+    Vec3 directLight(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
+    Vec3 fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
+    Vec3 fromEmitter(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
+    /// The share of light that passes along the segment (0, tMax) of `ray`: surfaces block it
+    /// but for what a colour's alpha lets through unbent (glass is reached by the path's own
+    /// refraction, so it is not counted twice).
+    Vec3 visibility(const Ray& ray, double tMax, Departure departed, TraceContext& context) const;
+
+    const RenderScene& scene_;
+    const scene::SettingsDesc& settings_;
+    const std::vector<Light>& lights_;
+    const Background& background_;
+    const std::vector<Texture>& textures_;
+    MaterialMixer mixer_;
+    Emitters emitters_;
+};
+
+} // namespace crt::tracer
