@@ -21,14 +21,26 @@ Vec3 Background::radiance(const Vec3& d) const {
     }
     case scene::BackgroundKind::Image: {
         if (!panorama_ || panorama_->width == 0) return color_;
-        double a = std::fmod(angle_ + std::atan2(-d.x, d.z) + kPi, 2 * kPi);
-        if (a < 0) a += 2 * kPi;
-        double u = 1 - a / (2 * kPi);
-        double v = 0.5 - std::asin(std::clamp(d.y, -1.0, 1.0)) / kPi;
-        return panorama_->bilinear(u, v, false);
+        const Vec2 uv = panoramaCoordinates(d);
+        return panorama_->bilinear(uv.x, uv.y, false);
     }
     }
     return color_;
+}
+
+Vec2 Background::panoramaCoordinates(const Vec3& d) const {
+    double a = std::fmod(angle_ + std::atan2(-d.x, d.z) + kPi, 2 * kPi);
+    if (a < 0) a += 2 * kPi;
+    double u = 1 - a / (2 * kPi);
+    double v = 0.5 - std::asin(std::clamp(d.y, -1.0, 1.0)) / kPi;
+    return {u, v};
+}
+
+Vec3 Background::panoramaDirection(const Vec2& uv) const {
+    // v runs from the zenith (0) to the nadir (1); u turns against the yaw `angle`.
+    const double theta = uv.y * kPi, psi = 2 * kPi * (1 - uv.x) - kPi - angle_;
+    const double r = std::sin(theta);
+    return {-r * std::sin(psi), std::cos(theta), r * std::cos(psi)};
 }
 
 } // namespace crt::tracer

@@ -13,6 +13,15 @@ public:
     /// The color seen along the unit direction d.
     Vec3 radiance(const Vec3& d) const;
 
+    /// The panorama of an image background that has one, else null.
+    const Image* panorama() const {
+        return kind_ == scene::BackgroundKind::Image && panorama_ && panorama_->width > 0 ? panorama_ : nullptr;
+    }
+    /// Where the panorama is read for direction d: u across, v down, both in [0, 1].
+    Vec2 panoramaCoordinates(const Vec3& d) const;
+    /// The unit direction read at (u, v): panoramaCoordinates' inverse.
+    Vec3 panoramaDirection(const Vec2& uv) const;
+
 private:
     scene::BackgroundKind kind_;
     Vec3 color_, horizon_, sky_;

@@ -35,7 +35,7 @@ PathIntegrator::PathIntegrator(const RenderScene& scene, const scene::SettingsDe
                                const std::vector<Light>& lights, const Background& background,
                                const std::vector<Texture>& textures)
     : scene_(scene), settings_(settings), lights_(lights), background_(background), textures_(textures),
-      mixer_(scene.materials, scene.blends, textures), emitters_(scene) {}
+      mixer_(scene.materials, scene.blends, textures), emitters_(scene), environment_(background) {}
 
 int32_t PathIntegrator::drawMaterial(const SurfaceInteraction& si, Vec3& color, Vec3& beta,
                                      TraceContext& context) const {
@@ -137,8 +137,21 @@ Vec3 PathIntegrator::fromEmitter(const Vertex& v, const Bsdf& bsdf, TraceContext
     return visible * f * es.radiance * (weight / es.pdf);
 }
 
+Vec3 PathIntegrator::fromEnvironment(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const {
+    if (!environment_.active()) return Vec3(0.0);
+    double pdf = 0;
+    const Vec3 dir = environment_.sample(context.rng.uniform2(), pdf);
+    if (!(pdf > 0)) return Vec3(0.0);
+    const Vec3 f = bsdf.evalCos(dir);
+    if (f == Vec3(0.0)) return Vec3(0.0);
+    const Vec3 origin = offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, dir);
+    const Vec3 visible = visibility(Ray{origin, dir}, kInfinity, scene_.departedPrimitive(v.hit, v.si, dir), context);
+    if (visible == Vec3(0.0)) return Vec3(0.0);
+    return visible * f * background_.radiance(dir) * (powerHeuristic(pdf, bsdf.pdf(dir)) / pdf);
+}
+
 Vec3 PathIntegrator::directLight(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const {
-    return fromLights(v, bsdf, context) + fromEmitter(v, bsdf, context);
+    return fromLights(v, bsdf, context) + fromEmitter(v, bsdf, context) + fromEnvironment(v, bsdf, context);
 }
 
 glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBackground, TraceContext& context) const {
@@ -163,7 +176,8 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
         }
         if (!found) {
             if (crossings == 0 && transparentBackground) return glm::dvec4(0.0);
-            radiance += beta * background_.radiance(ray.dir);
+            const double weight = scatterPdf > 0 ? powerHeuristic(scatterPdf, environment_.pdf(ray.dir)) : 1.0;
+            radiance += beta * background_.radiance(ray.dir) * weight;
             break;
         }
         v.si = scene_.interaction(ray, v.hit);

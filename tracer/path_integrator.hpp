@@ -5,6 +5,7 @@
 #include "tracer/background.hpp"
 #include "tracer/bsdf.hpp"
 #include "tracer/emitters.hpp"
+#include "tracer/environment_light.hpp"
 #include "tracer/integrator.hpp"
 
 #include <vector>
@@ -34,6 +35,7 @@ private:
     Vec3 directLight(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
     Vec3 fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
     Vec3 fromEmitter(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
+    Vec3 fromEnvironment(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
     /// The share of light that passes along the segment (0, tMax) of `ray`: surfaces block it
     /// but for what a colour's alpha lets through unbent (glass is reached by the path's own
     /// refraction, so it is not counted twice).
@@ -46,6 +48,7 @@ private:
     const std::vector<Texture>& textures_;
     MaterialMixer mixer_;
     Emitters emitters_;
+    EnvironmentLight environment_;
 };
 
 } // namespace crt::tracer
