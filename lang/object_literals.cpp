@@ -869,6 +869,10 @@ void Interpreter::buildSettings(const ObjectBuilder& b) {
     }
     s.samples = count("samples", s.samples, scene::kPathSamplesRange);
     s.bounces = count("bounces", s.bounces, scene::kBouncesRange);
+    if (b.get("targeterror")) {
+        s.targetError = b.number("targeterror", s.targetError);
+        if (!(s.targetError > 0)) problem("targeterror", "targeterror must be above 0");
+    }
     recordSettingsLinks(b);
 }
 

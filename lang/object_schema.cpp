@@ -55,6 +55,9 @@ constexpr AttributeInfo kSettings[] = {
      scene::kIntegratorNames},
     {"samples", A::Int, false, "64", "Path integrator: paths traced per pixel."},
     {"bounces", A::Int, false, "8", "Path integrator: surfaces a path may bounce off."},
+    {"targeterror", A::Float, false, "",
+     "Path integrator: a pixel stops taking paths (after 16, at most samples) once the relative "
+     "standard error of its mean falls below this; 0: every pixel takes samples."},
 };
 
 constexpr AttributeInfo kCamera[] = {

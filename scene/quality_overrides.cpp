@@ -21,6 +21,7 @@ void applyQuality(SceneDesc& scene, const QualityOverrides& overrides) {
     if (overrides.antialias) s.antialias = *overrides.antialias;
     if (overrides.integrator) s.integrator = *overrides.integrator;
     if (overrides.samples) s.samples = *overrides.samples;
+    if (overrides.targetError) s.targetError = *overrides.targetError;
 }
 
 } // namespace crt::scene

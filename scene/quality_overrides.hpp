@@ -19,10 +19,11 @@ struct QualityOverrides {
     std::optional<Antialias> antialias;
     std::optional<Integrator> integrator;
     std::optional<int> samples; ///< paths a pixel (the path integrator's)
+    std::optional<double> targetError;
 
     bool any() const {
         return draft || supersampling || dofSamples || shadowSamples || glossySamples || antialias ||
-               integrator || samples;
+               integrator || samples || targetError;
     }
 };
 

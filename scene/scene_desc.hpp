@@ -502,8 +502,12 @@ struct SettingsDesc {
     uint64_t seed = 0;
     Color ambient{0, 0, 0, 1};
     Integrator integrator = Integrator::Whitted;
-    int samples = 64; ///< path: paths a pixel
+    int samples = 64; ///< path: paths a pixel (the most, with targetError)
     int bounces = 8;  ///< path: surfaces a path may bounce off
+    /// path: a pixel stops taking paths once the relative standard error of its mean is below
+    /// this (after kMinAdaptiveSamples); 0: every pixel takes `samples`.
+    double targetError = 0;
+    static constexpr int kMinAdaptiveSamples = 16;
 
     int reflectionLimit() const { return reflectionDepth < 0 ? recursionDepth : reflectionDepth; }
     int refractionLimit() const { return refractionDepth < 0 ? recursionDepth : refractionDepth; }

@@ -336,6 +336,7 @@ Json settingsJson(const SettingsDesc& s) {
     if (path) json["integrator"] = kIntegratorNames[static_cast<int>(s.integrator)];
     if (path || s.samples != defaults.samples) json["samples"] = s.samples;
     if (path || s.bounces != defaults.bounces) json["bounces"] = s.bounces;
+    if (s.targetError > 0) json["targeterror"] = s.targetError;
     return json;
 }
 

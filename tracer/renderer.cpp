@@ -69,18 +69,36 @@ public:
     }
 
 private:
-    /// The mean of `samples` paths, each through its own point of the pixel (and of the lens).
+    /// The mean of `samples` paths, each through its own point of the pixel (and of the lens);
+    /// with a target error, of as many as the pixel needs for it (checked every
+    /// kMinAdaptiveSamples paths, so the count does not hang on the noise of a single one).
     Color pathPixel(int x, int y, uint64_t pixelIndex, TraceContext& context) const {
+        constexpr int kBatch = scene::SettingsDesc::kMinAdaptiveSamples;
         Color sum(0.0);
-        for (int k = 0; k < settings_.samples; ++k) {
+        double sumLuminance = 0, sumSquares = 0;
+        int k = 0;
+        while (k < settings_.samples) {
             context.rng = SampleRng(settings_.seed, pixelIndex, static_cast<uint64_t>(k));
             const Vec2 offset = context.rng.uniform2();
             const Ray ray = pathLens_ ? camera_.lensRay(x + offset.x, y + offset.y, context.rng.uniform2())
                                       : camera_.ray(x + offset.x, y + offset.y);
             ++context.stats.cameraRays;
-            sum += path_->traceCamera(ray, transparentBackground_, context);
+            const Color c = path_->traceCamera(ray, transparentBackground_, context);
+            sum += c;
+            const double l = luminance(Vec3(c));
+            sumLuminance += l, sumSquares += l * l;
+            ++k;
+            if (settings_.targetError > 0 && k % kBatch == 0 && converged(sumLuminance, sumSquares, k)) break;
         }
-        return sum / static_cast<double>(settings_.samples);
+        return sum / static_cast<double>(k);
+    }
+
+    /// Whether the relative standard error of the mean of n values (by their sum and sum of
+    /// squares) is below the target; relative to at least 1/1000, so that black pixels stop.
+    bool converged(double sum, double sumSquares, int n) const {
+        const double mean = sum / n;
+        const double variance = std::max(0.0, sumSquares / n - mean * mean) * n / (n - 1);
+        return std::sqrt(variance / n) <= settings_.targetError * std::max(mean, 1e-3);
     }
 
     /// Where stratified sample `k` lies in its grid cell, in [0, 1)². Its own stream of the

@@ -193,6 +193,13 @@ void addQualityOptions(CLI::App& app, Options& o) {
         ->check(sampleCount(scene::kPathSamplesRange))
         ->type_name("N")
         ->group(group);
+    app.add_option("--target-error", q.targetError,
+                   "path: a pixel stops taking paths once the relative standard error of its mean is "
+                   "below E (--samples is then the most it takes)")
+        ->check(numberIn<double>(std::numeric_limits<double>::min(), std::numeric_limits<double>::max(),
+                                 "a number above 0"))
+        ->type_name("E")
+        ->group(group);
     app.add_option("--dofsamples", q.dofSamples, "lens samples a camera sample (depth of field)")
         ->check(sampleCount(scene::kDofSamplesRange))
         ->type_name("N")

@@ -161,3 +161,51 @@ TEST_CASE("path: the same scene and seed give the same bits on any number of thr
     m.desc.settings.seed = 7;
     CHECK(renderOk(m.desc, 2).pixels != one.pixels);
 }
+
+namespace {
+
+/// Renders and returns the outcome (its stats) beside the image.
+PixelBuffer renderCounting(const scene::SceneDesc& desc, RenderOutcome& outcome) {
+    RenderJob job;
+    PixelBuffer image(desc.settings.width, desc.settings.height);
+    job.onTileDone = [&](const TileResult& tile) { image.place(tile); };
+    outcome = render(desc, job);
+    REQUIRE(outcome.ok);
+    return image;
+}
+
+} // namespace
+
+TEST_CASE("path: with a target error, a pixel takes the paths it needs", "[render][path]") {
+    constexpr uint64_t kPixels = kSize * kSize;
+    SECTION("a flat sky is exact after the first batch: every pixel stops there") {
+        SceneMaker m;
+        m.desc = pathScene(lookAt({0, 0, -3}, {0, 0, 0}, 45), 1024, 8);
+        m.desc.settings.targetError = 0.01;
+        m.desc.background.color = scene::Color{1, 1, 1, 1};
+        m.draw(m.sphere({0, 0, 0}, 1, m.material(diffuse(1))));
+        RenderOutcome outcome;
+        renderCounting(m.desc, outcome);
+        CHECK(outcome.stats.cameraRays == kPixels * scene::SettingsDesc::kMinAdaptiveSamples);
+    }
+    SECTION("under a glowing disc, the pixels stop between the first batch and samples, at the light") {
+        constexpr double kAlbedo = 0.8, kEmission = 3, kHeight = 2, kRadius = 0.5;
+        SceneMaker m;
+        scene::CameraDesc camera = lookAt({0, 1, 0}, {0, 0, 0}, 1);
+        camera.up = {0, 0, 1};
+        m.desc = pathScene(camera, 4096, 1);
+        m.desc.settings.targetError = 0.002;
+        m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(kAlbedo))));
+        m.draw(m.entity(scene::DiscShape{{0, kHeight, 0}, {0, 1, 0}, kRadius}, m.material(diffuse(0, kEmission)), false));
+        RenderOutcome outcome;
+        const PixelBuffer image = renderCounting(m.desc, outcome);
+        CHECK(outcome.stats.cameraRays > kPixels * scene::SettingsDesc::kMinAdaptiveSamples);
+        CHECK(outcome.stats.cameraRays < kPixels * 4096);
+        const double irradiance = kPi * kEmission * kRadius * kRadius / (kHeight * kHeight + kRadius * kRadius);
+        checkWithin3Se(estimate(image, 0), kAlbedo / kPi * irradiance);
+        // Each pixel's own error is within the target: no pixel strays by much more.
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x)
+                CHECK(std::abs(pixelAt(image, x, y).x / (kAlbedo / kPi * irradiance) - 1) < 5 * 0.002);
+    }
+}
