@@ -88,17 +88,21 @@ private:
             const double l = luminance(Vec3(c));
             sumLuminance += l, sumSquares += l * l;
             ++k;
-            if (settings_.targetError > 0 && k % kBatch == 0 && converged(sumLuminance, sumSquares, k)) break;
+            if (settings_.targetError > 0 && k % kBatch == 0 &&
+                relativeError(sumLuminance, sumSquares, k) <= settings_.targetError)
+                break;
         }
+        context.stats.addPathPixel(static_cast<uint64_t>(k), relativeError(sumLuminance, sumSquares, k));
         return sum / static_cast<double>(k);
     }
 
-    /// Whether the relative standard error of the mean of n values (by their sum and sum of
-    /// squares) is below the target; relative to at least 1/1000, so that black pixels stop.
-    bool converged(double sum, double sumSquares, int n) const {
+    /// The standard error of the mean of n values (by their sum and sum of squares) relative
+    /// to the mean, or to 1/1000 where it is darker, so that black pixels stop; 1 for one value.
+    static double relativeError(double sum, double sumSquares, int n) {
+        if (n < 2) return 1;
         const double mean = sum / n;
         const double variance = std::max(0.0, sumSquares / n - mean * mean) * n / (n - 1);
-        return std::sqrt(variance / n) <= settings_.targetError * std::max(mean, 1e-3);
+        return std::sqrt(variance / n) / std::max(mean, 1e-3);
     }
 
     /// Where stratified sample `k` lies in its grid cell, in [0, 1)². Its own stream of the

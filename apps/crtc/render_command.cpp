@@ -105,6 +105,11 @@ void printStats(const RenderTotals& totals) {
         r.shading, s.cameraRays, s.reflectionRays,
         s.refractionRays, s.shadowRays, s.totalRays(), s.nodesVisited, s.intersectionTests,
         r.buildSeconds, r.renderSeconds, totals.reusedFrames);
+    if (s.pathPixels > 0)
+        std::cerr << fmt::format("crtc: stats: paths a pixel: fewest {}, mean {:.1f}, most {}; estimated "
+                                 "relative error {:.2f} % (root mean square of the pixels')\n",
+                                 s.fewestPaths, double(s.cameraRays) / double(s.pathPixels), s.mostPaths,
+                                 100 * s.imageRelativeError());
 }
 
 /// The camera rays a pixel got on average: depth of field and adaptive samples included.

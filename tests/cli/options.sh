@@ -74,6 +74,8 @@ expect_status 2 "bad --integrator" "$crtc" --integrator radiosity "$work/dof.crt
 expect_text "$work/err" "--integrator takes whitted or path, not 'radiosity'" "--integrator choices"
 expect_status 0 "--target-error" "$crtc" --integrator path --samples 64 --target-error 0.05 -o "$work/te.png" "$work/dof.crt"
 expect_text "$work/err" "^crtc: 40x30, [0-9]+\.[0-9]+ samples/pixel," "--target-error: the pixels' mean count of paths"
+expect_status 0 "--target-error --stats" "$crtc" --integrator path --samples 64 --target-error 0.05 --stats -o "$work/te.png" "$work/dof.crt"
+expect_text "$work/err" "^crtc: stats: paths a pixel: fewest 16, mean [0-9.]+, most (6[0-4]|[1-5][0-9]); estimated relative error [0-9.]+ %" "--stats: paths a pixel and the error"
 expect_status 2 "--target-error 0" "$crtc" --target-error 0 "$work/dof.crt"
 expect_text "$work/err" "--target-error needs a number above 0, not '0'" "--target-error range"
 expect_status 2 "--samples out of range" "$crtc" --samples 0 "$work/dof.crt"

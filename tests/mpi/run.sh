@@ -77,6 +77,14 @@ stills() {
         <(grep -E "rays:|samples/pixel" "$work/err" | sed 's/[0-9.]*s,.*//') >/dev/null ||
         fail "--stats over 3 processes differs from crtc alone: $(grep rays: "$work/err")"
     [ "$(grep -c 'crtc: stats: rays' "$work/err")" = 1 ] || fail "--stats printed by more than rank 0"
+    # The path integrator, adaptive: the same floats, and the same counts of paths and error.
+    "$crtc" --stats --integrator path --samples 32 --target-error 0.1 "$here/still.crt" -o "$work/path_alone.hdr" \
+        2>"$work/path_alone.err"
+    expect_status 0 "path tracing" mpi 3 --stats --integrator path --samples 32 --target-error 0.1 "$here/still.crt" \
+        -o "$work/path_shared.hdr"
+    cmp -s "$work/path_alone.hdr" "$work/path_shared.hdr" || fail "a path-traced image over 3 processes differs"
+    diff <(grep -E "paths a pixel|rays:" "$work/path_alone.err") <(grep -E "paths a pixel|rays:" "$work/err") >/dev/null ||
+        fail "path --stats over 3 processes differ from crtc alone: $(grep 'paths a pixel' "$work/err")"
     # --alpha: tiles of four channels.
     "$crtc" --quiet --alpha "$here/still.crt" -o "$work/alpha_alone.png"
     expect_status 0 "--alpha" mpi 3 --quiet --alpha "$here/still.crt" -o "$work/alpha_shared.png"

@@ -1,14 +1,18 @@
 // The messages of an animation shared out by frames.
 #include "frame_message.hpp"
 
+#include <algorithm>
+#include <iterator>
+
 namespace crt::crtc::distributed {
 
 FrameDone frameDoneOf(const tracer::RenderOutcome& outcome) {
     const tracer::RayStats& s = outcome.stats;
     FrameDone done;
-    const uint64_t rays[7] = {s.cameraRays,   s.reflectionRays,    s.refractionRays, s.shadowRays,
-                              s.nodesVisited, s.intersectionTests, s.cachedFrames};
-    std::memcpy(done.rays, rays, sizeof rays);
+    const auto summed = s.summed();
+    const auto greatest = s.greatest();
+    std::copy(summed.begin(), summed.end(), done.summed);
+    std::copy(greatest.begin(), greatest.end(), done.greatest);
     done.buildSeconds = outcome.buildSeconds;
     done.renderSeconds = outcome.renderSeconds;
     done.primitives = outcome.primitives;
@@ -23,8 +27,11 @@ FrameDone frameDoneOf(const tracer::RenderOutcome& outcome) {
 
 tracer::RenderOutcome outcomeOf(const FrameDone& done) {
     tracer::RenderOutcome outcome;
-    const uint64_t* r = done.rays;
-    outcome.stats = tracer::RayStats{r[0], r[1], r[2], r[3], r[4], r[5], r[6]};
+    std::array<uint64_t, tracer::RayStats::kSummed> summed{};
+    std::array<uint64_t, tracer::RayStats::kGreatest> greatest{};
+    std::copy(std::begin(done.summed), std::end(done.summed), summed.begin());
+    std::copy(std::begin(done.greatest), std::end(done.greatest), greatest.begin());
+    outcome.stats = tracer::RayStats::fromCounters(summed, greatest);
     outcome.buildSeconds = done.buildSeconds;
     outcome.renderSeconds = done.renderSeconds;
     outcome.primitives = done.primitives;

@@ -30,7 +30,8 @@ struct FrameFacts {
 /// A frame traced: its ray counts and timings, for the summary and --stats.
 struct FrameDone {
     int32_t frame = 0;
-    uint64_t rays[7]{}; ///< camera, reflection, refraction, shadow, nodes, tests, cached
+    uint64_t summed[tracer::RayStats::kSummed]{};     ///< RayStats::summed()
+    uint64_t greatest[tracer::RayStats::kGreatest]{}; ///< RayStats::greatest()
     double buildSeconds = 0, renderSeconds = 0;
     uint64_t primitives = 0, drawnPrimitives = 0, bvhNodes = 0;
     uint64_t sceneBytes = 0, peakBytes = 0;

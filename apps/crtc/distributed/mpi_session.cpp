@@ -14,13 +14,6 @@ namespace crt::crtc::distributed {
 
 namespace {
 
-/// The ray counts as an array, to be summed by MPI.
-constexpr int kStatCount = 7;
-std::array<uint64_t, kStatCount> statArray(const tracer::RayStats& s) {
-    return {s.cameraRays,   s.reflectionRays,    s.refractionRays, s.shadowRays,
-            s.nodesVisited, s.intersectionTests, s.cachedFrames};
-}
-
 /// The module, or the end of this process: every rank fails alike, so rank 0 alone says why
 /// (with the status of a crtc built without MPI) and none has started anything to clean up.
 const CrtMpiModule& mpiModuleOrExit() {
@@ -79,11 +72,14 @@ std::pair<uint64_t, uint64_t> MpiSession::rangeOverRanks(uint64_t value) {
 }
 
 tracer::RayStats MpiSession::sumStats(const tracer::RayStats& stats) {
-    const std::array<uint64_t, kStatCount> mine = statArray(stats);
-    std::array<uint64_t, kStatCount> sum{};
-    mpi_->reduceSumToRoot(mine.data(), sum.data(), kStatCount);
+    const auto summed = stats.summed();
+    const auto greatest = stats.greatest();
+    std::array<uint64_t, tracer::RayStats::kSummed> sum{};
+    std::array<uint64_t, tracer::RayStats::kGreatest> most{};
+    mpi_->reduceSumToRoot(summed.data(), sum.data(), static_cast<int>(sum.size()));
+    mpi_->allReduceMax(greatest.data(), most.data(), static_cast<int>(most.size()));
     if (!root()) return stats;
-    return tracer::RayStats{sum[0], sum[1], sum[2], sum[3], sum[4], sum[5], sum[6]};
+    return tracer::RayStats::fromCounters(sum, most);
 }
 
 void MpiSession::send(int rank, Tag tag, const void* data, size_t bytes) {

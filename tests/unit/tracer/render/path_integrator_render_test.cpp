@@ -187,6 +187,10 @@ TEST_CASE("path: with a target error, a pixel takes the paths it needs", "[rende
         RenderOutcome outcome;
         renderCounting(m.desc, outcome);
         CHECK(outcome.stats.cameraRays == kPixels * scene::SettingsDesc::kMinAdaptiveSamples);
+        CHECK(outcome.stats.pathPixels == kPixels);
+        CHECK(outcome.stats.fewestPaths == scene::SettingsDesc::kMinAdaptiveSamples);
+        CHECK(outcome.stats.mostPaths == scene::SettingsDesc::kMinAdaptiveSamples);
+        CHECK(outcome.stats.imageRelativeError() == 0);
     }
     SECTION("under a glowing disc, the pixels stop between the first batch and samples, at the light") {
         constexpr double kAlbedo = 0.8, kEmission = 3, kHeight = 2, kRadius = 0.5;
@@ -201,6 +205,12 @@ TEST_CASE("path: with a target error, a pixel takes the paths it needs", "[rende
         const PixelBuffer image = renderCounting(m.desc, outcome);
         CHECK(outcome.stats.cameraRays > kPixels * scene::SettingsDesc::kMinAdaptiveSamples);
         CHECK(outcome.stats.cameraRays < kPixels * 4096);
+        // Every pixel stopped at the target, so the image's error (their root mean square) is
+        // within it too, and the counts it reports bound the mean.
+        CHECK(outcome.stats.imageRelativeError() <= 0.002);
+        CHECK(outcome.stats.imageRelativeError() > 0.001);
+        CHECK(outcome.stats.fewestPaths * kPixels <= outcome.stats.cameraRays);
+        CHECK(outcome.stats.mostPaths * kPixels >= outcome.stats.cameraRays);
         const double irradiance = kPi * kEmission * kRadius * kRadius / (kHeight * kHeight + kRadius * kRadius);
         checkWithin3Se(estimate(image, 0), kAlbedo / kPi * irradiance);
         // Each pixel's own error is within the target: no pixel strays by much more.
