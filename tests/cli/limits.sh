@@ -118,5 +118,12 @@ expect_text "$work/err" "^crtc: warning: this render traces up to about 1\.9e\+1
     "the render cost warning"
 expect_status 0 "--check --draft of the same" "$crtc" --check --draft "$work/huge.crt"
 grep -q "rays" "$work/err" && fail "--draft: the cost warning is still there"
+# Under the path integrator the cost is the paths a pixel times the rays of their bounces:
+# 16384² pixels × 1,000,000 paths × (1000 bounces + 1) × (2 + 1 light) rays.
+sed -i 's/supersampling -> 64/bounces -> 1000/' "$work/huge.crt"
+expect_status 0 "--check of a path-traced render of 1000 bounces" "$crtc" --check --integrator path \
+    --samples 1000000 "$work/huge.crt"
+expect_text "$work/err" "^crtc: warning: this render traces up to about 8\.1e\+17 rays \(16384x16384 pixels, 1000000 camera samples a pixel, 3003 ray\(s\) a sample" \
+    "the path integrator's cost warning"
 
 finish
