@@ -7,6 +7,41 @@
 
 namespace crt::tracer {
 
+namespace {
+
+/// 1 − cos θmax of the cone a sphere of radius r fills from a distance d > r, without the
+/// cancellation of 1 − √(1 − r²/d²) for small spheres far away.
+double oneMinusCosMax(double r, double d) {
+    const double sin2 = (r / d) * (r / d);
+    return sin2 / (1 + std::sqrt(std::max(0.0, 1 - sin2)));
+}
+
+} // namespace
+
+double Emitters::coneSolidAngle(const Entry& e, const Vec3& from) {
+    const double d = glm::length(e.center - from);
+    return d > e.radius * (1 + 1e-9) ? 2 * kPi * oneMinusCosMax(e.radius, d) : 0;
+}
+
+void Emitters::placeCone(Entry& e, const SphereGeometry& sphere) const {
+    const Primitive& primitive = scene_.primitives[static_cast<size_t>(e.primitive)];
+    Vec3 center = sphere.center();
+    double radius = sphere.radius();
+    if (primitive.transform >= 0) {
+        // Only a similarity keeps a sphere a sphere: rotation, translation, uniform scale.
+        const Transform& toWorld = scene_.transforms[static_cast<size_t>(primitive.transform)].toWorld;
+        const glm::dmat3 gram = glm::transpose(toWorld.linear()) * toWorld.linear();
+        const double scale2 = gram[0][0];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                if (std::abs(gram[i][j] - (i == j ? scale2 : 0.0)) > 1e-12 * scale2) return;
+        center = toWorld.point(center);
+        radius *= std::sqrt(scale2);
+    }
+    e.center = center;
+    e.radius = radius;
+}
+
 Emitters::Emitters(const RenderScene& scene) : scene_(scene) {
     std::vector<bool> inCsg(scene.primitives.size(), false);
     for (const CsgTreeNode& node : scene.csgNodes)
@@ -28,6 +63,7 @@ Emitters::Emitters(const RenderScene& scene) : scene_(scene) {
             if (firstEntryOf_.empty()) firstEntryOf_.assign(scene.primitives.size(), -1);
             if (firstEntryOf_[p] < 0) firstEntryOf_[p] = static_cast<int32_t>(entries_.size());
             entries_.push_back({static_cast<int32_t>(p), face, area});
+            if (const SphereGeometry* sphere = shapeIf<SphereGeometry>(primitive.geometry)) placeCone(entries_.back(), *sphere);
             power.push_back(glow * area * scale * scale);
         };
         if (const MeshGeometry* mesh = shapeIf<MeshGeometry>(primitive.geometry)) {
@@ -60,6 +96,22 @@ bool Emitters::sample(const Vec3& from, double pick, const Vec2& u, EmitterSampl
     const size_t index = std::min(static_cast<size_t>(at - cumulative_.begin()) - 1, entries_.size() - 1);
     const Entry& e = entries_[index];
     const Primitive& primitive = scene_.primitives[static_cast<size_t>(e.primitive)];
+    if (e.radius > 0) {
+        if (const double solidAngle = coneSolidAngle(e, from); solidAngle > 0) {
+            // A direction uniform in the cone, and where it meets the sphere's near side.
+            const Vec3 toCenter = e.center - from;
+            const double d = glm::length(toCenter);
+            const double cosTheta = 1 - u.x * oneMinusCosMax(e.radius, d);
+            const double sinTheta = std::sqrt(std::max(0.0, 1 - cosTheta * cosTheta)), phi = 2 * kPi * u.y;
+            const Vec3 dir = Frame::fromAxis(toCenter / d).fromLocal({sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta});
+            const double t = d * cosTheta - std::sqrt(std::max(0.0, e.radius * e.radius - d * d * sinTheta * sinTheta));
+            out.point = from + t * dir;
+            out.normal = glm::normalize(out.point - e.center);
+            out.radiance = rgb(scene_.materials[static_cast<size_t>(primitive.material)].emission);
+            out.pdf = chance(index) / solidAngle;
+            return true;
+        }
+    }
     AreaSample point;
     if (const MeshGeometry* mesh = shapeIf<MeshGeometry>(primitive.geometry)) {
         Vec3 corners[3];
@@ -89,6 +141,9 @@ double Emitters::pdf(const Hit& hit, const Vec3& from, const Vec3& point, const 
     if (first < 0) return 0;
     const size_t index = static_cast<size_t>(first) + (entries_[static_cast<size_t>(first)].face == kNoPart ? 0 : hit.crossing.part);
     if (index >= entries_.size() || entries_[index].primitive != hit.primitive) return 0;
+    if (entries_[index].radius > 0)
+        if (const double solidAngle = coneSolidAngle(entries_[index], from); solidAngle > 0)
+            return chance(index) / solidAngle;
     const Vec3 offset = point - from;
     const double distance2 = glm::dot(offset, offset);
     const double cosLight = std::abs(glm::dot(normal, offset)) / std::sqrt(distance2);

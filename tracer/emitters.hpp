@@ -18,7 +18,9 @@ struct EmitterSample {
 /// The primitives whose material emits and whose shape can be sampled by area: spheres,
 /// discs, quads, triangles and each face of a mesh, drawn directly (not through an
 /// instance, a CSG tree or a material blend; those are found by the paths' own bounces).
-/// One is chosen by power (emission × area), then a point on it uniformly by area.
+/// One is chosen by power (emission × area), then a point on it: on a sphere (moved by a
+/// similarity at most) seen from outside, uniformly in the cone of directions it fills;
+/// elsewhere uniformly by area.
 class Emitters {
 public:
     explicit Emitters(const RenderScene& scene);
@@ -36,7 +38,15 @@ private:
         int32_t primitive;
         uint32_t face;     ///< a mesh's triangle
         double objectArea; ///< before the primitive's transform
+        /// A sphere sampled by its cone of directions: its centre and radius in world space
+        /// (radius 0 for every other entry).
+        Vec3 center{0.0};
+        double radius = 0;
     };
+    /// Makes a sphere's entry sampled by its cone, where its transform keeps it a sphere.
+    void placeCone(Entry& e, const SphereGeometry& sphere) const;
+    /// The solid angle a sphere entry fills seen from `from`, or 0 from inside it.
+    static double coneSolidAngle(const Entry& e, const Vec3& from);
     /// The area density of the entry's surface at a point of world normal `normal`.
     double areaDensity(const Entry& e, const Vec3& normal) const;
     double chance(size_t entry) const { return cumulative_[entry + 1] - cumulative_[entry]; }

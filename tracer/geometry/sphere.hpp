@@ -23,6 +23,8 @@ class SphereGeometry {
     SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// Usable in CSG: the crossings bound an inside.
     bool solid() const { return true; }
+    const Vec3& center() const { return center_; }
+    double radius() const { return radius_; }
     /// Its area, and a point of it uniform by area for u uniform in [0, 1)².
     double area() const;
     AreaSample sampleArea(const Vec2& u) const;

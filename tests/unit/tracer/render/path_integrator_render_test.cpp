@@ -99,8 +99,8 @@ TEST_CASE("path: a point under a glowing disc or sphere gets the irradiance of i
     // Seen from straight above, the floor's centre lies under the emitter: its radiance is
     // ρ/π · E, with E = π Le r²/(h² + r²) under a disc of radius r at height h, and
     // E = π Le (r/d)² under a sphere of radius r whose centre is d above it. The light comes
-    // both from light sampling and from the bounces' own hits, weighed by MIS, and (the disc
-    // scaled by 2) through the emitter's transform.
+    // both from light sampling and from the bounces' own hits, weighed by MIS, and (scaled
+    // by 2) through the emitter's transform.
     constexpr double kAlbedo = 0.8, kEmission = 3, kHeight = 2;
     struct Case {
         const char* name;
@@ -109,7 +109,7 @@ TEST_CASE("path: a point under a glowing disc or sphere gets the irradiance of i
         double scale;
     };
     for (const Case& c : {Case{"disc", 0.5, false, 1}, Case{"disc scaled", 0.25, false, 2},
-                          Case{"sphere", 0.5, true, 1}}) {
+                          Case{"sphere", 0.5, true, 1}, Case{"sphere scaled", 0.25, true, 2}}) {
         SceneMaker m;
         scene::CameraDesc camera = lookAt({0, 1, 0}, {0, 0, 0}, 1); // the floor's centre fills the view
         camera.up = {0, 0, 1};
@@ -117,7 +117,7 @@ TEST_CASE("path: a point under a glowing disc or sphere gets the irradiance of i
         m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(kAlbedo))));
         const int32_t glow = m.material(diffuse(0, kEmission));
         const double r = c.radius * c.scale;
-        int32_t emitter = c.sphere ? m.sphere({0, kHeight, 0}, c.radius, glow)
+        int32_t emitter = c.sphere ? m.sphere({0, kHeight / c.scale, 0}, c.radius, glow)
                                    : m.entity(scene::DiscShape{{0, kHeight / c.scale, 0}, {0, 1, 0}, c.radius}, glow, false);
         if (c.scale != 1) emitter = m.transformed(emitter, {scale({c.scale, c.scale, c.scale})});
         m.draw(emitter);
