@@ -124,15 +124,20 @@ bool Emitters::sample(const Vec3& from, double pick, const Vec2& u, EmitterSampl
         const Transform& toWorld = scene_.transforms[static_cast<size_t>(primitive.transform)].toWorld;
         point = {toWorld.point(point.point), toWorld.normal(point.normal)};
     }
-    const Vec3 offset = point.point - from;
-    const double distance2 = glm::dot(offset, offset);
-    const double cosLight = std::abs(glm::dot(point.normal, offset)) / std::sqrt(distance2);
-    if (!(distance2 > 0) || cosLight <= 0) return false;
+    out.pdf = areaSolidAngleDensity(index, from, point.point, point.normal);
+    if (!(out.pdf > 0)) return false;
     out.point = point.point;
     out.normal = point.normal;
     out.radiance = rgb(scene_.materials[static_cast<size_t>(primitive.material)].emission);
-    out.pdf = chance(index) * areaDensity(e, point.normal) * distance2 / cosLight;
     return true;
+}
+
+double Emitters::areaSolidAngleDensity(size_t index, const Vec3& from, const Vec3& point, const Vec3& normal) const {
+    const Vec3 offset = point - from;
+    const double distance2 = glm::dot(offset, offset);
+    const double cosLight = std::abs(glm::dot(normal, offset)) / std::sqrt(distance2);
+    if (!(distance2 > 0) || cosLight <= 0) return 0;
+    return chance(index) * areaDensity(entries_[index], normal) * distance2 / cosLight;
 }
 
 double Emitters::pdf(const Hit& hit, const Vec3& from, const Vec3& point, const Vec3& normal) const {
@@ -144,11 +149,7 @@ double Emitters::pdf(const Hit& hit, const Vec3& from, const Vec3& point, const 
     if (entries_[index].radius > 0)
         if (const double solidAngle = coneSolidAngle(entries_[index], from); solidAngle > 0)
             return chance(index) / solidAngle;
-    const Vec3 offset = point - from;
-    const double distance2 = glm::dot(offset, offset);
-    const double cosLight = std::abs(glm::dot(normal, offset)) / std::sqrt(distance2);
-    if (!(distance2 > 0) || cosLight <= 0) return 0;
-    return chance(index) * areaDensity(entries_[index], normal) * distance2 / cosLight;
+    return areaSolidAngleDensity(index, from, point, normal);
 }
 
 } // namespace crt::tracer

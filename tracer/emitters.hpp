@@ -49,6 +49,9 @@ private:
     static double coneSolidAngle(const Entry& e, const Vec3& from);
     /// The area density of the entry's surface at a point of world normal `normal`.
     double areaDensity(const Entry& e, const Vec3& normal) const;
+    /// The density of choosing `point` (normal `normal`) on entry `index` by area, in solid
+    /// angle at `from`, the choice of the entry included; 0 edge-on.
+    double areaSolidAngleDensity(size_t index, const Vec3& from, const Vec3& point, const Vec3& normal) const;
     double chance(size_t entry) const { return cumulative_[entry + 1] - cumulative_[entry]; }
 
     const RenderScene& scene_;

@@ -61,7 +61,8 @@ struct Integrator::ShadingPoint {
 Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& settings,
                        const std::vector<Light>& lights, const Background& background,
                        const std::vector<Texture>& textures)
-    : scene_(scene), settings_(settings), lights_(lights), background_(background), textures_(textures), mixer_(scene.materials, scene.blends, textures_),
+    : scene_(scene), settings_(settings), lights_(lights), background_(background), textures_(textures),
+      mixer_(scene.materials, scene.blends, textures_),
       ambient_(rgb(settings.ambient)), reflectionLimit_(settings.reflectionLimit()),
       refractionLimit_(settings.refractionLimit()) {
     for (size_t i = 0; i < scene.materials.size(); ++i) {
