@@ -1,10 +1,8 @@
-// The render loop: per-pixel sampling (grid, stratified, adaptive, depth of field) over tiles
-// and threads.
+// The render loop: the pixels of tiles over threads, or passes of paths over the image.
 #include "tracer/renderer.hpp"
 
-#include "tracer/camera.hpp"
-#include "tracer/integrator.hpp"
-#include "tracer/path_integrator.hpp"
+#include "tracer/pass_render.hpp"
+#include "tracer/pixel_sampler.hpp"
 #include "tracer/scene_images.hpp"
 
 #include <fmt/format.h>
@@ -27,145 +25,6 @@ namespace {
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
-
-/// Computes pixels; one per thread, sharing the read-only scene.
-class PixelSampler {
-public:
-    /// RGB and alpha: samples are averaged in all four, so edges against a transparent
-    /// background get partial alpha.
-    using Color = glm::dvec4;
-
-    /// `path`: the path integrator, when the scene chose it; `lens`: whether its paths start
-    /// on the lens (an aperture).
-    PixelSampler(const Integrator& integrator, const PathIntegrator* path, bool lens, const Camera& camera,
-                 const scene::SettingsDesc& settings, bool transparentBackground)
-        : integrator_(integrator), path_(path), pathLens_(lens), camera_(camera), settings_(settings),
-          dofSamples_(camera.usesLens() ? std::max(settings.dofSamples, 1) : 1),
-          bounces_(settings.bounceLimit()), transparentBackground_(transparentBackground) {}
-
-    /// The pixel's color and alpha (coverage; the color is premultiplied by it).
-    Color pixel(int x, int y, TraceContext& context) const {
-        uint64_t pixelIndex = static_cast<uint64_t>(y) * settings_.width + x;
-        if (path_) return pathPixel(x, y, pixelIndex, context);
-        bool adaptive = settings_.antialias == scene::Antialias::Adaptive ||
-                        settings_.antialias == scene::Antialias::ShowAdaptive;
-        if (adaptive) {
-            bool subdivides = false;
-            uint32_t sampleIndex = 0;
-            Color c = region(x + 0.5, y + 0.5, 1.0, 0, pixelIndex, sampleIndex, subdivides, context);
-            if (settings_.antialias == scene::Antialias::ShowAdaptive && subdivides) return {1, 0, 0, 1};
-            return c;
-        }
-        int n = std::max(settings_.supersampling, 1);
-        bool jittered = settings_.antialias == scene::Antialias::Stratified;
-        Color sum(0.0);
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                uint32_t k = static_cast<uint32_t>(j * n + i);
-                Vec2 offset = jittered ? cellJitter(pixelIndex, k) : Vec2(0.5);
-                sum += sample(x + (i + offset.x) / n, y + (j + offset.y) / n, pixelIndex, k, context);
-            }
-        return sum / static_cast<double>(n * n);
-    }
-
-private:
-    /// The mean of `samples` paths, each through its own point of the pixel (and of the lens);
-    /// with a target error, of as many as the pixel needs for it (checked every
-    /// kMinAdaptiveSamples paths, so the count does not hang on the noise of a single one).
-    Color pathPixel(int x, int y, uint64_t pixelIndex, TraceContext& context) const {
-        constexpr int kBatch = scene::SettingsDesc::kMinAdaptiveSamples;
-        Color sum(0.0);
-        double sumLuminance = 0, sumSquares = 0;
-        int k = 0;
-        while (k < settings_.samples) {
-            context.rng = SampleRng(settings_.seed, pixelIndex, static_cast<uint64_t>(k));
-            const Vec2 offset = context.rng.uniform2();
-            const Ray ray = pathLens_ ? camera_.lensRay(x + offset.x, y + offset.y, context.rng.uniform2())
-                                      : camera_.ray(x + offset.x, y + offset.y);
-            ++context.stats.cameraRays;
-            const Color c = path_->traceCamera(ray, transparentBackground_, context);
-            sum += c;
-            const double l = luminance(Vec3(c));
-            sumLuminance += l, sumSquares += l * l;
-            ++k;
-            if (settings_.targetError > 0 && k % kBatch == 0 &&
-                relativeError(sumLuminance, sumSquares, k) <= settings_.targetError)
-                break;
-        }
-        context.stats.addPathPixel(static_cast<uint64_t>(k), relativeError(sumLuminance, sumSquares, k));
-        return sum / static_cast<double>(k);
-    }
-
-    /// The standard error of the mean of n values (by their sum and sum of squares) relative
-    /// to the mean, or to 1/1000 where it is darker, so that black pixels stop; 1 for one value.
-    static double relativeError(double sum, double sumSquares, int n) {
-        if (n < 2) return 1;
-        const double mean = sum / n;
-        const double variance = std::max(0.0, sumSquares / n - mean * mean) * n / (n - 1);
-        return std::sqrt(variance / n) / std::max(mean, 1e-3);
-    }
-
-    /// Where stratified sample `k` lies in its grid cell, in [0, 1)². Its own stream of the
-    /// pixel's random numbers, apart from the stream the sample then traces with, so the
-    /// position is not correlated with the sample's light and lens choices.
-    Vec2 cellJitter(uint64_t pixelIndex, uint32_t k) const {
-        constexpr uint64_t kJitterStream = uint64_t{1} << 40;
-        return SampleRng(settings_.seed, pixelIndex, kJitterStream + k).uniform2();
-    }
-
-    /// Spec §6 "adaptive": the four quadrant centres, a quadrant subdivided while its
-    /// samples disagree by more than the threshold, up to aadepth levels; area-weighted mean.
-    Color region(double cx, double cy, double size, int level, uint64_t pixelIndex, uint32_t& sampleIndex,
-                 bool& subdivides, TraceContext& context) const {
-        Color corners[4];
-        double q = size / 4;
-        const double offsets[4][2] = {{-q, -q}, {q, -q}, {-q, q}, {q, q}};
-        for (int k = 0; k < 4; ++k)
-            corners[k] = sample(cx + offsets[k][0], cy + offsets[k][1], pixelIndex, sampleIndex++, context);
-        double spread = 0;
-        for (int a = 0; a < 4; ++a)
-            for (int b = a + 1; b < 4; ++b)
-                {
-                    Color d = glm::abs(corners[a] - corners[b]);
-                    spread = std::max({spread, d.x, d.y, d.z, d.w});
-                }
-        if (spread > settings_.aaThreshold && level < settings_.aaDepth) {
-            subdivides = true;
-            if (settings_.antialias == scene::Antialias::ShowAdaptive) return corners[0];
-            for (int k = 0; k < 4; ++k)
-                corners[k] = region(cx + offsets[k][0], cy + offsets[k][1], size / 2, level + 1, pixelIndex,
-                                    sampleIndex, subdivides, context);
-        }
-        return (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
-    }
-
-    Color sample(double u, double v, uint64_t pixelIndex, uint32_t sampleIndex, TraceContext& context) const {
-        context.rng = SampleRng(settings_.seed, pixelIndex, sampleIndex);
-        if (dofSamples_ <= 1) {
-            ++context.stats.cameraRays;
-            return integrator_.traceCamera(camera_.ray(u, v), bounces_, transparentBackground_, context);
-        }
-        // Depth of field: a low-discrepancy set of lens points, shifted per pixel sample.
-        Vec2 shift = context.rng.uniform2();
-        Color sum(0.0);
-        for (int k = 0; k < dofSamples_; ++k) {
-            Vec2 lens = hammersley(static_cast<uint32_t>(k), static_cast<uint32_t>(dofSamples_), shift);
-            ++context.stats.cameraRays;
-            sum += integrator_.traceCamera(camera_.lensRay(u, v, lens), bounces_,
-                                           transparentBackground_, context);
-        }
-        return sum / static_cast<double>(dofSamples_);
-    }
-
-    const Integrator& integrator_;
-    const PathIntegrator* path_;
-    bool pathLens_;
-    const Camera& camera_;
-    const scene::SettingsDesc& settings_;
-    int dofSamples_;
-    int bounces_; ///< reflections and refractions a camera ray's path may take in all
-    bool transparentBackground_;
-};
 
 /// The scene's settings with the job's sample budget applied.
 scene::SettingsDesc withBudget(scene::SettingsDesc settings, const SampleBudget& budget) {
@@ -218,6 +77,35 @@ void traceTile(const PixelSampler& sampler, const Tile& tile, int channels, std:
             for (int i = 0; i < channels; ++i) out[i] = static_cast<float>(c[i]);
         }
     }
+}
+
+/// Traces the tiles the job hands out (all of `tiles`, or what its nextTile says) on one thread
+/// a `stats` entry, each tile once. Returns the tiles traced.
+int traceEachTileOnce(const PixelSampler& sampler, const std::vector<Tile>& tiles, const RenderJob& job,
+                      int channels, std::vector<RayStats>& stats) {
+    const int tileCount = static_cast<int>(tiles.size());
+    std::atomic<int> nextTile{0}, doneTiles{0};
+    std::mutex callbackMutex; // the caller's callback sees one tile at a time
+    auto worker = [&](size_t index) {
+        TraceContext context;
+        std::vector<float> pixels;
+        while (!(job.cancel && job.cancel->load(std::memory_order_relaxed))) {
+            const int tile = job.nextTile ? job.nextTile() : nextTile.fetch_add(1);
+            if (tile < 0 || tile >= tileCount) break;
+            traceTile(sampler, tiles[static_cast<size_t>(tile)], channels, pixels, context);
+            if (job.onTileDone) {
+                std::lock_guard lock(callbackMutex);
+                job.onTileDone(TileResult{tiles[static_cast<size_t>(tile)], tile, channels, pixels});
+            }
+            doneTiles.fetch_add(1);
+        }
+        stats[index] = context.stats;
+    };
+    std::vector<std::thread> threads;
+    for (size_t i = 1; i < stats.size(); ++i) threads.emplace_back(worker, i);
+    worker(0);
+    for (std::thread& t : threads) t.join();
+    return doneTiles.load();
 }
 
 /// The warnings of the scene's isosurfaces (its prototypes' too), each once however often it
@@ -314,34 +202,19 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
         job.tiles.empty() ? imageTiles(settings.width, settings.height) : job.tiles;
     const int tileCount = static_cast<int>(tiles.size());
     outcome.tileCount = tileCount;
-    std::atomic<int> nextTile{0}, doneTiles{0};
     const unsigned threadCount = std::max(1u, std::min<unsigned>(jobThreads, static_cast<unsigned>(tileCount)));
     std::vector<RayStats> stats(threadCount);
-    std::mutex callbackMutex; // the caller's callback sees one tile at a time
-
-    auto worker = [&](unsigned index) {
-        TraceContext context;
-        std::vector<float> pixels;
-        while (!(job.cancel && job.cancel->load(std::memory_order_relaxed))) {
-            const int tile = job.nextTile ? job.nextTile() : nextTile.fetch_add(1);
-            if (tile < 0 || tile >= tileCount) break;
-            traceTile(sampler, tiles[static_cast<size_t>(tile)], channels, pixels, context);
-            if (job.onTileDone) {
-                std::lock_guard lock(callbackMutex);
-                job.onTileDone(TileResult{tiles[static_cast<size_t>(tile)], tile, channels, pixels});
-            }
-            doneTiles.fetch_add(1);
+    if (job.progressive && prepared.path) {
+        if (job.nextTile) {
+            outcome.error = "a progressive render traces every tile itself; it cannot share them";
+            return outcome;
         }
-        stats[index] = context.stats;
-    };
-    std::vector<std::thread> threads;
-    for (unsigned i = 1; i < threadCount; ++i) threads.emplace_back(worker, i);
-    worker(0);
-    for (std::thread& t : threads) t.join();
-
+        outcome.tilesDone = renderInPasses(sampler, tiles, job, settings.width, settings.height, stats);
+    } else {
+        outcome.tilesDone = traceEachTileOnce(sampler, tiles, job, channels, stats);
+    }
     for (const RayStats& st : stats) outcome.stats += st;
     outcome.renderSeconds = secondsSince(renderStart);
-    outcome.tilesDone = doneTiles.load();
     // A job that hands out its own tiles may trace only some of them: only its cancel says
     // whether it was stopped.
     outcome.cancelled = job.nextTile ? job.cancel && job.cancel->load()

@@ -6,7 +6,9 @@
 #include "tracer/stats.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -51,6 +53,29 @@ struct SampleBudget {
     int grid = 0;
 };
 
+struct PixelBuffer;
+
+/// The image after a pass of a progressive render.
+struct PassImage {
+    int pass = 0;                        ///< from 1
+    double meanPaths = 0;                ///< the paths a pixel has taken so far, on average
+    double relativeError = 0;            ///< the image's estimated relative error so far
+    const PixelBuffer* image = nullptr; ///< the whole image, the job's tiles filled in
+};
+
+/// A path-traced render in passes, each adding paths to every pixel that has not reached its
+/// target error or its `samples` (1, 2, 4, 8 and 16 paths in all after the first five passes,
+/// then 16 more a pass): an image exists early and improves until it is done. Each pixel
+/// takes its paths in the same order as in a render in one pass, so a finished progressive
+/// render is the same bits as that render.
+struct ProgressiveRender {
+    /// Once it has passed (and the first pass is done) no further tile is started: each pixel
+    /// is then the mean of the paths it took.
+    std::optional<std::chrono::steady_clock::time_point> deadline;
+    /// Called after each pass, from the thread that called render().
+    std::function<void(const PassImage&)> onPass;
+};
+
 /// What to render of a scene, and how.
 struct RenderJob {
     /// The region to render, tiles inside the image; empty: the whole image (imageTiles).
@@ -70,6 +95,9 @@ struct RenderJob {
     /// background is then transparent (a ray that meets nothing counts as black), so the color
     /// is premultiplied by alpha. Without it, the same RGB bits as before.
     bool alpha = false;
+    /// Under the path integrator: render in passes, the tiles handed to onTileDone at the end.
+    /// Not with `nextTile`. Ignored under the Whitted integrator.
+    std::optional<ProgressiveRender> progressive;
 };
 
 struct RenderOutcome {

@@ -200,6 +200,12 @@ void addQualityOptions(CLI::App& app, Options& o) {
                                  "a number above 0"))
         ->type_name("E")
         ->group(group);
+    app.add_option("--time-limit", o.timeLimit,
+                   "path: a frame stops at S seconds (its scene build included) with the image so far; "
+                   "pixels take paths in passes over the image until then")
+        ->check(numberIn(1e-3, 1e9, "a number of seconds from 0.001 to 1000000000"))
+        ->type_name("S")
+        ->group(group);
     app.add_option("--dofsamples", q.dofSamples, "lens samples a camera sample (depth of field)")
         ->check(sampleCount(scene::kDofSamplesRange))
         ->type_name("N")

@@ -52,6 +52,9 @@ struct Options {
     scene::QualityOverrides quality;
     std::optional<tracer::Tile> region; ///< --region: the part of the image rendered
     bool alpha = false; ///< --alpha: a fourth channel, the background transparent
+    /// --time-limit: seconds a path-traced frame renders (scene build included) before it
+    /// stops with the image so far; 0: no limit
+    double timeLimit = 0;
     // Preview
     int port = 0;        ///< --port; 0: a free port
     bool open = false;   ///< --open: show the preview in the desktop's browser

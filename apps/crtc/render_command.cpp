@@ -207,6 +207,11 @@ struct FrameJob {
 int renderFrame(const Options& options, const scene::SceneDesc& scene, const FrameJob& job,
                 const image_io::WriteOptions& write, ProgressReporter& progress, ResumeLog* log,
                 RenderTotals& totals, const TileRenderer& renderTiles) {
+    if (options.timeLimit > 0 && scene.settings.integrator != scene::Integrator::Path) {
+        std::cerr << "crtc: --time-limit stops a path-traced render, and this scene's integrator is "
+                     "\"whitted\": add --integrator path, or set Settings.integrator -> \"path\"\n";
+        return 2;
+    }
     const tracer::Tile& region = job.region;
     const int width = region.width(), height = region.height();
     const int channels = options.alpha ? 4 : 3;
@@ -262,6 +267,11 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const Fra
     render.threads = options.threads;
     render.cancel = &stopRendering;
     render.alpha = options.alpha;
+    if (options.timeLimit > 0)
+        render.progressive = tracer::ProgressiveRender{
+            std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                   std::chrono::duration<double>(options.timeLimit)),
+            {}};
     render.onTileDone = [&](const tracer::TileResult& result) {
         const tracer::TileResult indexed{result.tile, tileIndex[static_cast<size_t>(result.index)],
                                          result.channels, result.pixels};

@@ -78,6 +78,16 @@ expect_status 0 "--target-error --stats" "$crtc" --integrator path --samples 64 
 expect_text "$work/err" "^crtc: stats: paths a pixel: fewest 16, mean [0-9.]+, most (6[0-4]|[1-5][0-9]); estimated relative error [0-9.]+ %" "--stats: paths a pixel and the error"
 expect_status 2 "--target-error 0" "$crtc" --target-error 0 "$work/dof.crt"
 expect_text "$work/err" "--target-error needs a number above 0, not '0'" "--target-error range"
+# A time limit the render does not reach leaves its image as it was; one it reaches stops it
+# with every pixel the mean of the paths it took.
+expect_status 0 "--time-limit not reached" "$crtc" --integrator path --samples 5 --time-limit 1000 -o "$work/tl.png" "$work/dof.crt"
+cmp -s "$work/path.png" "$work/tl.png" || fail "--time-limit changes a render that finishes before it"
+expect_status 0 "--time-limit reached" "$crtc" --integrator path --samples 1000000 --time-limit 0.5 --stats -o "$work/tl.png" "$work/dof.crt"
+expect_text "$work/err" "^crtc: stats: paths a pixel: fewest [1-9][0-9]*, mean [0-9.]+, most [1-9][0-9]*;" "--time-limit: the paths each pixel took"
+expect_status 2 "--time-limit under Whitted" "$crtc" --time-limit 10 -o "$work/tl.png" "$work/dof.crt"
+expect_text "$work/err" "crtc: --time-limit stops a path-traced render, and this scene's integrator is \"whitted\"" "--time-limit needs the path integrator"
+expect_status 2 "--time-limit 0" "$crtc" --time-limit 0 "$work/dof.crt"
+expect_text "$work/err" "--time-limit needs a number of seconds from 0.001 to 1000000000, not '0'" "--time-limit range"
 expect_status 2 "--samples out of range" "$crtc" --samples 0 "$work/dof.crt"
 expect_text "$work/err" "--samples needs an integer from 1 to 1000000, not '0'" "--samples range"
 

@@ -85,6 +85,10 @@ stills() {
     cmp -s "$work/path_alone.hdr" "$work/path_shared.hdr" || fail "a path-traced image over 3 processes differs"
     diff <(grep -E "paths a pixel|rays:" "$work/path_alone.err") <(grep -E "paths a pixel|rays:" "$work/err") >/dev/null ||
         fail "path --stats over 3 processes differ from crtc alone: $(grep 'paths a pixel' "$work/err")"
+    # A time limit refines the whole image in one process: refused, once, over several.
+    expect_status 2 "--time-limit" mpi 2 --integrator path --time-limit 5 "$here/still.crt" -o "$work/tl.png"
+    [ "$(grep -c "time-limit is for crtc alone" "$work/err")" = 1 ] || fail "--time-limit under mpirun: $(cat "$work/err")"
+    [ ! -e "$work/tl.png" ] || fail "--time-limit under mpirun wrote an image"
     # --alpha: tiles of four channels.
     "$crtc" --quiet --alpha "$here/still.crt" -o "$work/alpha_alone.png"
     expect_status 0 "--alpha" mpi 3 --quiet --alpha "$here/still.crt" -o "$work/alpha_shared.png"

@@ -1,0 +1,123 @@
+#include "tracer/pass_render.hpp"
+
+#include <atomic>
+#include <thread>
+
+namespace crt::tracer {
+
+namespace {
+
+/// The paths a pixel has after pass `pass` (from 0): a picture at once, then passes short
+/// enough that a deadline stops the render close to it.
+int pathsAfterPass(int pass) { return pass < 5 ? 1 << pass : 16 * (pass - 3); }
+
+/// Every tile's pixels' running sums, row by row, one block a tile.
+class PassState {
+public:
+    explicit PassState(const std::vector<Tile>& tiles) : offsets_(tiles.size() + 1, 0) {
+        for (size_t t = 0; t < tiles.size(); ++t)
+            offsets_[t + 1] = offsets_[t] + static_cast<size_t>(tiles[t].width()) * tiles[t].height();
+        pixels_.resize(offsets_.back());
+    }
+
+    PathPixel* tile(size_t t) { return pixels_.data() + offsets_[t]; }
+    const std::vector<PathPixel>& pixels() const { return pixels_; }
+
+    /// Tile `t`'s pixel means, `channels` floats each.
+    void means(size_t t, int channels, std::vector<float>& out) const {
+        out.resize((offsets_[t + 1] - offsets_[t]) * channels);
+        for (size_t i = offsets_[t], k = 0; i < offsets_[t + 1]; ++i) {
+            const glm::dvec4 m = pixels_[i].mean();
+            for (int c = 0; c < channels; ++c) out[k++] = static_cast<float>(m[c]);
+        }
+    }
+
+private:
+    std::vector<size_t> offsets_;
+    std::vector<PathPixel> pixels_;
+};
+
+bool pastDeadline(const RenderJob& job) {
+    return job.progressive->deadline && std::chrono::steady_clock::now() >= *job.progressive->deadline;
+}
+
+bool cancelled(const RenderJob& job) { return job.cancel && job.cancel->load(std::memory_order_relaxed); }
+
+/// One pass: each thread takes tiles in turn and adds paths to their pixels, up to `upTo`.
+/// Returns the tiles it went through; `unsettled`, whether a pixel wants more.
+int tracePass(const PixelSampler& sampler, const std::vector<Tile>& tiles, const RenderJob& job, int upTo,
+               bool mayStop, PassState& state, std::vector<RayStats>& stats, bool& unsettled) {
+    std::atomic<int> next{0}, traced{0};
+    std::atomic<bool> wanting{false};
+    const int tileCount = static_cast<int>(tiles.size());
+    auto worker = [&](size_t index) {
+        TraceContext context;
+        context.stats = stats[index];
+        for (;;) {
+            if (cancelled(job) || (mayStop && pastDeadline(job))) break;
+            const int t = next.fetch_add(1);
+            if (t >= tileCount) break;
+            const Tile& tile = tiles[static_cast<size_t>(t)];
+            PathPixel* pixel = state.tile(static_cast<size_t>(t));
+            for (int y = tile.y0; y < tile.y1; ++y)
+                for (int x = tile.x0; x < tile.x1; ++x, ++pixel) {
+                    sampler.addPaths(x, y, *pixel, upTo, context);
+                    if (!pixel->settled) wanting.store(true, std::memory_order_relaxed);
+                }
+            traced.fetch_add(1);
+        }
+        stats[index] = context.stats;
+    };
+    std::vector<std::thread> threads;
+    for (size_t i = 1; i < stats.size(); ++i) threads.emplace_back(worker, i);
+    worker(0);
+    for (std::thread& t : threads) t.join();
+    unsettled = wanting.load();
+    return traced.load();
+}
+
+/// The image so far, for the job's onPass.
+void reportPass(const std::vector<Tile>& tiles, const RenderJob& job, int pass, const PassState& state,
+                PixelBuffer& image) {
+    std::vector<float> means;
+    for (size_t t = 0; t < tiles.size(); ++t) {
+        state.means(t, image.channels, means);
+        image.place(TileResult{tiles[t], static_cast<int>(t), image.channels, means});
+    }
+    RayStats paths;
+    double pathCount = 0;
+    for (const PathPixel& p : state.pixels()) {
+        paths.addPathPixel(static_cast<uint64_t>(p.paths), p.relativeError());
+        pathCount += p.paths;
+    }
+    const double meanPaths = paths.pathPixels > 0 ? pathCount / static_cast<double>(paths.pathPixels) : 0;
+    job.progressive->onPass(PassImage{pass + 1, meanPaths, paths.imageRelativeError(), &image});
+}
+
+} // namespace
+
+int renderInPasses(const PixelSampler& sampler, const std::vector<Tile>& tiles, const RenderJob& job, int width,
+                   int height, std::vector<RayStats>& stats) {
+    PassState state(tiles);
+    const int channels = job.alpha ? 4 : 3;
+    PixelBuffer image;
+    if (job.progressive->onPass) image = PixelBuffer(width, height, channels);
+    for (int pass = 0;; ++pass) {
+        bool unsettled = false;
+        const int traced = tracePass(sampler, tiles, job, pathsAfterPass(pass), pass > 0, state, stats, unsettled);
+        if (cancelled(job)) return 0;
+        if (traced == 0) break; // stopped before the pass began: the image is the last one shown
+        if (job.progressive->onPass) reportPass(tiles, job, pass, state, image);
+        if (traced < static_cast<int>(tiles.size()) || !unsettled) break;
+    }
+    for (const PathPixel& p : state.pixels())
+        stats[0].addPathPixel(static_cast<uint64_t>(p.paths), p.relativeError());
+    std::vector<float> means;
+    for (size_t t = 0; t < tiles.size(); ++t) {
+        state.means(t, channels, means);
+        if (job.onTileDone) job.onTileDone(TileResult{tiles[t], static_cast<int>(t), channels, means});
+    }
+    return static_cast<int>(tiles.size());
+}
+
+} // namespace crt::tracer

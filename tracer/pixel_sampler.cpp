@@ -1,0 +1,119 @@
+#include "tracer/pixel_sampler.hpp"
+
+#include <algorithm>
+
+namespace crt::tracer {
+
+double PathPixel::relativeError() const {
+    if (paths < 2) return 1;
+    const double n = paths, mean = sumLuminance / n;
+    const double variance = std::max(0.0, sumSquares / n - mean * mean) * n / (n - 1);
+    return std::sqrt(variance / n) / std::max(mean, 1e-3);
+}
+
+PixelSampler::PixelSampler(const Integrator& integrator, const PathIntegrator* path, bool lens, const Camera& camera,
+                           const scene::SettingsDesc& settings, bool transparentBackground)
+    : integrator_(integrator), path_(path), pathLens_(lens), camera_(camera), settings_(settings),
+      dofSamples_(camera.usesLens() ? std::max(settings.dofSamples, 1) : 1), bounces_(settings.bounceLimit()),
+      transparentBackground_(transparentBackground) {}
+
+PixelSampler::Color PixelSampler::pixel(int x, int y, TraceContext& context) const {
+    uint64_t pixelIndex = static_cast<uint64_t>(y) * settings_.width + x;
+    if (path_) {
+        PathPixel p;
+        addPaths(x, y, p, settings_.samples, context);
+        context.stats.addPathPixel(static_cast<uint64_t>(p.paths), p.relativeError());
+        return p.mean();
+    }
+    bool adaptive = settings_.antialias == scene::Antialias::Adaptive ||
+                    settings_.antialias == scene::Antialias::ShowAdaptive;
+    if (adaptive) {
+        bool subdivides = false;
+        uint32_t sampleIndex = 0;
+        Color c = region(x + 0.5, y + 0.5, 1.0, 0, pixelIndex, sampleIndex, subdivides, context);
+        if (settings_.antialias == scene::Antialias::ShowAdaptive && subdivides) return {1, 0, 0, 1};
+        return c;
+    }
+    int n = std::max(settings_.supersampling, 1);
+    bool jittered = settings_.antialias == scene::Antialias::Stratified;
+    Color sum(0.0);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            uint32_t k = static_cast<uint32_t>(j * n + i);
+            Vec2 offset = jittered ? cellJitter(pixelIndex, k) : Vec2(0.5);
+            sum += sample(x + (i + offset.x) / n, y + (j + offset.y) / n, pixelIndex, k, context);
+        }
+    return sum / static_cast<double>(n * n);
+}
+
+void PixelSampler::addPaths(int x, int y, PathPixel& p, int upTo, TraceContext& context) const {
+    constexpr int kBatch = scene::SettingsDesc::kMinAdaptiveSamples;
+    const uint64_t pixelIndex = static_cast<uint64_t>(y) * settings_.width + x;
+    upTo = std::min(upTo, settings_.samples);
+    while (!p.settled && p.paths < upTo) {
+        context.rng = SampleRng(settings_.seed, pixelIndex, static_cast<uint64_t>(p.paths));
+        const Vec2 offset = context.rng.uniform2();
+        const Ray ray = pathLens_ ? camera_.lensRay(x + offset.x, y + offset.y, context.rng.uniform2())
+                                  : camera_.ray(x + offset.x, y + offset.y);
+        ++context.stats.cameraRays;
+        const Color c = path_->traceCamera(ray, transparentBackground_, context);
+        p.sum += c;
+        const double l = luminance(Vec3(c));
+        p.sumLuminance += l, p.sumSquares += l * l;
+        ++p.paths;
+        p.settled = p.paths >= settings_.samples ||
+                    (settings_.targetError > 0 && p.paths % kBatch == 0 && p.relativeError() <= settings_.targetError);
+    }
+}
+
+/// Its own stream of the pixel's random numbers, apart from the stream the sample then traces
+/// with, so the position is not correlated with the sample's light and lens choices.
+Vec2 PixelSampler::cellJitter(uint64_t pixelIndex, uint32_t k) const {
+    constexpr uint64_t kJitterStream = uint64_t{1} << 40;
+    return SampleRng(settings_.seed, pixelIndex, kJitterStream + k).uniform2();
+}
+
+/// The four quadrant centres, a quadrant subdivided while its samples disagree by more than
+/// the threshold, up to aadepth levels; the area-weighted mean.
+PixelSampler::Color PixelSampler::region(double cx, double cy, double size, int level, uint64_t pixelIndex,
+                                         uint32_t& sampleIndex, bool& subdivides, TraceContext& context) const {
+    Color corners[4];
+    double q = size / 4;
+    const double offsets[4][2] = {{-q, -q}, {q, -q}, {-q, q}, {q, q}};
+    for (int k = 0; k < 4; ++k)
+        corners[k] = sample(cx + offsets[k][0], cy + offsets[k][1], pixelIndex, sampleIndex++, context);
+    double spread = 0;
+    for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b) {
+            Color d = glm::abs(corners[a] - corners[b]);
+            spread = std::max({spread, d.x, d.y, d.z, d.w});
+        }
+    if (spread > settings_.aaThreshold && level < settings_.aaDepth) {
+        subdivides = true;
+        if (settings_.antialias == scene::Antialias::ShowAdaptive) return corners[0];
+        for (int k = 0; k < 4; ++k)
+            corners[k] = region(cx + offsets[k][0], cy + offsets[k][1], size / 2, level + 1, pixelIndex, sampleIndex,
+                                subdivides, context);
+    }
+    return (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
+}
+
+PixelSampler::Color PixelSampler::sample(double u, double v, uint64_t pixelIndex, uint32_t sampleIndex,
+                                         TraceContext& context) const {
+    context.rng = SampleRng(settings_.seed, pixelIndex, sampleIndex);
+    if (dofSamples_ <= 1) {
+        ++context.stats.cameraRays;
+        return integrator_.traceCamera(camera_.ray(u, v), bounces_, transparentBackground_, context);
+    }
+    // Depth of field: a low-discrepancy set of lens points, shifted per pixel sample.
+    Vec2 shift = context.rng.uniform2();
+    Color sum(0.0);
+    for (int k = 0; k < dofSamples_; ++k) {
+        Vec2 lens = hammersley(static_cast<uint32_t>(k), static_cast<uint32_t>(dofSamples_), shift);
+        ++context.stats.cameraRays;
+        sum += integrator_.traceCamera(camera_.lensRay(u, v, lens), bounces_, transparentBackground_, context);
+    }
+    return sum / static_cast<double>(dofSamples_);
+}
+
+} // namespace crt::tracer

@@ -1,0 +1,64 @@
+// What one pixel of the image is: its camera samples (grid, stratified, adaptive, depth of
+// field) under the Whitted integrator, or its paths under the path integrator.
+#pragma once
+
+#include "scene/scene_desc.hpp"
+#include "tracer/camera.hpp"
+#include "tracer/integrator.hpp"
+#include "tracer/path_integrator.hpp"
+
+namespace crt::tracer {
+
+/// The running sums of a path-traced pixel: what it keeps between the passes of a progressive
+/// render. Taking its paths in several calls gives the same bits as taking them in one.
+struct PathPixel {
+    glm::dvec4 sum{0.0};
+    double sumLuminance = 0, sumSquares = 0;
+    int paths = 0;
+    bool settled = false; ///< at its target error, or at the most paths the settings allow
+
+    glm::dvec4 mean() const { return paths > 0 ? sum / static_cast<double>(paths) : glm::dvec4(0.0); }
+    /// The standard error of the mean luminance relative to the mean, or to 1/1000 where it
+    /// is darker, so that black pixels settle; 1 for fewer than two paths.
+    double relativeError() const;
+};
+
+/// Computes pixels; one per thread, sharing the read-only scene.
+class PixelSampler {
+public:
+    /// RGB and alpha: samples are averaged in all four, so edges against a transparent
+    /// background get partial alpha.
+    using Color = glm::dvec4;
+
+    /// `path`: the path integrator, when the scene chose it; `lens`: whether its paths start
+    /// on the lens (an aperture).
+    PixelSampler(const Integrator& integrator, const PathIntegrator* path, bool lens, const Camera& camera,
+                 const scene::SettingsDesc& settings, bool transparentBackground);
+
+    /// The pixel's color and alpha (coverage; the color is premultiplied by it).
+    Color pixel(int x, int y, TraceContext& context) const;
+
+    /// Path tracing: adds paths to the pixel until it has `upTo` (at most the settings'
+    /// `samples`), or until its target error is reached; checked every kMinAdaptiveSamples
+    /// paths, so the count does not hang on the noise of a single one.
+    void addPaths(int x, int y, PathPixel& pixel, int upTo, TraceContext& context) const;
+
+private:
+    /// Stratified sample `k`'s place in its grid cell, in [0, 1)².
+    Vec2 cellJitter(uint64_t pixelIndex, uint32_t k) const;
+    /// Spec §6 "adaptive": a region of the pixel, subdivided while its samples disagree.
+    Color region(double cx, double cy, double size, int level, uint64_t pixelIndex, uint32_t& sampleIndex,
+                 bool& subdivides, TraceContext& context) const;
+    Color sample(double u, double v, uint64_t pixelIndex, uint32_t sampleIndex, TraceContext& context) const;
+
+    const Integrator& integrator_;
+    const PathIntegrator* path_;
+    bool pathLens_;
+    const Camera& camera_;
+    const scene::SettingsDesc& settings_;
+    int dofSamples_;
+    int bounces_; ///< reflections and refractions a camera ray's path may take in all
+    bool transparentBackground_;
+};
+
+} // namespace crt::tracer
