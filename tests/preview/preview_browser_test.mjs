@@ -185,6 +185,25 @@ try {
             written);
   assert.equal(written.split("\n").length, original.split("\n").length, "the rest of the script changed");
 
+  step("a path-traced image gains paths pass after pass while the camera is still");
+  const lastFrame = (await imageStats(page)).frame;
+  await page.evaluate(() => {
+    window.pathsShown = [];
+    const img = document.getElementById("view");
+    new MutationObserver(() => { if (img.dataset.paths) window.pathsShown.push(Number(img.dataset.paths)); })
+      .observe(img, { attributes: true, attributeFilter: ["data-paths"] });
+  });
+  writeFileSync(script, readFileSync(script, "utf8").replace("supersampling -> 2", 'integrator -> "path" samples -> 64'));
+  const traced = await waitForFinalImage(page, lastFrame);
+  assert.ok(traced.variance > 100, `the path-traced image looks uniform (variance ${traced.variance})`);
+  const shownPaths = await page.evaluate(() => window.pathsShown);
+  assert.equal(shownPaths.at(-1), 64, `the last image has not every path: ${shownPaths}`);
+  assert.ok(shownPaths.length >= 2 && shownPaths[0] < 64, `no image before the last pass was shown: ${shownPaths}`);
+  for (let i = 1; i < shownPaths.length; ++i)
+    assert.ok(shownPaths[i] >= shownPaths[i - 1], `the paths went down: ${shownPaths}`);
+  assert.match(await page.$eval("#progress", (e) => e.textContent), /64 paths\/pixel, error \d+\.\d+ % .* — done/);
+  await screenshot(page, "path_traced");
+
   assert.deepEqual(pageErrors, [], "the page had script errors");
   step("the stop button ends crtc");
   await page.click("#quit");

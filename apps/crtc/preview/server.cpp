@@ -171,6 +171,7 @@ void Server::addRoutes() {
         res.set_header("X-Frame-Number", std::to_string(image->number));
         res.set_header("X-Frame-Pass", fmt::format("{}/{}", image->pass, image->passes));
         res.set_header("X-Frame-Final", image->final ? "true" : "false");
+        if (image->paths > 0) res.set_header("X-Frame-Paths", fmt::format("{:.2f}", image->paths));
         res.set_content(reinterpret_cast<const char*>(image->png.data()), image->png.size(), "image/png");
     });
     http_->Get("/api/state", [this](const httplib::Request&, httplib::Response& res) { replyJson(res, session_.state()); });

@@ -278,6 +278,18 @@ bool Session::renderPass(const scene::SceneDesc& base, const RenderPass& pass, i
         publish_("progress", {{"pass", index + 1}, {"passes", count}, {"done", done}, {"tiles", tiles}});
     };
     const Clock::time_point start = Clock::now();
+    auto secondsSoFar = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+    FrameImage frame;
+    frame.pass = index + 1;
+    frame.passes = count;
+    // At the scene's quality a path-traced image is shown after each of its passes of paths.
+    if (!pass.draft && scene.settings.integrator == scene::Integrator::Path) {
+        job.progressive = tracer::ProgressiveRender{std::nullopt, [&](const tracer::PassImage& image) {
+                                                        frame.paths = image.meanPaths;
+                                                        frame.relativeError = image.relativeError;
+                                                        publishImage(*image.image, base, pass, frame, secondsSoFar());
+                                                    }};
+    }
     const tracer::RenderOutcome outcome = tracer::render(scene, job);
     if (outcome.cancelled) return false;
     if (!outcome.ok) {
@@ -290,16 +302,20 @@ bool Session::renderPass(const scene::SceneDesc& base, const RenderPass& pass, i
         publishDiagnostics(diagnostics, true);
         return false;
     }
-    auto image = std::make_shared<FrameImage>();
-    image->width = width;
-    image->height = height;
-    image->pass = index + 1;
-    image->passes = count;
-    image->final = final;
-    image->png = encodePng(width, height,
-                           tracer::image_io::quantise8(pixels.pixels, scene.settings.gamma, scene.settings.srgb));
-    const double took = std::chrono::duration<double>(Clock::now() - start).count();
+    const double took = secondsSoFar();
     if (seconds) *seconds = took;
+    frame.final = final;
+    publishImage(pixels, base, pass, frame, took);
+    return true;
+}
+
+void Session::publishImage(const tracer::PixelBuffer& pixels, const scene::SceneDesc& base, const RenderPass& pass,
+                           FrameImage frame, double seconds) {
+    auto image = std::make_shared<FrameImage>(std::move(frame));
+    image->width = pixels.width;
+    image->height = pixels.height;
+    image->png = encodePng(pixels.width, pixels.height,
+                           tracer::image_io::quantise8(pixels.pixels, base.settings.gamma, base.settings.srgb));
     ViewQuality quality;
     {
         std::lock_guard lock(mutex_);
@@ -307,17 +323,21 @@ bool Session::renderPass(const scene::SceneDesc& base, const RenderPass& pass, i
         image_ = image;
         quality = quality_;
     }
-    publish_("frame", {{"number", image->number},
-                       {"width", width},
-                       {"height", height},
-                       {"displayWidth", scaled(base.settings.width, quality.scale)},
-                       {"displayHeight", scaled(base.settings.height, quality.scale)},
-                       {"pass", index + 1},
-                       {"passes", count},
-                       {"draft", pass.draft},
-                       {"final", final},
-                       {"seconds", took}});
-    return true;
+    nlohmann::json data{{"number", image->number},
+                        {"width", image->width},
+                        {"height", image->height},
+                        {"displayWidth", scaled(base.settings.width, quality.scale)},
+                        {"displayHeight", scaled(base.settings.height, quality.scale)},
+                        {"pass", image->pass},
+                        {"passes", image->passes},
+                        {"draft", pass.draft},
+                        {"final", image->final},
+                        {"seconds", seconds}};
+    if (image->paths > 0) {
+        data["paths"] = image->paths;
+        data["relativeError"] = image->relativeError;
+    }
+    publish_("frame", data);
 }
 
 bool Session::waitForStillness(uint64_t generation) {

@@ -30,6 +30,10 @@ struct FrameImage {
     int width = 0, height = 0;
     int pass = 1, passes = 1; ///< which of the passes of its render
     bool final = false;       ///< the last pass: nothing more comes until something changes
+    /// A path-traced image at the scene's quality, refined pass after pass while the camera is
+    /// still: the paths its pixels have taken, on average, and its estimated relative error.
+    /// 0 for other images.
+    double paths = 0, relativeError = 0;
     std::vector<std::uint8_t> png;
 };
 
@@ -89,6 +93,10 @@ private:
     /// pass of a refinement (not a drag's quick image). `seconds` (optional): how long it took.
     bool renderPass(const scene::SceneDesc& scene, const RenderPass& pass, int index, int count, bool final,
                     double* seconds = nullptr);
+    /// Makes `pixels` the image on the page, a pass of `pass`'s render (`image` its place among
+    /// the passes and its paths) after `seconds`.
+    void publishImage(const tracer::PixelBuffer& pixels, const scene::SceneDesc& base, const RenderPass& pass,
+                      FrameImage image, double seconds);
     /// Waits until the camera has not moved for a moment; false if something else came first.
     bool waitForStillness(uint64_t generation);
     void publishDiagnostics(const std::vector<std::string>& diagnostics, bool errors);
