@@ -29,6 +29,8 @@ public:
 
     /// Whether any lobe light sampling can reach is present (diffuse or highlight).
     bool reachable() const { return diffuseWeight_ + highlightWeight_ > 0; }
+    /// The share of light it sends on, lobe by lobe: each lobe's weight times its colour.
+    Vec3 albedo() const { return albedo_ + (highlightWeight_ + reflectWeight_) * tint_ + Vec3(transmitWeight_); }
     /// f(wo, wi)·cos θi of the lobes light sampling reaches.
     Vec3 evalCos(const Vec3& wi) const;
     /// The density with which sample() chooses wi through those lobes.

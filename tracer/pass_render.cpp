@@ -14,27 +14,33 @@ int pathsAfterPass(int pass) { return pass < 5 ? 1 << pass : 16 * (pass - 3); }
 /// Every tile's pixels' running sums, row by row, one block a tile.
 class PassState {
 public:
-    explicit PassState(const std::vector<Tile>& tiles) : offsets_(tiles.size() + 1, 0) {
+    PassState(const std::vector<Tile>& tiles, AovSet aovs) : aovs_(aovs), offsets_(tiles.size() + 1, 0) {
         for (size_t t = 0; t < tiles.size(); ++t)
             offsets_[t + 1] = offsets_[t] + static_cast<size_t>(tiles[t].width()) * tiles[t].height();
         pixels_.resize(offsets_.back());
+        if (!aovs.empty()) sums_.resize(offsets_.back());
     }
 
     PathPixel* tile(size_t t) { return pixels_.data() + offsets_[t]; }
+    /// What tile `t`'s pixels' AOVs need, or null when none is asked for.
+    PathAovSums* sums(size_t t) { return sums_.empty() ? nullptr : sums_.data() + offsets_[t]; }
     const std::vector<PathPixel>& pixels() const { return pixels_; }
 
-    /// Tile `t`'s pixel means, `channels` floats each.
-    void means(size_t t, int channels, std::vector<float>& out) const {
+    /// Tile `t`'s pixels as writePathPixel writes them, with the AOVs or without.
+    void write(size_t t, int colorChannels, bool withAovs, std::vector<float>& out) const {
+        const AovSet aovs = withAovs ? aovs_ : AovSet{};
+        const size_t channels = static_cast<size_t>(colorChannels + aovs.channels());
         out.resize((offsets_[t + 1] - offsets_[t]) * channels);
-        for (size_t i = offsets_[t], k = 0; i < offsets_[t + 1]; ++i) {
-            const glm::dvec4 m = pixels_[i].mean();
-            for (int c = 0; c < channels; ++c) out[k++] = static_cast<float>(m[c]);
-        }
+        const PathAovSums none;
+        for (size_t i = offsets_[t], k = 0; i < offsets_[t + 1]; ++i, k += channels)
+            writePathPixel(pixels_[i], aovs.empty() ? none : sums_[i], colorChannels, aovs, out.data() + k);
     }
 
 private:
+    AovSet aovs_;
     std::vector<size_t> offsets_;
     std::vector<PathPixel> pixels_;
+    std::vector<PathAovSums> sums_;
 };
 
 bool pastDeadline(const RenderJob& job) {
@@ -59,9 +65,10 @@ int tracePass(const PixelSampler& sampler, const std::vector<Tile>& tiles, const
             if (t >= tileCount) break;
             const Tile& tile = tiles[static_cast<size_t>(t)];
             PathPixel* pixel = state.tile(static_cast<size_t>(t));
+            PathAovSums* sums = state.sums(static_cast<size_t>(t));
             for (int y = tile.y0; y < tile.y1; ++y)
                 for (int x = tile.x0; x < tile.x1; ++x, ++pixel) {
-                    sampler.addPaths(x, y, *pixel, upTo, context);
+                    sampler.addPaths(x, y, *pixel, upTo, context, sums ? sums++ : nullptr);
                     if (!pixel->settled) wanting.store(true, std::memory_order_relaxed);
                 }
             traced.fetch_add(1);
@@ -81,7 +88,7 @@ void reportPass(const std::vector<Tile>& tiles, const RenderJob& job, int pass, 
                 PixelBuffer& image) {
     std::vector<float> means;
     for (size_t t = 0; t < tiles.size(); ++t) {
-        state.means(t, image.channels, means);
+        state.write(t, image.channels, false, means);
         image.place(TileResult{tiles[t], static_cast<int>(t), image.channels, means});
     }
     RayStats paths;
@@ -98,10 +105,9 @@ void reportPass(const std::vector<Tile>& tiles, const RenderJob& job, int pass, 
 
 int renderInPasses(const PixelSampler& sampler, const std::vector<Tile>& tiles, const RenderJob& job, int width,
                    int height, std::vector<RayStats>& stats) {
-    PassState state(tiles);
-    const int channels = job.alpha ? 4 : 3;
+    PassState state(tiles, job.aovs);
     PixelBuffer image;
-    if (job.progressive->onPass) image = PixelBuffer(width, height, channels);
+    if (job.progressive->onPass) image = PixelBuffer(width, height, job.colorChannels());
     for (int pass = 0;; ++pass) {
         bool unsettled = false;
         const int traced = tracePass(sampler, tiles, job, pathsAfterPass(pass), pass > 0, state, stats, unsettled);
@@ -112,10 +118,10 @@ int renderInPasses(const PixelSampler& sampler, const std::vector<Tile>& tiles, 
     }
     for (const PathPixel& p : state.pixels())
         stats[0].addPathPixel(static_cast<uint64_t>(p.paths), p.relativeError());
-    std::vector<float> means;
+    std::vector<float> pixels;
     for (size_t t = 0; t < tiles.size(); ++t) {
-        state.means(t, channels, means);
-        if (job.onTileDone) job.onTileDone(TileResult{tiles[t], static_cast<int>(t), channels, means});
+        state.write(t, job.colorChannels(), true, pixels);
+        if (job.onTileDone) job.onTileDone(TileResult{tiles[t], static_cast<int>(t), job.channels(), pixels});
     }
     return static_cast<int>(tiles.size());
 }

@@ -154,7 +154,8 @@ Vec3 PathIntegrator::directLight(const Vertex& v, const Bsdf& bsdf, TraceContext
     return fromLights(v, bsdf, context) + fromEmitter(v, bsdf, context) + fromEnvironment(v, bsdf, context);
 }
 
-glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBackground, TraceContext& context) const {
+glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBackground, TraceContext& context,
+                                       FirstSurface* first) const {
     Vec3 radiance(0.0), beta(1.0);
     Ray ray = cameraRay;
     Departure departed;
@@ -202,11 +203,14 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
                                : 1.0;
             radiance += beta * emission * weight;
         }
-        if (bounce >= settings_.bounces) break;
+        const bool wantsFirst = first && !first->found;
+        if (bounce >= settings_.bounces && !wantsFirst) break;
 
         v.n = glm::dot(v.si.shadingNormal, ray.dir) > 0 ? -v.si.shadingNormal : v.si.shadingNormal;
         if (m.bump >= 0) v.n = bumpedNormal(textures_[static_cast<size_t>(m.bump)], v.si, v.n);
         const Bsdf bsdf(m, color, ray.dir, v.n, facingNormal, entering, v.si.solid);
+        if (wantsFirst && bsdf.reachable()) *first = {bsdf.albedo(), v.n, true};
+        if (bounce >= settings_.bounces) break;
         if (bsdf.reachable()) radiance += beta * directLight(v, bsdf, context);
 
         BsdfSample next;

@@ -12,6 +12,14 @@
 
 namespace crt::tracer {
 
+/// What a camera path first meets that light sampling can reach (not a perfect mirror, nor
+/// clear glass, which it follows): the albedo and normal AOVs.
+struct FirstSurface {
+    Vec3 albedo{0.0}; ///< Bsdf::albedo
+    Vec3 normal{0.0}; ///< the shading normal, bumped, facing the ray
+    bool found = false;
+};
+
 class PathIntegrator {
 public:
     /// Reads the scene, lights, background and textures while it lives.
@@ -20,7 +28,9 @@ public:
 
     /// One path's estimate of the light along a camera ray, and alpha: 0 when the ray meets
     /// nothing and the background is transparent (the colour is then black), else 1.
-    glm::dvec4 traceCamera(const Ray& ray, bool transparentBackground, TraceContext& context) const;
+    /// `first` (optional) gets what the path first meets.
+    glm::dvec4 traceCamera(const Ray& ray, bool transparentBackground, TraceContext& context,
+                           FirstSurface* first = nullptr) const;
 
     const Emitters& emitters() const { return emitters_; }
 

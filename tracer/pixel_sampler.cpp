@@ -17,14 +17,39 @@ PixelSampler::PixelSampler(const Integrator& integrator, const PathIntegrator* p
       dofSamples_(camera.usesLens() ? std::max(settings.dofSamples, 1) : 1), bounces_(settings.bounceLimit()),
       transparentBackground_(transparentBackground) {}
 
-PixelSampler::Color PixelSampler::pixel(int x, int y, TraceContext& context) const {
-    uint64_t pixelIndex = static_cast<uint64_t>(y) * settings_.width + x;
+void writePathPixel(const PathPixel& p, const PathAovSums& sums, int colorChannels, AovSet aovs, float* out) {
+    const glm::dvec4 mean = p.mean();
+    for (int c = 0; c < colorChannels; ++c) *out++ = static_cast<float>(mean[c]);
+    const double n = p.paths;
+    auto write = [&](const glm::dvec3& v) {
+        for (int c = 0; c < 3; ++c) *out++ = static_cast<float>(v[c]);
+    };
+    if (aovs.has(Aov::Variance)) {
+        glm::dvec3 variance(0.0);
+        if (n >= 2)
+            for (int c = 0; c < 3; ++c)
+                variance[c] = std::max(0.0, sums.squares[c] - n * mean[c] * mean[c]) / (n * (n - 1));
+        write(variance);
+    }
+    if (aovs.has(Aov::Albedo)) write(n > 0 ? sums.albedo / n : glm::dvec3(0.0));
+    if (aovs.has(Aov::Normal)) write(n > 0 ? sums.normal / n : glm::dvec3(0.0));
+}
+
+void PixelSampler::pixel(int x, int y, int colorChannels, AovSet aovs, float* out, TraceContext& context) const {
     if (path_) {
         PathPixel p;
-        addPaths(x, y, p, settings_.samples, context);
+        PathAovSums sums;
+        addPaths(x, y, p, settings_.samples, context, aovs.empty() ? nullptr : &sums);
         context.stats.addPathPixel(static_cast<uint64_t>(p.paths), p.relativeError());
-        return p.mean();
+        writePathPixel(p, sums, colorChannels, aovs, out);
+        return;
     }
+    const Color c = whittedPixel(x, y, context);
+    for (int i = 0; i < colorChannels; ++i) out[i] = static_cast<float>(c[i]);
+}
+
+PixelSampler::Color PixelSampler::whittedPixel(int x, int y, TraceContext& context) const {
+    uint64_t pixelIndex = static_cast<uint64_t>(y) * settings_.width + x;
     bool adaptive = settings_.antialias == scene::Antialias::Adaptive ||
                     settings_.antialias == scene::Antialias::ShowAdaptive;
     if (adaptive) {
@@ -46,7 +71,7 @@ PixelSampler::Color PixelSampler::pixel(int x, int y, TraceContext& context) con
     return sum / static_cast<double>(n * n);
 }
 
-void PixelSampler::addPaths(int x, int y, PathPixel& p, int upTo, TraceContext& context) const {
+void PixelSampler::addPaths(int x, int y, PathPixel& p, int upTo, TraceContext& context, PathAovSums* sums) const {
     constexpr int kBatch = scene::SettingsDesc::kMinAdaptiveSamples;
     const uint64_t pixelIndex = static_cast<uint64_t>(y) * settings_.width + x;
     upTo = std::min(upTo, settings_.samples);
@@ -56,7 +81,13 @@ void PixelSampler::addPaths(int x, int y, PathPixel& p, int upTo, TraceContext& 
         const Ray ray = pathLens_ ? camera_.lensRay(x + offset.x, y + offset.y, context.rng.uniform2())
                                   : camera_.ray(x + offset.x, y + offset.y);
         ++context.stats.cameraRays;
-        const Color c = path_->traceCamera(ray, transparentBackground_, context);
+        FirstSurface first;
+        const Color c = path_->traceCamera(ray, transparentBackground_, context, sums ? &first : nullptr);
+        if (sums) {
+            sums->squares += glm::dvec3(c) * glm::dvec3(c);
+            sums->albedo += first.albedo;
+            sums->normal += first.normal;
+        }
         p.sum += c;
         const double l = luminance(Vec3(c));
         p.sumLuminance += l, p.sumSquares += l * l;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "scene/scene_desc.hpp"
+#include "tracer/aov.hpp"
 #include "tracer/camera.hpp"
 #include "tracer/integrator.hpp"
 #include "tracer/path_integrator.hpp"
@@ -23,6 +24,18 @@ struct PathPixel {
     double relativeError() const;
 };
 
+/// The sums of a path-traced pixel's paths its AOVs are made of.
+struct PathAovSums {
+    glm::dvec3 squares{0.0}; ///< of the colour, channel by channel
+    glm::dvec3 albedo{0.0}, normal{0.0};
+};
+
+/// Writes a path-traced pixel: its `colorChannels` means (RGB, or RGB and alpha), then each
+/// AOV of `aovs` from `sums`: the variance of the mean of each colour channel (0 for a single
+/// path), and the mean albedo and normal of what its paths first met (FirstSurface; 0 for a
+/// path that met nothing such).
+void writePathPixel(const PathPixel& pixel, const PathAovSums& sums, int colorChannels, AovSet aovs, float* out);
+
 /// Computes pixels; one per thread, sharing the read-only scene.
 class PixelSampler {
 public:
@@ -35,15 +48,19 @@ public:
     PixelSampler(const Integrator& integrator, const PathIntegrator* path, bool lens, const Camera& camera,
                  const scene::SettingsDesc& settings, bool transparentBackground);
 
-    /// The pixel's color and alpha (coverage; the color is premultiplied by it).
-    Color pixel(int x, int y, TraceContext& context) const;
+    /// Writes the pixel's color and, with `colorChannels` 4, alpha (coverage; the color is
+    /// premultiplied by it); then, for a path-traced pixel, its AOVs.
+    void pixel(int x, int y, int colorChannels, AovSet aovs, float* out, TraceContext& context) const;
 
     /// Path tracing: adds paths to the pixel until it has `upTo` (at most the settings'
     /// `samples`), or until its target error is reached; checked every kMinAdaptiveSamples
-    /// paths, so the count does not hang on the noise of a single one.
-    void addPaths(int x, int y, PathPixel& pixel, int upTo, TraceContext& context) const;
+    /// paths, so the count does not hang on the noise of a single one. `sums` (optional) gets
+    /// what the AOVs need.
+    void addPaths(int x, int y, PathPixel& pixel, int upTo, TraceContext& context,
+                  PathAovSums* sums = nullptr) const;
 
 private:
+    Color whittedPixel(int x, int y, TraceContext& context) const;
     /// Stratified sample `k`'s place in its grid cell, in [0, 1)².
     Vec2 cellJitter(uint64_t pixelIndex, uint32_t k) const;
     /// Spec §6 "adaptive": a region of the pixel, subdivided while its samples disagree.

@@ -66,23 +66,22 @@ bool prepare(const scene::SceneDesc& desc, unsigned threads, PreparedScene& out,
     return true;
 }
 
-/// Traces one tile into `pixels` (row-major, `channels` floats a pixel: RGB, then alpha).
-void traceTile(const PixelSampler& sampler, const Tile& tile, int channels, std::vector<float>& pixels,
+/// Traces one tile of the job into `pixels` (row-major, RenderJob::channels() floats a pixel).
+void traceTile(const PixelSampler& sampler, const Tile& tile, const RenderJob& job, std::vector<float>& pixels,
                TraceContext& context) {
+    const int channels = job.channels(), colorChannels = job.colorChannels();
     pixels.resize(static_cast<size_t>(tile.width()) * tile.height() * channels);
     float* out = pixels.data();
-    for (int y = tile.y0; y < tile.y1; ++y) {
-        for (int x = tile.x0; x < tile.x1; ++x, out += channels) {
-            glm::dvec4 c = sampler.pixel(x, y, context);
-            for (int i = 0; i < channels; ++i) out[i] = static_cast<float>(c[i]);
-        }
-    }
+    for (int y = tile.y0; y < tile.y1; ++y)
+        for (int x = tile.x0; x < tile.x1; ++x, out += channels)
+            sampler.pixel(x, y, colorChannels, job.aovs, out, context);
 }
 
 /// Traces the tiles the job hands out (all of `tiles`, or what its nextTile says) on one thread
 /// a `stats` entry, each tile once. Returns the tiles traced.
 int traceEachTileOnce(const PixelSampler& sampler, const std::vector<Tile>& tiles, const RenderJob& job,
-                      int channels, std::vector<RayStats>& stats) {
+                      std::vector<RayStats>& stats) {
+    const int channels = job.channels();
     const int tileCount = static_cast<int>(tiles.size());
     std::atomic<int> nextTile{0}, doneTiles{0};
     std::mutex callbackMutex; // the caller's callback sees one tile at a time
@@ -92,7 +91,7 @@ int traceEachTileOnce(const PixelSampler& sampler, const std::vector<Tile>& tile
         while (!(job.cancel && job.cancel->load(std::memory_order_relaxed))) {
             const int tile = job.nextTile ? job.nextTile() : nextTile.fetch_add(1);
             if (tile < 0 || tile >= tileCount) break;
-            traceTile(sampler, tiles[static_cast<size_t>(tile)], channels, pixels, context);
+            traceTile(sampler, tiles[static_cast<size_t>(tile)], job, pixels, context);
             if (job.onTileDone) {
                 std::lock_guard lock(callbackMutex);
                 job.onTileDone(TileResult{tiles[static_cast<size_t>(tile)], tile, channels, pixels});
@@ -184,7 +183,6 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     const scene::SettingsDesc settings = withBudget(desc.settings, job.samples);
     PixelSampler sampler(*prepared.integrator, prepared.path.get(), desc.camera.aperture > 0, *prepared.camera, settings,
                          job.alpha);
-    const int channels = job.alpha ? 4 : 3;
     outcome.buildSeconds = secondsSince(buildStart);
     outcome.primitives = prepared.geometry->storedPrimitives();
     outcome.drawnPrimitives = prepared.geometry->primitives.size() + prepared.geometry->instances.size();
@@ -204,6 +202,10 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     outcome.tileCount = tileCount;
     const unsigned threadCount = std::max(1u, std::min<unsigned>(jobThreads, static_cast<unsigned>(tileCount)));
     std::vector<RayStats> stats(threadCount);
+    if (!job.aovs.empty() && !prepared.path) {
+        outcome.error = "AOVs are written by the path integrator only";
+        return outcome;
+    }
     if (job.progressive && prepared.path) {
         if (job.nextTile) {
             outcome.error = "a progressive render traces every tile itself; it cannot share them";
@@ -211,7 +213,7 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
         }
         outcome.tilesDone = renderInPasses(sampler, tiles, job, settings.width, settings.height, stats);
     } else {
-        outcome.tilesDone = traceEachTileOnce(sampler, tiles, job, channels, stats);
+        outcome.tilesDone = traceEachTileOnce(sampler, tiles, job, stats);
     }
     for (const RayStats& st : stats) outcome.stats += st;
     outcome.renderSeconds = secondsSince(renderStart);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "scene/scene_desc.hpp"
+#include "tracer/aov.hpp"
 #include "tracer/stats.hpp"
 
 #include <atomic>
@@ -98,6 +99,13 @@ struct RenderJob {
     /// Under the path integrator: render in passes, the tiles handed to onTileDone at the end.
     /// Not with `nextTile`. Ignored under the Whitted integrator.
     std::optional<ProgressiveRender> progressive;
+    /// Under the path integrator: buffers written after each pixel's colour in its tile
+    /// (writePathPixel); an error under the Whitted integrator.
+    AovSet aovs;
+
+    /// Floats a pixel of the tiles: RGB, alpha, the AOVs.
+    int channels() const { return tileChannels(alpha, aovs); }
+    int colorChannels() const { return tileChannels(alpha, {}); }
 };
 
 struct RenderOutcome {

@@ -65,11 +65,11 @@ uint64_t frameHash(const lang::Compilation& c, const scene::SceneDesc& scene,
                       scene.time));
     const scene::SettingsDesc& s = scene.settings;
     h.add(fmt::format("size {}x{} region {}:{}:{}:{} samples {} {} {} {} {} aperture {} alpha {} "
-                      "integrator {} {} {} {}",
+                      "integrator {} {} {} {} aovs {}",
                       s.width, s.height, region.x0, region.y0, region.x1, region.y1,
                       s.supersampling, static_cast<int>(s.antialias), s.dofSamples,
                       s.shadowSamples, s.glossySamples, scene.camera.aperture, options.alpha,
-                      static_cast<int>(s.integrator), s.samples, s.bounces, s.targetError));
+                      static_cast<int>(s.integrator), s.samples, s.bounces, s.targetError, options.aovs.bits));
     addAssets(h, scene);
     return h.value();
 }

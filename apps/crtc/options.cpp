@@ -206,6 +206,24 @@ void addQualityOptions(CLI::App& app, Options& o) {
         ->check(numberIn(1e-3, 1e9, "a number of seconds from 0.001 to 1000000000"))
         ->type_name("S")
         ->group(group);
+    app.add_option("--aov", "path: also write each pixel's variance, and the albedo and normal of what its "
+                            "paths first meet, as IMAGE.variance.exr and so on (a comma-separated LIST)")
+        ->type_name("LIST")
+        ->group(group)
+        ->check(CLI::Validator(
+            [&o](std::string& text) -> std::string {
+                std::string_view rest = text;
+                while (true) {
+                    const std::string_view name = rest.substr(0, rest.find(','));
+                    const auto* found = std::find(tracer::kAovNames.begin(), tracer::kAovNames.end(), name);
+                    if (found == tracer::kAovNames.end())
+                        return fmt::format("takes a list of variance, albedo and normal, not '{}'", name);
+                    o.aovs.add(static_cast<tracer::Aov>(found - tracer::kAovNames.begin()));
+                    if (name.size() == rest.size()) return "";
+                    rest.remove_prefix(name.size() + 1);
+                }
+            },
+            ""));
     app.add_option("--dofsamples", q.dofSamples, "lens samples a camera sample (depth of field)")
         ->check(sampleCount(scene::kDofSamplesRange))
         ->type_name("N")
@@ -534,6 +552,14 @@ ParsedOptions parseOptions(int argc, char** argv) {
         return bad(problem);
     result.options = std::move(o);
     return result;
+}
+
+tracer::RenderJob renderJob(const Options& options) {
+    tracer::RenderJob job;
+    job.threads = options.threads;
+    job.alpha = options.alpha;
+    job.aovs = options.aovs;
+    return job;
 }
 
 } // namespace crt::crtc

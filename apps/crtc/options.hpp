@@ -55,6 +55,8 @@ struct Options {
     /// --time-limit: seconds a path-traced frame renders (scene build included) before it
     /// stops with the image so far; 0: no limit
     double timeLimit = 0;
+    /// --aov: the buffers a path-traced render writes beside its image, NAME.exr each
+    tracer::AovSet aovs;
     // Preview
     int port = 0;        ///< --port; 0: a free port
     bool open = false;   ///< --open: show the preview in the desktop's browser
@@ -68,5 +70,8 @@ struct ParsedOptions {
 };
 
 ParsedOptions parseOptions(int argc, char** argv);
+
+/// A render job with what the options say of every render: threads, alpha, AOVs.
+tracer::RenderJob renderJob(const Options& options);
 
 } // namespace crt::crtc

@@ -1,6 +1,8 @@
 // Rendering from crtc: frames, output naming, progress, Ctrl-C, the summary line and --stats.
 #include "render_command.hpp"
 
+#include "aov_output.hpp"
+
 #include "distributed/distributed_render.hpp"
 #include "frame_hash.hpp"
 #include "progress_reporter.hpp"
@@ -201,28 +203,46 @@ struct FrameJob {
     const std::map<int, std::vector<float>>* loggedTiles = nullptr;
 };
 
+/// Whether the options that only path tracing has (--time-limit, --aov) fit `scene` and `job`;
+/// else says why.
+bool pathOptionsFit(const Options& options, const scene::SceneDesc& scene, const FrameJob& job) {
+    const char* option = options.timeLimit > 0 ? "--time-limit" : !options.aovs.empty() ? "--aov" : nullptr;
+    if (option && scene.settings.integrator != scene::Integrator::Path) {
+        std::cerr << fmt::format("crtc: {} needs the path integrator, and this scene's is \"whitted\": add "
+                                 "--integrator path, or set Settings.integrator -> \"path\"\n",
+                                 option);
+        return false;
+    }
+    if (!options.aovs.empty() && job.keep) {
+        std::cerr << "crtc: --aov writes its images beside each frame's: give -o a numbered name "
+                     "(out_%03d.png) rather than a GIF\n";
+        return false;
+    }
+    return true;
+}
+
 /// Renders the region of one frame of `scene`: streamed to the file `job.target` as its rows
 /// are finished, or into `job.keep`; tiles an interrupted run logged are taken from the log.
 /// Returns 0 or crtc's exit status.
 int renderFrame(const Options& options, const scene::SceneDesc& scene, const FrameJob& job,
                 const image_io::WriteOptions& write, ProgressReporter& progress, ResumeLog* log,
                 RenderTotals& totals, const TileRenderer& renderTiles) {
-    if (options.timeLimit > 0 && scene.settings.integrator != scene::Integrator::Path) {
-        std::cerr << "crtc: --time-limit stops a path-traced render, and this scene's integrator is "
-                     "\"whitted\": add --integrator path, or set Settings.integrator -> \"path\"\n";
-        return 2;
-    }
+    if (!pathOptionsFit(options, scene, job)) return 2;
+    tracer::RenderJob render = renderJob(options);
     const tracer::Tile& region = job.region;
     const int width = region.width(), height = region.height();
-    const int channels = options.alpha ? 4 : 3;
+    const int channels = render.channels();
     std::optional<StreamedOutput> streamed;
     std::optional<RowAssembler> rows;
     if (!job.keep) {
-        streamed.emplace(job.target, width, height, channels, write, stopRendering);
-        rows.emplace(width, height, channels, [&](int yBegin, int yEnd, std::span<const float> pixels) {
+        streamed.emplace(job.target, width, height, render.colorChannels(), write, stopRendering);
+        rows.emplace(width, height, render.colorChannels(), [&](int yBegin, int yEnd, std::span<const float> pixels) {
             streamed->addRows(yBegin, yEnd, pixels);
         });
     }
+    std::optional<AovOutput> aovs;
+    if (!options.aovs.empty()) aovs.emplace(job.target, width, height, render.colorChannels(), options.aovs);
+    std::vector<float> color;
     const std::vector<tracer::Tile> tiles = tracer::regionTiles(region);
     int done = 0;
     // The output image is the region alone: its tiles move to its top left corner.
@@ -233,13 +253,13 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const Fra
             result.index,
             result.channels,
             result.pixels};
+        const tracer::TileResult shown = aovs ? aovs->take(placed, color) : placed;
         if (job.keep)
-            job.keep->place(placed);
+            job.keep->place(shown);
         else
-            rows->add(placed);
+            rows->add(shown);
         progress.update(++done, static_cast<int>(tiles.size()));
     };
-    tracer::RenderJob render;
     std::vector<int> tileIndex; // of each tile of the render job in `tiles`
     uint64_t tracedPixels = 0;
     for (int i = 0; i < static_cast<int>(tiles.size()); ++i) {
@@ -264,9 +284,7 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const Fra
         std::cerr << fmt::format("crtc: continuing {}: {} of {} tiles were rendered before\n",
                                  job.target, done, tiles.size());
     }
-    render.threads = options.threads;
     render.cancel = &stopRendering;
-    render.alpha = options.alpha;
     if (options.timeLimit > 0)
         render.progressive = tracer::ProgressiveRender{
             std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -286,7 +304,7 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const Fra
     }
     // A cancelled render was stopped by its output's failure, which finish() reports.
     std::string error;
-    if (streamed && !streamed->finish(error)) {
+    if ((streamed && !streamed->finish(error)) || (aovs && !aovs->write(error))) {
         printError(error);
         return 2;
     }

@@ -85,9 +85,24 @@ cmp -s "$work/path.png" "$work/tl.png" || fail "--time-limit changes a render th
 expect_status 0 "--time-limit reached" "$crtc" --integrator path --samples 1000000 --time-limit 0.5 --stats -o "$work/tl.png" "$work/dof.crt"
 expect_text "$work/err" "^crtc: stats: paths a pixel: fewest [1-9][0-9]*, mean [0-9.]+, most [1-9][0-9]*;" "--time-limit: the paths each pixel took"
 expect_status 2 "--time-limit under Whitted" "$crtc" --time-limit 10 -o "$work/tl.png" "$work/dof.crt"
-expect_text "$work/err" "crtc: --time-limit stops a path-traced render, and this scene's integrator is \"whitted\"" "--time-limit needs the path integrator"
+expect_text "$work/err" "crtc: --time-limit needs the path integrator, and this scene's is \"whitted\"" "--time-limit needs the path integrator"
 expect_status 2 "--time-limit 0" "$crtc" --time-limit 0 "$work/dof.crt"
 expect_text "$work/err" "--time-limit needs a number of seconds from 0.001 to 1000000000, not '0'" "--time-limit range"
+# AOVs: an EXR beside the image for each one asked for, the image as it was.
+expect_status 0 "--aov" "$crtc" --integrator path --samples 5 --aov normal,albedo -o "$work/aov.png" "$work/dof.crt"
+cmp -s "$work/path.png" "$work/aov.png" || fail "--aov changes the image"
+[ -s "$work/aov.albedo.exr" ] && [ -s "$work/aov.normal.exr" ] || fail "--aov normal,albedo: $(ls "$work")"
+[ ! -e "$work/aov.variance.exr" ] || fail "--aov wrote a variance image it was not asked for"
+if command -v oiiotool >/dev/null; then
+    oiiotool --info "$work/aov.normal.exr" | grep -q "40 x  *30, 3 channel, float" ||
+        fail "the normal AOV is not 40x30 floats: $(oiiotool --info "$work/aov.normal.exr")"
+fi
+expect_status 2 "--aov unknown" "$crtc" --integrator path --aov albedo,depth "$work/dof.crt"
+expect_text "$work/err" "--aov takes a list of variance, albedo and normal, not 'depth'" "--aov names"
+expect_status 2 "--aov under Whitted" "$crtc" --aov albedo -o "$work/w.png" "$work/dof.crt"
+expect_text "$work/err" "crtc: --aov needs the path integrator" "--aov needs the path integrator"
+expect_status 2 "--aov into a GIF" "$crtc" --integrator path --aov albedo --frames 2 -o "$work/w.gif" "$work/dof.crt"
+expect_text "$work/err" "give -o a numbered name" "--aov needs an image a frame"
 expect_status 2 "--samples out of range" "$crtc" --samples 0 "$work/dof.crt"
 expect_text "$work/err" "--samples needs an integer from 1 to 1000000, not '0'" "--samples range"
 

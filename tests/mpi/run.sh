@@ -85,6 +85,15 @@ stills() {
     cmp -s "$work/path_alone.hdr" "$work/path_shared.hdr" || fail "a path-traced image over 3 processes differs"
     diff <(grep -E "paths a pixel|rays:" "$work/path_alone.err") <(grep -E "paths a pixel|rays:" "$work/err") >/dev/null ||
         fail "path --stats over 3 processes differ from crtc alone: $(grep 'paths a pixel' "$work/err")"
+    # AOVs travel with the tiles.
+    "$crtc" --quiet --integrator path --samples 8 --aov variance,normal "$here/still.crt" -o "$work/aov_alone.hdr"
+    expect_status 0 "--aov" mpi 3 --quiet --integrator path --samples 8 --aov variance,normal "$here/still.crt" \
+        -o "$work/aov_shared.hdr"
+    for aov in variance normal; do
+        # (EXR files carry the time they were written: their pixels are compared)
+        idiff -fail 0 -warn 0 "$work/aov_alone.$aov.exr" "$work/aov_shared.$aov.exr" >/dev/null ||
+            fail "the $aov AOV over 3 processes differs"
+    done
     # A time limit refines the whole image in one process: refused, once, over several.
     expect_status 2 "--time-limit" mpi 2 --integrator path --time-limit 5 "$here/still.crt" -o "$work/tl.png"
     [ "$(grep -c "time-limit is for crtc alone" "$work/err")" = 1 ] || fail "--time-limit under mpirun: $(cat "$work/err")"

@@ -186,7 +186,6 @@ try {
   assert.equal(written.split("\n").length, original.split("\n").length, "the rest of the script changed");
 
   step("a path-traced image gains paths pass after pass while the camera is still");
-  const lastFrame = (await imageStats(page)).frame;
   await page.evaluate(() => {
     window.pathsShown = [];
     const img = document.getElementById("view");
@@ -194,7 +193,12 @@ try {
       .observe(img, { attributes: true, attributeFilter: ["data-paths"] });
   });
   writeFileSync(script, readFileSync(script, "utf8").replace("supersampling -> 2", 'integrator -> "path" samples -> 64'));
-  const traced = await waitForFinalImage(page, lastFrame);
+  // (The camera just written may still be re-rendering: wait for the path-traced end.)
+  await page.waitForFunction(() => {
+    const img = document.getElementById("view");
+    return img.dataset.final === "true" && img.dataset.paths === "64.00" && img.complete;
+  }, { timeout });
+  const traced = await imageStats(page);
   assert.ok(traced.variance > 100, `the path-traced image looks uniform (variance ${traced.variance})`);
   const shownPaths = await page.evaluate(() => window.pathsShown);
   assert.equal(shownPaths.at(-1), 64, `the last image has not every path: ${shownPaths}`);

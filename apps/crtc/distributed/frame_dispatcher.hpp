@@ -70,8 +70,8 @@ class FrameDispatcher final : public FrameFeed {
     void answer(int rank, Tag tag, const int* values, int count);
     /// Prints what the rank that evaluated `frame` said of it (its warnings, or why it failed).
     void report(int frame, const Frame& f) const;
-    /// Floats a pixel of the tiles workers send: RGB, and alpha with --alpha.
-    int channels() const { return options_.alpha ? 4 : 3; }
+    /// Floats a pixel of the tiles workers send (RenderJob::channels).
+    int channels() const { return renderJob(options_).channels(); }
 
     MpiSession& session_;
     const Options& options_;

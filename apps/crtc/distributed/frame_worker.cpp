@@ -123,10 +123,8 @@ void FrameWorker::trace(int frame, const scene::SceneDesc& scene,
     tracer::RenderOutcome outcome;
     outcome.ok = true;
     std::thread renderer([&] {
-        tracer::RenderJob job;
+        tracer::RenderJob job = renderJob(options_);
         job.tiles = tiles;
-        job.threads = options_.threads;
-        job.alpha = options_.alpha;
         job.cancel = &cancel;
         job.onTileDone = [&](const tracer::TileResult& result) {
             std::vector<char> tile = encodeTile(result);

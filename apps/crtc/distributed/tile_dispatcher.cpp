@@ -96,7 +96,7 @@ int TileDispatcher::releaseIfDone(int source) {
 
 int TileDispatcher::handle(const tracer::RenderJob& job, int source, int tag,
                            const std::vector<char>& message) {
-    const int channels = job.alpha ? 4 : 3;
+    const int channels = job.channels();
     Worker& w = workers_[static_cast<size_t>(source)];
     if (tag == kRequestTag && message.size() == sizeof(int)) {
         std::vector<int> tiles;

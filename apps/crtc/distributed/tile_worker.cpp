@@ -224,10 +224,8 @@ void TileWorker::render(const scene::SceneDesc* scene, const std::vector<tracer:
     }
     std::thread renderer([&] {
         if (!scene) return;
-        tracer::RenderJob job;
+        tracer::RenderJob job = renderJob(options_);
         job.tiles = tiles;
-        job.threads = options_.threads;
-        job.alpha = options_.alpha;
         job.nextTile = [this] { return nextTile(); };
         job.onTileDone = [this](const tracer::TileResult& result) { finished(result); };
         try {
