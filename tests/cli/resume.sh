@@ -23,7 +23,8 @@ CRT
 
 # Starts a one-thread render in the background, waits until its log holds some tiles (or the
 # file `until` exists), then sends `signal`; leaves the exit status in $status. The render logs
-# its tiles from the start, or once it has rendered $LOG_AFTER seconds.
+# its tiles from the start, or once it has rendered $LOG_AFTER seconds; it is interrupted once
+# its log holds $LOG_BYTES bytes (default 200000).
 interrupt_render() { # signal log until crtc-arguments...
     local signal=$1 log=$2 until=$3
     shift 3
@@ -31,7 +32,7 @@ interrupt_render() { # signal log until crtc-arguments...
     local pid=$!
     for _ in $(seq 600); do
         if [ -n "$until" ]; then [ -e "$until" ] && break
-        elif [ "$(stat -c %s "$log" 2>/dev/null || echo 0)" -gt 200000 ]; then break; fi
+        elif [ "$(stat -c %s "$log" 2>/dev/null || echo 0)" -gt "${LOG_BYTES:-200000}" ]; then break; fi
         kill -0 $pid 2>/dev/null || break
         sleep 0.05
     done
@@ -52,6 +53,19 @@ expect_status 0 "--continue after Ctrl-C" "$crtc" --continue -o "$work/a.png" "$
 expect_text "$work/err" "continuing .*a.png: [0-9]+ of 690 tiles were rendered before" "--continue says what it reuses"
 cmp -s "$work/a.png" "$work/whole.png" || fail "the continued render differs from the uninterrupted one"
 [ -e "$work/.a.png.crtc-resume" ] && fail "the log is left after the render finished"
+
+# A path-traced render with an AOV: the floats of the image and of the AOV as uninterrupted.
+path=(--integrator path --samples 256 --width 128 --height 96 --aov variance)
+expect_status 0 "uninterrupted path render" "$crtc" -q "${path[@]}" -o "$work/whole.hdr" "$work/scene.crt"
+LOG_BYTES=30000 interrupt_render INT "$work/.p.hdr.crtc-resume" "" "${path[@]}" -o "$work/p.hdr" "$work/scene.crt"
+[ "$status" = 130 ] || fail "Ctrl-C of a path render: exit status $status, expected 130"
+expect_status 0 "--continue a path render" "$crtc" --continue "${path[@]}" -o "$work/p.hdr" "$work/scene.crt"
+expect_text "$work/err" "continuing .*p.hdr: [1-9][0-9]* of 48 tiles were rendered before" "--continue reuses path tiles"
+cmp -s "$work/p.hdr" "$work/whole.hdr" || fail "the continued path render differs from the uninterrupted one"
+if command -v idiff >/dev/null; then
+    idiff -fail 0 -warn 0 "$work/p.variance.exr" "$work/whole.variance.exr" >/dev/null ||
+        fail "the continued path render's variance differs"
+fi
 
 # Killed outright, as by a crash: the log written up to a second before is enough.
 interrupt_render KILL "$work/.b.png.crtc-resume" "" -o "$work/b.png" "$work/scene.crt"
