@@ -26,6 +26,7 @@ Light::Light(const scene::LightDesc& desc, int shadowSamples)
         position_ = desc.origin;
         edgeA_ = desc.edgeA;
         edgeB_ = desc.edgeB;
+        areaNormal_ = glm::cross(edgeA_, edgeB_);
         sampleCount_ = std::max(shadowSamples, 1);
         // A near-square grid of strata, as many as there are samples.
         strataX_ = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(sampleCount_))));
@@ -76,6 +77,37 @@ LightSample Light::sample(const Vec3& point, int index, const Vec2& jitter) cons
     if (kind_ == scene::LightKind::Spot) color *= spotFactor(-s.toLight);
     s.color = color;
     return s;
+}
+
+LightSample Light::sampleUniformly(const Vec3& point, const Vec2& u) const {
+    if (kind_ != scene::LightKind::Area && kind_ != scene::LightKind::Cylinder) return sample(point, 0, u);
+    LightSample s;
+    const Vec3 target = position_ + u.x * edgeA_ + (kind_ == scene::LightKind::Area ? u.y : 0.0) * edgeB_;
+    const Vec3 offset = target - point;
+    s.distance = glm::length(offset);
+    s.toLight = s.distance > 0 ? offset / s.distance : Vec3(0, 1, 0);
+    s.target = target;
+    s.color = color_;
+    return s;
+}
+
+double Light::crossing(const Ray& ray, double tMax) const {
+    if (kind_ != scene::LightKind::Area) return kInfinity;
+    const double facing = glm::dot(areaNormal_, ray.dir);
+    if (facing == 0) return kInfinity;
+    const double t = glm::dot(areaNormal_, position_ - ray.origin) / facing;
+    if (!(t > 0 && t < tMax)) return kInfinity;
+    // The point's coordinates along the edges: p = a·edgeA + b·edgeB.
+    const Vec3 p = ray.origin + t * ray.dir - position_;
+    const double squared = glm::dot(areaNormal_, areaNormal_);
+    const double a = glm::dot(glm::cross(p, edgeB_), areaNormal_) / squared;
+    const double b = glm::dot(glm::cross(edgeA_, p), areaNormal_) / squared;
+    return a >= 0 && a <= 1 && b >= 0 && b <= 1 ? t : kInfinity;
+}
+
+double Light::areaPdf(const Vec3& toLight, double distance) const {
+    const double projected = std::abs(glm::dot(areaNormal_, toLight)); // area · |cos θ|
+    return projected > 0 ? distance * distance / projected : kInfinity;
 }
 
 } // namespace crt::tracer

@@ -29,6 +29,18 @@ public:
     int sampleCount() const { return sampleCount_; }
     /// Sample `index` of sampleCount(), at `point`; `jitter` in [0,1)² places it in its stratum.
     LightSample sample(const Vec3& point, int index, const Vec2& jitter) const;
+    /// Path tracing's sample at `point`: a point of an area light's parallelogram or of a
+    /// cylinder light's segment drawn uniformly by `u` in [0,1)², carrying the whole colour
+    /// (the light's own position for the others).
+    LightSample sampleUniformly(const Vec3& point, const Vec2& u) const;
+
+    /// Whether rays can meet it: an area light's parallelogram.
+    bool hasArea() const { return kind_ == scene::LightKind::Area; }
+    /// Where `ray` crosses an area light's parallelogram within (0, tMax), or kInfinity.
+    double crossing(const Ray& ray, double tMax) const;
+    /// The solid-angle density of sampleUniformly's points of an area light at `distance`
+    /// along the unit direction `toLight`: d² / (area · |cos θ|).
+    double areaPdf(const Vec3& toLight, double distance) const;
 
     Vec3 color() const { return color_; }
     double ambient() const { return ambient_; }
@@ -46,6 +58,7 @@ private:
 
     scene::LightKind kind_;
     Vec3 position_{0.0}, direction_{0.0}, edgeA_{0.0}, edgeB_{0.0};
+    Vec3 areaNormal_{0.0}; ///< edgeA × edgeB: the parallelogram's normal, as long as its area
     Vec3 color_{0.0};
     double ambient_ = 0, falloff_ = 0;
     Vec3 attenuation_{1, 0, 0};

@@ -35,7 +35,8 @@ PathIntegrator::PathIntegrator(const RenderScene& scene, const scene::SettingsDe
                                const std::vector<Light>& lights, const Background& background,
                                const std::vector<Texture>& textures)
     : scene_(scene), settings_(settings), lights_(lights), background_(background), textures_(textures),
-      mixer_(scene.materials, scene.blends, textures), emitters_(scene), environment_(background) {}
+      mixer_(scene.materials, scene.blends, textures), emitters_(scene), environment_(background),
+      hasAreaLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.hasArea(); })) {}
 
 int32_t PathIntegrator::drawMaterial(const SurfaceInteraction& si, Vec3& color, Vec3& beta,
                                      TraceContext& context) const {
@@ -91,14 +92,27 @@ Vec3 PathIntegrator::visibility(const Ray& ray, double tMax, Departure departed,
     return through;
 }
 
+namespace {
+
+/// What a light of colour L sends to a point `distance` from it, reached by a path
+/// `pathLength` long, per unit of L: π, so that it lights a white Lambertian surface to
+/// L·cos θ, with the light's falloff and attenuation.
+double lightStrength(const Light& light, double distance, double pathLength) {
+    double strength = kPi;
+    if (light.falloff() > 0 && distance < kInfinity) {
+        const double d = distance + pathLength;
+        strength *= light.falloff() / (d * d);
+    }
+    if (light.attenuates()) strength *= light.attenuation(distance);
+    return strength;
+}
+
+} // namespace
+
 Vec3 PathIntegrator::fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const {
     Vec3 sum(0.0);
     for (const Light& light : lights_) {
-        // One point of an area or cylinder light, drawn among its samples: their mean.
-        const int count = light.sampleCount();
-        const int index = count > 1 ? std::min(static_cast<int>(context.rng.uniform() * count), count - 1) : 0;
-        const Vec2 jitter = count > 1 ? context.rng.uniform2() : Vec2(0.5);
-        const LightSample ls = light.sample(v.si.point, index, jitter);
+        const LightSample ls = light.sampleUniformly(v.si.point, context.rng.uniform2());
         if (ls.color == Vec3(0.0)) continue;
         const Vec3 f = bsdf.evalCos(ls.toLight);
         if (f == Vec3(0.0)) continue;
@@ -107,13 +121,26 @@ Vec3 PathIntegrator::fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext&
         const Vec3 visible = visibility(shadow, ls.atInfinity ? kInfinity : 1.0,
                                         scene_.departedPrimitive(v.hit, v.si, ls.toLight), context);
         if (visible == Vec3(0.0)) continue;
-        double strength = kPi * count; // a light of colour L lights a white Lambertian surface to L·cos θ
-        if (light.falloff() > 0 && !ls.atInfinity) {
-            const double d = ls.distance + v.pathLength;
-            strength *= light.falloff() / (d * d);
-        }
-        if (light.attenuates()) strength *= light.attenuation(ls.distance);
-        sum += visible * f * ls.color * strength;
+        // An area light is also met by the paths the BSDF sends (areaLightsAlong).
+        const double weight =
+            light.hasArea() ? powerHeuristic(light.areaPdf(ls.toLight, ls.distance), bsdf.pdf(ls.toLight)) : 1.0;
+        sum += visible * f * ls.color * (lightStrength(light, ls.distance, v.pathLength) * weight);
+    }
+    return sum;
+}
+
+Vec3 PathIntegrator::areaLightsAlong(const Ray& ray, double tMax, double scatterPdf, double pathLength) const {
+    Vec3 sum(0.0);
+    for (const Light& light : lights_) {
+        const double t = light.crossing(ray, tMax);
+        if (t == kInfinity) continue;
+        // The radiance that gives light sampling's estimate: the light spread over the
+        // parallelogram, each point lighting as a point light does (so it grows with the
+        // distance, as a point light without falloff keeps its strength there).
+        const double pdf = light.areaPdf(ray.dir, t);
+        if (pdf == kInfinity) continue;
+        const double weight = scatterPdf > 0 ? powerHeuristic(scatterPdf, pdf) : 1.0;
+        sum += light.color() * (lightStrength(light, t, pathLength) * pdf * weight);
     }
     return sum;
 }
@@ -169,6 +196,9 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
     for (int crossings = 0;; ++crossings) {
         Vertex v;
         const bool found = scene_.intersect(ray, kInfinity, v.hit, context.scratch, context.stats, departed);
+        // Area lights are unseen by the camera, as under the Whitted integrator.
+        if (bounce > 0 && hasAreaLights_)
+            radiance += beta * areaLightsAlong(ray, found ? v.hit.t : kInfinity, scatterPdf, pathLength);
         if (medium >= 0) {
             // Beer–Lambert absorption along the path inside the solid.
             const Vec3 a = rgb(scene_.materials[static_cast<size_t>(medium)].absorption);

@@ -44,6 +44,9 @@ private:
     /// the path's previous vertex.
     Vec3 directLight(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
     Vec3 fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
+    /// The light of the area lights a path's ray meets before `tMax`, weighed against light
+    /// sampling's chance of the same direction (`scatterPdf`, 0 when it has none).
+    Vec3 areaLightsAlong(const Ray& ray, double tMax, double scatterPdf, double pathLength) const;
     Vec3 fromEmitter(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
     Vec3 fromEnvironment(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
     /// The share of light that passes along the segment (0, tMax) of `ray`: surfaces block it
@@ -59,6 +62,7 @@ private:
     MaterialMixer mixer_;
     Emitters emitters_;
     EnvironmentLight environment_;
+    bool hasAreaLights_;
 };
 
 } // namespace crt::tracer
