@@ -638,11 +638,21 @@ Value Interpreter::buildCamera(ObjectBuilder& b) {
     if (c.position == c.pointing) {
         fail(b.where("pointing"), "the camera points at its own position");
     }
-    c.fov = b.number("fov", c.fov);
-    if (c.fov <= 0 || c.fov >= 180) {
-        fail(b.where("fov"),
-             fmt::format("fov must be in (0, 180) degrees, not {}", formatFloat(c.fov)));
+    if (b.get("projection")) {
+        const std::string projection = b.lowerText("projection");
+        for (size_t i = 0; i < std::size(scene::kProjectionNames); ++i)
+            if (projection == scene::kProjectionNames[i]) c.projection = static_cast<scene::Projection>(i);
     }
+    c.fov = b.number("fov", c.fov);
+    // A fisheye or a cylindrical panorama may take in every direction around.
+    const bool allAround = c.projection == scene::Projection::Fisheye || c.projection == scene::Projection::Cylindrical;
+    if (c.fov <= 0 || (allAround ? c.fov > 360 : c.fov >= 180)) {
+        fail(b.where("fov"), fmt::format("fov must be in {} degrees{}, not {}", allAround ? "(0, 360]" : "(0, 180)",
+                                         allAround ? fmt::format(" for a {} camera", scene::kProjectionNames[static_cast<int>(c.projection)]) : "",
+                                         formatFloat(c.fov)));
+    }
+    c.width = b.number("width", c.width);
+    if (b.get("width") && c.width <= 0) fail(b.where("width"), "width must be positive");
     c.aperture = b.number("aperture", c.aperture);
     if (c.aperture < 0) fail(b.where("aperture"), "aperture must not be negative");
     c.focalDistance = b.number("focaldistance", glm::length(c.pointing - c.position));
@@ -651,10 +661,6 @@ Value Interpreter::buildCamera(ObjectBuilder& b) {
     c.up = b.vec("up", c.up);
     b.nonZeroVector("up", "the camera needs an up direction");
     c.roll = b.number("roll", c.roll);
-    if (b.get("projection")) {
-        c.projection = b.lowerText("projection") == "spherical" ? scene::Projection::Spherical
-                                                                : scene::Projection::Pinhole;
-    }
     c.source = span(b.range);
     cameras_.push_back(c);
     return Value::object(ValueKind::Camera, b.info.type,

@@ -11,7 +11,6 @@ namespace {
 
 using A = AttrType;
 
-constexpr std::string_view kProjectionChoices[] = {"pinhole", "spherical"};
 // "uniform" is the 2015 name of the circle (a disc sampled uniformly), kept for old scripts.
 constexpr std::string_view kApertureChoices[] = {"circle",  "triangle", "square", "pentagon",
                                                  "hexagon", "octagon",  "gaussian", "line",
@@ -63,7 +62,11 @@ constexpr AttributeInfo kSettings[] = {
 constexpr AttributeInfo kCamera[] = {
     {"position", A::Vec3, true, "", "Where the camera is."},
     {"pointing", A::Vec3, true, "", "The point the camera looks at."},
-    {"fov", A::Float, false, "60", "Vertical field of view in degrees, in (0, 180)."},
+    {"fov", A::Float, false, "60",
+     "Vertical field of view in degrees, in (0, 180); fisheye: the angle across its circle, in (0, 360]; "
+     "cylindrical: the horizontal angle, in (0, 360]."},
+    {"width", A::Float, false, "the pinhole view's width at pointing",
+     "Orthographic: the width of the view in scene units."},
     {"aperture", A::Float, false, "0", "Lens size; the lens radius is aperture / 1000 units."},
     {"focaldistance", A::Float, false, "|pointing - position|", "Distance of the sharp plane."},
     {"apertureshape", A::Aperture, false, "\"circle\"",
@@ -72,7 +75,10 @@ constexpr AttributeInfo kCamera[] = {
      kApertureChoices},
     {"up", A::Vec3, false, "vec3(0,1,0)", "Which way is up."},
     {"roll", A::Float, false, "0", "Rotation about the view axis, degrees."},
-    {"projection", A::Choice, false, "\"pinhole\"", "pinhole or spherical.", kProjectionChoices},
+    {"projection", A::Choice, false, "\"pinhole\"",
+     "pinhole, spherical (a panorama), orthographic (parallel rays), fisheye (angle proportional to the "
+     "distance from the middle) or cylindrical (a panorama around up, straight lines up).",
+     scene::kProjectionNames},
 };
 
 constexpr AttributeInfo kPointLight[] = {
@@ -511,7 +517,7 @@ using T = ObjectType;
 constexpr ObjectInfo kObjects[] = {
     {T::Settings, "Settings", C::Settings, false, "How to render: camera, lights, image size.",
      kSettings},
-    {T::Camera, "Camera", C::Camera, false, "A camera (pinhole, lens or spherical).", kCamera},
+    {T::Camera, "Camera", C::Camera, false, "A camera (pinhole, lens, spherical, orthographic, fisheye or cylindrical).", kCamera},
     {T::PointLight, "PointLight", C::Light, false, "A light shining from a point.", kPointLight},
     {T::ParallelLight, "ParallelLight", C::Light, false, "Parallel light, like the sun.",
      kParallelLight},

@@ -431,13 +431,18 @@ struct LightDesc {
     SourceSpan source;
 };
 
-enum class Projection : uint8_t { Pinhole, Spherical };
+enum class Projection : uint8_t { Pinhole, Spherical, Orthographic, Fisheye, Cylindrical };
+/// The names of Projection's values, as scripts spell them, in its order.
+inline constexpr std::string_view kProjectionNames[] = {"pinhole", "spherical", "orthographic", "fisheye",
+                                                        "cylindrical"};
 enum class ApertureShape : uint8_t { Circle, Polygon, Gaussian, Line };
 
 struct CameraDesc {
     glm::dvec3 position{0, 0, -1};
     glm::dvec3 pointing{0, 0, 0};
-    double fov = 60; ///< vertical, degrees
+    double fov = 60; ///< vertical, degrees; fisheye: across its circle; cylindrical: horizontal
+    /// orthographic: the view's width in scene units; 0: the pinhole view's width at `pointing`
+    double width = 0;
     double aperture = 0;
     double focalDistance = 1; ///< default: distance from position to pointing
     ApertureShape apertureShape = ApertureShape::Circle;

@@ -342,12 +342,14 @@ Json settingsJson(const SettingsDesc& s) {
 
 Json cameraJson(const CameraDesc& c) {
     static const char* apertures[] = {"circle", "polygon", "gaussian", "line"};
-    return Json{{"position", vec(c.position)}, {"pointing", vec(c.pointing)}, {"fov", c.fov},
+    Json camera{{"position", vec(c.position)}, {"pointing", vec(c.pointing)}, {"fov", c.fov},
                 {"aperture", c.aperture}, {"focaldistance", c.focalDistance},
                 {"apertureshape", apertures[static_cast<int>(c.apertureShape)]},
                 {"apertureblades", c.apertureBlades}, {"up", vec(c.up)}, {"roll", c.roll},
-                {"projection", c.projection == Projection::Pinhole ? "pinhole" : "spherical"},
+                {"projection", kProjectionNames[static_cast<int>(c.projection)]},
                 {"source", source(c.source)}};
+    if (c.width > 0) camera["width"] = c.width;
+    return camera;
 }
 
 Json lightJson(const LightDesc& l) {

@@ -10,11 +10,13 @@ namespace crt::tracer {
 
 Camera::Camera(const scene::CameraDesc& desc, int width, int height, int dofSamples)
     : position_(desc.position), tanHalfFov_(std::tan(desc.fov * kPi / 360.0)),
-      aspect_(static_cast<double>(width) / height), width_(width), height_(height),
+      aspect_(static_cast<double>(width) / height), halfFov_(desc.fov * kPi / 360.0), width_(width), height_(height),
       projection_(desc.projection), shape_(desc.apertureShape), blades_(desc.apertureBlades),
       lensRadius_(desc.aperture / 1000.0), focalDistance_(desc.focalDistance),
       usesLens_(desc.aperture > 0 && dofSamples > 1) {
     forward_ = glm::normalize(desc.pointing - desc.position);
+    halfViewHeight_ = desc.width > 0 ? desc.width / 2 / aspect_
+                                     : glm::length(desc.pointing - desc.position) * tanHalfFov_;
     Vec3 up = desc.up;
     if (glm::length(glm::cross(up, forward_)) < 1e-12 * glm::length(up)) up = Vec3(0, 0, 1);
     // Left-handed: with y up and z forward, up × forward is +x.
@@ -30,15 +32,41 @@ Camera::Camera(const scene::CameraDesc& desc, int width, int height, int dofSamp
     }
 }
 
+bool Camera::sees(double u, double v) const {
+    if (projection_ != scene::Projection::Fisheye) return true;
+    const double x = (2 * u / width_ - 1) * aspect_, y = 1 - 2 * v / height_;
+    return x * x + y * y <= 1;
+}
+
 Ray Camera::ray(double u, double v) const {
-    if (projection_ == scene::Projection::Spherical) {
-        double longitude = (2 * u / width_ - 1) * kPi;
-        double latitude = (1 - 2 * v / height_) * (kPi / 2);
+    // The image point from the middle: x across, y up, both from -1 to 1.
+    const double x = 2 * u / width_ - 1, y = 1 - 2 * v / height_;
+    switch (projection_) {
+    case scene::Projection::Pinhole: break;
+    case scene::Projection::Spherical: {
+        const double longitude = x * kPi, latitude = y * (kPi / 2);
         Vec3 d = std::cos(latitude) * (std::sin(longitude) * right_ + std::cos(longitude) * forward_) +
                  std::sin(latitude) * up_;
         return {position_, glm::normalize(d)};
     }
-    Vec3 d = forward_ + (2 * u / width_ - 1) * tanHalfFov_ * aspect_ * right_ + (1 - 2 * v / height_) * tanHalfFov_ * up_;
+    case scene::Projection::Orthographic:
+        return {position_ + (x * halfViewHeight_ * aspect_) * right_ + (y * halfViewHeight_) * up_, forward_};
+    case scene::Projection::Fisheye: {
+        // Equidistant: the angle from the view direction grows with the distance from the
+        // middle, fov/2 at the circle, whose diameter is the image's height.
+        const double across = x * aspect_, radius = std::sqrt(across * across + y * y);
+        const double theta = std::min(radius, 1.0) * halfFov_;
+        const Vec3 around = radius > 0 ? (across / radius) * right_ + (y / radius) * up_ : right_;
+        return {position_, glm::normalize(std::sin(theta) * around + std::cos(theta) * forward_)};
+    }
+    case scene::Projection::Cylindrical: {
+        // The angle around `up` across the image, heights straight up, pixels square at the
+        // middle.
+        const double angle = x * halfFov_, height = y * halfFov_ / aspect_;
+        return {position_, glm::normalize(std::sin(angle) * right_ + height * up_ + std::cos(angle) * forward_)};
+    }
+    }
+    Vec3 d = forward_ + x * tanHalfFov_ * aspect_ * right_ + y * tanHalfFov_ * up_;
     return {position_, glm::normalize(d)};
 }
 
@@ -72,7 +100,7 @@ Ray Camera::lensRay(double u, double v, const Vec2& lensSample) const {
     if (along <= 0) return pinhole;
     Vec3 focus = pinhole.origin + pinhole.dir * (focalDistance_ / along);
     Vec2 p = aperturePoint(lensSample) * lensRadius_;
-    Vec3 origin = position_ + p.x * right_ + p.y * up_;
+    Vec3 origin = pinhole.origin + p.x * right_ + p.y * up_;
     return {origin, glm::normalize(focus - origin)};
 }
 

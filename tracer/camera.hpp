@@ -1,4 +1,5 @@
-// The camera of spec §5-§6: pinhole or spherical projection, optional thin lens for depth of field.
+// The camera of spec §5-§6: pinhole, spherical, orthographic, fisheye or cylindrical
+// projection, optional thin lens for depth of field.
 #pragma once
 
 #include "tracer/geometry/ray.hpp"
@@ -12,6 +13,9 @@ public:
 
     /// Whether depth of field is on: aperture > 0 and more than one DOF sample (as the original).
     bool usesLens() const { return usesLens_; }
+    /// Whether the image point (u, v) has a ray: all do but those outside a fisheye's circle,
+    /// which stay black (and transparent).
+    bool sees(double u, double v) const;
     /// The pinhole ray through the continuous image point (u, v), in pixels from the top left.
     Ray ray(double u, double v) const;
     /// The ray from the lens point chosen by `lensSample` (in [0,1)²), aimed at where the
@@ -28,6 +32,8 @@ public:
 private:
     Vec3 position_, forward_, right_, up_;
     double tanHalfFov_, aspect_;
+    double halfFov_;            ///< radians
+    double halfViewHeight_ = 0; ///< orthographic: half the view's height, in scene units
     double width_, height_;
     scene::Projection projection_;
     scene::ApertureShape shape_;

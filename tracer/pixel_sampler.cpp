@@ -78,11 +78,14 @@ void PixelSampler::addPaths(int x, int y, PathPixel& p, int upTo, TraceContext& 
     while (!p.settled && p.paths < upTo) {
         context.rng = SampleRng(settings_.seed, pixelIndex, static_cast<uint64_t>(p.paths));
         const Vec2 offset = context.rng.uniform2();
-        const Ray ray = pathLens_ ? camera_.lensRay(x + offset.x, y + offset.y, context.rng.uniform2())
-                                  : camera_.ray(x + offset.x, y + offset.y);
-        ++context.stats.cameraRays;
         FirstSurface first;
-        const Color c = path_->traceCamera(ray, transparentBackground_, context, sums ? &first : nullptr);
+        Color c(0.0); // black and transparent where the camera has no ray
+        if (camera_.sees(x + offset.x, y + offset.y)) {
+            const Ray ray = pathLens_ ? camera_.lensRay(x + offset.x, y + offset.y, context.rng.uniform2())
+                                      : camera_.ray(x + offset.x, y + offset.y);
+            ++context.stats.cameraRays;
+            c = path_->traceCamera(ray, transparentBackground_, context, sums ? &first : nullptr);
+        }
         if (sums) {
             sums->squares += glm::dvec3(c) * glm::dvec3(c);
             sums->albedo += first.albedo;
@@ -132,6 +135,7 @@ PixelSampler::Color PixelSampler::region(double cx, double cy, double size, int 
 PixelSampler::Color PixelSampler::sample(double u, double v, uint64_t pixelIndex, uint32_t sampleIndex,
                                          TraceContext& context) const {
     context.rng = SampleRng(settings_.seed, pixelIndex, sampleIndex);
+    if (!camera_.sees(u, v)) return Color(0.0); // black and transparent
     if (dofSamples_ <= 1) {
         ++context.stats.cameraRays;
         return integrator_.traceCamera(camera_.ray(u, v), bounces_, transparentBackground_, context);
