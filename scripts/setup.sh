@@ -33,7 +33,7 @@ packages=(
 # where there is none.
 command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 case "${1:-}" in
---bench) packages+=(time libembree-dev) ;; # libembree-dev: bench/embree/ only
+--bench) packages+=(time libembree-dev blender) ;; # libembree-dev: bench/embree/ only; blender: bench/gi/ only
 --fuzz) packages+=(clang libclang-rt-14-dev) ;;
 esac
 
