@@ -22,6 +22,12 @@ double powerHeuristic(double mine, double other) {
 /// Bounces after which Russian roulette may end a path.
 constexpr int kRouletteAfter = 3;
 
+/// The first dimension of the pixel's sequence (SampleRng::sequence) that the choices at
+/// the surfaces of bounce `bounce` (from 0) draw on: each bounce has room for 2^20 of them,
+/// more than its crossings and lights can take, so no two bounces share a dimension, and
+/// the camera's own (the point in the pixel and on the lens) come before.
+uint32_t firstDimensionOf(int bounce) { return static_cast<uint32_t>(bounce + 1) << 20; }
+
 } // namespace
 
 struct PathIntegrator::Vertex {
@@ -193,6 +199,7 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
     double scatterPdf = 0;
     double pathLength = 0;
     int bounce = 0;
+    context.rng.skipTo(firstDimensionOf(bounce));
     for (int crossings = 0;; ++crossings) {
         Vertex v;
         const bool found = scene_.intersect(ray, kInfinity, v.hit, context.scratch, context.stats, departed);
@@ -260,6 +267,7 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
         ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, next.wi), next.wi};
         departed = scene_.departedPrimitive(v.hit, v.si, next.wi);
         ++bounce;
+        context.rng.skipTo(firstDimensionOf(bounce));
         if (bounce > kRouletteAfter) {
             // Russian roulette: a path carrying little light ends with the chance it lacks,
             // and one that goes on carries that much more.

@@ -76,7 +76,7 @@ void PixelSampler::addPaths(int x, int y, PathPixel& p, int upTo, TraceContext& 
     const uint64_t pixelIndex = static_cast<uint64_t>(y) * settings_.width + x;
     upTo = std::min(upTo, settings_.samples);
     while (!p.settled && p.paths < upTo) {
-        context.rng = SampleRng(settings_.seed, pixelIndex, static_cast<uint64_t>(p.paths));
+        context.rng = SampleRng::sequence(settings_.seed, pixelIndex, static_cast<uint32_t>(p.paths));
         const Vec2 offset = context.rng.uniform2();
         FirstSurface first;
         Color c(0.0); // black and transparent where the camera has no ray

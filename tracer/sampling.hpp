@@ -3,6 +3,7 @@
 #pragma once
 
 #include "tracer/geometry/ray.hpp"
+#include "tracer/sobol_sequence.hpp"
 
 #include <cstdint>
 
@@ -16,33 +17,47 @@ constexpr uint64_t mix64(uint64_t z) {
     return z ^ (z >> 31);
 }
 
-/// A small counter-based generator for one pixel sample.
+/// The numbers of one pixel sample: independent ones from a small counter-based generator,
+/// or, for a path, the successive dimensions of the pixel's scrambled Sobol sequence
+/// (sobol_sequence.hpp), so that a pixel's paths spread evenly over each of their choices.
 class SampleRng {
 public:
     SampleRng(uint64_t seed, uint64_t pixel, uint64_t sample)
         : state_(mix64(mix64(mix64(seed) ^ pixel) ^ (sample * 0xD1B54A32D192ED03ull))) {}
 
+    /// Path `path` of a pixel: point `path` of each dimension of its sequence in turn.
+    static SampleRng sequence(uint64_t seed, uint64_t pixel, uint32_t path) {
+        SampleRng rng(seed, pixel, path);
+        rng.sequenced_ = true;
+        rng.pixelSeed_ = static_cast<uint32_t>(mix64(mix64(seed) ^ pixel) >> 32);
+        rng.index_ = path;
+        return rng;
+    }
+    /// Makes dimension `d` of the sequence the next: a path that starts each of its bounces
+    /// at the same dimension draws the same choices from the same dimensions as the pixel's
+    /// other paths, whatever it drew before.
+    void skipTo(uint32_t d) { dimension_ = d; }
+
     uint64_t next() { return mix64(state_ += 0x9E3779B97F4A7C15ull); }
     /// Uniform in [0, 1).
-    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+    double uniform() {
+        if (sequenced_) return sobolPoint1(index_, hashSeed(pixelSeed_, dimension_++));
+        return static_cast<double>(next() >> 11) * 0x1.0p-53;
+    }
     Vec2 uniform2() {
+        if (sequenced_) return sobolPoint2(index_, hashSeed(pixelSeed_, dimension_++));
         double a = uniform();
         return {a, uniform()};
     }
 
 private:
     uint64_t state_;
+    bool sequenced_ = false;
+    uint32_t pixelSeed_ = 0, index_ = 0, dimension_ = 0;
 };
 
 /// Van der Corput radical inverse in base 2.
-inline double radicalInverse2(uint32_t i) {
-    i = (i << 16) | (i >> 16);
-    i = ((i & 0x00FF00FFu) << 8) | ((i & 0xFF00FF00u) >> 8);
-    i = ((i & 0x0F0F0F0Fu) << 4) | ((i & 0xF0F0F0F0u) >> 4);
-    i = ((i & 0x33333333u) << 2) | ((i & 0xCCCCCCCCu) >> 2);
-    i = ((i & 0x55555555u) << 1) | ((i & 0xAAAAAAAAu) >> 1);
-    return static_cast<double>(i) * 0x1.0p-32;
-}
+inline double radicalInverse2(uint32_t i) { return unitFraction(reverseBits(i)); }
 
 /// Point i of an n-point Hammersley set, toroidally shifted by `shift` (Cranley–Patterson
 /// rotation): low discrepancy within a pixel, decorrelated between pixels.

@@ -32,10 +32,13 @@ Estimate estimate(const PixelBuffer& image, int channel, int x0 = 0, int y0 = 0,
     return {mean, std::sqrt(variance / n)};
 }
 
-/// Within three standard errors, and the rounding of the image's floats.
+/// Within three standard errors, and 1/10,000 of the expected value: what the views of a
+/// point take in around it (a degree across, at most 3/100,000 less light at their edges
+/// under the lamps below) and the rounding of the image's floats. (A pixel's paths spread
+/// evenly over their choices, so its standard error can be far below that.)
 void checkWithin3Se(const Estimate& e, double expected) {
     INFO("mean " << e.mean << " standard error " << e.standardError << " expected " << expected);
-    CHECK(std::abs(e.mean - expected) <= 3 * e.standardError + 1e-6 * expected);
+    CHECK(std::abs(e.mean - expected) <= 3 * e.standardError + 1e-4 * expected);
 }
 
 scene::SceneDesc pathScene(const scene::CameraDesc& camera, int samples, int bounces) {
