@@ -645,11 +645,13 @@ Value Interpreter::buildCamera(ObjectBuilder& b) {
     }
     c.fov = b.number("fov", c.fov);
     // A fisheye or a cylindrical panorama may take in every direction around.
-    const bool allAround = c.projection == scene::Projection::Fisheye || c.projection == scene::Projection::Cylindrical;
-    if (c.fov <= 0 || (allAround ? c.fov > 360 : c.fov >= 180)) {
-        fail(b.where("fov"), fmt::format("fov must be in {} degrees{}, not {}", allAround ? "(0, 360]" : "(0, 180)",
-                                         allAround ? fmt::format(" for a {} camera", scene::kProjectionNames[static_cast<int>(c.projection)]) : "",
-                                         formatFloat(c.fov)));
+    const bool allAround =
+        c.projection == scene::Projection::Fisheye || c.projection == scene::Projection::Cylindrical;
+    if (allAround && (c.fov <= 0 || c.fov > 360)) {
+        fail(b.where("fov"), fmt::format("fov must be in (0, 360] degrees for a {} camera, not {}",
+                                         scene::kProjectionNames[static_cast<int>(c.projection)], formatFloat(c.fov)));
+    } else if (!allAround && (c.fov <= 0 || c.fov >= 180)) {
+        fail(b.where("fov"), fmt::format("fov must be in (0, 180) degrees, not {}", formatFloat(c.fov)));
     }
     c.width = b.number("width", c.width);
     if (b.get("width") && c.width <= 0) fail(b.where("width"), "width must be positive");
@@ -688,6 +690,8 @@ Value Interpreter::buildLight(const ObjectBuilder& b) {
     l.ambient = b.number("ambient", l.ambient);
     l.angle = b.number("angle", l.angle);
     l.softness = b.number("softness", l.softness);
+    l.tightness = b.number("tightness", l.tightness);
+    l.shadowless = b.flag("shadowless", l.shadowless);
     if (type == ObjectType::ParallelLight && l.from == l.pointing) {
         fail(b.where("pointing"), "a ParallelLight needs 'from' and 'pointing' to differ");
     }
@@ -701,6 +705,7 @@ Value Interpreter::buildLight(const ObjectBuilder& b) {
         if (l.softness < 0 || l.softness > 1) {
             fail(b.where("softness"), "softness must be between 0 and 1");
         }
+        if (l.tightness < 0) fail(b.where("tightness"), "tightness must not be negative");
     }
     if (type == ObjectType::CylinderLight && l.from == l.to) {
         fail(b.where("to"), "a CylinderLight needs 'from' and 'to' to differ; it has no length");

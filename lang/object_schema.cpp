@@ -88,6 +88,8 @@ constexpr AttributeInfo kPointLight[] = {
     {"attenuation", A::Vec3, false, "vec3(1,0,0)",
      "vec3(c0, c1, c2): intensity / (c0 + c1 d + c2 d^2), d the distance to the light."},
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
+    {"shadowless", A::Bool, false, "false",
+     "Lights everything it reaches as if nothing stood in the way: casts no shadow."},
 };
 
 constexpr AttributeInfo kParallelLight[] = {
@@ -95,6 +97,8 @@ constexpr AttributeInfo kParallelLight[] = {
     {"pointing", A::Vec3, true, "", "A point the light travels towards."},
     {"color", A::Color, true, "", "The light's colour and intensity."},
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
+    {"shadowless", A::Bool, false, "false",
+     "Lights everything it reaches as if nothing stood in the way: casts no shadow."},
 };
 
 constexpr AttributeInfo kSpotLight[] = {
@@ -107,6 +111,10 @@ constexpr AttributeInfo kSpotLight[] = {
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
     {"angle", A::Float, false, "30", "Full cone angle, degrees."},
     {"softness", A::Float, false, "0.2", "Outer fraction of the cone that fades to dark."},
+    {"tightness", A::Float, false, "0",
+     "Intensity times cos^tightness of the angle from the axis: a brighter middle (POV-Ray's)."},
+    {"shadowless", A::Bool, false, "false",
+     "Lights everything it reaches as if nothing stood in the way: casts no shadow."},
 };
 
 constexpr AttributeInfo kAreaLight[] = {
@@ -118,6 +126,8 @@ constexpr AttributeInfo kAreaLight[] = {
     {"attenuation", A::Vec3, false, "vec3(1,0,0)",
      "vec3(c0, c1, c2): intensity / (c0 + c1 d + c2 d^2), d the distance to the light."},
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
+    {"shadowless", A::Bool, false, "false",
+     "Lights everything it reaches as if nothing stood in the way: casts no shadow."},
 };
 
 constexpr AttributeInfo kCylinderLight[] = {
@@ -128,6 +138,8 @@ constexpr AttributeInfo kCylinderLight[] = {
     {"attenuation", A::Vec3, false, "vec3(1,0,0)",
      "vec3(c0, c1, c2): intensity / (c0 + c1 d + c2 d^2), d the distance to the light."},
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
+    {"shadowless", A::Bool, false, "false",
+     "Lights everything it reaches as if nothing stood in the way: casts no shadow."},
 };
 
 constexpr AttributeInfo kMaterial[] = {
@@ -517,7 +529,8 @@ using T = ObjectType;
 constexpr ObjectInfo kObjects[] = {
     {T::Settings, "Settings", C::Settings, false, "How to render: camera, lights, image size.",
      kSettings},
-    {T::Camera, "Camera", C::Camera, false, "A camera (pinhole, lens, spherical, orthographic, fisheye or cylindrical).", kCamera},
+    {T::Camera, "Camera", C::Camera, false,
+     "A camera (pinhole, lens, spherical, orthographic, fisheye or cylindrical).", kCamera},
     {T::PointLight, "PointLight", C::Light, false, "A light shining from a point.", kPointLight},
     {T::ParallelLight, "ParallelLight", C::Light, false, "Parallel light, like the sun.",
      kParallelLight},

@@ -428,6 +428,8 @@ struct LightDesc {
     double ambient = 0;
     double angle = 30;     ///< Spot: full cone, degrees
     double softness = 0.2; ///< Spot
+    double tightness = 0;  ///< Spot: intensity × cos^tightness of the angle from the axis
+    bool shadowless = false; ///< lights without shadow rays: nothing stands in its way
     SourceSpan source;
 };
 

@@ -365,6 +365,7 @@ Json lightJson(const LightDesc& l) {
         light["pointing"] = vec(l.pointing);
         light["angle"] = l.angle;
         light["softness"] = l.softness;
+        if (l.tightness != 0) light["tightness"] = l.tightness;
         break;
     case LightKind::Area:
         light["corner"] = vec(l.origin);
@@ -381,6 +382,7 @@ Json lightJson(const LightDesc& l) {
     // Only when given, so dumps of scenes without it are unchanged.
     if (l.attenuation != glm::dvec3(1, 0, 0)) light["attenuation"] = vec(l.attenuation);
     light["ambient"] = l.ambient;
+    if (l.shadowless) light["shadowless"] = true;
     light["source"] = source(l.source);
     return light;
 }

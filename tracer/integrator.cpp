@@ -196,8 +196,10 @@ Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) cons
             if (nDotL <= 0 || ls.color == Vec3(0.0)) continue;
             Vec3 origin = offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, ls.toLight);
             Ray shadowRay = ls.atInfinity ? Ray{origin, ls.toLight} : Ray{origin, ls.target - origin};
-            Vec3 visible = transmittance(shadowRay, ls.atInfinity ? kInfinity : 1.0,
-                                         scene_.departedPrimitive(sp.hit, sp.si, ls.toLight), context);
+            Vec3 visible = light.shadowless()
+                               ? Vec3(1.0)
+                               : transmittance(shadowRay, ls.atInfinity ? kInfinity : 1.0,
+                                               scene_.departedPrimitive(sp.hit, sp.si, ls.toLight), context);
             if (visible == Vec3(0.0)) continue;
             double falloff = 1;
             if (light.falloff() > 0 && !ls.atInfinity) {

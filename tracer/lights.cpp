@@ -9,7 +9,8 @@ namespace crt::tracer {
 Light::Light(const scene::LightDesc& desc, int shadowSamples)
     : kind_(desc.kind), color_(rgb(desc.color)), ambient_(desc.ambient), falloff_(desc.falloff),
       attenuation_(desc.attenuation),
-      attenuates_(desc.kind != scene::LightKind::Parallel && desc.attenuation != Vec3(1, 0, 0)) {
+      attenuates_(desc.kind != scene::LightKind::Parallel && desc.attenuation != Vec3(1, 0, 0)),
+      tightness_(desc.tightness), shadowless_(desc.shadowless) {
     switch (desc.kind) {
     case scene::LightKind::Point: position_ = desc.origin; break;
     case scene::LightKind::Parallel: direction_ = glm::normalize(desc.pointing - desc.from); break;
@@ -46,9 +47,10 @@ Light::Light(const scene::LightDesc& desc, int shadowSamples)
 double Light::spotFactor(const Vec3& fromLight) const {
     double c = glm::dot(fromLight, direction_);
     if (c <= cosOuter_) return 0;
-    if (c >= cosInner_) return 1;
+    const double tight = tightness_ > 0 ? std::pow(c, tightness_) : 1;
+    if (c >= cosInner_) return tight;
     double x = (c - cosOuter_) / (cosInner_ - cosOuter_);
-    return x * x * (3 - 2 * x); // smoothstep
+    return tight * x * x * (3 - 2 * x); // smoothstep
 }
 
 LightSample Light::sample(const Vec3& point, int index, const Vec2& jitter) const {

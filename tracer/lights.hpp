@@ -52,6 +52,8 @@ public:
         return 1 / (attenuation_.x + distance * (attenuation_.y + distance * attenuation_.z));
     }
     scene::LightKind kind() const { return kind_; }
+    /// Whether it lights without shadow rays (`shadowless`).
+    bool shadowless() const { return shadowless_; }
 
 private:
     double spotFactor(const Vec3& fromLight) const;
@@ -63,7 +65,8 @@ private:
     double ambient_ = 0, falloff_ = 0;
     Vec3 attenuation_{1, 0, 0};
     bool attenuates_ = false;
-    double cosOuter_ = -1, cosInner_ = -1;
+    double cosOuter_ = -1, cosInner_ = -1, tightness_ = 0;
+    bool shadowless_ = false;
     int sampleCount_ = 1, strataX_ = 1, strataY_ = 1;
 };
 

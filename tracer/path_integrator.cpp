@@ -124,8 +124,10 @@ Vec3 PathIntegrator::fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext&
         if (f == Vec3(0.0)) continue;
         const Vec3 origin = offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ls.toLight);
         const Ray shadow = ls.atInfinity ? Ray{origin, ls.toLight} : Ray{origin, ls.target - origin};
-        const Vec3 visible = visibility(shadow, ls.atInfinity ? kInfinity : 1.0,
-                                        scene_.departedPrimitive(v.hit, v.si, ls.toLight), context);
+        const Vec3 visible = light.shadowless()
+                                 ? Vec3(1.0)
+                                 : visibility(shadow, ls.atInfinity ? kInfinity : 1.0,
+                                              scene_.departedPrimitive(v.hit, v.si, ls.toLight), context);
         if (visible == Vec3(0.0)) continue;
         // An area light is also met by the paths the BSDF sends (areaLightsAlong).
         const double weight =
@@ -138,7 +140,8 @@ Vec3 PathIntegrator::fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext&
 Vec3 PathIntegrator::areaLightsAlong(const Ray& ray, double tMax, double scatterPdf, double pathLength) const {
     Vec3 sum(0.0);
     for (const Light& light : lights_) {
-        const double t = light.crossing(ray, tMax);
+        // A shadowless light is met through whatever stands before it, as light sampling sees it.
+        const double t = light.crossing(ray, light.shadowless() ? kInfinity : tMax);
         if (t == kInfinity) continue;
         // The radiance that gives light sampling's estimate: the light spread over the
         // parallelogram, each point lighting as a point light does (so it grows with the

@@ -83,8 +83,10 @@ std::string cameraLiteral(const scene::CameraDesc& camera, bool multiline) {
         if (camera.apertureShape != scene::ApertureShape::Circle)
             attributes.push_back("apertureshape -> " + apertureShape(camera));
     }
-    if (camera.projection != defaults.projection)
-        attributes.push_back(fmt::format("projection -> \"{}\"", scene::kProjectionNames[static_cast<int>(camera.projection)]));
+    if (camera.projection != defaults.projection) {
+        const std::string_view name = scene::kProjectionNames[static_cast<int>(camera.projection)];
+        attributes.push_back(fmt::format("projection -> \"{}\"", name));
+    }
     if (camera.width > 0) attributes.push_back("width -> " + number(camera.width));
     if (multiline) return fmt::format("Camera {{\n{}\n}}", fmt::join(attributes, "\n"));
     return fmt::format("Camera {{ {} }}", fmt::join(attributes, " "));
