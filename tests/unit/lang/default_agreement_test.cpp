@@ -144,6 +144,7 @@ constexpr Usage kUsages[] = {
 /// Defaults documented as a rule rather than a value; each has its own test below.
 constexpr std::pair<ObjectType, std::string_view> kRuleDefaults[] = {
     {ObjectType::Camera, "focaldistance"},     // the distance from position to pointing
+    {ObjectType::Camera, "width"},             // the pinhole view's width at pointing
     {ObjectType::Material, "diffuse"},         // what reflection and refraction leave
     {ObjectType::Material, "reflectivitymin"}, // reflectivity
     {ObjectType::Material, "texture"},         // none
@@ -325,6 +326,16 @@ TEST_CASE("defaults documented as rules follow their rule", "[defaults]") {
         crt::scene::SceneDesc none = evaluate("Settings { }");
         CHECK(none.camera.focalDistance ==
               glm::length(none.camera.pointing - none.camera.position));
+    }
+
+    SECTION("an orthographic camera without a width is as wide as the pinhole view at pointing") {
+        CHECK(objectInfo(ObjectType::Camera)
+                  .attributes[findAttribute(objectInfo(ObjectType::Camera), "width")]
+                  .defaultText == "the pinhole view's width at pointing");
+        // 0 in the description: the tracer's camera derives it (camera_test.cpp checks how).
+        crt::scene::SceneDesc s = evaluate(withAttribute(usageOf(ObjectType::Camera), "projection -> \"orthographic\""));
+        CHECK(s.camera.projection == crt::scene::Projection::Orthographic);
+        CHECK(s.camera.width == 0);
     }
 
     SECTION("diffuse is what reflection and refraction leave, never negative") {
