@@ -1,7 +1,8 @@
 #include "tracer/pass_render.hpp"
 
+#include "tracer/worker_threads.hpp"
+
 #include <atomic>
-#include <thread>
 
 namespace crt::tracer {
 
@@ -75,10 +76,7 @@ int tracePass(const PixelSampler& sampler, const std::vector<Tile>& tiles, const
         }
         stats[index] = context.stats;
     };
-    std::vector<std::thread> threads;
-    for (size_t i = 1; i < stats.size(); ++i) threads.emplace_back(worker, i);
-    worker(0);
-    for (std::thread& t : threads) t.join();
+    runOnThreads(stats.size(), worker);
     unsettled = wanting.load();
     return traced.load();
 }

@@ -3,6 +3,7 @@
 
 #include "tracer/pass_render.hpp"
 #include "tracer/pixel_sampler.hpp"
+#include "tracer/worker_threads.hpp"
 #include "tracer/scene_images.hpp"
 
 #include <fmt/format.h>
@@ -100,10 +101,7 @@ int traceEachTileOnce(const PixelSampler& sampler, const std::vector<Tile>& tile
         }
         stats[index] = context.stats;
     };
-    std::vector<std::thread> threads;
-    for (size_t i = 1; i < stats.size(); ++i) threads.emplace_back(worker, i);
-    worker(0);
-    for (std::thread& t : threads) t.join();
+    runOnThreads(stats.size(), worker);
     return doneTiles.load();
 }
 
