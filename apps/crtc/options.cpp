@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <chrono>
 
 namespace crt::crtc {
 
@@ -559,6 +560,11 @@ tracer::RenderJob renderJob(const Options& options) {
     job.threads = options.threads;
     job.alpha = options.alpha;
     job.aovs = options.aovs;
+    if (options.timeLimit > 0) {
+        const auto limit = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+            std::chrono::duration<double>(options.timeLimit));
+        job.progressive = tracer::ProgressiveRender{std::chrono::steady_clock::now() + limit, {}};
+    }
     return job;
 }
 

@@ -71,7 +71,8 @@ struct ParsedOptions {
 
 ParsedOptions parseOptions(int argc, char** argv);
 
-/// A render job with what the options say of every render: threads, alpha, AOVs.
+/// A render job with what the options say of every render: threads, alpha, AOVs, and a time
+/// limit from now.
 tracer::RenderJob renderJob(const Options& options);
 
 } // namespace crt::crtc

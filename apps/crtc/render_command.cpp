@@ -285,11 +285,6 @@ int renderFrame(const Options& options, const scene::SceneDesc& scene, const Fra
                                  job.target, done, tiles.size());
     }
     render.cancel = &stopRendering;
-    if (options.timeLimit > 0)
-        render.progressive = tracer::ProgressiveRender{
-            std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                   std::chrono::duration<double>(options.timeLimit)),
-            {}};
     render.onTileDone = [&](const tracer::TileResult& result) {
         const tracer::TileResult indexed{result.tile, tileIndex[static_cast<size_t>(result.index)],
                                          result.channels, result.pixels};
