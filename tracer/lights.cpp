@@ -54,8 +54,8 @@ double Light::spotFactor(const Vec3& fromLight) const {
 }
 
 LightSample Light::sample(const Vec3& point, int index, const Vec2& jitter) const {
-    LightSample s;
     if (kind_ == scene::LightKind::Parallel) {
+        LightSample s;
         s.toLight = -direction_;
         s.atInfinity = true;
         s.color = color_;
@@ -72,6 +72,11 @@ LightSample Light::sample(const Vec3& point, int index, const Vec2& jitter) cons
         target = position_ + std::min((index + jitter.x) / sampleCount_, 1.0) * edgeA_;
         color = color_ / static_cast<double>(sampleCount_);
     }
+    return toward(point, target, color);
+}
+
+LightSample Light::toward(const Vec3& point, const Vec3& target, Vec3 color) const {
+    LightSample s;
     Vec3 offset = target - point;
     s.distance = glm::length(offset);
     s.toLight = s.distance > 0 ? offset / s.distance : Vec3(0, 1, 0);
@@ -83,14 +88,8 @@ LightSample Light::sample(const Vec3& point, int index, const Vec2& jitter) cons
 
 LightSample Light::sampleUniformly(const Vec3& point, const Vec2& u) const {
     if (kind_ != scene::LightKind::Area && kind_ != scene::LightKind::Cylinder) return sample(point, 0, u);
-    LightSample s;
     const Vec3 target = position_ + u.x * edgeA_ + (kind_ == scene::LightKind::Area ? u.y : 0.0) * edgeB_;
-    const Vec3 offset = target - point;
-    s.distance = glm::length(offset);
-    s.toLight = s.distance > 0 ? offset / s.distance : Vec3(0, 1, 0);
-    s.target = target;
-    s.color = color_;
-    return s;
+    return toward(point, target, color_);
 }
 
 double Light::crossing(const Ray& ray, double tMax) const {

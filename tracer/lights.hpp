@@ -57,6 +57,8 @@ public:
 
 private:
     double spotFactor(const Vec3& fromLight) const;
+    /// The sample of the point `target` of the light, of colour `color`, seen from `point`.
+    LightSample toward(const Vec3& point, const Vec3& target, Vec3 color) const;
 
     scene::LightKind kind_;
     Vec3 position_{0.0}, direction_{0.0}, edgeA_{0.0}, edgeB_{0.0};

@@ -48,8 +48,6 @@ bool pastDeadline(const RenderJob& job) {
     return job.progressive->deadline && std::chrono::steady_clock::now() >= *job.progressive->deadline;
 }
 
-bool cancelled(const RenderJob& job) { return job.cancel && job.cancel->load(std::memory_order_relaxed); }
-
 /// One pass: each thread takes tiles in turn and adds paths to their pixels, up to `upTo`.
 /// Returns the tiles it went through; `unsettled`, whether a pixel wants more.
 int tracePass(const PixelSampler& sampler, const std::vector<Tile>& tiles, const RenderJob& job, int upTo,
@@ -61,7 +59,7 @@ int tracePass(const PixelSampler& sampler, const std::vector<Tile>& tiles, const
         TraceContext context;
         context.stats = stats[index];
         for (;;) {
-            if (cancelled(job) || (mayStop && pastDeadline(job))) break;
+            if (job.cancelled() || (mayStop && pastDeadline(job))) break;
             const int t = next.fetch_add(1);
             if (t >= tileCount) break;
             const Tile& tile = tiles[static_cast<size_t>(t)];
@@ -109,7 +107,7 @@ int renderInPasses(const PixelSampler& sampler, const std::vector<Tile>& tiles, 
     for (int pass = 0;; ++pass) {
         bool unsettled = false;
         const int traced = tracePass(sampler, tiles, job, pathsAfterPass(pass), pass > 0, state, stats, unsettled);
-        if (cancelled(job)) return 0;
+        if (job.cancelled()) return 0;
         if (traced == 0) break; // stopped before the pass began: the image is the last one shown
         if (job.progressive->onPass) reportPass(tiles, job, pass, state, image);
         if (traced < static_cast<int>(tiles.size()) || !unsettled) break;

@@ -89,7 +89,7 @@ int traceEachTileOnce(const PixelSampler& sampler, const std::vector<Tile>& tile
     auto worker = [&](size_t index) {
         TraceContext context;
         std::vector<float> pixels;
-        while (!(job.cancel && job.cancel->load(std::memory_order_relaxed))) {
+        while (!job.cancelled()) {
             const int tile = job.nextTile ? job.nextTile() : nextTile.fetch_add(1);
             if (tile < 0 || tile >= tileCount) break;
             traceTile(sampler, tiles[static_cast<size_t>(tile)], job, pixels, context);
@@ -217,7 +217,7 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     outcome.renderSeconds = secondsSince(renderStart);
     // A job that hands out its own tiles may trace only some of them: only its cancel says
     // whether it was stopped.
-    outcome.cancelled = job.nextTile ? job.cancel && job.cancel->load()
+    outcome.cancelled = job.nextTile ? job.cancelled()
                                      : outcome.tilesDone < tileCount;
     outcome.ok = !outcome.cancelled;
     std::vector<const scene::IsosurfaceDesc*> seen;

@@ -103,6 +103,8 @@ struct RenderJob {
     /// (writePathPixel); an error under the Whitted integrator.
     AovSet aovs;
 
+    /// Whether the caller has asked it to stop.
+    bool cancelled() const { return cancel && cancel->load(std::memory_order_relaxed); }
     /// Floats a pixel of the tiles: RGB, alpha, the AOVs.
     int channels() const { return tileChannels(alpha, aovs); }
     int colorChannels() const { return tileChannels(alpha, {}); }
