@@ -273,6 +273,7 @@ private:
     Value buildCamera(ObjectBuilder& b);
     Value buildLight(const ObjectBuilder& b);
     Value buildBackground(const ObjectBuilder& b);
+    Value buildFog(ObjectBuilder& b);
     Value buildTexture(ObjectBuilder& b);
     /// Fills scene_.settings; keeps what it names for assembleScene to link, and every value
     /// out of its range in settingsProblems_ (for reportSettingsProblems).
@@ -399,6 +400,7 @@ private:
     std::vector<LightInfo> lightInfo_;
     std::vector<scene::CameraDesc> cameras_;
     std::vector<scene::BackgroundDesc> backgrounds_;
+    std::vector<scene::FogDesc> fogs_;
     const SettingsStmt* settings_ = nullptr;
     /// What Settings names, linked into the scene by assembleScene.
     struct SettingsLinks {
@@ -406,6 +408,7 @@ private:
         const std::vector<Value>* lights = nullptr; ///< Light values, into lights_
         std::optional<Value> background;            ///< a Background or a color
         SourceRange backgroundRange{};
+        std::optional<uint32_t> fog; ///< into fogs_
     } settingsLinks_;
     std::vector<DeferredError> settingsProblems_;
 

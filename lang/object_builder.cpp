@@ -123,6 +123,7 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
     case AttrType::Material:
     case AttrType::Camera:
     case AttrType::Background:
+    case AttrType::Fog:
     case AttrType::LightList:
     case AttrType::Texture:
     case AttrType::Bump: checkReference(a, v, attr.type); return;
@@ -131,6 +132,7 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
     case AttrType::ColorMap:
     case AttrType::MaterialMap: checkMap(a, v, attr.type); return;
     case AttrType::MaterialList: checkMaterialList(a, v); return;
+    case AttrType::PatternList: checkPatternList(a, v); return;
     case AttrType::Solid:
         if (!isSolid(v))
             notSolid(a.value->range, fmt::format("attribute '{}' of {}", a.name, info.name), v);
@@ -277,6 +279,20 @@ void ObjectBuilder::checkMaterialList(const Attribute& a, const Value& v) {
     }
 }
 
+/// A non-empty list of patterns: textures that are neither a bump nor an image.
+void ObjectBuilder::checkPatternList(const Attribute& a, const Value& v) {
+    if (v.kind != ValueKind::List) wrongType(a, v, "a list of patterns");
+    if (v.list->empty()) in.fail(a.value->range, fmt::format("'{}' needs at least one pattern", a.name));
+    for (size_t i = 0; i < v.list->size(); ++i) {
+        const Value& item = (*v.list)[i];
+        if (item.kind != ValueKind::Texture || !isColorTexture(item.objectType) ||
+            item.objectType == ObjectType::Image) {
+            in.fail(itemRange(a.value, i),
+                    fmt::format("item {} must be a pattern (such as Gradient or Bozo), not {}", i + 1, typeName(item)));
+        }
+    }
+}
+
 bool ObjectBuilder::isSolid(const Value& v) const {
     return v.kind == ValueKind::Entity && in.scene_.entities[v.index].solid;
 }
@@ -338,6 +354,9 @@ void ObjectBuilder::checkReference(const Attribute& a, const Value& v, AttrType 
             wrongType(a, v, "a Background or a colour");
         }
         if (v.kind == ValueKind::Color) finite(a, v, 4);
+        return;
+    case AttrType::Fog:
+        if (v.kind != ValueKind::Fog) wrongType(a, v, "a Fog");
         return;
     case AttrType::LightList:
         if (v.kind != ValueKind::List) wrongType(a, v, "a list of lights");

@@ -169,6 +169,7 @@ struct ObjectBuilder {
     void checkChoice(const Attribute& a, const Value& v, const AttributeInfo& attr);
     void checkMap(const Attribute& a, const Value& v, AttrType type);
     void checkMaterialList(const Attribute& a, const Value& v);
+    void checkPatternList(const Attribute& a, const Value& v);
     void checkSolidList(const Attribute& a, const Value& v);
     bool isSolid(const Value& v) const;
     void missing(const AttributeInfo& attr);

@@ -193,13 +193,18 @@ void checkAttenuation(const ObjectBuilder& b, const glm::dvec3& terms) {
 /// A Background takes exactly one mode: a color, a gradient, or an image.
 void checkBackgroundMode(const ObjectBuilder& b) {
     int modes = (b.get("color") ? 1 : 0) + (b.get("horizon") || b.get("sky") ? 1 : 0) +
-                (b.get("image") ? 1 : 0);
+                (b.get("image") ? 1 : 0) + (b.get("pattern") ? 1 : 0) + (b.get("layers") ? 1 : 0);
     if (modes > 1) {
-        b.in.fail(b.typeRange,
-                  "a Background takes exactly one of 'color', 'horizon' + 'sky', or 'image'");
+        b.in.fail(b.typeRange, "a Background takes exactly one of 'color', 'horizon' + 'sky', 'image', "
+                               "'pattern' or 'layers'");
     }
     if (modes == 0) {
-        b.in.fail(b.typeRange, "a Background needs 'color', 'horizon' + 'sky', or 'image'");
+        b.in.fail(b.typeRange,
+                  "a Background needs 'color', 'horizon' + 'sky', 'image', 'pattern' or 'layers'");
+    }
+    if (const Value* pattern = b.get("pattern"); pattern && pattern->objectType == ObjectType::Image) {
+        b.in.fail(b.where("pattern"), "a Background's pattern is read on directions, not an Image; "
+                                      "for a panorama, give 'image'");
     }
     if ((b.get("horizon") != nullptr) != (b.get("sky") != nullptr)) {
         b.in.fail(b.typeRange, "a gradient Background needs both 'horizon' and 'sky'");
@@ -358,6 +363,7 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
     case ObjectCategory::Camera: return buildCamera(b);
     case ObjectCategory::Light: return buildLight(b);
     case ObjectCategory::Background: return buildBackground(b);
+    case ObjectCategory::Fog: return buildFog(b);
     case ObjectCategory::Texture: return buildTexture(b);
     case ObjectCategory::BlobComponent: return buildBlobComponent(b);
     case ObjectCategory::Spline: return buildSpline(b);
@@ -692,6 +698,8 @@ Value Interpreter::buildLight(const ObjectBuilder& b) {
     l.softness = b.number("softness", l.softness);
     l.tightness = b.number("tightness", l.tightness);
     l.shadowless = b.flag("shadowless", l.shadowless);
+    l.circular = b.flag("circular", l.circular);
+    l.orient = b.flag("orient", l.orient);
     if (type == ObjectType::ParallelLight && l.from == l.pointing) {
         fail(b.where("pointing"), "a ParallelLight needs 'from' and 'pointing' to differ");
     }
@@ -729,6 +737,12 @@ Value Interpreter::buildBackground(const ObjectBuilder& b) {
         bg.kind = scene::BackgroundKind::Gradient;
         bg.horizon = b.color("horizon", bg.horizon);
         bg.sky = b.color("sky", bg.sky);
+    } else if (const Value* pattern = b.get("pattern")) {
+        bg.kind = scene::BackgroundKind::Pattern;
+        bg.layers.push_back(scene_.textures[pattern->index]);
+    } else if (const Value* layers = b.get("layers")) {
+        bg.kind = scene::BackgroundKind::Pattern;
+        for (const Value& layer : *layers->list) bg.layers.push_back(scene_.textures[layer.index]);
     } else {
         bg.kind = scene::BackgroundKind::Image;
         bg.image = b.text("image", bg.image);
@@ -739,6 +753,31 @@ Value Interpreter::buildBackground(const ObjectBuilder& b) {
     backgrounds_.push_back(std::move(bg));
     return Value::object(ValueKind::Background, b.info.type,
                          static_cast<uint32_t>(backgrounds_.size() - 1));
+}
+
+Value Interpreter::buildFog(ObjectBuilder& b) {
+    scene::FogDesc fog;
+    fog.color = b.color("color", fog.color);
+    fog.distance = b.number("distance", fog.distance);
+    if (!(fog.distance > 0)) fail(b.where("distance"), "a Fog's distance must be positive");
+    fog.filter = b.number("filter", fog.filter);
+    if (fog.filter < 0 || fog.filter > 1) fail(b.where("filter"), "filter must be between 0 and 1");
+    fog.falloff = b.number("falloff", fog.falloff);
+    if (b.get("falloff") && !(fog.falloff > 0)) fail(b.where("falloff"), "a Fog's falloff must be positive");
+    for (std::string_view groundOnly : {"altitude", "up"}) {
+        if (b.get(groundOnly) && !b.get("falloff"))
+            fail(b.where(groundOnly), fmt::format("'{}' only applies to ground fog, which 'falloff' makes", groundOnly));
+    }
+    fog.altitude = b.number("altitude", fog.altitude);
+    b.nonZeroVector("up", "it is the direction heights are measured along");
+    fog.up = glm::normalize(b.vec("up", fog.up));
+    fog.turbulence = b.floatOrVec("turbulence", fog.turbulence);
+    fog.turbulenceDepth = b.number("turbulencedepth", fog.turbulenceDepth);
+    if (fog.turbulenceDepth < 0 || fog.turbulenceDepth > 1)
+        fail(b.where("turbulencedepth"), "turbulencedepth must be between 0 and 1");
+    fog.source = span(b.range);
+    fogs_.push_back(fog);
+    return Value::object(ValueKind::Fog, b.info.type, static_cast<uint32_t>(fogs_.size() - 1));
 }
 
 // A texture's kind is its object type's place after Checker: the two lists keep one order.
@@ -890,6 +929,7 @@ void Interpreter::buildSettings(const ObjectBuilder& b) {
 void Interpreter::recordSettingsLinks(const ObjectBuilder& b) {
     if (const Value* camera = b.get("camera")) settingsLinks_.camera = camera->index;
     if (const Value* lights = b.get("lights")) settingsLinks_.lights = lights->list;
+    if (const Value* fog = b.get("fog")) settingsLinks_.fog = fog->index;
     if (const Value* background = b.get("background")) {
         settingsLinks_.background = *background;
         settingsLinks_.backgroundRange = b.where("background");

@@ -30,6 +30,7 @@ constexpr AttributeInfo kSettings[] = {
     {"lights", A::LightList, false, "[]", "The lights that shine; others are ignored."},
     {"background", A::Background, false, "rgb(1,1,1)",
      "What rays that hit nothing see: a Background or a colour."},
+    {"fog", A::Fog, false, "none", "Fog over the scene, outside every solid."},
     {"gamma", A::Gamma, false, "1.0",
      "Output encoding: c^(1/gamma) per channel, or \"srgb\" for the sRGB curve."},
     {"supersampling", A::Int, false, "1", "n: an n x n grid of samples per pixel."},
@@ -128,6 +129,9 @@ constexpr AttributeInfo kAreaLight[] = {
     {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
     {"shadowless", A::Bool, false, "false",
      "Lights everything it reaches as if nothing stood in the way: casts no shadow."},
+    {"circular", A::Bool, false, "false", "The ellipse inscribed in the parallelogram: a round lamp."},
+    {"orient", A::Bool, false, "false",
+     "Turned about its centre to face each lit point, its edges keeping their lengths: a sphere-like lamp."},
 };
 
 constexpr AttributeInfo kCylinderLight[] = {
@@ -187,6 +191,23 @@ constexpr AttributeInfo kBackground[] = {
     {"sky", A::Color, false, "", "Gradient colour straight up and down (with horizon)."},
     {"image", A::String, false, "", "An equirectangular panorama."},
     {"angle", A::Float, false, "0", "Yaw of the panorama, radians."},
+    {"pattern", A::Texture, false, "",
+     "A pattern read on the ray's direction (POV-Ray's sky_sphere); black shows through its alpha."},
+    {"layers", A::PatternList, false, "",
+     "[bottom, ..., top]: patterns read on the ray's direction, each one's alpha showing those under it."},
+};
+
+constexpr AttributeInfo kFog[] = {
+    {"color", A::Color, true, "", "The fog's colour; its alpha a lets 1 - a of what is behind always through."},
+    {"distance", A::Float, true, "", "How far one sees 1/e of what is behind (a constant fog's)."},
+    {"filter", A::Float, false, "0", "0 to 1: how much of what is behind takes the fog's colour."},
+    {"falloff", A::Float, false, "none",
+     "Makes ground fog: density 1/(1 + h^2) at h times this above the altitude (POV-Ray's fog_alt)."},
+    {"altitude", A::Float, false, "0", "Ground fog: the height along up to which the fog is dense."},
+    {"up", A::Vec3, false, "vec3(0, 1, 0)", "Ground fog: the direction heights are measured along."},
+    {"turbulence", A::Turbulence, false, "0",
+     "How the fog thins in places: the scale of the noise that thins it (per axis); 0: evenly."},
+    {"turbulencedepth", A::Float, false, "0.5", "0 to 1: how much of the fog the noise may take away."},
 };
 
 #define CRT_MATERIAL_ATTR                                                                          \
@@ -546,6 +567,8 @@ constexpr ObjectInfo kObjects[] = {
      "Materials in layers, the ones below showing through each layer's alpha.", kLayered},
     {T::Background, "Background", C::Background, false, "What rays that hit nothing see.",
      kBackground},
+    {T::Fog, "Fog", C::Fog, false,
+     "Fog over the scene: constant, or ground fog thinning above an altitude (POV-Ray's fog).", kFog},
     {T::Sphere, "Sphere", C::Entity, true, "A sphere (solid).", kSphere},
     {T::Box, "Box", C::Entity, true, "An axis-aligned box (solid).", kBox},
     {T::Plane, "Plane", C::Entity, true,
@@ -727,6 +750,7 @@ std::string_view attrTypeName(AttrType type) {
     case A::Material: return "material";
     case A::Camera: return "camera";
     case A::Background: return "background or colour";
+    case A::Fog: return "fog";
     case A::LightList: return "list of lights";
     case A::Texture: return "texture";
     case A::Bump: return "bump texture";
@@ -736,6 +760,7 @@ std::string_view attrTypeName(AttrType type) {
     case A::Turbulence: return "float or vec3";
     case A::MaterialMap: return "material map";
     case A::MaterialList: return "list of materials";
+    case A::PatternList: return "list of patterns";
     case A::Solid: return "solid";
     case A::Entity: return "entity";
     case A::SolidList: return "list of solids";

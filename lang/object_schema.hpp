@@ -22,6 +22,7 @@ enum class ObjectType : uint8_t {
     MaterialMap,
     Layered,
     Background,
+    Fog,
     Sphere,
     Box,
     Plane,
@@ -92,6 +93,7 @@ enum class ObjectCategory : uint8_t {
     Light,
     Material,
     Background,
+    Fog,
     Entity,
     Texture,
     BlobComponent, ///< a part of a Blob's field
@@ -110,6 +112,7 @@ enum class AttrType : uint8_t {
     Material,
     Camera,
     Background,        ///< a Background or a color
+    Fog,               ///< a Fog
     LightList,         ///< a list of lights
     Texture,           ///< a pattern or Image texture
     Bump,              ///< a NoiseBump or ImageBump
@@ -119,6 +122,7 @@ enum class AttrType : uint8_t {
     Turbulence,        ///< a float (the same on every axis) or a vec3
     MaterialMap,       ///< a list of [value, material] pairs
     MaterialList,      ///< a list of materials
+    PatternList,       ///< a list of at least one pattern (no Image, no bump)
     Solid,             ///< an entity usable in CSG
     Entity,            ///< any entity but a mesh
     SolidList,         ///< a list of at least one such entity

@@ -27,6 +27,7 @@ std::string_view kindName(ValueKind kind) {
     case ValueKind::Light: return "light";
     case ValueKind::Camera: return "camera";
     case ValueKind::Background: return "background";
+    case ValueKind::Fog: return "fog";
     case ValueKind::Texture: return "texture";
     case ValueKind::BlobComponent: return "blob component";
     case ValueKind::Spline: return "spline";

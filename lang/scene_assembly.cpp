@@ -95,6 +95,7 @@ void Interpreter::linkSettings() {
             scene_.background = backgrounds_[background->index];
         }
     }
+    if (settingsLinks_.fog) scene_.fog = fogs_[*settingsLinks_.fog];
 }
 
 void Interpreter::keepReachable() {

@@ -31,6 +31,7 @@ enum class ValueKind : uint8_t {
     Light,
     Camera,
     Background,
+    Fog,
     Texture,
     BlobComponent, ///< a BlobSphere or BlobCylinder, for a Blob's components
     Spline,        ///< a Spline, read with spline(s, t)

@@ -81,6 +81,7 @@ bool objectFits(AttrType type, const ObjectInfo& info) {
     case AttrType::Material: return info.category == ObjectCategory::Material;
     case AttrType::Camera: return info.type == ObjectType::Camera;
     case AttrType::Background: return info.type == ObjectType::Background;
+    case AttrType::Fog: return info.type == ObjectType::Fog;
     case AttrType::Texture: return isColorTexture(info.type);
     case AttrType::Bump: return isBumpTexture(info.type);
     case AttrType::Solid: return info.category == ObjectCategory::Entity && info.solid;
@@ -106,14 +107,15 @@ int typeFit(AttrType want, const std::string& type) {
     case AttrType::Background:
         if (type == "colour") return 0;
         [[fallthrough]];
-    case AttrType::Material: case AttrType::Camera: case AttrType::Texture: case AttrType::Bump:
-    case AttrType::Solid: case AttrType::Box: case AttrType::Entity:
+    case AttrType::Material: case AttrType::Camera: case AttrType::Fog: case AttrType::Texture:
+    case AttrType::Bump: case AttrType::Solid: case AttrType::Box: case AttrType::Entity:
         return object != ObjectType::Count && objectFits(want, objectInfo(object)) ? 0 : -1;
     case AttrType::Gamma: return type == "float" || type == "int" || type == "string" ? 0 : -1;
     case AttrType::Aperture: return type == "int" || type == "string" ? 0 : -1;
     case AttrType::ColorMap:
     case AttrType::MaterialMap:
     case AttrType::MaterialList:
+    case AttrType::PatternList:
     case AttrType::SolidList:
     case AttrType::PointList:
     case AttrType::BlobComponentList:
@@ -355,6 +357,10 @@ private:
         case AttrType::MaterialList:
             add({"[…, …]", CompletionKind::Snippet, "layers, bottom first", "",
                  "[Material { ${1} }, Material { ${2} }]", true, "0"});
+            break;
+        case AttrType::PatternList:
+            add({"[…, …]", CompletionKind::Snippet, "layers, bottom first", "",
+                 "[Gradient { ${1} }, Bozo { ${2} }]", true, "0"});
             break;
         default: break;
         }

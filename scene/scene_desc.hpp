@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -430,6 +431,9 @@ struct LightDesc {
     double softness = 0.2; ///< Spot
     double tightness = 0;  ///< Spot: intensity × cos^tightness of the angle from the axis
     bool shadowless = false; ///< lights without shadow rays: nothing stands in its way
+    bool circular = false;   ///< Area: the ellipse inscribed in the parallelogram
+    /// Area: turned about its centre to face each lit point, its edges keeping their lengths
+    bool orient = false;
     SourceSpan source;
 };
 
@@ -455,7 +459,7 @@ struct CameraDesc {
     SourceSpan source;
 };
 
-enum class BackgroundKind : uint8_t { Solid, Gradient, Image };
+enum class BackgroundKind : uint8_t { Solid, Gradient, Image, Pattern };
 
 struct BackgroundDesc {
     BackgroundKind kind = BackgroundKind::Solid;
@@ -465,6 +469,27 @@ struct BackgroundDesc {
     std::string image;         ///< as written in the script
     std::string resolvedImage; ///< the path found on disk, or "" if not found
     double angle = 0;          ///< yaw, radians
+    /// Pattern: read on the ray's unit direction, bottom first; each one's colour alpha shows
+    /// those under it, and black shows under them all (POV-Ray's sky_sphere).
+    std::vector<TextureDesc> layers;
+    SourceSpan source;
+};
+
+/// Fog over the whole scene, between a ray's origin and what it meets outside every solid:
+/// what is behind is seen by exp(−∫density/distance), and the fog's colour fills the rest.
+struct FogDesc {
+    Color color{0, 0, 0, 1}; ///< alpha a: at least 1 − a of what is behind is always seen
+    double distance = 1;     ///< where a constant fog lets 1/e through
+    double filter = 0;       ///< how much of what is behind takes the fog's colour
+    /// Ground fog when above 0: density 1 up to `altitude` along `up`, and 1/(1 + h²) at
+    /// h·falloff above it (POV-Ray's fog_type 2, with fog_offset and fog_alt); 0: density 1
+    /// everywhere.
+    double falloff = 0;
+    double altitude = 0;
+    glm::dvec3 up{0, 1, 0}; ///< unit length
+    /// How the fog thins and thickens: the point's scale before noise is read; 0: evenly.
+    glm::dvec3 turbulence{0.0};
+    double turbulenceDepth = 0.5; ///< how much of the depth the noise may take away
     SourceSpan source;
 };
 
@@ -556,6 +581,7 @@ struct SceneDesc {
     CameraDesc camera;
     std::vector<LightDesc> lights; ///< the lights of Settings.lights, in order
     BackgroundDesc background;
+    std::optional<FogDesc> fog;
     std::vector<MaterialDesc> materials;
     std::vector<FinishDesc> finishes; ///< shared by materials
     std::vector<TextureDesc> textures;

@@ -383,9 +383,13 @@ Json lightJson(const LightDesc& l) {
     if (l.attenuation != glm::dvec3(1, 0, 0)) light["attenuation"] = vec(l.attenuation);
     light["ambient"] = l.ambient;
     if (l.shadowless) light["shadowless"] = true;
+    if (l.circular) light["circular"] = true;
+    if (l.orient) light["orient"] = true;
     light["source"] = source(l.source);
     return light;
 }
+
+Json textureJson(const TextureDesc& x);
 
 Json backgroundJson(const BackgroundDesc& b) {
     switch (b.kind) {
@@ -394,8 +398,20 @@ Json backgroundJson(const BackgroundDesc& b) {
         return Json{{"type", "gradient"}, {"horizon", color(b.horizon)}, {"sky", color(b.sky)}};
     case BackgroundKind::Image:
         return Json{{"type", "image"}, {"image", b.image}, {"resolvedImage", b.resolvedImage}, {"angle", b.angle}};
+    case BackgroundKind::Pattern: {
+        Json layers = Json::array();
+        for (const TextureDesc& t : b.layers) layers.push_back(textureJson(t));
+        return Json{{"type", "pattern"}, {"layers", std::move(layers)}};
+    }
     }
     return Json();
+}
+
+Json fogJson(const FogDesc& f) {
+    return Json{{"color", color(f.color)}, {"distance", f.distance}, {"filter", f.filter},
+                {"falloff", f.falloff}, {"altitude", f.altitude}, {"up", vec(f.up)},
+                {"turbulence", vec(f.turbulence)}, {"turbulencedepth", f.turbulenceDepth},
+                {"source", source(f.source)}};
 }
 
 Json materialJson(const MaterialDesc& material, const FinishDesc& m) {
@@ -523,6 +539,7 @@ std::string sceneToJson(const SceneDesc& scene, int indent) {
     Json& lights = root["lights"] = Json::array();
     for (const LightDesc& l : scene.lights) lights.push_back(lightJson(l));
     root["background"] = backgroundJson(scene.background);
+    if (scene.fog) root["fog"] = fogJson(*scene.fog);
     Json& materials = root["materials"] = Json::array();
     for (const MaterialDesc& m : scene.materials) materials.push_back(materialJson(m, scene.finishOf(m)));
     Json& textures = root["textures"] = Json::array();

@@ -10,7 +10,9 @@ namespace crt::tracer {
 
 Background::Background(const scene::BackgroundDesc& desc, const Image* panorama)
     : kind_(desc.kind), color_(rgb(desc.color)), horizon_(rgb(desc.horizon)), sky_(rgb(desc.sky)),
-      panorama_(panorama), angle_(desc.angle) {}
+      panorama_(panorama), angle_(desc.angle) {
+    for (const scene::TextureDesc& layer : desc.layers) layers_.emplace_back(layer, nullptr);
+}
 
 Vec3 Background::radiance(const Vec3& d) const {
     switch (kind_) {
@@ -24,8 +26,20 @@ Vec3 Background::radiance(const Vec3& d) const {
         const Vec2 uv = panoramaCoordinates(d);
         return panorama_->bilinear(uv.x, uv.y, false);
     }
+    case scene::BackgroundKind::Pattern: return layered(d);
     }
     return color_;
+}
+
+Vec3 Background::layered(const Vec3& d) const {
+    // From the top down: each layer adds its colour where its alpha covers what is left.
+    Vec3 sum(0.0), uncovered(1.0);
+    for (auto layer = layers_.rbegin(); layer != layers_.rend(); ++layer) {
+        const Vec4 c = layer->color(d, Vec2(0.0), d, MappingAxis{});
+        sum += Vec3(c) * c.a * uncovered;
+        uncovered *= 1 - c.a;
+    }
+    return sum;
 }
 
 Vec2 Background::panoramaCoordinates(const Vec3& d) const {

@@ -1,8 +1,12 @@
-// What a ray that leaves the scene sees: a color, a sky gradient or a panorama (spec §5).
+// What a ray that leaves the scene sees: a color, a sky gradient, a panorama or layers of
+// patterns (spec §5).
 #pragma once
 
 #include "tracer/image.hpp"
+#include "tracer/texture.hpp"
 #include "scene/scene_desc.hpp"
+
+#include <vector>
 
 namespace crt::tracer {
 
@@ -23,10 +27,14 @@ public:
     Vec3 panoramaDirection(const Vec2& uv) const;
 
 private:
+    /// The pattern layers' colour along d.
+    Vec3 layered(const Vec3& d) const;
+
     scene::BackgroundKind kind_;
     Vec3 color_, horizon_, sky_;
     const Image* panorama_;
     double angle_;
+    std::vector<Texture> layers_; ///< bottom first
 };
 
 } // namespace crt::tracer

@@ -59,9 +59,9 @@ struct Integrator::ShadingPoint {
 };
 
 Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& settings,
-                       const std::vector<Light>& lights, const Background& background,
+                       const std::vector<Light>& lights, const Background& background, const Fog* fog,
                        const std::vector<Texture>& textures)
-    : scene_(scene), settings_(settings), lights_(lights), background_(background), textures_(textures),
+    : scene_(scene), settings_(settings), lights_(lights), background_(background), fog_(fog), textures_(textures),
       mixer_(scene.materials, scene.blends, textures_),
       ambient_(rgb(settings.ambient)), reflectionLimit_(settings.reflectionLimit()),
       refractionLimit_(settings.refractionLimit()) {
@@ -109,6 +109,8 @@ Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t med
         Vec3 a = rgb(scene_.materials[medium].absorption);
         for (int i = 0; i < 3; ++i)
             if (a[i] > 0) color[i] *= std::exp(-a[i] * distance);
+    } else if (fog_) {
+        color = fog_->along(ray, distance).seen(color);
     }
     return color;
 }
@@ -118,7 +120,8 @@ glm::dvec4 Integrator::traceCamera(const Ray& ray, int depth, bool transparentBa
     if (!transparentBackground) return {trace(ray, depth, 0, -1, context), 1};
     Hit hit;
     if (!scene_.intersect(ray, kInfinity, hit, context.scratch, context.stats)) return glm::dvec4(0);
-    return {shade(ray, hit, depth, 0, -1, context), 1};
+    const Vec3 color = shade(ray, hit, depth, 0, -1, context);
+    return {fog_ ? fog_->along(ray, hit.t).seen(color) : color, 1};
 }
 
 Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "tracer/background.hpp"
+#include "tracer/fog.hpp"
 #include "tracer/lights.hpp"
 #include "tracer/material_mix.hpp"
 #include "tracer/render_scene.hpp"
@@ -47,7 +48,7 @@ class Integrator {
 public:
     /// Reads the scene, lights, background and textures while it lives.
     Integrator(const RenderScene& scene, const scene::SettingsDesc& settings, const std::vector<Light>& lights,
-               const Background& background, const std::vector<Texture>& textures);
+               const Background& background, const Fog* fog, const std::vector<Texture>& textures);
 
     /// The color seen along `ray` (unit direction) with `depth` reflections/refractions left
     /// (besides each kind's own limit, counted in `context`);
@@ -86,6 +87,7 @@ private:
     const scene::SettingsDesc& settings_;
     const std::vector<Light>& lights_;
     const Background& background_;
+    const Fog* fog_; ///< null: no fog
     const std::vector<Texture>& textures_;
     MaterialMixer mixer_;
     SceneFeatures features_;

@@ -1,6 +1,8 @@
 // Point, parallel, spot, area and cylinder lights.
 #include "tracer/lights.hpp"
 
+#include "tracer/sampling.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -10,7 +12,8 @@ Light::Light(const scene::LightDesc& desc, int shadowSamples)
     : kind_(desc.kind), color_(rgb(desc.color)), ambient_(desc.ambient), falloff_(desc.falloff),
       attenuation_(desc.attenuation),
       attenuates_(desc.kind != scene::LightKind::Parallel && desc.attenuation != Vec3(1, 0, 0)),
-      tightness_(desc.tightness), shadowless_(desc.shadowless) {
+      tightness_(desc.tightness), shadowless_(desc.shadowless), circular_(desc.circular),
+      orient_(desc.orient) {
     switch (desc.kind) {
     case scene::LightKind::Point: position_ = desc.origin; break;
     case scene::LightKind::Parallel: direction_ = glm::normalize(desc.pointing - desc.from); break;
@@ -66,13 +69,44 @@ LightSample Light::sample(const Vec3& point, int index, const Vec2& jitter) cons
     if (kind_ == scene::LightKind::Area) {
         int sx = index % strataX_, sy = index / strataX_;
         double a = (sx + jitter.x) / strataX_, b = (sy + jitter.y) / strataY_;
-        target = position_ + std::min(a, 1.0) * edgeA_ + std::min(b, 1.0) * edgeB_;
+        target = areaPoint(areaFrame(point), std::min(a, 1.0), std::min(b, 1.0));
         color = color_ / static_cast<double>(sampleCount_);
     } else if (kind_ == scene::LightKind::Cylinder) {
         target = position_ + std::min((index + jitter.x) / sampleCount_, 1.0) * edgeA_;
         color = color_ / static_cast<double>(sampleCount_);
     }
     return toward(point, target, color);
+}
+
+Light::AreaFrame Light::areaFrame(const Vec3& point) const {
+    if (!orient_) return {position_, edgeA_, edgeB_, areaNormal_};
+    // Turned about its centre so that its normal points at `point`: the edges keep their
+    // lengths and, as nearly as they can, their directions.
+    const Vec3 center = position_ + 0.5 * (edgeA_ + edgeB_);
+    const Vec3 toPoint = point - center;
+    const double distance = glm::length(toPoint);
+    if (distance == 0) return {position_, edgeA_, edgeB_, areaNormal_};
+    const Vec3 facing = toPoint / distance;
+    Vec3 alongA = edgeA_ - glm::dot(edgeA_, facing) * facing;
+    if (glm::dot(alongA, alongA) < 1e-12 * glm::dot(edgeA_, edgeA_))
+        alongA = glm::cross(facing, std::abs(facing.x) > 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0));
+    alongA = glm::normalize(alongA);
+    const Vec3 alongB = glm::cross(facing, alongA);
+    AreaFrame frame;
+    frame.edgeA = alongA * glm::length(edgeA_);
+    frame.edgeB = alongB * glm::length(edgeB_);
+    frame.corner = center - 0.5 * (frame.edgeA + frame.edgeB);
+    frame.normal = glm::cross(frame.edgeA, frame.edgeB);
+    return frame;
+}
+
+Vec3 Light::areaPoint(const AreaFrame& frame, double a, double b) const {
+    if (circular_) {
+        const Vec2 disc = concentricDisc({a, b});
+        a = 0.5 * (disc.x + 1);
+        b = 0.5 * (disc.y + 1);
+    }
+    return frame.corner + a * frame.edgeA + b * frame.edgeB;
 }
 
 LightSample Light::toward(const Vec3& point, const Vec3& target, Vec3 color) const {
@@ -88,26 +122,30 @@ LightSample Light::toward(const Vec3& point, const Vec3& target, Vec3 color) con
 
 LightSample Light::sampleUniformly(const Vec3& point, const Vec2& u) const {
     if (kind_ != scene::LightKind::Area && kind_ != scene::LightKind::Cylinder) return sample(point, 0, u);
-    const Vec3 target = position_ + u.x * edgeA_ + (kind_ == scene::LightKind::Area ? u.y : 0.0) * edgeB_;
+    const Vec3 target = kind_ == scene::LightKind::Area ? areaPoint(areaFrame(point), u.x, u.y)
+                                                        : position_ + u.x * edgeA_;
     return toward(point, target, color_);
 }
 
 double Light::crossing(const Ray& ray, double tMax) const {
     if (kind_ != scene::LightKind::Area) return kInfinity;
-    const double facing = glm::dot(areaNormal_, ray.dir);
+    const AreaFrame frame = areaFrame(ray.origin);
+    const double facing = glm::dot(frame.normal, ray.dir);
     if (facing == 0) return kInfinity;
-    const double t = glm::dot(areaNormal_, position_ - ray.origin) / facing;
+    const double t = glm::dot(frame.normal, frame.corner - ray.origin) / facing;
     if (!(t > 0 && t < tMax)) return kInfinity;
     // The point's coordinates along the edges: p = a·edgeA + b·edgeB.
-    const Vec3 p = ray.origin + t * ray.dir - position_;
-    const double squared = glm::dot(areaNormal_, areaNormal_);
-    const double a = glm::dot(glm::cross(p, edgeB_), areaNormal_) / squared;
-    const double b = glm::dot(glm::cross(edgeA_, p), areaNormal_) / squared;
+    const Vec3 p = ray.origin + t * ray.dir - frame.corner;
+    const double squared = glm::dot(frame.normal, frame.normal);
+    const double a = glm::dot(glm::cross(p, frame.edgeB), frame.normal) / squared;
+    const double b = glm::dot(glm::cross(frame.edgeA, p), frame.normal) / squared;
+    if (circular_) return (2 * a - 1) * (2 * a - 1) + (2 * b - 1) * (2 * b - 1) <= 1 ? t : kInfinity;
     return a >= 0 && a <= 1 && b >= 0 && b <= 1 ? t : kInfinity;
 }
 
-double Light::areaPdf(const Vec3& toLight, double distance) const {
-    const double projected = std::abs(glm::dot(areaNormal_, toLight)); // area · |cos θ|
+double Light::areaPdf(const Vec3& point, const Vec3& toLight, double distance) const {
+    // area · |cos θ|; the inscribed ellipse has π/4 of the parallelogram's area.
+    const double projected = std::abs(glm::dot(areaFrame(point).normal, toLight)) * (circular_ ? kPi / 4 : 1.0);
     return projected > 0 ? distance * distance / projected : kInfinity;
 }
 

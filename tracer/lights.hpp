@@ -38,9 +38,9 @@ public:
     bool hasArea() const { return kind_ == scene::LightKind::Area; }
     /// Where `ray` crosses an area light's parallelogram within (0, tMax), or kInfinity.
     double crossing(const Ray& ray, double tMax) const;
-    /// The solid-angle density of sampleUniformly's points of an area light at `distance`
-    /// along the unit direction `toLight`: d² / (area · |cos θ|).
-    double areaPdf(const Vec3& toLight, double distance) const;
+    /// The solid-angle density of sampleUniformly's points of an area light seen from
+    /// `point`, at `distance` along the unit direction `toLight`: d² / (area · |cos θ|).
+    double areaPdf(const Vec3& point, const Vec3& toLight, double distance) const;
 
     Vec3 color() const { return color_; }
     double ambient() const { return ambient_; }
@@ -56,6 +56,15 @@ public:
     bool shadowless() const { return shadowless_; }
 
 private:
+    /// An area light's parallelogram as seen from `point` (turned to face it when `orient`).
+    struct AreaFrame {
+        Vec3 corner, edgeA, edgeB;
+        Vec3 normal; ///< edgeA × edgeB: as long as the parallelogram's area
+    };
+    AreaFrame areaFrame(const Vec3& point) const;
+    /// The point of the area light at (a, b) in [0,1]² of `frame`: its parallelogram's, or
+    /// with `circular` the inscribed ellipse's (the square mapped onto the disc).
+    Vec3 areaPoint(const AreaFrame& frame, double a, double b) const;
     double spotFactor(const Vec3& fromLight) const;
     /// The sample of the point `target` of the light, of colour `color`, seen from `point`.
     LightSample toward(const Vec3& point, const Vec3& target, Vec3 color) const;
@@ -69,6 +78,7 @@ private:
     bool attenuates_ = false;
     double cosOuter_ = -1, cosInner_ = -1, tightness_ = 0;
     bool shadowless_ = false;
+    bool circular_ = false, orient_ = false;
     int sampleCount_ = 1, strataX_ = 1, strataY_ = 1;
 };
 

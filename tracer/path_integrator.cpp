@@ -38,9 +38,9 @@ struct PathIntegrator::Vertex {
 };
 
 PathIntegrator::PathIntegrator(const RenderScene& scene, const scene::SettingsDesc& settings,
-                               const std::vector<Light>& lights, const Background& background,
+                               const std::vector<Light>& lights, const Background& background, const Fog* fog,
                                const std::vector<Texture>& textures)
-    : scene_(scene), settings_(settings), lights_(lights), background_(background), textures_(textures),
+    : scene_(scene), settings_(settings), lights_(lights), background_(background), fog_(fog), textures_(textures),
       mixer_(scene.materials, scene.blends, textures), emitters_(scene), environment_(background),
       hasAreaLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.hasArea(); })) {}
 
@@ -131,7 +131,8 @@ Vec3 PathIntegrator::fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext&
         if (visible == Vec3(0.0)) continue;
         // An area light is also met by the paths the BSDF sends (areaLightsAlong).
         const double weight =
-            light.hasArea() ? powerHeuristic(light.areaPdf(ls.toLight, ls.distance), bsdf.pdf(ls.toLight)) : 1.0;
+            light.hasArea() ? powerHeuristic(light.areaPdf(v.si.point, ls.toLight, ls.distance), bsdf.pdf(ls.toLight))
+                            : 1.0;
         sum += visible * f * ls.color * (lightStrength(light, ls.distance, v.pathLength) * weight);
     }
     return sum;
@@ -146,7 +147,7 @@ Vec3 PathIntegrator::areaLightsAlong(const Ray& ray, double tMax, double scatter
         // The radiance that gives light sampling's estimate: the light spread over the
         // parallelogram, each point lighting as a point light does (so it grows with the
         // distance, as a point light without falloff keeps its strength there).
-        const double pdf = light.areaPdf(ray.dir, t);
+        const double pdf = light.areaPdf(ray.origin, ray.dir, t);
         if (pdf == kInfinity) continue;
         const double weight = scatterPdf > 0 ? powerHeuristic(scatterPdf, pdf) : 1.0;
         sum += light.color() * (lightStrength(light, t, pathLength) * pdf * weight);
@@ -214,6 +215,10 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
             const Vec3 a = rgb(scene_.materials[static_cast<size_t>(medium)].absorption);
             for (int i = 0; i < 3; ++i)
                 if (a[i] > 0) beta[i] *= found ? std::exp(-a[i] * v.hit.t) : 0.0;
+        } else if (fog_) {
+            const FogCrossing fog = fog_->along(ray, found ? v.hit.t : kInfinity);
+            radiance += beta * fog.inscattered;
+            beta *= fog.transmittance;
         }
         if (!found) {
             if (crossings == 0 && transparentBackground) return glm::dvec4(0.0);

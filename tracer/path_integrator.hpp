@@ -3,6 +3,7 @@
 #pragma once
 
 #include "tracer/background.hpp"
+#include "tracer/fog.hpp"
 #include "tracer/bsdf.hpp"
 #include "tracer/emitters.hpp"
 #include "tracer/environment_light.hpp"
@@ -24,7 +25,7 @@ class PathIntegrator {
 public:
     /// Reads the scene, lights, background and textures while it lives.
     PathIntegrator(const RenderScene& scene, const scene::SettingsDesc& settings, const std::vector<Light>& lights,
-                   const Background& background, const std::vector<Texture>& textures);
+                   const Background& background, const Fog* fog, const std::vector<Texture>& textures);
 
     /// One path's estimate of the light along a camera ray, and alpha: 0 when the ray meets
     /// nothing and the background is transparent (the colour is then black), else 1.
@@ -58,6 +59,7 @@ private:
     const scene::SettingsDesc& settings_;
     const std::vector<Light>& lights_;
     const Background& background_;
+    const Fog* fog_; ///< null: no fog
     const std::vector<Texture>& textures_;
     MaterialMixer mixer_;
     Emitters emitters_;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <mutex>
 #include <thread>
 
@@ -42,6 +43,7 @@ struct PreparedScene {
     std::unique_ptr<RenderScene> geometry;
     SceneImages images;
     std::unique_ptr<Background> background;
+    std::optional<Fog> fog;
     std::vector<Light> lights;
     std::vector<Texture> textures;
     std::unique_ptr<Integrator> integrator;
@@ -60,9 +62,12 @@ bool prepare(const scene::SceneDesc& desc, unsigned threads, PreparedScene& out,
     out.background = std::make_unique<Background>(
         desc.background,
         out.images.find(scene::fileToOpen(desc.background.resolvedImage, desc.background.image)));
-    out.integrator = std::make_unique<Integrator>(*out.geometry, s, out.lights, *out.background, out.textures);
+    if (desc.fog) out.fog.emplace(*desc.fog);
+    const Fog* fog = out.fog ? &*out.fog : nullptr;
+    out.integrator = std::make_unique<Integrator>(*out.geometry, s, out.lights, *out.background, fog, out.textures);
     if (s.integrator == scene::Integrator::Path)
-        out.path = std::make_unique<PathIntegrator>(*out.geometry, s, out.lights, *out.background, out.textures);
+        out.path =
+            std::make_unique<PathIntegrator>(*out.geometry, s, out.lights, *out.background, fog, out.textures);
     out.camera = std::make_unique<Camera>(desc.camera, s.width, s.height, s.dofSamples);
     return true;
 }

@@ -54,6 +54,7 @@ constexpr Usage kUsages[] = {
                      "materials -> [[0, Material {}], [1, Material {}]] @ }")},
     {ObjectType::Layered, CRT_SPHERE_WITH("Layered { materials -> [Material {}] @ }")},
     {ObjectType::Background, "Settings { background -> Background { image -> \"sky.png\" @ } }"},
+    {ObjectType::Fog, "Settings { fog -> Fog { color -> rgb(0.5, 0.5, 0.5) distance -> 10 falloff -> 2 @ } }"},
     {ObjectType::Sphere, "Scene { Sphere { center -> vec3(0, 0, 0) radius -> 1 @ } }"},
     {ObjectType::Box, "Scene { Box { cornerA -> vec3(0, 0, 0) cornerB -> vec3(1, 1, 1) @ } }"},
     {ObjectType::Plane, "Scene { Plane { normal -> vec3(0, 1, 0) position -> vec3(0, 0, 0) @ } }"},
@@ -149,6 +150,8 @@ constexpr std::pair<ObjectType, std::string_view> kRuleDefaults[] = {
     {ObjectType::Material, "reflectivitymin"}, // reflectivity
     {ObjectType::Material, "texture"},         // none
     {ObjectType::Material, "bump"},            // none
+    {ObjectType::Settings, "fog"},             // none
+    {ObjectType::Fog, "falloff"},              // none: a constant fog
     {ObjectType::Settings, "reflectiondepth"}, // recursiondepth
     {ObjectType::Settings, "refractiondepth"}, // recursiondepth
     {ObjectType::HeightField, "image"},        // a height field has an image or a function
@@ -260,6 +263,8 @@ std::string otherValue(const AttributeInfo& attr) {
     case AttrType::Bump:
     case AttrType::MaterialMap:
     case AttrType::MaterialList:
+    case AttrType::PatternList:
+    case AttrType::Fog:
     case AttrType::Solid:
     case AttrType::Entity:
     case AttrType::SolidList:
@@ -400,5 +405,15 @@ TEST_CASE("defaults documented as rules follow their rule", "[defaults]") {
         CHECK(s.finishOf(s.materials[0]).texture == -1);
         CHECK(s.finishOf(s.materials[0]).bump == -1);
         CHECK(s.textures.empty());
+    }
+
+    SECTION("a scene has no fog unless given, and a fog without falloff is constant") {
+        CHECK(objectInfo(ObjectType::Settings).attributes[findAttribute(objectInfo(ObjectType::Settings), "fog")]
+                  .defaultText == "none");
+        CHECK_FALSE(evaluate("Settings { }").fog.has_value());
+        const crt::scene::SceneDesc s = evaluate("Settings { fog -> Fog { color -> rgb(1, 1, 1) distance -> 3 } }");
+        REQUIRE(s.fog.has_value());
+        CHECK(s.fog->falloff == 0);
+        CHECK(evaluate(withAttribute(usageOf(ObjectType::Fog), "")).fog->falloff == 2);
     }
 }
