@@ -190,6 +190,15 @@ void checkAttenuation(const ObjectBuilder& b, const glm::dvec3& terms) {
     }
 }
 
+/// The rays an entity literal hides it from (`shadow`, `camera`, `reflected` given false).
+uint8_t hiddenFrom(const ObjectBuilder& b) {
+    uint8_t hidden = 0;
+    if (!b.flag("camera", true)) hidden |= scene::kHiddenFromCamera;
+    if (!b.flag("shadow", true)) hidden |= scene::kHiddenFromShadows;
+    if (!b.flag("reflected", true)) hidden |= scene::kHiddenFromReflections;
+    return hidden;
+}
+
 /// A Background takes exactly one mode: a color, a gradient, or an image.
 void checkBackgroundMode(const ObjectBuilder& b) {
     int modes = (b.get("color") ? 1 : 0) + (b.get("horizon") || b.get("sky") ? 1 : 0) +
@@ -390,7 +399,7 @@ Value Interpreter::buildEntity(ObjectBuilder& b) {
         solid = !data || data->closed;
     }
     const int32_t material = b.index("material", -1);
-    int32_t index = addEntity(scene::EntityDesc{std::move(shape), material, solid, span(b.range)},
+    int32_t index = addEntity(scene::EntityDesc{std::move(shape), material, solid, span(b.range), hiddenFrom(b)},
                               EntityInfo{b.range, b.info.type, true});
     // An animated script (one reading t or clock) often starts from zero size.
     if (zeroSize && !animated_) {
@@ -426,6 +435,7 @@ Value Interpreter::buildCombination(ObjectBuilder& b) {
             scene::EntityDesc{scene::TransformNode{index, {}}, material, solid, span(b.range)},
             info);
     }
+    scene_.entities[static_cast<size_t>(index)].hidden = hiddenFrom(b);
     return Value::object(ValueKind::Entity, b.info.type, static_cast<uint32_t>(index));
 }
 

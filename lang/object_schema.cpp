@@ -210,34 +210,39 @@ constexpr AttributeInfo kFog[] = {
     {"turbulencedepth", A::Float, false, "0.5", "0 to 1: how much of the fog the noise may take away."},
 };
 
-#define CRT_MATERIAL_ATTR                                                                          \
+#define CRT_ENTITY_ATTRS                                                                           \
+    {"material", A::Material, false, "Material {}",                                                \
+     "The surface material (without one: what an enclosing `<material m>` gives, else the "        \
+     "default)."},                                                                                 \
+        {"shadow", A::Bool, false, "true", "false: casts no shadow (POV-Ray's no_shadow)."},       \
+        {"camera", A::Bool, false, "true",                                                         \
+         "false: unseen by the camera, still reflected and casting shadows (no_image)."},          \
     {                                                                                              \
-        "material", A::Material, false, "Material {}",                                             \
-            "The surface material (without one: what an enclosing `<material m>` gives, else the " \
-            "default)."                                                                            \
+        "reflected", A::Bool, false, "true",                                                       \
+            "false: absent from reflections and refractions (POV-Ray's no_reflection)."           \
     }
 
 constexpr AttributeInfo kSphere[] = {
     {"center", A::Vec3, true, "", "Centre of the sphere."},
     {"radius", A::Float, true, "", "Radius (>= 0)."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kBox[] = {
     {"cornerA", A::Vec3, true, "", "One corner."},
     {"cornerB", A::Vec3, true, "", "The opposite corner."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kPlane[] = {
     {"normal", A::Vec3, true, "", "Normal; as a solid, the half-space behind it."},
     {"position", A::Vec3, true, "", "A point on the plane."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kCylinder[] = {
     {"base", A::Vec3, true, "", "Centre of the base."},
     {"top", A::Vec3, true, "", "Centre of the top."},
     {"radius", A::Float, true, "", "Radius (>= 0)."},
     {"open", A::Bool, false, "false", "No caps."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kCone[] = {
     {"base", A::Vec3, true, "", "Centre of the base."},
@@ -245,7 +250,7 @@ constexpr AttributeInfo kCone[] = {
     {"top", A::Vec3, true, "", "Centre of the top."},
     {"topradius", A::Float, false, "0", "Radius at the top."},
     {"open", A::Bool, false, "false", "No caps."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr std::string_view kSweepChoices[] = {"linear", "conic"};
 constexpr AttributeInfo kPrism[] = {
@@ -261,14 +266,14 @@ constexpr AttributeInfo kPrism[] = {
      "linear (straight up) or conic (scaled with the height, from a point at the origin).",
      kSweepChoices},
     {"open", A::Bool, false, "false", "No end faces."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kSor[] = {
     {"points", A::PointList, true, "",
      "(radius, height) in the x-y plane (each z 0), at least four, rising from the second to "
      "the last but one; the first and last set the slopes at the ends."},
     {"open", A::Bool, false, "false", "No end faces."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kLathe[] = {
     {"points", A::PointList, true, "",
@@ -277,7 +282,7 @@ constexpr AttributeInfo kLathe[] = {
     {"spline", A::Choice, false, "\"linear\"",
      "How the points make the curve: linear, quadratic, cubic, bezier or bspline.",
      scene::kSplineKindNames},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kSphereSweep[] = {
     {"points", A::PointList, true, "",
@@ -288,7 +293,7 @@ constexpr AttributeInfo kSphereSweep[] = {
      "How the points make the curve: linear (straight between them), cubic (through all but "
      "the first and last) or bspline (smooth, near them).",
      scene::kSweepSplineKindNames},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kText[] = {
     {"text", A::String, true, "", "The characters, on one line."},
@@ -296,14 +301,14 @@ constexpr AttributeInfo kText[] = {
      "A TrueType or OpenType file, looked up as images are; \"\" for DejaVu Sans."},
     {"thickness", A::Float, false, "0.25", "How far the glyphs are extruded along z."},
     {"spacing", A::Float, false, "1", "Times the font's advance from one glyph to the next."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kBlob[] = {
     {"threshold", A::Float, false, "1",
      "The solid is where the components' fields add up to more than this (> 0)."},
     {"components", A::BlobComponentList, true, "",
      "BlobSphere and BlobCylinder fields; a negative strength takes away."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kIsosurface[] = {
     {"function", A::Function, true, "",
@@ -316,7 +321,7 @@ constexpr AttributeInfo kIsosurface[] = {
     {"accuracy", A::Float, false, "0.001",
      "How short the spans are where a crossing is sought (> 0): thinner parts may be missed."},
     {"open", A::Bool, false, "false", "Without the faces of the bounds."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kHeightField[] = {
     {"image", A::String, false, "\"\"",
@@ -326,7 +331,7 @@ constexpr AttributeInfo kHeightField[] = {
     {"resolution", A::Int, false, "100",
      "For a function: how many samples along x, and as many along z (2 to 10,000)."},
     {"smooth", A::Bool, false, "false", "Normals interpolated across each cell."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kBlobSphere[] = {
     {"center", A::Vec3, true, "", "Centre."},
@@ -352,47 +357,47 @@ constexpr AttributeInfo kTorus[] = {
     {"major", A::Float, true, "", "Radius of the ring."},
     {"minor", A::Float, true, "", "Radius of the tube."},
     {"axis", A::Vec3, false, "vec3(0,1,0)", "Axis of the ring."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kSuperellipsoid[] = {
     {"e", A::Float, false, "1",
      "Exponent across z (east-west): toward 0 square, 1 round, above 2 pinched."},
     {"n", A::Float, false, "1",
      "Exponent along z (north-south): toward 0 square, 1 round, above 2 pinched."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kMerge[] = {
     {"objects", A::SolidList, true, "",
      "The solids to join; the surfaces inside the result are left out."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kInverse[] = {
     {"object", A::Solid, true, "", "The solid whose outside this is."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kClipped[] = {
     {"object", A::Entity, true, "", "The entity whose surfaces are kept where they are inside 'by'."},
     {"by", A::Solid, true, "", "The solid that keeps them."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kDisc[] = {
     {"center", A::Vec3, true, "", "Centre."},
     {"normal", A::Vec3, true, "", "Normal."},
     {"radius", A::Float, true, "", "Outer radius."},
     {"hole", A::Float, false, "0", "Inner radius."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kQuad[] = {
     {"corner", A::Vec3, true, "", "One corner."},
     {"edgeA", A::Vec3, true, "", "First edge from the corner."},
     {"edgeB", A::Vec3, true, "", "Second edge from the corner."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kTriangle[] = {
     {"a", A::Vec3, true, "", "First vertex."},
     {"b", A::Vec3, true, "", "Second vertex."},
     {"c", A::Vec3, true, "", "Third vertex."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kSmoothTriangle[] = {
     {"a", A::Vec3, true, "", "First vertex."},
@@ -401,13 +406,13 @@ constexpr AttributeInfo kSmoothTriangle[] = {
     {"na", A::Vec3, true, "", "Normal at a."},
     {"nb", A::Vec3, true, "", "Normal at b."},
     {"nc", A::Vec3, true, "", "Normal at c."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kPolygon[] = {
     {"points", A::PointList, true, "",
      "The corners, in one plane; repeating a loop's first point closes it and starts the next "
      "(holes by the even-odd rule)."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 constexpr AttributeInfo kMesh[] = {
     {"file", A::String, false, "\"\"", "A Wavefront OBJ file; or give the vertices and faces."},
@@ -415,7 +420,7 @@ constexpr AttributeInfo kMesh[] = {
     {"faces", A::FaceList, false, "[]", "Triangles: [a, b, c], three vertex numbers each."},
     {"normals", A::PointList, false, "[]", "A normal at each vertex, for smooth shading; [] for flat."},
     {"uvs", A::PointList, false, "[]", "A vec3(u, v, 0) at each vertex, for textures; [] for none."},
-    CRT_MATERIAL_ATTR,
+    CRT_ENTITY_ATTRS,
 };
 
 // What every pattern may take besides its own attributes (docs/language.md, "Textures").

@@ -652,7 +652,9 @@ Value Interpreter::evalModify(const ModifyExpr* node) {
     // material it gives already is nearer the parts, so it stays.
     int32_t child = static_cast<int32_t>(target.index);
     int32_t material = list.material;
+    uint8_t hidden = 0; // the replaced transform's, which hides what it moved
     if (auto* inner = std::get_if<scene::TransformNode>(&scene_.entities[target.index].shape)) {
+        hidden = scene_.entities[target.index].hidden;
         charge((inner->modifiers.size() + modifiers.size()) * sizeof(scene::Modifier));
         std::vector<scene::Modifier> combined = inner->modifiers;
         combined.insert(combined.end(), modifiers.begin(), modifiers.end());
@@ -663,7 +665,7 @@ Value Interpreter::evalModify(const ModifyExpr* node) {
     }
     bool solid = scene_.entities[static_cast<size_t>(child)].solid;
     int32_t index = addEntity(scene::EntityDesc{scene::TransformNode{child, std::move(modifiers)},
-                                                material, solid, span(node->range)},
+                                                material, solid, span(node->range), hidden},
                               EntityInfo{node->range, target.objectType, false});
     return Value::object(ValueKind::Entity, target.objectType, static_cast<uint32_t>(index));
 }

@@ -401,6 +401,14 @@ inline const char* csgOpName(CsgOp op) {
     return "?";
 }
 
+/// The rays an entity is hidden from (bits of EntityDesc::hidden): it is still there for
+/// the others. An entity is hidden from what it or anything above it is hidden from.
+enum HiddenFrom : uint8_t {
+    kHiddenFromCamera = 1,      ///< the camera's rays and those that pass see-through surfaces
+    kHiddenFromShadows = 2,     ///< shadow rays: it casts no shadow
+    kHiddenFromReflections = 4, ///< reflected and refracted rays
+};
+
 /// A node of the entity graph. Nodes may be shared (an entity drawn twice is one node).
 struct EntityDesc {
     Shape shape;
@@ -410,6 +418,7 @@ struct EntityDesc {
     int32_t material = -1;
     bool solid = true;     ///< usable as a CSG operand (and inside/outside is defined)
     SourceSpan source;
+    uint8_t hidden = 0; ///< HiddenFrom bits
 };
 
 enum class LightKind : uint8_t { Point, Parallel, Spot, Area, Cylinder };

@@ -521,6 +521,10 @@ Json entityJson(const EntityDesc& e, size_t id, const SceneDesc& scene) {
     std::visit(ShapeJson{entity, scene}, e.shape);
     if (e.material >= 0) entity["material"] = e.material;
     entity["solid"] = e.solid;
+    // Only when hidden, so dumps of scenes without it are unchanged.
+    if (e.hidden & kHiddenFromCamera) entity["camera"] = false;
+    if (e.hidden & kHiddenFromShadows) entity["shadow"] = false;
+    if (e.hidden & kHiddenFromReflections) entity["reflected"] = false;
     entity["source"] = source(e.source);
     return entity;
 }

@@ -64,7 +64,7 @@ Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& sett
     : scene_(scene), settings_(settings), lights_(lights), background_(background), fog_(fog), textures_(textures),
       mixer_(scene.materials, scene.blends, textures_),
       ambient_(rgb(settings.ambient)), reflectionLimit_(settings.reflectionLimit()),
-      refractionLimit_(settings.refractionLimit()) {
+      refractionLimit_(settings.refractionLimit()), hides_(scene.hidesAnything()) {
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const ShadingMaterial& m = scene.materials[i];
         bool plain = mixer_.isPlain(static_cast<int32_t>(i));
@@ -93,14 +93,37 @@ std::string SceneFeatures::names() const {
     return list.empty() ? "plain" : list;
 }
 
-Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context,
+bool Integrator::nearestSeen(Ray& ray, Hit& hit, Departure departed, double& skipped, TraceContext& context) const {
+    skipped = 0;
+    if (!scene_.intersect(ray, kInfinity, hit, context.scratch, context.stats, departed)) return false;
+    if (!hides_) [[likely]]
+        return true;
+    const uint8_t unseen = context.bent ? scene::kHiddenFromReflections : scene::kHiddenFromCamera;
+    // Each crossing moves the ray on; the bound only guards against a surface that rounding
+    // keeps in front of it.
+    constexpr int kMostCrossings = 4096;
+    for (int crossings = 0; scene_.hiddenFrom(hit) & unseen; ++crossings) {
+        if (crossings == kMostCrossings) return false;
+        const SurfaceInteraction si = scene_.interaction(ray, hit);
+        skipped += hit.t;
+        ray = Ray{offsetRayOrigin(si.point, si.pointError, si.normal, ray.dir), ray.dir};
+        departed = scene_.departedPrimitive(hit, si, ray.dir);
+        hit = Hit{};
+        if (!scene_.intersect(ray, kInfinity, hit, context.scratch, context.stats, departed)) return false;
+    }
+    return true;
+}
+
+Vec3 Integrator::trace(const Ray& cast, int depth, double pathLength, int32_t medium, TraceContext& context,
                        Departure departed) const {
     Hit hit;
     Vec3 color;
     double distance = kInfinity;
-    if (scene_.intersect(ray, kInfinity, hit, context.scratch, context.stats, departed)) {
-        distance = hit.t;
-        color = shade(ray, hit, depth, pathLength, medium, context);
+    Ray ray = cast;
+    double skipped = 0;
+    if (nearestSeen(ray, hit, departed, skipped, context)) {
+        distance = skipped + hit.t;
+        color = shade(ray, hit, depth, pathLength + skipped, medium, context);
     } else {
         color = background_.radiance(ray.dir);
     }
@@ -110,7 +133,7 @@ Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t med
         for (int i = 0; i < 3; ++i)
             if (a[i] > 0) color[i] *= std::exp(-a[i] * distance);
     } else if (fog_) {
-        color = fog_->along(ray, distance).seen(color);
+        color = fog_->along(cast, distance).seen(color);
     }
     return color;
 }
@@ -119,9 +142,11 @@ glm::dvec4 Integrator::traceCamera(const Ray& ray, int depth, bool transparentBa
                                    TraceContext& context) const {
     if (!transparentBackground) return {trace(ray, depth, 0, -1, context), 1};
     Hit hit;
-    if (!scene_.intersect(ray, kInfinity, hit, context.scratch, context.stats)) return glm::dvec4(0);
-    const Vec3 color = shade(ray, hit, depth, 0, -1, context);
-    return {fog_ ? fog_->along(ray, hit.t).seen(color) : color, 1};
+    Ray seen = ray;
+    double skipped = 0;
+    if (!nearestSeen(seen, hit, {}, skipped, context)) return glm::dvec4(0);
+    const Vec3 color = shade(seen, hit, depth, skipped, -1, context);
+    return {fog_ ? fog_->along(ray, skipped + hit.t).seen(color) : color, 1};
 }
 
 Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium,
@@ -229,6 +254,7 @@ Vec3 Integrator::transmittance(const Ray& ray, double tMax, Departure departed, 
     const RenderScene& scene = scene_;
     scene_.forEachCrossing(ray, tMax, departed, context.scratch, context.stats,
                            [&](const Hit& hit) {
+                               if (hides_ && (scene.hiddenFrom(hit) & scene::kHiddenFromShadows)) return true;
                                const int32_t index = scene.materialOf(hit);
                                const ShadingMaterial& m = scene.materials[index];
                                if (!mixer_.isPlain(index)) {
@@ -269,14 +295,22 @@ Vec3 Integrator::passThrough(const ShadingPoint& sp, int depth, int32_t medium,
     return behind;
 }
 
+Vec3 Integrator::traceBent(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context,
+                           Departure departed) const {
+    const bool wasBent = context.bent;
+    context.bent = true;
+    const Vec3 color = trace(ray, depth, pathLength, medium, context, departed);
+    context.bent = wasBent;
+    return color;
+}
+
 Vec3 Integrator::reflect(const ShadingPoint& sp, int depth, int32_t medium, TraceContext& context) const {
     const ShadingMaterial& m = *sp.material;
     Vec3 mirror = glm::normalize(sp.d - 2 * glm::dot(sp.d, sp.n) * sp.n);
     auto traceFrom = [&](const Vec3& dir) {
         ++context.stats.reflectionRays;
         Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, dir), dir};
-        return trace(next, depth - 1, sp.pathLength, medium, context,
-                     scene_.departedPrimitive(sp.hit, sp.si, dir));
+        return traceBent(next, depth - 1, sp.pathLength, medium, context, scene_.departedPrimitive(sp.hit, sp.si, dir));
     };
     if (m.glossiness <= 0) return traceFrom(mirror);
     return glossyMean(mirror, sp.facingNormal, m.glossiness, settings_.glossySamples, context,
@@ -288,8 +322,8 @@ Vec3 Integrator::refract(const ShadingPoint& sp, const Vec3& refracted, int dept
     auto traceFrom = [&](const Vec3& dir) {
         ++context.stats.refractionRays;
         Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, dir), dir};
-        return trace(next, depth - 1, sp.pathLength, nextMedium, context,
-                     scene_.departedPrimitive(sp.hit, sp.si, dir));
+        return traceBent(next, depth - 1, sp.pathLength, nextMedium, context,
+                         scene_.departedPrimitive(sp.hit, sp.si, dir));
     };
     const ShadingMaterial& m = *sp.material;
     if (m.glossiness <= 0) return traceFrom(refracted);

@@ -28,6 +28,7 @@ struct alignas(64) TraceContext {
     bool inGlossy = false; ///< below a glossy bounce only one ray per bounce is spawned
     int reflections = 0;   ///< reflections on the path to the point being shaded
     int refractions = 0;   ///< refractions on the path to the point being shaded
+    bool bent = false;     ///< a reflection or refraction is on the path (it is not the camera's line)
 };
 
 /// What the scene uses, found once so per-ray code can skip what is absent (--stats says).
@@ -66,6 +67,10 @@ public:
 
 private:
     struct ShadingPoint;
+    /// The nearest hit along `ray` of a surface it sees, crossing those hidden from it (from
+    /// the camera's line, or from reflections and refractions when context.bent): `ray`
+    /// becomes the ray the hit is on, begun past the crossed surfaces `skipped` along it.
+    bool nearestSeen(Ray& ray, Hit& hit, Departure departed, double& skipped, TraceContext& context) const;
     Vec3 shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium, TraceContext& context) const;
     /// The light plain material `material`, of colour `color` there, sends back from the point.
     Vec3 shadeMaterial(ShadingPoint& sp, int32_t material, const Vec3& color, int depth,
@@ -78,6 +83,9 @@ private:
     Vec3 directLight(const ShadingPoint& sp, TraceContext& context) const;
     /// The fraction of light that reaches the point through the shadow ray (0: blocked).
     Vec3 transmittance(const Ray& ray, double tMax, Departure departed, TraceContext& context) const;
+    /// trace() of a reflected or refracted ray.
+    Vec3 traceBent(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context,
+                   Departure departed) const;
     Vec3 reflect(const ShadingPoint& sp, int depth, int32_t medium, TraceContext& context) const;
     /// The light along `refracted` into `nextMedium` (blurred around it on a glossy material).
     Vec3 refract(const ShadingPoint& sp, const Vec3& refracted, int depth, int32_t nextMedium,
@@ -93,6 +101,7 @@ private:
     SceneFeatures features_;
     Vec3 ambient_;
     int reflectionLimit_, refractionLimit_;
+    bool hides_; ///< whether some surface is hidden from some rays
 };
 
 } // namespace crt::tracer

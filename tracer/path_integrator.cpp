@@ -42,7 +42,8 @@ PathIntegrator::PathIntegrator(const RenderScene& scene, const scene::SettingsDe
                                const std::vector<Texture>& textures)
     : scene_(scene), settings_(settings), lights_(lights), background_(background), fog_(fog), textures_(textures),
       mixer_(scene.materials, scene.blends, textures), emitters_(scene), environment_(background),
-      hasAreaLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.hasArea(); })) {}
+      hasAreaLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.hasArea(); })),
+      hides_(scene.hidesAnything()) {}
 
 int32_t PathIntegrator::drawMaterial(const SurfaceInteraction& si, Vec3& color, Vec3& beta,
                                      TraceContext& context) const {
@@ -84,6 +85,7 @@ Vec3 PathIntegrator::visibility(const Ray& ray, double tMax, Departure departed,
     ++context.stats.shadowRays;
     Vec3 through(1.0);
     scene_.forEachCrossing(ray, tMax, departed, context.scratch, context.stats, [&](const Hit& hit) {
+        if (hides_ && (scene_.hiddenFrom(hit) & scene::kHiddenFromShadows)) return true;
         const int32_t index = scene_.materialOf(hit);
         if (mixer_.isPlain(index)) {
             through = Vec3(0.0);
@@ -228,6 +230,13 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
         }
         v.si = scene_.interaction(ray, v.hit);
         v.pathLength = pathLength += v.hit.t;
+        if (hides_ && (scene_.hiddenFrom(v.hit) & (bounce == 0 ? scene::kHiddenFromCamera : scene::kHiddenFromReflections))) {
+            // Crossed as if it were not there, as a see-through surface is below.
+            if (crossings > 4 * settings_.bounces + 16) break;
+            ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ray.dir), ray.dir};
+            departed = scene_.departedPrimitive(v.hit, v.si, ray.dir);
+            continue;
+        }
         const bool entering = glm::dot(ray.dir, v.si.normal) < 0;
         const Vec3 facingNormal = entering ? v.si.normal : -v.si.normal;
         Vec3 color;

@@ -65,6 +65,7 @@ private:
     Emitters emitters_;
     EnvironmentLight environment_;
     bool hasAreaLights_;
+    bool hides_; ///< whether some surface is hidden from some rays
 };
 
 } // namespace crt::tracer

@@ -261,6 +261,20 @@ int32_t RenderScene::entityOf(const Hit& hit) const {
     return owner.primitiveEntities[static_cast<size_t>(hit.primitive)];
 }
 
+uint8_t RenderScene::hiddenFrom(const Hit& hit) const {
+    auto entry = [](const std::vector<uint8_t>& hidden, int32_t i) -> uint8_t {
+        return hidden.empty() ? 0 : hidden[static_cast<size_t>(i)];
+    };
+    if (hit.instance < 0) return entry(hiddenPrimitives, hit.primitive);
+    return entry(hiddenInstances, hit.instance) | entry(prototypeOf(hit.instance).hiddenPrimitives, hit.primitive);
+}
+
+bool RenderScene::hidesAnything() const {
+    return !hiddenPrimitives.empty() || !hiddenInstances.empty() ||
+           std::any_of(prototypes.begin(), prototypes.end(),
+                       [](const std::unique_ptr<const RenderScene>& p) { return p->hidesAnything(); });
+}
+
 namespace {
 
 /// Moves the surface by toWorld (its object point, uv and material stay as they are).

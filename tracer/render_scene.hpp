@@ -210,6 +210,14 @@ public:
     /// The SceneDesc entity the hit primitive was built from.
     int32_t entityOf(const Hit& hit) const;
 
+    /// The rays the hit surface is hidden from (scene::HiddenFrom bits; entities' `camera`,
+    /// `shadow` and `reflected`). Each list is empty when nothing in it is hidden, else it
+    /// holds an entry for every primitive or instance.
+    std::vector<uint8_t> hiddenPrimitives, hiddenInstances;
+    uint8_t hiddenFrom(const Hit& hit) const;
+    /// Whether anything in the scene or its prototypes is hidden from some rays.
+    bool hidesAnything() const;
+
     /// Objects are what the BVH holds, numbered below WideChild::kMaxItems: a primitive (from
     /// 0), a CSG root (csgObject(node)) or an instance (instanceObject(i)). These are kept
     /// outside it:

@@ -71,13 +71,17 @@ private:
         int32_t entity;
         Transform transform;
         int32_t material = -1; ///< given by a transform above to the parts that have none
+        uint8_t hidden = 0;    ///< what the entities above it hide it from (scene::HiddenFrom)
 
         /// Where a transform node leads: its child, moved, maybe with a material to give.
         Operand below(const scene::EntityDesc& node, const scene::TransformNode& t) const {
             return {t.child, transform.compose(Transform::fromModifiers(t.modifiers)),
-                    node.material >= 0 ? node.material : material};
+                    node.material >= 0 ? node.material : material, static_cast<uint8_t>(hidden | node.hidden)};
         }
-        Operand part(int32_t child) const { return {child, transform, material}; }
+        /// A part of `node`, this operand's entity.
+        Operand part(const scene::EntityDesc& node, int32_t child) const {
+            return {child, transform, material, static_cast<uint8_t>(hidden | node.hidden)};
+        }
     };
 
     /// Draws an entity: groups and unions are drawn as their members (a union keeps every
@@ -95,10 +99,10 @@ private:
                 pending.push_back(op.below(e, *t));
             } else if (auto* g = std::get_if<scene::GroupNode>(&e.shape)) {
                 for (auto it = g->members.rbegin(); it != g->members.rend(); ++it)
-                    pending.push_back(op.part(*it));
+                    pending.push_back(op.part(e, *it));
             } else if (auto* c = std::get_if<scene::CsgNode>(&e.shape); c && c->op == scene::CsgOp::Union) {
-                pending.push_back(op.part(c->right));
-                pending.push_back(op.part(c->left));
+                pending.push_back(op.part(e, c->right));
+                pending.push_back(op.part(e, c->left));
             } else if (std::holds_alternative<scene::CsgNode>(e.shape) ||
                        std::holds_alternative<scene::InverseNode>(e.shape)) {
                 int32_t node = addCsg(op);
@@ -143,8 +147,17 @@ private:
         const int32_t transform = addTransform(op.transform);
         objects_.push_back(RenderScene::instanceObject(static_cast<int32_t>(scene_.instances.size())));
         scene_.instances.push_back({known->second, transform, op.material >= 0 ? op.material : defaultMaterial_});
+        markHidden(scene_.hiddenInstances, scene_.instances.size(), op.hidden);
         instanceBounds_.push_back(bounded ? worldBounds(prototype.bounds, transform) : Bounds3::everything());
         return true;
+    }
+
+    /// Records the hidden bits of the last of `count` primitives or instances: the list stays
+    /// empty until one is hidden from something, and then holds one entry for each.
+    static void markHidden(std::vector<uint8_t>& hidden, size_t count, unsigned bits) {
+        if (bits == 0 && hidden.empty()) return;
+        hidden.resize(count - 1, 0);
+        hidden.push_back(static_cast<uint8_t>(bits));
     }
 
     int32_t addTransform(const Transform& toWorld) {
@@ -180,6 +193,7 @@ private:
         scene_.primitives.push_back(
             {std::move(*geometry), addTransform(op.transform), materialOf(op)});
         scene_.primitiveEntities.push_back(op.entity);
+        markHidden(scene_.hiddenPrimitives, scene_.primitives.size(), op.hidden | desc_.entities[op.entity].hidden);
         return static_cast<int32_t>(scene_.primitives.size() - 1);
     }
 
@@ -245,10 +259,10 @@ private:
                 pending.push_back(o.below(e, *t));
             } else if (auto* g = std::get_if<scene::GroupNode>(&e.shape);
                        g && (op == scene::CsgOp::Union || op == scene::CsgOp::Merge)) {
-                for (int32_t m : g->members) pending.push_back(o.part(m));
+                for (int32_t m : g->members) pending.push_back(o.part(e, m));
             } else if (auto* c = std::get_if<scene::CsgNode>(&e.shape); c && c->op == op) {
-                pending.push_back(o.part(c->right));
-                pending.push_back(o.part(c->left));
+                pending.push_back(o.part(e, c->right));
+                pending.push_back(o.part(e, c->left));
             } else {
                 operands.push_back(std::move(o));
             }
@@ -264,7 +278,7 @@ private:
         if (auto* inverse = std::get_if<scene::InverseNode>(&e.shape)) {
             CsgTreeNode node;
             node.kind = CsgNodeKind::Inverse;
-            node.left = addCsg(operand.part(inverse->child));
+            node.left = addCsg(operand.part(e, inverse->child));
             node.bounds = Bounds3::everything();
             scene_.csgNodes.push_back(node);
             return static_cast<int32_t>(scene_.csgNodes.size() - 1);
@@ -282,7 +296,7 @@ private:
             return static_cast<int32_t>(scene_.csgNodes.size() - 1);
         }
         if (c && c->op == scene::CsgOp::Clip)
-            return combine(CsgNodeKind::Clip, addCsg(operand.part(c->left)), addCsg(operand.part(c->right)));
+            return combine(CsgNodeKind::Clip, addCsg(operand.part(e, c->left)), addCsg(operand.part(e, c->right)));
         if (c && c->op == scene::CsgOp::Difference) {
             // Walk the left spine: ((a − b) − c) − d = a − (b ∪ c ∪ d).
             std::vector<Operand> subtracted;
@@ -292,8 +306,8 @@ private:
                 if (auto* t = std::get_if<scene::TransformNode>(&be.shape)) {
                     base = base.below(be, *t);
                 } else if (auto* d = std::get_if<scene::CsgNode>(&be.shape); d && d->op == scene::CsgOp::Difference) {
-                    collectChain(base.part(d->right), scene::CsgOp::Union, subtracted);
-                    base = base.part(d->left);
+                    collectChain(base.part(be, d->right), scene::CsgOp::Union, subtracted);
+                    base = base.part(be, d->left);
                 } else {
                     break;
                 }
