@@ -692,8 +692,10 @@ Value Interpreter::buildLight(const ObjectBuilder& b) {
              : type == ObjectType::ParallelLight ? scene::LightKind::Parallel
              : type == ObjectType::SpotLight     ? scene::LightKind::Spot
              : type == ObjectType::CylinderLight ? scene::LightKind::Cylinder
+             : type == ObjectType::SphereLight   ? scene::LightKind::Sphere
                                                  : scene::LightKind::Area;
-    l.origin = b.vec(type == ObjectType::AreaLight ? "corner" : "origin", l.origin);
+    l.origin = b.vec(type == ObjectType::AreaLight ? "corner" : type == ObjectType::SphereLight ? "center" : "origin",
+                     l.origin);
     l.from = b.vec("from", l.from);
     l.to = b.vec("to", l.to);
     l.pointing = b.vec("pointing", l.pointing);
@@ -708,6 +710,8 @@ Value Interpreter::buildLight(const ObjectBuilder& b) {
     l.softness = b.number("softness", l.softness);
     l.tightness = b.number("tightness", l.tightness);
     l.shadowless = b.flag("shadowless", l.shadowless);
+    l.radius = b.number("radius", l.radius);
+    l.visible = b.flag("visible", l.visible);
     l.circular = b.flag("circular", l.circular);
     l.orient = b.flag("orient", l.orient);
     if (type == ObjectType::ParallelLight && l.from == l.pointing) {
@@ -725,6 +729,10 @@ Value Interpreter::buildLight(const ObjectBuilder& b) {
         }
         if (l.tightness < 0) fail(b.where("tightness"), "tightness must not be negative");
     }
+    if (type == ObjectType::SphereLight && !(l.radius > 0))
+        fail(b.where("radius"), "a SphereLight's radius must be above 0");
+    if (type == ObjectType::CylinderLight && l.radius < 0)
+        fail(b.where("radius"), "a CylinderLight's radius must not be negative");
     if (type == ObjectType::CylinderLight && l.from == l.to) {
         fail(b.where("to"), "a CylinderLight needs 'from' and 'to' to differ; it has no length");
     }

@@ -82,40 +82,48 @@ constexpr AttributeInfo kCamera[] = {
      scene::kProjectionNames},
 };
 
+// Attributes several lights share.
+constexpr AttributeInfo kLightFalloff{"falloff", A::Float, false, "0",
+                                      "0: no falloff; else falloff / d^2, d the whole ray path."};
+constexpr AttributeInfo kLightAttenuation{
+    "attenuation", A::Vec3, false, "vec3(1,0,0)",
+    "vec3(c0, c1, c2): intensity / (c0 + c1 d + c2 d^2), d the distance to the light."};
+constexpr AttributeInfo kLightAmbient{"ambient", A::Float, false, "0", "Ambient contribution of this light."};
+constexpr AttributeInfo kLightShadowless{"shadowless", A::Bool, false, "false",
+                                         "Lights everything it reaches as if nothing stood in the way: casts no shadow."};
+constexpr AttributeInfo kLightVisible{
+    "visible", A::Bool, false, "false",
+    "Seen by camera and reflected rays, as its colour (POV-Ray's looks_like, without an object)."};
+
 constexpr AttributeInfo kPointLight[] = {
     {"origin", A::Vec3, true, "", "Where the light is."},
     {"color", A::Color, true, "", "The light's colour and intensity."},
-    {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2, d the whole ray path."},
-    {"attenuation", A::Vec3, false, "vec3(1,0,0)",
-     "vec3(c0, c1, c2): intensity / (c0 + c1 d + c2 d^2), d the distance to the light."},
-    {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
-    {"shadowless", A::Bool, false, "false",
-     "Lights everything it reaches as if nothing stood in the way: casts no shadow."},
+    kLightFalloff,
+    kLightAttenuation,
+    kLightAmbient,
+    kLightShadowless,
 };
 
 constexpr AttributeInfo kParallelLight[] = {
     {"from", A::Vec3, true, "", "A point the light comes from."},
     {"pointing", A::Vec3, true, "", "A point the light travels towards."},
     {"color", A::Color, true, "", "The light's colour and intensity."},
-    {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
-    {"shadowless", A::Bool, false, "false",
-     "Lights everything it reaches as if nothing stood in the way: casts no shadow."},
+    kLightAmbient,
+    kLightShadowless,
 };
 
 constexpr AttributeInfo kSpotLight[] = {
     {"origin", A::Vec3, true, "", "Where the light is."},
     {"pointing", A::Vec3, true, "", "The point the spot aims at."},
     {"color", A::Color, true, "", "The light's colour and intensity."},
-    {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2."},
-    {"attenuation", A::Vec3, false, "vec3(1,0,0)",
-     "vec3(c0, c1, c2): intensity / (c0 + c1 d + c2 d^2), d the distance to the light."},
-    {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
+    kLightFalloff,
+    kLightAttenuation,
+    kLightAmbient,
     {"angle", A::Float, false, "30", "Full cone angle, degrees."},
     {"softness", A::Float, false, "0.2", "Outer fraction of the cone that fades to dark."},
     {"tightness", A::Float, false, "0",
      "Intensity times cos^tightness of the angle from the axis: a brighter middle (POV-Ray's)."},
-    {"shadowless", A::Bool, false, "false",
-     "Lights everything it reaches as if nothing stood in the way: casts no shadow."},
+    kLightShadowless,
 };
 
 constexpr AttributeInfo kAreaLight[] = {
@@ -123,27 +131,37 @@ constexpr AttributeInfo kAreaLight[] = {
     {"edgeA", A::Vec3, true, "", "First edge from the corner."},
     {"edgeB", A::Vec3, true, "", "Second edge from the corner."},
     {"color", A::Color, true, "", "Total colour and intensity."},
-    {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2."},
-    {"attenuation", A::Vec3, false, "vec3(1,0,0)",
-     "vec3(c0, c1, c2): intensity / (c0 + c1 d + c2 d^2), d the distance to the light."},
-    {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
-    {"shadowless", A::Bool, false, "false",
-     "Lights everything it reaches as if nothing stood in the way: casts no shadow."},
+    kLightFalloff,
+    kLightAttenuation,
+    kLightAmbient,
+    kLightShadowless,
     {"circular", A::Bool, false, "false", "The ellipse inscribed in the parallelogram: a round lamp."},
     {"orient", A::Bool, false, "false",
      "Turned about its centre to face each lit point, its edges keeping their lengths: a sphere-like lamp."},
+    kLightVisible,
 };
 
 constexpr AttributeInfo kCylinderLight[] = {
     {"from", A::Vec3, true, "", "One end of the emitting segment (the tube's axis)."},
     {"to", A::Vec3, true, "", "The other end; must differ from 'from'."},
     {"color", A::Color, true, "", "Total colour and intensity."},
-    {"falloff", A::Float, false, "0", "0: no falloff; else falloff / d^2."},
-    {"attenuation", A::Vec3, false, "vec3(1,0,0)",
-     "vec3(c0, c1, c2): intensity / (c0 + c1 d + c2 d^2), d the distance to the light."},
-    {"ambient", A::Float, false, "0", "Ambient contribution of this light."},
-    {"shadowless", A::Bool, false, "false",
-     "Lights everything it reaches as if nothing stood in the way: casts no shadow."},
+    kLightFalloff,
+    kLightAttenuation,
+    kLightAmbient,
+    kLightShadowless,
+    {"radius", A::Float, false, "0", "The tube's radius as it is seen when visible (it lights from its axis)."},
+    kLightVisible,
+};
+
+constexpr AttributeInfo kSphereLight[] = {
+    {"center", A::Vec3, true, "", "Centre of the glowing sphere."},
+    {"radius", A::Float, true, "", "Its radius, above 0."},
+    {"color", A::Color, true, "", "Total colour and intensity."},
+    kLightFalloff,
+    kLightAttenuation,
+    kLightAmbient,
+    kLightShadowless,
+    kLightVisible,
 };
 
 constexpr AttributeInfo kMaterial[] = {
@@ -565,6 +583,8 @@ constexpr ObjectInfo kObjects[] = {
      kAreaLight},
     {T::CylinderLight, "CylinderLight", C::Light, false,
      "A segment that emits light, as a fluorescent tube.", kCylinderLight},
+    {T::SphereLight, "SphereLight", C::Light, false, "A glowing sphere: soft shadows as round as it.",
+     kSphereLight},
     {T::Material, "Material", C::Material, false, "How a surface looks.", kMaterial},
     {T::MaterialMap, "MaterialMap", C::Material, false,
      "Materials picked and mixed by a pattern's value.", kMaterialMap},

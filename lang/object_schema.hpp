@@ -18,6 +18,7 @@ enum class ObjectType : uint8_t {
     SpotLight,
     AreaLight,
     CylinderLight,
+    SphereLight,
     Material,
     MaterialMap,
     Layered,

@@ -421,11 +421,16 @@ struct EntityDesc {
     uint8_t hidden = 0; ///< HiddenFrom bits
 };
 
-enum class LightKind : uint8_t { Point, Parallel, Spot, Area, Cylinder };
+enum class LightKind : uint8_t { Point, Parallel, Spot, Area, Cylinder, Sphere };
+
+/// Lights that shine from a region rather than a point: shading takes shadowsamples of them.
+inline bool isExtendedLight(LightKind kind) {
+    return kind == LightKind::Area || kind == LightKind::Cylinder || kind == LightKind::Sphere;
+}
 
 struct LightDesc {
     LightKind kind = LightKind::Point;
-    glm::dvec3 origin{0.0};   ///< Point, Spot; Area: corner
+    glm::dvec3 origin{0.0};   ///< Point, Spot, Sphere (its centre); Area: corner
     glm::dvec3 from{0.0};     ///< Parallel; Cylinder: one end of the segment
     glm::dvec3 to{0.0};       ///< Cylinder: the other end
     glm::dvec3 pointing{0.0}; ///< Parallel, Spot
@@ -440,6 +445,9 @@ struct LightDesc {
     double softness = 0.2; ///< Spot
     double tightness = 0;  ///< Spot: intensity × cos^tightness of the angle from the axis
     bool shadowless = false; ///< lights without shadow rays: nothing stands in its way
+    double radius = 0;       ///< Sphere; Cylinder: the tube's, as it is seen when visible
+    /// Area, Cylinder, Sphere: seen by camera and reflected rays, as its colour
+    bool visible = false;
     bool circular = false;   ///< Area: the ellipse inscribed in the parallelogram
     /// Area: turned about its centre to face each lit point, its edges keeping their lengths
     bool orient = false;

@@ -259,6 +259,7 @@ const char* lightKind(LightKind kind) {
     case LightKind::Spot: return "SpotLight";
     case LightKind::Area: return "AreaLight";
     case LightKind::Cylinder: return "CylinderLight";
+    case LightKind::Sphere: return "SphereLight";
     }
     return "?";
 }
@@ -375,6 +376,11 @@ Json lightJson(const LightDesc& l) {
     case LightKind::Cylinder:
         light["from"] = vec(l.from);
         light["to"] = vec(l.to);
+        if (l.radius != 0) light["radius"] = l.radius;
+        break;
+    case LightKind::Sphere:
+        light["center"] = vec(l.origin);
+        light["radius"] = l.radius;
         break;
     }
     light["color"] = color(l.color);
@@ -385,6 +391,7 @@ Json lightJson(const LightDesc& l) {
     if (l.shadowless) light["shadowless"] = true;
     if (l.circular) light["circular"] = true;
     if (l.orient) light["orient"] = true;
+    if (l.visible) light["visible"] = true;
     light["source"] = source(l.source);
     return light;
 }

@@ -64,7 +64,8 @@ Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& sett
     : scene_(scene), settings_(settings), lights_(lights), background_(background), fog_(fog), textures_(textures),
       mixer_(scene.materials, scene.blends, textures_),
       ambient_(rgb(settings.ambient)), reflectionLimit_(settings.reflectionLimit()),
-      refractionLimit_(settings.refractionLimit()), hides_(scene.hidesAnything()) {
+      refractionLimit_(settings.refractionLimit()), hides_(scene.hidesAnything()),
+      seesLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.visible(); })) {
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const ShadingMaterial& m = scene.materials[i];
         bool plain = mixer_.isPlain(static_cast<int32_t>(i));
@@ -114,16 +115,16 @@ bool Integrator::nearestSeen(Ray& ray, Hit& hit, Departure departed, double& ski
     return true;
 }
 
-Vec3 Integrator::trace(const Ray& cast, int depth, double pathLength, int32_t medium, TraceContext& context,
+Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context,
                        Departure departed) const {
     Hit hit;
     Vec3 color;
     double distance = kInfinity;
-    Ray ray = cast;
-    double skipped = 0;
-    if (nearestSeen(ray, hit, departed, skipped, context)) {
-        distance = skipped + hit.t;
-        color = shade(ray, hit, depth, pathLength + skipped, medium, context);
+    if (hides_ || seesLights_) [[unlikely]] {
+        color = seenAlong(ray, depth, pathLength, medium, context, departed, distance);
+    } else if (scene_.intersect(ray, kInfinity, hit, context.scratch, context.stats, departed)) {
+        distance = hit.t;
+        color = shade(ray, hit, depth, pathLength, medium, context);
     } else {
         color = background_.radiance(ray.dir);
     }
@@ -133,20 +134,30 @@ Vec3 Integrator::trace(const Ray& cast, int depth, double pathLength, int32_t me
         for (int i = 0; i < 3; ++i)
             if (a[i] > 0) color[i] *= std::exp(-a[i] * distance);
     } else if (fog_) {
-        color = fog_->along(cast, distance).seen(color);
+        color = fog_->along(ray, distance).seen(color);
     }
     return color;
+}
+
+Vec3 Integrator::seenAlong(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context,
+                           Departure departed, double& distance) const {
+    Hit hit;
+    Ray seen = ray;
+    double skipped = 0;
+    const bool found = nearestSeen(seen, hit, departed, skipped, context);
+    distance = found ? skipped + hit.t : kInfinity;
+    if (const Light* lamp = seesLights_ ? firstSeenLight(lights_, ray, distance) : nullptr) return lamp->color();
+    if (found) return shade(seen, hit, depth, pathLength + skipped, medium, context);
+    return background_.radiance(ray.dir);
 }
 
 glm::dvec4 Integrator::traceCamera(const Ray& ray, int depth, bool transparentBackground,
                                    TraceContext& context) const {
     if (!transparentBackground) return {trace(ray, depth, 0, -1, context), 1};
-    Hit hit;
-    Ray seen = ray;
-    double skipped = 0;
-    if (!nearestSeen(seen, hit, {}, skipped, context)) return glm::dvec4(0);
-    const Vec3 color = shade(seen, hit, depth, skipped, -1, context);
-    return {fog_ ? fog_->along(ray, skipped + hit.t).seen(color) : color, 1};
+    double distance;
+    const Vec3 color = seenAlong(ray, depth, 0, -1, context, {}, distance);
+    if (distance == kInfinity) return glm::dvec4(0);
+    return {fog_ ? fog_->along(ray, distance).seen(color) : color, 1};
 }
 
 Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium,

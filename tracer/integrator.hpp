@@ -71,6 +71,12 @@ private:
     /// the camera's line, or from reflections and refractions when context.bent): `ray`
     /// becomes the ray the hit is on, begun past the crossed surfaces `skipped` along it.
     bool nearestSeen(Ray& ray, Hit& hit, Departure departed, double& skipped, TraceContext& context) const;
+    /// The colour of what `ray` sees, hidden surfaces crossed and visible lights met (what
+    /// trace() finds before fog and absorption), and how far along the ray it is (kInfinity:
+    /// the background).
+    /// Out of line: most scenes hide nothing and show no light, and trace() stays small.
+    [[gnu::noinline]] Vec3 seenAlong(const Ray& ray, int depth, double pathLength, int32_t medium,
+                                     TraceContext& context, Departure departed, double& distance) const;
     Vec3 shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium, TraceContext& context) const;
     /// The light plain material `material`, of colour `color` there, sends back from the point.
     Vec3 shadeMaterial(ShadingPoint& sp, int32_t material, const Vec3& color, int depth,
@@ -102,6 +108,7 @@ private:
     Vec3 ambient_;
     int reflectionLimit_, refractionLimit_;
     bool hides_; ///< whether some surface is hidden from some rays
+    bool seesLights_; ///< whether some light is visible
 };
 
 } // namespace crt::tracer

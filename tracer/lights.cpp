@@ -13,7 +13,7 @@ Light::Light(const scene::LightDesc& desc, int shadowSamples)
       attenuation_(desc.attenuation),
       attenuates_(desc.kind != scene::LightKind::Parallel && desc.attenuation != Vec3(1, 0, 0)),
       tightness_(desc.tightness), shadowless_(desc.shadowless), circular_(desc.circular),
-      orient_(desc.orient) {
+      orient_(desc.orient), visible_(desc.visible), radius_(desc.radius) {
     switch (desc.kind) {
     case scene::LightKind::Point: position_ = desc.origin; break;
     case scene::LightKind::Parallel: direction_ = glm::normalize(desc.pointing - desc.from); break;
@@ -26,10 +26,19 @@ Light::Light(const scene::LightDesc& desc, int shadowSamples)
         cosInner_ = std::cos(inner);
         break;
     }
-    case scene::LightKind::Area: {
+    case scene::LightKind::Area:
+    case scene::LightKind::Sphere: {
         position_ = desc.origin;
         edgeA_ = desc.edgeA;
         edgeB_ = desc.edgeB;
+        if (desc.kind == scene::LightKind::Sphere) {
+            // Lit as the disc through its centre facing each point, which is what the sphere
+            // shows a point (POV-Ray's circular, oriented area light).
+            edgeA_ = Vec3(2 * desc.radius, 0, 0);
+            edgeB_ = Vec3(0, 0, 2 * desc.radius);
+            position_ = desc.origin - 0.5 * (edgeA_ + edgeB_);
+            circular_ = orient_ = true;
+        }
         areaNormal_ = glm::cross(edgeA_, edgeB_);
         sampleCount_ = std::max(shadowSamples, 1);
         // A near-square grid of strata, as many as there are samples.
@@ -66,7 +75,7 @@ LightSample Light::sample(const Vec3& point, int index, const Vec2& jitter) cons
     }
     Vec3 target = position_;
     Vec3 color = color_;
-    if (kind_ == scene::LightKind::Area) {
+    if (hasArea()) {
         int sx = index % strataX_, sy = index / strataX_;
         double a = (sx + jitter.x) / strataX_, b = (sy + jitter.y) / strataY_;
         target = areaPoint(areaFrame(point), std::min(a, 1.0), std::min(b, 1.0));
@@ -85,7 +94,7 @@ Light::AreaFrame Light::areaFrame(const Vec3& point) const {
     const Vec3 center = position_ + 0.5 * (edgeA_ + edgeB_);
     const Vec3 toPoint = point - center;
     const double distance = glm::length(toPoint);
-    if (distance == 0) return {position_, edgeA_, edgeB_, areaNormal_};
+    if (distance == 0 || areaNormal_ == Vec3(0.0)) return {position_, edgeA_, edgeB_, areaNormal_};
     const Vec3 facing = toPoint / distance;
     Vec3 alongA = edgeA_ - glm::dot(edgeA_, facing) * facing;
     if (glm::dot(alongA, alongA) < 1e-12 * glm::dot(edgeA_, edgeA_))
@@ -121,14 +130,13 @@ LightSample Light::toward(const Vec3& point, const Vec3& target, Vec3 color) con
 }
 
 LightSample Light::sampleUniformly(const Vec3& point, const Vec2& u) const {
-    if (kind_ != scene::LightKind::Area && kind_ != scene::LightKind::Cylinder) return sample(point, 0, u);
-    const Vec3 target = kind_ == scene::LightKind::Area ? areaPoint(areaFrame(point), u.x, u.y)
-                                                        : position_ + u.x * edgeA_;
+    if (!hasArea() && kind_ != scene::LightKind::Cylinder) return sample(point, 0, u);
+    const Vec3 target = hasArea() ? areaPoint(areaFrame(point), u.x, u.y) : position_ + u.x * edgeA_;
     return toward(point, target, color_);
 }
 
 double Light::crossing(const Ray& ray, double tMax) const {
-    if (kind_ != scene::LightKind::Area) return kInfinity;
+    if (!hasArea()) return kInfinity;
     const AreaFrame frame = areaFrame(ray.origin);
     const double facing = glm::dot(frame.normal, ray.dir);
     if (facing == 0) return kInfinity;
@@ -147,6 +155,57 @@ double Light::areaPdf(const Vec3& point, const Vec3& toLight, double distance) c
     // area · |cos θ|; the inscribed ellipse has π/4 of the parallelogram's area.
     const double projected = std::abs(glm::dot(areaFrame(point).normal, toLight)) * (circular_ ? kPi / 4 : 1.0);
     return projected > 0 ? distance * distance / projected : kInfinity;
+}
+
+namespace {
+
+/// The roots of a·t² + 2·halfB·t + c in increasing order, or none (false).
+bool quadraticRoots(double a, double halfB, double c, double& t0, double& t1) {
+    const double discriminant = halfB * halfB - a * c;
+    if (a == 0 || discriminant < 0) return false;
+    const double root = std::sqrt(discriminant);
+    t0 = (-halfB - root) / a;
+    t1 = (-halfB + root) / a;
+    return true;
+}
+
+} // namespace
+
+double Light::seenAt(const Ray& ray, double tMax) const {
+    if (kind_ == scene::LightKind::Area) return crossing(ray, tMax);
+    if (kind_ != scene::LightKind::Sphere && kind_ != scene::LightKind::Cylinder) return kInfinity;
+    // The sphere around the centre, or the open tube around the segment (the parts of the
+    // ray and of its origin across the segment).
+    Vec3 d = ray.dir, f = ray.origin - position_;
+    const double length2 = glm::dot(edgeA_, edgeA_);
+    if (kind_ == scene::LightKind::Sphere) {
+        f -= 0.5 * (edgeA_ + edgeB_);
+    } else {
+        d -= edgeA_ * (glm::dot(ray.dir, edgeA_) / length2);
+        f -= edgeA_ * (glm::dot(f, edgeA_) / length2);
+    }
+    double t0, t1;
+    if (!quadraticRoots(glm::dot(d, d), glm::dot(f, d), glm::dot(f, f) - radius_ * radius_, t0, t1)) return kInfinity;
+    for (double t : {t0, t1}) {
+        if (!(t > 0 && t < tMax)) continue;
+        if (kind_ == scene::LightKind::Sphere) return t;
+        const double along = glm::dot(ray.origin + t * ray.dir - position_, edgeA_) / length2;
+        if (along >= 0 && along <= 1) return t;
+    }
+    return kInfinity;
+}
+
+const Light* firstSeenLight(const std::vector<Light>& lights, const Ray& ray, double& tMax) {
+    const Light* first = nullptr;
+    for (const Light& light : lights) {
+        if (!light.visible()) continue;
+        const double t = light.seenAt(ray, tMax);
+        if (t < tMax) {
+            tMax = t;
+            first = &light;
+        }
+    }
+    return first;
 }
 
 } // namespace crt::tracer

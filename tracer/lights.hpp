@@ -34,10 +34,16 @@ public:
     /// (the light's own position for the others).
     LightSample sampleUniformly(const Vec3& point, const Vec2& u) const;
 
-    /// Whether rays can meet it: an area light's parallelogram.
-    bool hasArea() const { return kind_ == scene::LightKind::Area; }
-    /// Where `ray` crosses an area light's parallelogram within (0, tMax), or kInfinity.
+    /// Whether rays can meet what it samples: an area light's parallelogram (or ellipse), or
+    /// the disc of a sphere light facing the point it lights.
+    bool hasArea() const { return kind_ == scene::LightKind::Area || kind_ == scene::LightKind::Sphere; }
+    /// Where `ray` crosses what an area or sphere light samples within (0, tMax), or kInfinity.
     double crossing(const Ray& ray, double tMax) const;
+    /// Whether camera and reflected rays see it (`visible`).
+    bool visible() const { return visible_; }
+    /// Where `ray` meets the light as it is seen within (0, tMax): an area light's
+    /// parallelogram, a sphere light's sphere, a cylinder light's tube; else kInfinity.
+    double seenAt(const Ray& ray, double tMax) const;
     /// The solid-angle density of sampleUniformly's points of an area light seen from
     /// `point`, at `distance` along the unit direction `toLight`: d² / (area · |cos θ|).
     double areaPdf(const Vec3& point, const Vec3& toLight, double distance) const;
@@ -78,8 +84,12 @@ private:
     bool attenuates_ = false;
     double cosOuter_ = -1, cosInner_ = -1, tightness_ = 0;
     bool shadowless_ = false;
-    bool circular_ = false, orient_ = false;
+    bool circular_ = false, orient_ = false, visible_ = false;
+    double radius_ = 0; ///< Sphere, Cylinder
     int sampleCount_ = 1, strataX_ = 1, strataY_ = 1;
 };
+
+/// The visible light `ray` meets first within (0, tMax), narrowing tMax to where; null if none.
+const Light* firstSeenLight(const std::vector<Light>& lights, const Ray& ray, double& tMax);
 
 } // namespace crt::tracer

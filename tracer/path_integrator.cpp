@@ -43,7 +43,8 @@ PathIntegrator::PathIntegrator(const RenderScene& scene, const scene::SettingsDe
     : scene_(scene), settings_(settings), lights_(lights), background_(background), fog_(fog), textures_(textures),
       mixer_(scene.materials, scene.blends, textures), emitters_(scene), environment_(background),
       hasAreaLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.hasArea(); })),
-      hides_(scene.hidesAnything()) {}
+      hides_(scene.hidesAnything()),
+      seesLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.visible(); })) {}
 
 int32_t PathIntegrator::drawMaterial(const SurfaceInteraction& si, Vec3& color, Vec3& beta,
                                      TraceContext& context) const {
@@ -209,18 +210,25 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
     for (int crossings = 0;; ++crossings) {
         Vertex v;
         const bool found = scene_.intersect(ray, kInfinity, v.hit, context.scratch, context.stats, departed);
-        // Area lights are unseen by the camera, as under the Whitted integrator.
-        if (bounce > 0 && hasAreaLights_)
-            radiance += beta * areaLightsAlong(ray, found ? v.hit.t : kInfinity, scatterPdf, pathLength);
+        double reach = found ? v.hit.t : kInfinity;
+        // The camera, mirrors and glass see the visible lights as the Whitted integrator does
+        // (light sampling cannot reach them through a mirror); other bounces meet every area
+        // light and weigh it against light sampling.
+        const Light* lamp = scatterPdf == 0 && seesLights_ ? firstSeenLight(lights_, ray, reach) : nullptr;
+        if (bounce > 0 && hasAreaLights_) radiance += beta * areaLightsAlong(ray, reach, scatterPdf, pathLength);
         if (medium >= 0) {
             // Beer–Lambert absorption along the path inside the solid.
             const Vec3 a = rgb(scene_.materials[static_cast<size_t>(medium)].absorption);
             for (int i = 0; i < 3; ++i)
-                if (a[i] > 0) beta[i] *= found ? std::exp(-a[i] * v.hit.t) : 0.0;
+                if (a[i] > 0) beta[i] *= reach < kInfinity ? std::exp(-a[i] * reach) : 0.0;
         } else if (fog_) {
-            const FogCrossing fog = fog_->along(ray, found ? v.hit.t : kInfinity);
+            const FogCrossing fog = fog_->along(ray, reach);
             radiance += beta * fog.inscattered;
             beta *= fog.transmittance;
+        }
+        if (lamp) {
+            radiance += beta * lamp->color();
+            break;
         }
         if (!found) {
             if (crossings == 0 && transparentBackground) return glm::dvec4(0.0);

@@ -66,6 +66,7 @@ private:
     EnvironmentLight environment_;
     bool hasAreaLights_;
     bool hides_; ///< whether some surface is hidden from some rays
+    bool seesLights_; ///< whether some light is visible
 };
 
 } // namespace crt::tracer

@@ -27,8 +27,7 @@ RenderCost estimateRenderCost(const scene::SceneDesc& scene) {
     cost.cameraSamplesPerPixel = grid * lensSamples;
     double shadowRays = 0;
     for (const scene::LightDesc& light : scene.lights) {
-        const bool extended = light.kind == scene::LightKind::Area || light.kind == scene::LightKind::Cylinder;
-        shadowRays += extended ? std::max(s.shadowSamples, 1) : 1;
+        shadowRays += scene::isExtendedLight(light.kind) ? std::max(s.shadowSamples, 1) : 1;
     }
     const bool glossy = std::any_of(scene.finishes.begin(), scene.finishes.end(),
                                     [](const scene::FinishDesc& f) { return f.glossiness > 0; });

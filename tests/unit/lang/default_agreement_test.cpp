@@ -48,6 +48,8 @@ constexpr Usage kUsages[] = {
      "edgeB -> vec3(0, 0, 1) color -> rgb(1, 1, 1) @ }] }"},
     {ObjectType::CylinderLight, "Settings { lights -> [CylinderLight { from -> vec3(-1, 5, 0) "
                                 "to -> vec3(1, 5, 0) color -> rgb(1, 1, 1) @ }] }"},
+    {ObjectType::SphereLight,
+     "Settings { lights -> [SphereLight { center -> vec3(0, 5, 0) radius -> 0.5 color -> rgb(1, 1, 1) @ }] }"},
     {ObjectType::Material, CRT_SPHERE_WITH("Material { @ }")},
     {ObjectType::MaterialMap,
      CRT_SPHERE_WITH("MaterialMap { pattern -> Gradient {} "

@@ -95,3 +95,53 @@ TEST_CASE("an oriented area light faces every point it lights, its edges keeping
         CHECK(light.areaPdf(point, -facing, distance) == Approx(distance * distance / (kPi / 4 * 2)));
     }
 }
+
+TEST_CASE("a sphere light samples the disc facing each point, and is seen as its sphere", "[lights]") {
+    scene::LightDesc desc;
+    desc.kind = scene::LightKind::Sphere;
+    desc.origin = kCenter;
+    desc.radius = 0.5;
+    desc.color = {1, 1, 1, 1};
+    const Light light(desc, 16);
+    REQUIRE(light.hasArea());
+    for (glm::dvec3 point : {glm::dvec3(0, 0, 0), glm::dvec3(3, 4, 1)}) {
+        const glm::dvec3 facing = glm::normalize(point - kCenter);
+        for (int i = 0; i < light.sampleCount(); ++i) {
+            const glm::dvec3 offset = light.sample(point, i, {0.3, 0.7}).target - kCenter;
+            CHECK(std::abs(glm::dot(offset, facing)) < 1e-12);
+            CHECK(glm::length(offset) <= 0.5 + 1e-12);
+        }
+    }
+    // Seen: the sphere's near side, along any ray toward it, and nothing past tMax.
+    const Ray down{{0, 10, 0}, {0, -1, 0}};
+    CHECK(light.seenAt(down, 100) == Approx(5.5));
+    CHECK(light.seenAt(down, 5) == kInfinity);
+    const Ray beside{{0.49, 10, 0}, {0, -1, 0}}, past{{0.51, 10, 0}, {0, -1, 0}};
+    CHECK(light.seenAt(beside, 100) < kInfinity);
+    CHECK(light.seenAt(past, 100) == kInfinity);
+    // From inside it, the far wall.
+    CHECK(light.seenAt(Ray{kCenter, {1, 0, 0}}, 100) == Approx(0.5));
+}
+
+TEST_CASE("a cylinder light is seen as the open tube of its radius around its segment", "[lights]") {
+    scene::LightDesc desc;
+    desc.kind = scene::LightKind::Cylinder;
+    desc.from = {-1, 4, 0};
+    desc.to = {1, 4, 0};
+    desc.radius = 0.1;
+    desc.color = {1, 1, 1, 1};
+    const Light light(desc, 8);
+    CHECK(light.seenAt(Ray{{0.5, 0, 0}, {0, 1, 0}}, 100) == Approx(3.9));
+    CHECK(light.seenAt(Ray{{0.5, 0, 0.11}, {0, 1, 0}}, 100) == kInfinity);
+    CHECK(light.seenAt(Ray{{1.05, 0, 0}, {0, 1, 0}}, 100) == kInfinity); // past its end
+    // Along its axis from beyond an end: the tube is open, so it is not met.
+    CHECK(light.seenAt(Ray{{-3, 4, 0}, {1, 0, 0}}, 100) == kInfinity);
+    // A ray that enters past an end meets the inside of the far wall within the segment.
+    const glm::dvec3 from{-1.2, 4.05, -1};
+    const Ray slanted{from, glm::normalize(glm::dvec3(-0.8, 4, 0.1) - from)};
+    const double t = light.seenAt(slanted, 100);
+    REQUIRE(t < kInfinity);
+    const glm::dvec3 at = slanted.origin + t * slanted.dir;
+    CHECK(at.x >= -1);
+    CHECK(std::hypot(at.y - 4, at.z) == Approx(0.1));
+}
