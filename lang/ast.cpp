@@ -39,9 +39,19 @@ std::string_view opSpelling(ModifierOp op) {
     case ModifierOp::Scale: return "scale";
     case ModifierOp::Material: return "material";
     case ModifierOp::Matrix: return "matrix";
+    case ModifierOp::Shadow: return "shadow";
+    case ModifierOp::Camera: return "camera";
+    case ModifierOp::Reflected: return "reflected";
     case ModifierOp::Splice: return "";
     }
     return "?";
+}
+
+std::optional<ModifierOp> namedModifier(std::string_view word) {
+    for (ModifierOp op : {ModifierOp::Material, ModifierOp::Matrix, ModifierOp::Shadow, ModifierOp::Camera,
+                          ModifierOp::Reflected})
+        if (word == opSpelling(op)) return op;
+    return std::nullopt;
 }
 
 } // namespace crt::lang

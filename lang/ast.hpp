@@ -7,6 +7,7 @@
 #include "source_file.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -48,12 +49,16 @@ enum class BinaryOp : uint8_t {
     Add, Sub, Intersect, Mul, Div, Mod, Less, Greater, LessEqual, GreaterEqual, Equal, NotEqual,
     And, Or,
 };
-/// Splice: a list of modifiers held in a value, given by name (`<spin>`).
-enum class ModifierOp : uint8_t { Translate, Rotate, Scale, Material, Matrix, Splice };
+/// Splice: a list of modifiers held in a value, given by name (`<spin>`). Material to
+/// Reflected are words rather than keywords (they are names elsewhere).
+enum class ModifierOp : uint8_t { Translate, Rotate, Scale, Material, Matrix, Shadow, Camera, Reflected, Splice };
 
 std::string_view opSpelling(UnaryOp op);
 std::string_view opSpelling(BinaryOp op);
 std::string_view opSpelling(ModifierOp op);
+/// The modifier a word names in a modifier list (`material`, `matrix`, `shadow`, `camera`,
+/// `reflected`), if it is one of those words.
+std::optional<ModifierOp> namedModifier(std::string_view word);
 
 /// Where a name's value lives, decided once by the resolver.
 enum class Binding : uint8_t {

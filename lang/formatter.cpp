@@ -31,7 +31,7 @@ void collectShapes(Node* node, Shapes& shapes, const SourceFile& file) {
         shapes.modifierClose.insert(node->range.end - 1);
     }
     for (const Modifier& m : modifiers)
-        if (m.op == ModifierOp::Material || m.op == ModifierOp::Matrix)
+        if (namedModifier(opSpelling(m.op)))
             shapes.modifierWord.insert(m.range.begin);
     forEachChild(node, [&](Node* child) { collectShapes(child, shapes, file); });
 }

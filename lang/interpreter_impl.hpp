@@ -62,6 +62,8 @@ struct ModifierList {
     std::vector<scene::Modifier> moves;
     int32_t material = -1;       ///< given to the parts that have none; -1: none
     SourceRange materialRange{}; ///< where the material was given
+    uint8_t hidden = 0;          ///< scene::HiddenFrom bits (`shadow false` …)
+    SourceRange hiddenRange{};   ///< where the first of them was given
     SourceRange range{};         ///< where the list was written
 };
 

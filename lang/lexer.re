@@ -1,5 +1,7 @@
 // The re2c lexer for CRT scripts (spec §1). Compiled by re2c into the build tree.
 #include "lexer.hpp"
+
+#include "ast.hpp"
 #include "povray_habits.hpp"
 #include "string_escape.hpp"
 
@@ -209,11 +211,13 @@ bool isModifierKeyword(TokenKind kind) {
 }
 
 /// The modifiers that are words rather than keywords (they name attributes elsewhere).
-bool isNamedModifier(std::string_view word) { return word == "material" || word == "matrix"; }
+bool isNamedModifier(std::string_view word) { return namedModifier(word).has_value(); }
 
+/// Whether a token can begin a named modifier's operand (`material m`, `shadow false`).
 bool startsOperand(TokenKind kind) {
     return kind == TokenKind::Identifier || kind == TokenKind::Name || kind == TokenKind::Integer ||
-           kind == TokenKind::Float || kind == TokenKind::LBracket || kind == TokenKind::LParen;
+           kind == TokenKind::Float || kind == TokenKind::LBracket || kind == TokenKind::LParen ||
+           kind == TokenKind::KwTrue || kind == TokenKind::KwFalse;
 }
 
 } // namespace

@@ -577,6 +577,22 @@ scene::Modifier Interpreter::evalMatrix(const Modifier& m) {
     return mod;
 }
 
+namespace {
+
+/// What `<shadow false>`, `<camera false>` or `<reflected false>` hides an entity from.
+uint8_t hiddenBit(ModifierOp op) {
+    return op == ModifierOp::Shadow ? scene::kHiddenFromShadows
+           : op == ModifierOp::Camera ? scene::kHiddenFromCamera
+                                      : scene::kHiddenFromReflections;
+}
+
+void hide(ModifierList& list, uint8_t bits, SourceRange where) {
+    if (!list.hidden) list.hiddenRange = where;
+    list.hidden |= bits;
+}
+
+} // namespace
+
 ModifierList Interpreter::evalModifiers(std::span<const Modifier> modifiers, SourceRange whole) {
     ModifierList list;
     list.range = whole;
@@ -603,6 +619,15 @@ ModifierList Interpreter::evalModifiers(std::span<const Modifier> modifiers, Sou
             giveMaterial(static_cast<int32_t>(arg.index), m.range);
             break;
         }
+        case ModifierOp::Shadow:
+        case ModifierOp::Camera:
+        case ModifierOp::Reflected: {
+            Value arg = eval(m.argument);
+            if (arg.kind != ValueKind::Bool)
+                fail(m.argument->range, fmt::format("'{}' takes true or false, not {}", opSpelling(m.op), typeName(arg)));
+            if (!arg.b) hide(list, hiddenBit(m.op), m.range);
+            break;
+        }
         case ModifierOp::Splice: {
             Value arg = eval(m.argument);
             if (arg.kind != ValueKind::Modifiers)
@@ -614,6 +639,7 @@ ModifierList Interpreter::evalModifiers(std::span<const Modifier> modifiers, Sou
             charge(given.moves.size() * sizeof(scene::Modifier));
             list.moves.insert(list.moves.end(), given.moves.begin(), given.moves.end());
             if (given.material >= 0) giveMaterial(given.material, m.range);
+            if (given.hidden) hide(list, given.hidden, m.range);
             break;
         }
         }
@@ -641,6 +667,8 @@ Value Interpreter::evalModify(const ModifyExpr* node) {
     if (target.kind == ValueKind::Texture) {
         if (list.material >= 0)
             fail(list.materialRange, "a texture takes no material; 'material' is for entities");
+        if (list.hidden)
+            fail(list.hiddenRange, "a texture is not hidden from rays; 'shadow', 'camera' and 'reflected' are for entities");
         scene::TextureDesc texture = scene_.textures[target.index];
         texture.modifiers.insert(texture.modifiers.end(), modifiers.begin(), modifiers.end());
         texture.source = span(node->range);
@@ -665,7 +693,8 @@ Value Interpreter::evalModify(const ModifyExpr* node) {
     }
     bool solid = scene_.entities[static_cast<size_t>(child)].solid;
     int32_t index = addEntity(scene::EntityDesc{scene::TransformNode{child, std::move(modifiers)},
-                                                material, solid, span(node->range), hidden},
+                                                material, solid, span(node->range),
+                                                static_cast<uint8_t>(hidden | list.hidden)},
                               EntityInfo{node->range, target.objectType, false});
     return Value::object(ValueKind::Entity, target.objectType, static_cast<uint32_t>(index));
 }

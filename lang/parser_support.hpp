@@ -69,11 +69,11 @@ inline Expr* makeCompoundAssign(ParseContext& ctx, BinaryOp op, Expr* target, So
 /// reported (a list of modifiers given by name stands alone: `<spin>`).
 inline Modifier makeNamedModifier(ParseContext& ctx, std::string_view name, SourceRange nameRange,
                                   Expr* argument, SourceRange whole) {
-    if (name == "material") return Modifier{ModifierOp::Material, whole, argument};
-    if (name == "matrix") return Modifier{ModifierOp::Matrix, whole, argument};
+    if (std::optional<ModifierOp> op = namedModifier(name)) return Modifier{*op, whole, argument};
     ctx.diagnostics.error(
         nameRange, fmt::format("'{}' is not a modifier; the modifiers are translate, rotate, "
-                               "scale, material and matrix, and lists of them by name",
+                               "scale, material, matrix, shadow, camera and reflected, and lists of "
+                               "them by name",
                                name));
     return Modifier{ModifierOp::Splice, whole, argument};
 }

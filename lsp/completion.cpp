@@ -217,7 +217,7 @@ private:
     }
 
     void modifiers() {
-        for (std::string_view m : {"translate", "rotate", "scale", "material", "matrix"}) {
+        for (std::string_view m : {"translate", "rotate", "scale", "material", "matrix", "shadow", "camera", "reflected"}) {
             add({std::string(m), CompletionKind::Keyword, "modifier", "", std::string(m) + " ", false, "0"});
         }
     }

@@ -58,8 +58,9 @@ std::optional<SemanticToken> classify(const Analysis& a, size_t index) {
         // `v.x`: a component's name.
         if (index > 0 && a.tokens[index - 1].kind == TokenKind::Dot)
             return SemanticToken{range, TokenType::Property};
-        // `<material m>`, `<matrix [...]>`: words of the modifier list where no name is meant.
-        if (a.text(t) == "material" || a.text(t) == "matrix")
+        // `<material m>`, `<shadow false>`: words of the modifier list where no name is meant.
+        if (namedModifier(a.text(t)) && index > 0 &&
+            (a.tokens[index - 1].kind == TokenKind::ModifierOpen || a.tokens[index - 1].kind == TokenKind::Comma))
             return SemanticToken{range, TokenType::Keyword};
         if (auto slot = findPreludeSlot(a.text(t))) {
             bool function = *slot < preludeSlotOfT();

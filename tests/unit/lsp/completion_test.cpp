@@ -158,7 +158,8 @@ TEST_CASE("modifiers after '<'", "[completion]") {
     CHECK(has(list, "scale"));
     CHECK(has(list, "material"));
     CHECK(has(list, "matrix"));
-    CHECK(list.items.size() == 5);
+    for (const char* hides : {"shadow", "camera", "reflected"}) CHECK(has(list, hides));
+    CHECK(list.items.size() == 8);
 }
 
 TEST_CASE("nothing inside comments", "[completion]") {

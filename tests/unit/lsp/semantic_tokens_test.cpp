@@ -88,6 +88,22 @@ s = Sphere { center -> vec3(0, 0, 0) radius -> 1 } <$use«spin», $word2«matrix
     CHECK(tokenAt(tokens, code.range("use")) == std::pair{TokenType::Variable, uint32_t{0}});
 }
 
+TEST_CASE("semantic tokens: shadow, camera and reflected are keywords in a modifier list only",
+          "[semantic]") {
+    Annotations code(R"($def«camera» = Camera { position -> vec3(0, 1, -5) pointing -> vec3(0, 0, 0) }
+s = Sphere { center -> vec3(0, 0, 0) radius -> 1 } <$w1«shadow» false, $w2«camera» false>
+Settings { $attr«camera» -> $use«camera» }
+Scene { s }
+)");
+    auto a = analyzeCode(code.code);
+    auto tokens = semanticTokens(*a);
+    CHECK(tokenAt(tokens, code.range("w1")).first == TokenType::Keyword);
+    CHECK(tokenAt(tokens, code.range("w2")).first == TokenType::Keyword);
+    CHECK(tokenAt(tokens, code.range("attr")).first == TokenType::Property);
+    CHECK(tokenAt(tokens, code.range("def")).first == TokenType::Variable);
+    CHECK(tokenAt(tokens, code.range("use")).first == TokenType::Variable);
+}
+
 TEST_CASE("semantic tokens: a component's name is a property, its vector a variable",
           "[semantic]") {
     Annotations code("v = vec3(1, 2, 3)\nx = $v«v».$c«z»\n");
