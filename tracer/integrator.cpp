@@ -95,24 +95,8 @@ std::string SceneFeatures::names() const {
 }
 
 bool Integrator::nearestSeen(Ray& ray, Hit& hit, Departure departed, double& skipped, TraceContext& context) const {
-    skipped = 0;
-    if (!scene_.intersect(ray, kInfinity, hit, context.scratch, context.stats, departed)) return false;
-    if (!hides_) [[likely]]
-        return true;
     const uint8_t unseen = context.bent ? scene::kHiddenFromReflections : scene::kHiddenFromCamera;
-    // Each crossing moves the ray on; the bound only guards against a surface that rounding
-    // keeps in front of it.
-    constexpr int kMostCrossings = 4096;
-    for (int crossings = 0; scene_.hiddenFrom(hit) & unseen; ++crossings) {
-        if (crossings == kMostCrossings) return false;
-        const SurfaceInteraction si = scene_.interaction(ray, hit);
-        skipped += hit.t;
-        ray = Ray{offsetRayOrigin(si.point, si.pointError, si.normal, ray.dir), ray.dir};
-        departed = scene_.departedPrimitive(hit, si, ray.dir);
-        hit = Hit{};
-        if (!scene_.intersect(ray, kInfinity, hit, context.scratch, context.stats, departed)) return false;
-    }
-    return true;
+    return scene_.intersectUnhidden(ray, unseen, hit, skipped, context.scratch, context.stats, departed);
 }
 
 Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context,

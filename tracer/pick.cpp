@@ -15,14 +15,17 @@ std::optional<PickResult> pick(const scene::SceneDesc& scene, double x, double y
     QueryScratch scratch;
     RayStats stats;
     PickResult result;
-    if (!geometry->intersect(ray, kInfinity, hit, scratch, stats)) return result;
+    // What the camera sees: not what is hidden from it.
+    Ray seen = ray;
+    double skipped = 0;
+    if (!geometry->intersectUnhidden(seen, scene::kHiddenFromCamera, hit, skipped, scratch, stats)) return result;
     result.hit = true;
     result.entity = geometry->entityOf(hit);
     // The render scene's materials are the description's, then the default.
     const int32_t material = geometry->materialOf(hit);
     if (static_cast<size_t>(material) < scene.materials.size()) result.material = material;
-    result.distance = hit.t;
-    result.point = ray.at(hit.t);
+    result.distance = skipped + hit.t;
+    result.point = ray.at(result.distance);
     return result;
 }
 

@@ -269,6 +269,23 @@ uint8_t RenderScene::hiddenFrom(const Hit& hit) const {
     return entry(hiddenInstances, hit.instance) | entry(prototypeOf(hit.instance).hiddenPrimitives, hit.primitive);
 }
 
+bool RenderScene::intersectUnhidden(Ray& ray, uint8_t unseen, Hit& hit, double& skipped, QueryScratch& scratch,
+                                    RayStats& stats, Departure departed) const {
+    skipped = 0;
+    // Each crossing moves the ray on; the bound only guards against a surface that rounding
+    // keeps in front of it.
+    constexpr int kMostCrossings = 4096;
+    for (int crossings = 0;; ++crossings) {
+        if (crossings == kMostCrossings || !intersect(ray, kInfinity, hit, scratch, stats, departed)) return false;
+        if (!(hiddenFrom(hit) & unseen)) return true;
+        const SurfaceInteraction si = interaction(ray, hit);
+        skipped += hit.t;
+        ray = Ray{offsetRayOrigin(si.point, si.pointError, si.normal, ray.dir), ray.dir};
+        departed = departedPrimitive(hit, si, ray.dir);
+        hit = Hit{};
+    }
+}
+
 bool RenderScene::hidesAnything() const {
     return !hiddenPrimitives.empty() || !hiddenInstances.empty() ||
            std::any_of(prototypes.begin(), prototypes.end(),

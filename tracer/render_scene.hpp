@@ -215,6 +215,11 @@ public:
     /// holds an entry for every primitive or instance.
     std::vector<uint8_t> hiddenPrimitives, hiddenInstances;
     uint8_t hiddenFrom(const Hit& hit) const;
+    /// The nearest hit along `ray` of a surface not hidden from `unseen` (HiddenFrom bits),
+    /// crossing those that are: `ray` becomes the ray the hit is on, begun past the crossed
+    /// surfaces `skipped` along the original.
+    bool intersectUnhidden(Ray& ray, uint8_t unseen, Hit& hit, double& skipped, QueryScratch& scratch,
+                           RayStats& stats, Departure departed = {}) const;
     /// Whether anything in the scene or its prototypes is hidden from some rays.
     bool hidesAnything() const;
 

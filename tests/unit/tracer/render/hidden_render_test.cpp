@@ -7,6 +7,8 @@
 #include "analytic_util.hpp"
 #include "scene_builder_util.hpp"
 
+#include "tracer/pick.hpp"
+
 using namespace crt::tracer;
 namespace scene = crt::scene;
 using namespace crt::tracer::test;
@@ -190,4 +192,21 @@ TEST_CASE("the path integrator crosses what is hidden from its camera rays and s
     CHECK(unseen.pixels != alone.pixels);
     CHECK(pixelAt(unseen, kSize / 2, kSize / 2) == pixelAt(alone, kSize / 2, kSize / 2));
     CHECK(pixelAt(seen, kSize / 2, kSize / 2) != pixelAt(alone, kSize / 2, kSize / 2));
+}
+
+TEST_CASE("picking names what the camera sees, not what is hidden from it", "[render][hidden]") {
+    // The image's centre looks at the sphere; hidden from the camera, at the floor behind it.
+    const scene::SceneDesc seen = floorAndSphere(0), unseen = floorAndSphere(scene::kHiddenFromCamera);
+    const TestRay ray = specCameraRay(seen.camera, kSize, kSize, kSize / 2, kSize / 2);
+    REQUIRE(hitSphere(ray, kCenter, kRadius, 0.05));
+    const double floorDistance = *hitPlane(ray, {0, 1, 0}, {0, 0, 0});
+    std::string error;
+    const auto onSphere = pick(seen, kSize / 2 + 0.5, kSize / 2 + 0.5, error);
+    const auto onFloor = pick(unseen, kSize / 2 + 0.5, kSize / 2 + 0.5, error);
+    REQUIRE(onSphere);
+    REQUIRE(onFloor);
+    CHECK(onSphere->entity == 1);
+    CHECK(onFloor->entity == 0);
+    CHECK(onFloor->distance == Approx(floorDistance));
+    CHECK(onFloor->point.y == Approx(0).margin(1e-9));
 }
