@@ -89,6 +89,7 @@ std::string Interpreter::objectText(const Value& value) const {
     case ValueKind::Camera: where = cameras_[value.index].source; break;
     case ValueKind::Background: where = backgrounds_[value.index].source; break;
     case ValueKind::Fog: where = fogs_[value.index].source; break;
+    case ValueKind::Medium: where = scene_.media[value.index].source; break;
     case ValueKind::BlobComponent: where = blobComponents_[value.index].source; break;
     case ValueKind::Spline: where = splines_[value.index].source; break;
     default: break;

@@ -276,6 +276,7 @@ private:
     Value buildLight(const ObjectBuilder& b);
     Value buildBackground(const ObjectBuilder& b);
     Value buildFog(ObjectBuilder& b);
+    Value buildMedium(ObjectBuilder& b);
     Value buildTexture(ObjectBuilder& b);
     /// Fills scene_.settings; keeps what it names for assembleScene to link, and every value
     /// out of its range in settingsProblems_ (for reportSettingsProblems).

@@ -124,6 +124,7 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
     case AttrType::Camera:
     case AttrType::Background:
     case AttrType::Fog:
+    case AttrType::Medium:
     case AttrType::LightList:
     case AttrType::Texture:
     case AttrType::Bump: checkReference(a, v, attr.type); return;
@@ -133,6 +134,13 @@ void ObjectBuilder::check(const Attribute& a, const Value& v) {
     case AttrType::MaterialMap: checkMap(a, v, attr.type); return;
     case AttrType::MaterialList: checkMaterialList(a, v); return;
     case AttrType::PatternList: checkPatternList(a, v); return;
+    case AttrType::FloatOrPattern:
+        if (v.isNumber()) {
+            finite(a, v, 1);
+        } else if (v.kind != ValueKind::Texture || !isColorTexture(v.objectType) || v.objectType == ObjectType::Image) {
+            wrongType(a, v, "a float or a pattern (such as Bozo or Granite)");
+        }
+        return;
     case AttrType::Solid:
         if (!isSolid(v))
             notSolid(a.value->range, fmt::format("attribute '{}' of {}", a.name, info.name), v);
@@ -357,6 +365,9 @@ void ObjectBuilder::checkReference(const Attribute& a, const Value& v, AttrType 
         return;
     case AttrType::Fog:
         if (v.kind != ValueKind::Fog) wrongType(a, v, "a Fog");
+        return;
+    case AttrType::Medium:
+        if (v.kind != ValueKind::Medium) wrongType(a, v, "a Medium");
         return;
     case AttrType::LightList:
         if (v.kind != ValueKind::List) wrongType(a, v, "a list of lights");

@@ -139,6 +139,7 @@ scene::FinishDesc readFinish(const ObjectBuilder& b) {
     f.filter = b.number("filter", f.filter);
     f.texture = b.index("texture", f.texture);
     f.bump = b.index("bump", f.bump);
+    f.medium = b.index("medium", f.medium);
     if (f.filter < 0 || f.filter > 1) {
         b.in.fail(b.where("filter"), "filter must be between 0 and 1");
     }
@@ -373,6 +374,7 @@ Value Interpreter::evalObject(const ObjectExpr* node) {
     case ObjectCategory::Light: return buildLight(b);
     case ObjectCategory::Background: return buildBackground(b);
     case ObjectCategory::Fog: return buildFog(b);
+    case ObjectCategory::Medium: return buildMedium(b);
     case ObjectCategory::Texture: return buildTexture(b);
     case ObjectCategory::BlobComponent: return buildBlobComponent(b);
     case ObjectCategory::Spline: return buildSpline(b);
@@ -771,6 +773,35 @@ Value Interpreter::buildBackground(const ObjectBuilder& b) {
     backgrounds_.push_back(std::move(bg));
     return Value::object(ValueKind::Background, b.info.type,
                          static_cast<uint32_t>(backgrounds_.size() - 1));
+}
+
+Value Interpreter::buildMedium(ObjectBuilder& b) {
+    scene::MediumDesc m;
+    m.absorption = b.color("absorption", m.absorption);
+    m.scattering = b.color("scattering", m.scattering);
+    m.emission = b.color("emission", m.emission);
+    for (std::string_view name : {"absorption", "scattering", "emission"}) {
+        const scene::Color c = b.color(name, {});
+        if (c.r < 0 || c.g < 0 || c.b < 0) fail(b.where(name), fmt::format("a Medium's {} must not be negative", name));
+    }
+    if (const Value* density = b.get("density"); density && density->kind == ValueKind::Texture) {
+        m.densityPattern.push_back(scene_.textures[density->index]);
+    } else {
+        m.density = b.number("density", m.density);
+        if (m.density < 0) fail(b.where("density"), "a Medium's density must not be negative");
+    }
+    const std::string phase = b.lowerText("phase");
+    for (size_t i = 0; i < std::size(scene::kPhaseNames); ++i)
+        if (phase == scene::kPhaseNames[i]) m.phase = static_cast<scene::PhaseFunction>(i);
+    m.g = b.number("g", m.g);
+    if (!(m.g > -1 && m.g < 1)) fail(b.where("g"), "g must be strictly between -1 and 1");
+    m.samples = static_cast<int>(std::clamp<int64_t>(b.integer("samples", m.samples), 0, 1 << 20));
+    if (m.samples < scene::kMediumSamplesRange.min || m.samples > scene::kMediumSamplesRange.max)
+        fail(b.where("samples"), fmt::format("a Medium's samples must be {} to {}", scene::kMediumSamplesRange.min,
+                                             scene::kMediumSamplesRange.max));
+    m.source = span(b.range);
+    scene_.media.push_back(std::move(m));
+    return Value::object(ValueKind::Medium, b.info.type, static_cast<uint32_t>(scene_.media.size() - 1));
 }
 
 Value Interpreter::buildFog(ObjectBuilder& b) {

@@ -187,6 +187,7 @@ constexpr AttributeInfo kMaterial[] = {
     {"texture", A::Texture, false, "none", "A texture that replaces the colour."},
     {"bump", A::Bump, false, "none", "A bump texture that perturbs the normal."},
     {"emission", A::Color, false, "rgb(0,0,0)", "Light the surface gives off."},
+    {"medium", A::Medium, false, "none", "What fills the solid: smoke, dusty air, a cloud (a Medium)."},
     {"filter", A::Float, false, "0",
      "0 to 1: how much of what the colour's alpha lets through takes the colour."},
     // `refractiveindex` is a synonym of `ior`, handled by findAttribute.
@@ -213,6 +214,17 @@ constexpr AttributeInfo kBackground[] = {
      "A pattern read on the ray's direction (POV-Ray's sky_sphere); black shows through its alpha."},
     {"layers", A::PatternList, false, "",
      "[bottom, ..., top]: patterns read on the ray's direction, each one's alpha showing those under it."},
+};
+
+constexpr AttributeInfo kMedium[] = {
+    {"absorption", A::Color, false, "rgb(0,0,0)", "Light absorbed per unit length, at density 1."},
+    {"scattering", A::Color, false, "rgb(0,0,0)", "Light scattered per unit length, at density 1: what lights it."},
+    {"emission", A::Color, false, "rgb(0,0,0)", "Light given off per unit length, at density 1."},
+    {"density", A::FloatOrPattern, false, "1", "A number, or a pattern whose value (0 to 1) is the density."},
+    {"phase", A::Choice, false, "\"isotropic\"",
+     "How it scatters: isotropic, rayleigh (air), henyey-greenstein (with g).", scene::kPhaseNames},
+    {"g", A::Float, false, "0", "Henyey-Greenstein: -1 to 1, back to forward scattering."},
+    {"samples", A::Int, false, "16", "Steps along each ray through it."},
 };
 
 constexpr AttributeInfo kFog[] = {
@@ -594,6 +606,8 @@ constexpr ObjectInfo kObjects[] = {
      kBackground},
     {T::Fog, "Fog", C::Fog, false,
      "Fog over the scene: constant, or ground fog thinning above an altitude (POV-Ray's fog).", kFog},
+    {T::Medium, "Medium", C::Medium, false,
+     "What fills a solid: it absorbs, scatters and gives off light along the rays through it.", kMedium},
     {T::Sphere, "Sphere", C::Entity, true, "A sphere (solid).", kSphere},
     {T::Box, "Box", C::Entity, true, "An axis-aligned box (solid).", kBox},
     {T::Plane, "Plane", C::Entity, true,
@@ -776,6 +790,8 @@ std::string_view attrTypeName(AttrType type) {
     case A::Camera: return "camera";
     case A::Background: return "background or colour";
     case A::Fog: return "fog";
+    case A::Medium: return "medium";
+    case A::FloatOrPattern: return "float or pattern";
     case A::LightList: return "list of lights";
     case A::Texture: return "texture";
     case A::Bump: return "bump texture";

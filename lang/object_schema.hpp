@@ -24,6 +24,7 @@ enum class ObjectType : uint8_t {
     Layered,
     Background,
     Fog,
+    Medium,
     Sphere,
     Box,
     Plane,
@@ -95,6 +96,7 @@ enum class ObjectCategory : uint8_t {
     Material,
     Background,
     Fog,
+    Medium,
     Entity,
     Texture,
     BlobComponent, ///< a part of a Blob's field
@@ -114,6 +116,8 @@ enum class AttrType : uint8_t {
     Camera,
     Background,        ///< a Background or a color
     Fog,               ///< a Fog
+    Medium,            ///< a Medium
+    FloatOrPattern,    ///< a float, or a pattern whose value is read
     LightList,         ///< a list of lights
     Texture,           ///< a pattern or Image texture
     Bump,              ///< a NoiseBump or ImageBump

@@ -28,6 +28,7 @@ std::string_view kindName(ValueKind kind) {
     case ValueKind::Camera: return "camera";
     case ValueKind::Background: return "background";
     case ValueKind::Fog: return "fog";
+    case ValueKind::Medium: return "medium";
     case ValueKind::Texture: return "texture";
     case ValueKind::BlobComponent: return "blob component";
     case ValueKind::Spline: return "spline";

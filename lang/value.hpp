@@ -32,6 +32,7 @@ enum class ValueKind : uint8_t {
     Camera,
     Background,
     Fog,
+    Medium,
     Texture,
     BlobComponent, ///< a BlobSphere or BlobCylinder, for a Blob's components
     Spline,        ///< a Spline, read with spline(s, t)

@@ -82,6 +82,8 @@ bool objectFits(AttrType type, const ObjectInfo& info) {
     case AttrType::Camera: return info.type == ObjectType::Camera;
     case AttrType::Background: return info.type == ObjectType::Background;
     case AttrType::Fog: return info.type == ObjectType::Fog;
+    case AttrType::Medium: return info.type == ObjectType::Medium;
+    case AttrType::FloatOrPattern: return isColorTexture(info.type) && info.type != ObjectType::Image;
     case AttrType::Texture: return isColorTexture(info.type);
     case AttrType::Bump: return isBumpTexture(info.type);
     case AttrType::Solid: return info.category == ObjectCategory::Entity && info.solid;
@@ -107,7 +109,10 @@ int typeFit(AttrType want, const std::string& type) {
     case AttrType::Background:
         if (type == "colour") return 0;
         [[fallthrough]];
-    case AttrType::Material: case AttrType::Camera: case AttrType::Fog: case AttrType::Texture:
+    case AttrType::FloatOrPattern:
+        if (type == "float" || type == "int") return 0;
+        [[fallthrough]];
+    case AttrType::Material: case AttrType::Camera: case AttrType::Fog: case AttrType::Medium: case AttrType::Texture:
     case AttrType::Bump: case AttrType::Solid: case AttrType::Box: case AttrType::Entity:
         return object != ObjectType::Count && objectFits(want, objectInfo(object)) ? 0 : -1;
     case AttrType::Gamma: return type == "float" || type == "int" || type == "string" ? 0 : -1;

@@ -167,6 +167,26 @@ struct TextureDesc {
 /// waveform), this is the one place that says so.
 TextureDesc defaultTexture(TextureKind kind);
 
+/// How a medium scatters light: the chance density over the angle θ between the light's
+/// direction and the scattered direction.
+enum class PhaseFunction : uint8_t { Isotropic, Rayleigh, HenyeyGreenstein };
+/// The names of PhaseFunction's values, as scripts spell them, in its order.
+inline constexpr std::string_view kPhaseNames[] = {"isotropic", "rayleigh", "henyey-greenstein"};
+
+/// What fills a solid (smoke, dusty air, a cloud): per unit length it absorbs, scatters
+/// and gives off light in proportion to its density.
+struct MediumDesc {
+    Color absorption{0, 0, 0, 1};
+    Color scattering{0, 0, 0, 1};
+    Color emission{0, 0, 0, 1};
+    double density = 1; ///< a factor of the pattern's value when there is one
+    std::vector<TextureDesc> densityPattern; ///< at most one: its value at a point, times density
+    PhaseFunction phase = PhaseFunction::Isotropic;
+    double g = 0;     ///< HenyeyGreenstein: −1 (back) to 1 (forward)
+    int samples = 16; ///< steps along each ray through it
+    SourceSpan source;
+};
+
 /// Everything a material is besides its color. Materials that agree on all of it share one
 /// entry of SceneDesc::finishes: a generated scene of 100,000 spheres, each with its own
 /// color, keeps 100,000 small materials and one finish.
@@ -190,6 +210,7 @@ struct FinishDesc {
     int32_t texture = -1; ///< replaces color
     int32_t bump = -1;
     int32_t blend = -1; ///< index into SceneDesc::blends: the material is made of others
+    int32_t medium = -1; ///< index into SceneDesc::media: what fills the solid
 
     bool operator==(const FinishDesc&) const = default;
 };
@@ -531,6 +552,7 @@ inline constexpr CountRange kShadowSamplesRange{1, 4096};
 inline constexpr CountRange kGlossySamplesRange{1, 4096};
 inline constexpr CountRange kPathSamplesRange{1, 1'000'000};
 inline constexpr CountRange kBouncesRange{0, 1000};
+inline constexpr CountRange kMediumSamplesRange{1, 4096};
 
 struct SettingsDesc {
     std::string title, author, date, notes;
@@ -603,6 +625,7 @@ struct SceneDesc {
     std::vector<FinishDesc> finishes; ///< shared by materials
     std::vector<TextureDesc> textures;
     std::vector<BlendDesc> blends; ///< of the materials made of others
+    std::vector<MediumDesc> media; ///< what materials fill their solids with
     std::vector<EntityDesc> entities;
     std::vector<int32_t> drawn; ///< roots: entities drawn by Scene blocks, in order
     /// The meshes the front end read, by MeshShape::resolvedFile: the renderer draws what was

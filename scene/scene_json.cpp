@@ -422,7 +422,7 @@ Json fogJson(const FogDesc& f) {
 }
 
 Json materialJson(const MaterialDesc& material, const FinishDesc& m) {
-    return Json{{"color", color(material.color)},
+    Json json{{"color", color(material.color)},
                 {"reflectivity", m.reflectivity},
                 {"reflectivitymin", m.reflectivityMin < 0 ? m.reflectivity : m.reflectivityMin},
                 {"reflectionfalloff", m.reflectionFalloff},
@@ -441,8 +441,22 @@ Json materialJson(const MaterialDesc& material, const FinishDesc& m) {
                 {"filter", m.filter},
                 {"texture", m.texture},
                 {"bump", m.bump},
-                {"blend", m.blend},
-                {"source", source(material.source)}};
+                {"blend", m.blend}};
+    // Only when it has one, so dumps of scenes without media are unchanged.
+    if (m.medium >= 0) json["medium"] = m.medium;
+    json["source"] = source(material.source);
+    return json;
+}
+
+Json mediumJson(const MediumDesc& m) {
+    Json json{{"absorption", color(m.absorption)}, {"scattering", color(m.scattering)},
+              {"emission", color(m.emission)}, {"density", m.density}};
+    if (!m.densityPattern.empty()) json["densitypattern"] = textureJson(m.densityPattern.front());
+    json["phase"] = kPhaseNames[static_cast<size_t>(m.phase)];
+    json["g"] = m.g;
+    json["samples"] = m.samples;
+    json["source"] = source(m.source);
+    return json;
 }
 
 Json blendJson(const BlendDesc& b) {
@@ -555,6 +569,10 @@ std::string sceneToJson(const SceneDesc& scene, int indent) {
     for (const MaterialDesc& m : scene.materials) materials.push_back(materialJson(m, scene.finishOf(m)));
     Json& textures = root["textures"] = Json::array();
     for (const TextureDesc& t : scene.textures) textures.push_back(textureJson(t));
+    if (!scene.media.empty()) {
+        Json& media = root["media"] = Json::array();
+        for (const MediumDesc& m : scene.media) media.push_back(mediumJson(m));
+    }
     Json& blends = root["blends"] = Json::array();
     for (const BlendDesc& b : scene.blends) blends.push_back(blendJson(b));
     Json& entities = root["entities"] = Json::array();

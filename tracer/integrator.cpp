@@ -66,6 +66,7 @@ Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& sett
       ambient_(rgb(settings.ambient)), reflectionLimit_(settings.reflectionLimit()),
       refractionLimit_(settings.refractionLimit()), hides_(scene.hidesAnything()),
       seesLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.visible(); })) {
+    for (const scene::MediumDesc& medium : scene.media) media_.emplace_back(medium);
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const ShadingMaterial& m = scene.materials[i];
         bool plain = mixer_.isPlain(static_cast<int32_t>(i));
@@ -112,7 +113,10 @@ Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t med
     } else {
         color = background_.radiance(ray.dir);
     }
-    if (medium >= 0) {
+    if (medium >= 0 && scene_.materials[medium].medium >= 0) {
+        color = throughMedium(ray, distance, media_[static_cast<size_t>(scene_.materials[medium].medium)], color,
+                              pathLength, context);
+    } else if (medium >= 0) {
         // Beer–Lambert absorption along the path inside the solid.
         Vec3 a = rgb(scene_.materials[medium].absorption);
         for (int i = 0; i < 3; ++i)

@@ -6,6 +6,7 @@
 #include "tracer/fog.hpp"
 #include "tracer/lights.hpp"
 #include "tracer/material_mix.hpp"
+#include "tracer/medium.hpp"
 #include "tracer/render_scene.hpp"
 #include "tracer/sampling.hpp"
 #include "tracer/texture.hpp"
@@ -89,6 +90,13 @@ private:
     Vec3 directLight(const ShadingPoint& sp, TraceContext& context) const;
     /// The fraction of light that reaches the point through the shadow ray (0: blocked).
     Vec3 transmittance(const Ray& ray, double tMax, Departure departed, TraceContext& context) const;
+    /// What is seen along `ray` through `distance` of `medium` with `behind` at its end.
+    Vec3 throughMedium(const Ray& ray, double distance, const Medium& medium, const Vec3& behind, double pathLength,
+                       TraceContext& context) const;
+    /// The light at `p` in `medium` that scatters back along −viewDir, per unit of its
+    /// scattering coefficient.
+    Vec3 lightInMedium(const Vec3& p, const Vec3& viewDir, const Medium& medium, double pathLength,
+                       TraceContext& context) const;
     /// trace() of a reflected or refracted ray.
     Vec3 traceBent(const Ray& ray, int depth, double pathLength, int32_t medium, TraceContext& context,
                    Departure departed) const;
@@ -104,6 +112,7 @@ private:
     const Fog* fog_; ///< null: no fog
     const std::vector<Texture>& textures_;
     MaterialMixer mixer_;
+    std::vector<Medium> media_; ///< the scene's, by index
     SceneFeatures features_;
     Vec3 ambient_;
     int reflectionLimit_, refractionLimit_;

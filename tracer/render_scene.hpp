@@ -170,6 +170,7 @@ public:
     std::vector<std::shared_ptr<const TriangleMesh>> meshes;
     std::vector<ShadingMaterial> materials;
     std::vector<scene::BlendDesc> blends; ///< of the materials made of others
+    std::vector<scene::MediumDesc> media;  ///< what materials fill their solids with
     /// The entities drawn more than once, each built once in its own space, with no materials
     /// of its own (a primitive's material is -1 where the instance gives it), and their
     /// drawings.

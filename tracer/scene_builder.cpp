@@ -41,6 +41,7 @@ public:
         defaultMaterial_ = static_cast<int32_t>(scene_.materials.size());
         scene_.materials.emplace_back(); // the default material
         scene_.blends = desc_.blends;
+        scene_.media = desc_.media;
         if (!readHeightGrids()) return false;
         // Counted before anything is expanded (a shared entity doubled in a loop would
         // otherwise fill memory here), by the rule the front end counts by. Evaluation refuses

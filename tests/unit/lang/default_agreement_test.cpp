@@ -56,6 +56,7 @@ constexpr Usage kUsages[] = {
                      "materials -> [[0, Material {}], [1, Material {}]] @ }")},
     {ObjectType::Layered, CRT_SPHERE_WITH("Layered { materials -> [Material {}] @ }")},
     {ObjectType::Background, "Settings { background -> Background { image -> \"sky.png\" @ } }"},
+    {ObjectType::Medium, CRT_SPHERE_WITH("Material { transparency -> 1 medium -> Medium { @ } }")},
     {ObjectType::Fog, "Settings { fog -> Fog { color -> rgb(0.5, 0.5, 0.5) distance -> 10 falloff -> 2 @ } }"},
     {ObjectType::Sphere, "Scene { Sphere { center -> vec3(0, 0, 0) radius -> 1 @ } }"},
     {ObjectType::Box, "Scene { Box { cornerA -> vec3(0, 0, 0) cornerB -> vec3(1, 1, 1) @ } }"},
@@ -153,6 +154,7 @@ constexpr std::pair<ObjectType, std::string_view> kRuleDefaults[] = {
     {ObjectType::Material, "texture"},         // none
     {ObjectType::Material, "bump"},            // none
     {ObjectType::Settings, "fog"},             // none
+    {ObjectType::Material, "medium"},          // none
     {ObjectType::Fog, "falloff"},              // none: a constant fog
     {ObjectType::Settings, "reflectiondepth"}, // recursiondepth
     {ObjectType::Settings, "refractiondepth"}, // recursiondepth
@@ -261,12 +263,14 @@ std::string otherValue(const AttributeInfo& attr) {
         return "[" + stops + "]";
     }
     case AttrType::Turbulence: return "vec3(0.25, 0.5, 0.75)";
+    case AttrType::FloatOrPattern: return "0.5";
     case AttrType::Texture:
     case AttrType::Bump:
     case AttrType::MaterialMap:
     case AttrType::MaterialList:
     case AttrType::PatternList:
     case AttrType::Fog:
+    case AttrType::Medium:
     case AttrType::Solid:
     case AttrType::Entity:
     case AttrType::SolidList:
@@ -407,6 +411,14 @@ TEST_CASE("defaults documented as rules follow their rule", "[defaults]") {
         CHECK(s.finishOf(s.materials[0]).texture == -1);
         CHECK(s.finishOf(s.materials[0]).bump == -1);
         CHECK(s.textures.empty());
+    }
+
+    SECTION("a material has no medium unless given") {
+        const ObjectInfo& material = objectInfo(ObjectType::Material);
+        CHECK(material.attributes[findAttribute(material, "medium")].defaultText == "none");
+        crt::scene::SceneDesc s = evaluate(withAttribute(usageOf(ObjectType::Material), ""));
+        CHECK(s.finishOf(s.materials[0]).medium == -1);
+        CHECK(s.media.empty());
     }
 
     SECTION("a scene has no fog unless given, and a fog without falloff is constant") {

@@ -1,0 +1,158 @@
+// Analytic render tests of media: a box of glass that does not bend light (ior 1), filled
+// with a medium, seen straight through by an orthographic camera, so every ray crosses the
+// same width of it at a height known from its pixel row.
+//
+// Absorption alone is Beer's law; emission adds E/σ·(1 − e^(−σw)); single scattering of a
+// light straight above, through the medium's own height h − y, adds
+// σs·π·p·L·e^(−σ(h−y))·(1 − e^(−σw))/σ (with the convention that a light of colour L gives a
+// white Lambertian surface L·cos θ, its irradiance is π·L).
+#include "analytic_util.hpp"
+#include "scene_builder_util.hpp"
+
+#include "tracer/medium.hpp"
+
+#include <cmath>
+
+using namespace crt::tracer;
+namespace scene = crt::scene;
+using namespace crt::tracer::test;
+
+namespace {
+
+constexpr int kSize = 16;
+constexpr double kWidth = 2;  ///< of the medium along the view
+constexpr double kHeight = 2; ///< of the box: y from 0 to 2
+const DVec3 kBehind{0.8, 0.7, 0.6};
+
+/// The box filled with `medium`, lit by `lights`, seen along +z through its middle.
+scene::SceneDesc mediumBox(const scene::MediumDesc& medium, std::vector<scene::LightDesc> lights = {}) {
+    SceneMaker m;
+    scene::CameraDesc camera = lookAt({0, 1, -5}, {0, 1, 0}, 60);
+    camera.projection = scene::Projection::Orthographic;
+    camera.width = 4;
+    m.desc = blankScene(kSize, kSize, camera);
+    m.desc.background.color = {kBehind.x, kBehind.y, kBehind.z, 1};
+    m.desc.media.push_back(medium);
+    ShadingMaterial glass;
+    glass.color = scene::Color{1, 1, 1, 1};
+    glass.diffuse = 0;
+    glass.transparency = 1;
+    glass.ior = 1;
+    glass.medium = 0;
+    m.draw(m.box({-1, 0, 0}, {1, kHeight, kWidth}, m.material(glass)));
+    m.desc.lights = std::move(lights);
+    m.desc.settings.recursionDepth = 4;
+    return m.desc;
+}
+
+/// The height of pixel row `y`'s rays, and whether they cross the box well inside it.
+double rowHeight(int y) { return 1 + (1 - 2 * (y + 0.5) / kSize) * 2; }
+bool inside(int x, int y) {
+    const double across = (2 * (x + 0.5) / kSize - 1) * 2, height = rowHeight(y);
+    return std::abs(across) < 0.9 && height > 0.1 && height < kHeight - 0.1;
+}
+bool outside(int x, int y) {
+    const double across = (2 * (x + 0.5) / kSize - 1) * 2, height = rowHeight(y);
+    return std::abs(across) > 1.1 || height < -0.1 || height > kHeight + 0.1;
+}
+
+/// Checks the pixels inside the box against want(height), those beside it against the
+/// background.
+template <typename Want>
+void checkBox(const scene::SceneDesc& desc, Want&& want, double tolerance = 1e-6) {
+    const PixelBuffer image = renderOk(desc);
+    int checked = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            INFO("pixel " << x << "," << y << " height " << rowHeight(y));
+            if (inside(x, y)) {
+                CHECK(maxDifference(pixelAt(image, x, y), want(rowHeight(y))) < tolerance);
+                ++checked;
+            } else if (outside(x, y)) {
+                CHECK(maxDifference(pixelAt(image, x, y), kBehind) < 1e-6);
+            }
+        }
+    REQUIRE(checked > 50);
+}
+
+DVec3 expOf(const DVec3& v) { return {std::exp(v.x), std::exp(v.y), std::exp(v.z)}; }
+
+} // namespace
+
+TEST_CASE("an absorbing medium lets exp(-a w) of what is behind through (Beer)", "[render][analytic][medium]") {
+    scene::MediumDesc medium;
+    medium.absorption = {0.3, 0.6, 0.9, 1};
+    const DVec3 a = rgbOf(medium.absorption);
+    checkBox(mediumBox(medium), [&](double) { return kBehind * expOf(-a * kWidth); });
+    // Half as dense, half the loss.
+    medium.density = 0.5;
+    checkBox(mediumBox(medium), [&](double) { return kBehind * expOf(-a * (kWidth / 2)); });
+}
+
+TEST_CASE("a glowing medium adds E/a (1 - exp(-a w))", "[render][analytic][medium]") {
+    scene::MediumDesc medium;
+    medium.absorption = {0.5, 0.5, 0.5, 1};
+    medium.emission = {0.4, 0.2, 0.1, 1};
+    const DVec3 a = rgbOf(medium.absorption), e = rgbOf(medium.emission);
+    const DVec3 loss = expOf(-a * kWidth);
+    checkBox(mediumBox(medium), [&](double) { return e / a * (DVec3(1.0) - loss) + kBehind * loss; });
+}
+
+TEST_CASE("a medium's density pattern scales it point by point", "[render][analytic][medium]") {
+    // A gradient along y: the density at height y (below 1) is y, the same along each ray.
+    scene::MediumDesc medium;
+    medium.absorption = {0.8, 0.8, 0.8, 1};
+    scene::TextureDesc gradient = scene::defaultTexture(scene::TextureKind::Gradient);
+    gradient.axis = {0, 1, 0};
+    medium.densityPattern.push_back(gradient);
+    const scene::SceneDesc desc = mediumBox(medium);
+    const PixelBuffer image = renderOk(desc);
+    int checked = 0;
+    for (int y = 0; y < kSize; ++y) {
+        const double h = rowHeight(y);
+        if (h < 0.1 || h > 0.9) continue;
+        const DVec3 want = kBehind * std::exp(-0.8 * h * kWidth);
+        INFO("height " << h);
+        CHECK(maxDifference(pixelAt(image, kSize / 2, y), want) < 1e-6);
+        ++checked;
+    }
+    CHECK(checked >= 3);
+}
+
+TEST_CASE("single scattering of a light above a homogeneous medium matches its closed form",
+          "[render][analytic][medium]") {
+    scene::MediumDesc medium;
+    medium.scattering = {0.5, 0.25, 0.1, 1};
+    medium.absorption = {0.1, 0.1, 0.1, 1};
+    medium.samples = 8;
+    const DVec3 light{1.5, 1.2, 1.0};
+    const DVec3 sigmaS = rgbOf(medium.scattering), sigmaT = sigmaS + rgbOf(medium.absorption);
+    const DVec3 loss = expOf(-sigmaT * kWidth);
+    checkBox(mediumBox(medium, {parallelLight({0, 10, 0}, {0, 0, 0}, {light.x, light.y, light.z, 1})}),
+             [&](double h) {
+                 const DVec3 reaching = light * expOf(-sigmaT * (kHeight - h));
+                 const DVec3 scattered = sigmaS * (kTestPi / (4 * kTestPi)) * reaching * (DVec3(1.0) - loss) / sigmaT;
+                 return scattered + kBehind * loss;
+             },
+             1e-5);
+}
+
+TEST_CASE("the phase functions are densities over the sphere, forward or back as g says", "[medium]") {
+    for (scene::PhaseFunction phase :
+         {scene::PhaseFunction::Isotropic, scene::PhaseFunction::Rayleigh, scene::PhaseFunction::HenyeyGreenstein}) {
+        for (double g : {-0.6, 0.0, 0.8}) {
+            scene::MediumDesc desc;
+            desc.phase = phase;
+            desc.g = g;
+            const Medium medium(desc);
+            // ∫ p dω = 2π ∫₋₁¹ p(c) dc, by the midpoint rule.
+            constexpr int kSteps = 200000;
+            double sum = 0;
+            for (int i = 0; i < kSteps; ++i) sum += medium.phase(-1 + (i + 0.5) * 2.0 / kSteps);
+            INFO("phase " << int(phase) << " g " << g);
+            CHECK(2 * kTestPi * sum * 2.0 / kSteps == Approx(1).epsilon(1e-6));
+            if (phase == scene::PhaseFunction::HenyeyGreenstein && g != 0)
+                CHECK((medium.phase(1) > medium.phase(-1)) == (g > 0));
+        }
+    }
+}

@@ -1,0 +1,40 @@
+// A medium that fills a solid (spec §5, Medium), as shading reads it: its coefficients at a
+// point, scaled by its density there, and how it scatters.
+#pragma once
+
+#include "tracer/geometry/ray.hpp"
+#include "tracer/texture.hpp"
+#include "scene/scene_desc.hpp"
+
+#include <optional>
+
+namespace crt::tracer {
+
+class Medium {
+public:
+    explicit Medium(const scene::MediumDesc& desc);
+
+    /// The density at a world point: the pattern's value there (clamped to [0, 1]) times
+    /// `density`, or `density` everywhere.
+    double density(const Vec3& p) const;
+    bool homogeneous() const { return !pattern_; }
+    /// Per unit length at density 1.
+    const Vec3& absorption() const { return absorption_; }
+    const Vec3& scattering() const { return scattering_; }
+    const Vec3& emission() const { return emission_; }
+    Vec3 extinction() const { return absorption_ + scattering_; }
+    /// The phase function's density at cos θ, θ the angle between the direction light
+    /// travelled and the direction it is scattered into (it integrates to 1 over the sphere).
+    double phase(double cosTheta) const;
+    int samples() const { return samples_; }
+
+private:
+    Vec3 absorption_, scattering_, emission_;
+    double density_;
+    std::optional<Texture> pattern_;
+    scene::PhaseFunction phase_;
+    double g_;
+    int samples_;
+};
+
+} // namespace crt::tracer
