@@ -195,6 +195,16 @@ double Light::seenAt(const Ray& ray, double tMax) const {
     return kInfinity;
 }
 
+double lightStrength(const Light& light, double distance, double pathLength) {
+    double strength = kPi;
+    if (light.falloff() > 0 && distance < kInfinity) {
+        const double d = distance + pathLength;
+        strength *= light.falloff() / (d * d);
+    }
+    if (light.attenuates()) strength *= light.attenuation(distance);
+    return strength;
+}
+
 const Light* firstSeenLight(const std::vector<Light>& lights, const Ray& ray, double& tMax) {
     const Light* first = nullptr;
     for (const Light& light : lights) {

@@ -89,6 +89,11 @@ private:
     int sampleCount_ = 1, strataX_ = 1, strataY_ = 1;
 };
 
+/// What a light of colour L sends to a point `distance` from it (kInfinity: a parallel
+/// light), reached by a path `pathLength` long, per unit of L: π, so that it lights a white
+/// Lambertian surface to L·cos θ, with the light's falloff and attenuation.
+double lightStrength(const Light& light, double distance, double pathLength);
+
 /// The visible light `ray` meets first within (0, tMax), narrowing tMax to where; null if none.
 const Light* firstSeenLight(const std::vector<Light>& lights, const Ray& ray, double& tMax);
 

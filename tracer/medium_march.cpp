@@ -66,12 +66,7 @@ Vec3 Integrator::lightInMedium(const Vec3& p, const Vec3& viewDir, const Medium&
                                   : ls.distance;
         const Vec3 extinction = medium.extinction() * medium.density(p);
         for (int c = 0; c < 3; ++c) seen[c] *= extinction[c] > 0 ? std::exp(-extinction[c] * inside) : 1.0;
-        double strength = kPi * medium.phase(glm::dot(ls.toLight, viewDir));
-        if (light.falloff() > 0 && !ls.atInfinity) {
-            const double d = ls.distance + pathLength;
-            strength *= light.falloff() / (d * d);
-        }
-        if (light.attenuates()) strength *= light.attenuation(ls.distance);
+        const double strength = lightStrength(light, ls.distance, pathLength) * medium.phase(glm::dot(ls.toLight, viewDir));
         sum += seen * ls.color * strength;
     }
     return sum;

@@ -101,23 +101,6 @@ Vec3 PathIntegrator::visibility(const Ray& ray, double tMax, Departure departed,
     return through;
 }
 
-namespace {
-
-/// What a light of colour L sends to a point `distance` from it, reached by a path
-/// `pathLength` long, per unit of L: π, so that it lights a white Lambertian surface to
-/// L·cos θ, with the light's falloff and attenuation.
-double lightStrength(const Light& light, double distance, double pathLength) {
-    double strength = kPi;
-    if (light.falloff() > 0 && distance < kInfinity) {
-        const double d = distance + pathLength;
-        strength *= light.falloff() / (d * d);
-    }
-    if (light.attenuates()) strength *= light.attenuation(distance);
-    return strength;
-}
-
-} // namespace
-
 Vec3 PathIntegrator::fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const {
     Vec3 sum(0.0);
     for (const Light& light : lights_) {
