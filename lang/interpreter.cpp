@@ -5,6 +5,7 @@
 
 #include "builtins.hpp"
 #include "large_stack.hpp"
+#include "motion_evaluation.hpp"
 #include "parser.hpp"
 #include "povray_habits.hpp"
 #include "terminal_text.hpp"
@@ -27,10 +28,13 @@ Interpreter::Interpreter(Compilation& compilation, const EvalOptions& options)
     for (uint32_t slot = 0; slot < preludeSlotOfT(); ++slot) {
         prelude_[slot] = Value::object(ValueKind::Builtin, ObjectType::Count, slot);
     }
-    prelude_[preludeSlotOfT()] = options.time ? Value::number(*options.time) : Value::integer(options.frame);
+    const double step = options.motionStep.value_or(0);
+    prelude_[preludeSlotOfT()] = options.time || options.motionStep
+                                     ? Value::number((options.time ? *options.time : options.frame) + step)
+                                     : Value::integer(options.frame);
     // clock runs from clockStart to clockEnd over the frames of an animation; a single frame
     // is at clockStart.
-    const double progress = options.frameCount > 1 ? static_cast<double>(options.frame - options.firstFrame) /
+    const double progress = options.frameCount > 1 ? (options.frame - options.firstFrame + step) /
                                                          (options.frameCount - 1)
                                                    : 0.0;
     const double clock = options.clockStart + progress * (options.clockEnd - options.clockStart);
@@ -715,11 +719,13 @@ Compilation compile(std::string path, std::string text, const EvalOptions& optio
         }
         Interpreter(c, options).run(evaluate);
     });
+    if (evaluate) evaluateMotionSteps(c, options);
     return c;
 }
 
 void evaluate(Compilation& compilation, const EvalOptions& options) {
     runOnLargeStack([&] { Interpreter(compilation, options).evaluateResolved(); });
+    evaluateMotionSteps(compilation, options);
 }
 
 Compilation compileFile(const std::string& path, const EvalOptions& options, bool evaluate) {

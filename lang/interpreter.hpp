@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace crt::lang {
@@ -53,6 +54,11 @@ struct EvalOptions {
     int firstFrame = 0;                   ///< the number of an animation's first frame
     double clockStart = 0, clockEnd = 1;  ///< clock at the first and at the last frame
     std::optional<double> time;           ///< --time T: t is this float
+    /// --shutter A:B: the shutter (Settings.shutteropen, shutterclose) whatever the script says.
+    std::optional<std::pair<double, double>> shutter;
+    /// Set for the evaluation at a motion step (motion_evaluation.hpp): how far past the
+    /// frame's t it is. t and clock move on by it (clock at its pace over the frames).
+    std::optional<double> motionStep;
     std::ostream* printOut = nullptr;     ///< where print() writes; null: standard output
     /// print() shows control characters as escapes (terminal_text.hpp): for a terminal, where
     /// they would act; into a file or a pipe the script's output goes as it is.

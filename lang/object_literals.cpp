@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <tuple>
 #include <glm/geometric.hpp>
 
 namespace crt::lang {
@@ -972,6 +973,14 @@ void Interpreter::buildSettings(const ObjectBuilder& b) {
         s.targetError = b.number("targeterror", s.targetError);
         if (!(s.targetError > 0)) problem("targeterror", "targeterror must be above 0");
     }
+    s.shutterOpen = b.number("shutteropen", s.shutterOpen);
+    s.shutterClose = b.number("shutterclose", s.shutterOpen);
+    if (options_.shutter) std::tie(s.shutterOpen, s.shutterClose) = *options_.shutter;
+    if (!std::isfinite(s.shutterOpen) || !std::isfinite(s.shutterClose) || s.shutterClose < s.shutterOpen)
+        problem(b.get("shutterclose") ? "shutterclose" : "shutteropen",
+                fmt::format("the shutter must close at or after it opens, not from {} to {}", s.shutterOpen,
+                            s.shutterClose));
+    s.motionSteps = count("motionsteps", s.motionSteps, scene::kMotionStepsRange);
     recordSettingsLinks(b);
 }
 

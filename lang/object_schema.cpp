@@ -58,6 +58,14 @@ constexpr AttributeInfo kSettings[] = {
     {"targeterror", A::Float, false, "",
      "Path integrator: a pixel stops taking paths (after 16, at most samples) once the relative "
      "standard error of its mean falls below this; 0: every pixel takes samples."},
+    {"shutteropen", A::Float, false, "0",
+     "Motion blur: when the shutter opens, in units of t after the frame's t."},
+    {"shutterclose", A::Float, false, "shutteropen",
+     "Motion blur: when the shutter closes, in units of t after the frame's t; after shutteropen, "
+     "the scene is evaluated motionsteps times across the shutter and what moves is blurred."},
+    {"motionsteps", A::Int, false, "2",
+     "Motion blur: evaluations across the shutter (2 to 64); modifiers and the camera move "
+     "linearly between them."},
 };
 
 constexpr AttributeInfo kCamera[] = {

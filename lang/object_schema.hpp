@@ -158,7 +158,7 @@ struct ObjectInfo {
 };
 
 /// No object type has more attributes than this (Settings has the most).
-inline constexpr size_t kMaxAttributes = 28;
+inline constexpr size_t kMaxAttributes = 32;
 
 const ObjectInfo& objectInfo(ObjectType type);
 /// The object type called `name`, or ObjectType::Count.

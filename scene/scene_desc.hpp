@@ -33,6 +33,8 @@ struct SourceSpan {
     uint32_t column = 0;
     uint32_t endLine = 0;
     uint32_t endColumn = 0;
+
+    bool operator==(const SourceSpan&) const = default;
 };
 
 /// A linear RGB color with alpha (alpha is carried, not used for shading).
@@ -50,6 +52,8 @@ struct Modifier {
     glm::dvec3 value{0.0}; ///< a uniform scale s is stored as (s, s, s); Matrix: the offset
     /// Matrix: the linear part; its columns are where x, y and z go (POV-Ray's rows).
     glm::dmat3 linear{1.0};
+
+    bool operator==(const Modifier&) const = default;
 };
 
 enum class TextureKind : uint8_t {
@@ -495,6 +499,8 @@ struct CameraDesc {
     double roll = 0; ///< degrees
     Projection projection = Projection::Pinhole;
     SourceSpan source;
+
+    bool operator==(const CameraDesc&) const = default;
 };
 
 enum class BackgroundKind : uint8_t { Solid, Gradient, Image, Pattern };
@@ -553,6 +559,7 @@ inline constexpr CountRange kGlossySamplesRange{1, 4096};
 inline constexpr CountRange kPathSamplesRange{1, 1'000'000};
 inline constexpr CountRange kBouncesRange{0, 1000};
 inline constexpr CountRange kMediumSamplesRange{1, 4096};
+inline constexpr CountRange kMotionStepsRange{2, 64};
 
 struct SettingsDesc {
     std::string title, author, date, notes;
@@ -579,6 +586,12 @@ struct SettingsDesc {
     /// this (after kMinAdaptiveSamples); 0: every pixel takes `samples`.
     double targetError = 0;
     static constexpr int kMinAdaptiveSamples = 16;
+    /// The shutter, in units of t from the frame's t: open while shutterOpen < shutterClose,
+    /// and then the script is evaluated `motionSteps` times across it (motion blur).
+    double shutterOpen = 0, shutterClose = 0;
+    int motionSteps = 2;
+
+    bool shutterIsOpen() const { return shutterOpen < shutterClose; }
 
     int reflectionLimit() const { return reflectionDepth < 0 ? recursionDepth : reflectionDepth; }
     int refractionLimit() const { return refractionDepth < 0 ? recursionDepth : refractionDepth; }
@@ -611,6 +624,19 @@ struct RenderLimits {
     uint64_t maxIsosurfaceEvaluations = 100'000;
 };
 
+/// How the scene moves while the shutter is open: what changes between the script's
+/// evaluations at the motion steps, evenly spaced from the shutter's opening to its closing.
+/// Between two steps each value goes linearly from one to the other.
+struct MotionDesc {
+    /// Each transform node that moves, by its entity: its modifiers at every step (the same
+    /// kinds in the same order, their values differing).
+    std::map<int32_t, std::vector<std::vector<Modifier>>> transforms;
+    /// The camera at every step; empty when it stays where SceneDesc::camera has it.
+    std::vector<CameraDesc> cameras;
+
+    bool empty() const { return transforms.empty() && cameras.empty(); }
+};
+
 /// The evaluated scene.
 struct SceneDesc {
     static constexpr int kSchemaVersion = 3;
@@ -621,6 +647,7 @@ struct SceneDesc {
     std::vector<LightDesc> lights; ///< the lights of Settings.lights, in order
     BackgroundDesc background;
     std::optional<FogDesc> fog;
+    MotionDesc motion; ///< empty unless the shutter is open and something moves
     std::vector<MaterialDesc> materials;
     std::vector<FinishDesc> finishes; ///< shared by materials
     std::vector<TextureDesc> textures;

@@ -338,6 +338,12 @@ Json settingsJson(const SettingsDesc& s) {
     if (path || s.samples != defaults.samples) json["samples"] = s.samples;
     if (path || s.bounces != defaults.bounces) json["bounces"] = s.bounces;
     if (s.targetError > 0) json["targeterror"] = s.targetError;
+    if (s.shutterOpen != defaults.shutterOpen || s.shutterClose != defaults.shutterClose ||
+        s.motionSteps != defaults.motionSteps) {
+        json["shutteropen"] = s.shutterOpen;
+        json["shutterclose"] = s.shutterClose;
+        json["motionsteps"] = s.motionSteps;
+    }
     return json;
 }
 
@@ -351,6 +357,18 @@ Json cameraJson(const CameraDesc& c) {
                 {"source", source(c.source)}};
     if (c.width > 0) camera["width"] = c.width;
     return camera;
+}
+
+Json motionJson(const MotionDesc& m) {
+    Json transforms = Json::array();
+    for (const auto& [entity, steps] : m.transforms) {
+        Json modifierSteps = Json::array();
+        for (const std::vector<Modifier>& step : steps) modifierSteps.push_back(modifiers(step));
+        transforms.push_back(Json{{"entity", entity}, {"modifiers", std::move(modifierSteps)}});
+    }
+    Json cameras = Json::array();
+    for (const CameraDesc& c : m.cameras) cameras.push_back(cameraJson(c));
+    return Json{{"transforms", std::move(transforms)}, {"cameras", std::move(cameras)}};
 }
 
 Json lightJson(const LightDesc& l) {
@@ -565,6 +583,7 @@ std::string sceneToJson(const SceneDesc& scene, int indent) {
     for (const LightDesc& l : scene.lights) lights.push_back(lightJson(l));
     root["background"] = backgroundJson(scene.background);
     if (scene.fog) root["fog"] = fogJson(*scene.fog);
+    if (!scene.motion.empty()) root["motion"] = motionJson(scene.motion);
     Json& materials = root["materials"] = Json::array();
     for (const MaterialDesc& m : scene.materials) materials.push_back(materialJson(m, scene.finishOf(m)));
     Json& textures = root["textures"] = Json::array();

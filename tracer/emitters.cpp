@@ -49,7 +49,7 @@ Emitters::Emitters(const RenderScene& scene) : scene_(scene) {
     std::vector<double> power;
     for (size_t p = 0; p < scene.primitives.size(); ++p) {
         const Primitive& primitive = scene.primitives[p];
-        if (inCsg[p] || primitive.material < 0) continue;
+        if (inCsg[p] || primitive.material < 0 || primitive.transform >= RenderScene::kFirstMovingTransform) continue;
         const ShadingMaterial& m = scene.materials[static_cast<size_t>(primitive.material)];
         const double glow = luminance(rgb(m.emission));
         if (m.blend >= 0 || glow <= 0) continue;

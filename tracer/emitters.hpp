@@ -16,8 +16,9 @@ struct EmitterSample {
 };
 
 /// The primitives whose material emits and whose shape can be sampled by area: spheres,
-/// discs, quads, triangles and each face of a mesh, drawn directly (not through an
-/// instance, a CSG tree or a material blend; those are found by the paths' own bounces).
+/// discs, quads, triangles and each face of a mesh, drawn directly and standing still (not
+/// through an instance, a CSG tree, a material blend or a transform that moves while the
+/// shutter is open; those are found by the paths' own bounces).
 /// One is chosen by power (emission × area), then a point on it: on a sphere (moved by a
 /// similarity at most) seen from outside, uniformly in the cone of directions it fills;
 /// elsewhere uniformly by area.

@@ -222,7 +222,7 @@ Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) cons
             double nDotL = glm::dot(sp.n, ls.toLight);
             if (nDotL <= 0 || ls.color == Vec3(0.0)) continue;
             Vec3 origin = offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, ls.toLight);
-            Ray shadowRay = ls.atInfinity ? Ray{origin, ls.toLight} : Ray{origin, ls.target - origin};
+            Ray shadowRay = ls.atInfinity ? Ray{origin, ls.toLight, context.time} : Ray{origin, ls.target - origin, context.time};
             Vec3 visible = light.shadowless()
                                ? Vec3(1.0)
                                : transmittance(shadowRay, ls.atInfinity ? kInfinity : 1.0,
@@ -287,7 +287,7 @@ Vec3 Integrator::passThrough(const ShadingPoint& sp, int depth, int32_t medium,
     if (depth <= 0 || context.refractions >= refractionLimit_) return Vec3(0.0);
     ++context.refractions;
     ++context.stats.refractionRays;
-    Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, sp.d), sp.d};
+    Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, sp.d), sp.d, context.time};
     Vec3 behind = trace(next, depth - 1, sp.pathLength, medium, context,
                         scene_.departedPrimitive(sp.hit, sp.si, sp.d));
     --context.refractions;
@@ -308,7 +308,7 @@ Vec3 Integrator::reflect(const ShadingPoint& sp, int depth, int32_t medium, Trac
     Vec3 mirror = glm::normalize(sp.d - 2 * glm::dot(sp.d, sp.n) * sp.n);
     auto traceFrom = [&](const Vec3& dir) {
         ++context.stats.reflectionRays;
-        Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, dir), dir};
+        Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, dir), dir, context.time};
         return traceBent(next, depth - 1, sp.pathLength, medium, context, scene_.departedPrimitive(sp.hit, sp.si, dir));
     };
     if (m.glossiness <= 0) return traceFrom(mirror);
@@ -320,7 +320,7 @@ Vec3 Integrator::refract(const ShadingPoint& sp, const Vec3& refracted, int dept
                          int32_t nextMedium, TraceContext& context) const {
     auto traceFrom = [&](const Vec3& dir) {
         ++context.stats.refractionRays;
-        Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, dir), dir};
+        Ray next{offsetRayOrigin(sp.si.point, sp.si.pointError, sp.si.normal, dir), dir, context.time};
         return traceBent(next, depth - 1, sp.pathLength, nextMedium, context,
                          scene_.departedPrimitive(sp.hit, sp.si, dir));
     };

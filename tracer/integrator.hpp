@@ -30,6 +30,7 @@ struct alignas(64) TraceContext {
     int reflections = 0;   ///< reflections on the path to the point being shaded
     int refractions = 0;   ///< refractions on the path to the point being shaded
     bool bent = false;     ///< a reflection or refraction is on the path (it is not the camera's line)
+    double time = 0;       ///< the camera sample's time within the shutter: every ray of its path's
 };
 
 /// What the scene uses, found once so per-ray code can skip what is absent (--stats says).

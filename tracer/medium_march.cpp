@@ -54,14 +54,14 @@ Vec3 Integrator::lightInMedium(const Vec3& p, const Vec3& viewDir, const Medium&
         if (ls.color == Vec3(0.0)) continue;
         Vec3 seen(1.0);
         if (!light.shadowless()) {
-            const Ray shadow = ls.atInfinity ? Ray{p, ls.toLight} : Ray{p, ls.target - p};
+            const Ray shadow = ls.atInfinity ? Ray{p, ls.toLight, context.time} : Ray{p, ls.target - p, context.time};
             seen = transmittance(shadow, ls.atInfinity ? kInfinity : 1.0, {}, context);
             if (seen == Vec3(0.0)) continue;
         }
         // The medium between the point and where the shadow ray leaves its solid, read at
         // the point (exact for a homogeneous medium).
         Hit exit;
-        const double inside = scene_.intersect(Ray{p, ls.toLight}, ls.distance, exit, context.scratch, context.stats)
+        const double inside = scene_.intersect(Ray{p, ls.toLight, context.time}, ls.distance, exit, context.scratch, context.stats)
                                   ? exit.t
                                   : ls.distance;
         const Vec3 extinction = medium.extinction() * medium.density(p);

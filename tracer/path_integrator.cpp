@@ -109,7 +109,7 @@ Vec3 PathIntegrator::fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext&
         const Vec3 f = bsdf.evalCos(ls.toLight);
         if (f == Vec3(0.0)) continue;
         const Vec3 origin = offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ls.toLight);
-        const Ray shadow = ls.atInfinity ? Ray{origin, ls.toLight} : Ray{origin, ls.target - origin};
+        const Ray shadow = ls.atInfinity ? Ray{origin, ls.toLight, context.time} : Ray{origin, ls.target - origin, context.time};
         const Vec3 visible = light.shadowless()
                                  ? Vec3(1.0)
                                  : visibility(shadow, ls.atInfinity ? kInfinity : 1.0,
@@ -153,7 +153,7 @@ Vec3 PathIntegrator::fromEmitter(const Vertex& v, const Bsdf& bsdf, TraceContext
     // Stops short of the emitter's own surface, which the rounding of the point may put a
     // hair in front of the ray's end.
     constexpr double kShortOfEmitter = 1 - 1e-7;
-    const Vec3 visible = visibility(Ray{origin, es.point - origin}, kShortOfEmitter,
+    const Vec3 visible = visibility(Ray{origin, es.point - origin, context.time}, kShortOfEmitter,
                                     scene_.departedPrimitive(v.hit, v.si, toEmitter), context);
     if (visible == Vec3(0.0)) return Vec3(0.0);
     const double weight = powerHeuristic(es.pdf, bsdf.pdf(toEmitter));
@@ -168,7 +168,7 @@ Vec3 PathIntegrator::fromEnvironment(const Vertex& v, const Bsdf& bsdf, TraceCon
     const Vec3 f = bsdf.evalCos(dir);
     if (f == Vec3(0.0)) return Vec3(0.0);
     const Vec3 origin = offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, dir);
-    const Vec3 visible = visibility(Ray{origin, dir}, kInfinity, scene_.departedPrimitive(v.hit, v.si, dir), context);
+    const Vec3 visible = visibility(Ray{origin, dir, context.time}, kInfinity, scene_.departedPrimitive(v.hit, v.si, dir), context);
     if (visible == Vec3(0.0)) return Vec3(0.0);
     return visible * f * background_.radiance(dir) * (powerHeuristic(pdf, bsdf.pdf(dir)) / pdf);
 }
@@ -224,7 +224,7 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
         if (hides_ && (scene_.hiddenFrom(v.hit) & (bounce == 0 ? scene::kHiddenFromCamera : scene::kHiddenFromReflections))) {
             // Crossed as if it were not there, as a see-through surface is below.
             if (crossings > 4 * settings_.bounces + 16) break;
-            ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ray.dir), ray.dir};
+            ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ray.dir), ray.dir, ray.time};
             departed = scene_.departedPrimitive(v.hit, v.si, ray.dir);
             continue;
         }
@@ -236,7 +236,7 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
             // Through the surface unbent, as if it were not there: the last scattering
             // vertex stays the one light sampling was weighed against.
             if (beta == Vec3(0.0) || crossings > 4 * settings_.bounces + 16) break;
-            ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ray.dir), ray.dir};
+            ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ray.dir), ray.dir, ray.time};
             departed = scene_.departedPrimitive(v.hit, v.si, ray.dir);
             continue;
         }
@@ -272,7 +272,7 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
         } else {
             ++context.stats.reflectionRays;
         }
-        ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, next.wi), next.wi};
+        ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, next.wi), next.wi, ray.time};
         departed = scene_.departedPrimitive(v.hit, v.si, next.wi);
         ++bounce;
         context.rng.skipTo(firstDimensionOf(bounce));

@@ -12,8 +12,9 @@ double PathPixel::relativeError() const {
 }
 
 PixelSampler::PixelSampler(const Integrator& integrator, const PathIntegrator* path, bool lens, const Camera& camera,
-                           const scene::SettingsDesc& settings, bool transparentBackground)
-    : integrator_(integrator), path_(path), pathLens_(lens), camera_(camera), settings_(settings),
+                           const scene::SettingsDesc& settings, const scene::MotionDesc& motion,
+                           bool transparentBackground)
+    : integrator_(integrator), path_(path), pathLens_(lens), camera_(camera), settings_(settings), motion_(motion),
       dofSamples_(camera.usesLens() ? std::max(settings.dofSamples, 1) : 1), bounces_(settings.bounceLimit()),
       transparentBackground_(transparentBackground) {}
 
@@ -77,12 +78,13 @@ void PixelSampler::addPaths(int x, int y, PathPixel& p, int upTo, TraceContext& 
     upTo = std::min(upTo, settings_.samples);
     while (!p.settled && p.paths < upTo) {
         context.rng = SampleRng::sequence(settings_.seed, pixelIndex, static_cast<uint32_t>(p.paths));
+        context.time = shutterTime(pixelIndex, static_cast<uint32_t>(p.paths));
         const Vec2 offset = context.rng.uniform2();
         FirstSurface first;
         Color c(0.0); // black and transparent where the camera has no ray
         if (camera_.sees(x + offset.x, y + offset.y)) {
-            const Ray ray = pathLens_ ? camera_.lensRay(x + offset.x, y + offset.y, context.rng.uniform2())
-                                      : camera_.ray(x + offset.x, y + offset.y);
+            const Vec2 lens = pathLens_ ? context.rng.uniform2() : Vec2(0.0);
+            const Ray ray = cameraRay(x + offset.x, y + offset.y, pathLens_ ? &lens : nullptr, context.time);
             ++context.stats.cameraRays;
             c = path_->traceCamera(ray, transparentBackground_, context, sums ? &first : nullptr);
         }
@@ -136,19 +138,42 @@ PixelSampler::Color PixelSampler::sample(double u, double v, uint64_t pixelIndex
                                          TraceContext& context) const {
     context.rng = SampleRng(settings_.seed, pixelIndex, sampleIndex);
     if (!camera_.sees(u, v)) return Color(0.0); // black and transparent
-    if (dofSamples_ <= 1) {
+    const uint32_t dofSamples = static_cast<uint32_t>(dofSamples_);
+    if (dofSamples <= 1) {
         ++context.stats.cameraRays;
-        return integrator_.traceCamera(camera_.ray(u, v), bounces_, transparentBackground_, context);
+        context.time = shutterTime(pixelIndex, sampleIndex);
+        return integrator_.traceCamera(cameraRay(u, v, nullptr, context.time), bounces_, transparentBackground_,
+                                       context);
     }
     // Depth of field: a low-discrepancy set of lens points, shifted per pixel sample.
     Vec2 shift = context.rng.uniform2();
     Color sum(0.0);
-    for (int k = 0; k < dofSamples_; ++k) {
-        Vec2 lens = hammersley(static_cast<uint32_t>(k), static_cast<uint32_t>(dofSamples_), shift);
+    for (uint32_t k = 0; k < dofSamples; ++k) {
+        Vec2 lens = hammersley(k, dofSamples, shift);
         ++context.stats.cameraRays;
-        sum += integrator_.traceCamera(camera_.lensRay(u, v, lens), bounces_, transparentBackground_, context);
+        context.time = shutterTime(pixelIndex, sampleIndex * dofSamples + k);
+        sum += integrator_.traceCamera(cameraRay(u, v, &lens, context.time), bounces_, transparentBackground_, context);
     }
     return sum / static_cast<double>(dofSamples_);
+}
+
+/// The van der Corput sequence, shifted by a number of the pixel's own (as the lens points
+/// are): a pixel's samples spread evenly over the shutter, and neighbours differ.
+double PixelSampler::shutterTime(uint64_t pixelIndex, uint32_t i) const {
+    if (motion_.empty()) return 0;
+    constexpr uint64_t kShutterStream = uint64_t{1} << 41;
+    const double time = radicalInverse2(i) + SampleRng(settings_.seed, pixelIndex, kShutterStream).uniform();
+    return time >= 1 ? time - 1 : time;
+}
+
+Ray PixelSampler::cameraRay(double u, double v, const Vec2* lens, double time) const {
+    auto through = [&](const Camera& camera) {
+        Ray ray = lens ? camera.lensRay(u, v, *lens) : camera.ray(u, v);
+        ray.time = time;
+        return ray;
+    };
+    if (motion_.cameras.empty()) return through(camera_);
+    return through(Camera(cameraAt(motion_.cameras, time), settings_.width, settings_.height, settings_.dofSamples));
 }
 
 } // namespace crt::tracer

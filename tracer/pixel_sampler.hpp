@@ -44,9 +44,10 @@ public:
     using Color = glm::dvec4;
 
     /// `path`: the path integrator, when the scene chose it; `lens`: whether its paths start
-    /// on the lens (an aperture).
+    /// on the lens (an aperture); `motion`: what moves while the shutter is open (each camera
+    /// sample then has its time within it).
     PixelSampler(const Integrator& integrator, const PathIntegrator* path, bool lens, const Camera& camera,
-                 const scene::SettingsDesc& settings, bool transparentBackground);
+                 const scene::SettingsDesc& settings, const scene::MotionDesc& motion, bool transparentBackground);
 
     /// Writes the pixel's color and, with `colorChannels` 4, alpha (coverage; the color is
     /// premultiplied by it); then, for a path-traced pixel, its AOVs.
@@ -67,12 +68,18 @@ private:
     Color region(double cx, double cy, double size, int level, uint64_t pixelIndex, uint32_t& sampleIndex,
                  bool& subdivides, TraceContext& context) const;
     Color sample(double u, double v, uint64_t pixelIndex, uint32_t sampleIndex, TraceContext& context) const;
+    /// The time within the shutter of the pixel's camera sample `i` (0 when nothing moves).
+    double shutterTime(uint64_t pixelIndex, uint32_t i) const;
+    /// The camera's ray through image point (u, v) at `time` (from the lens point `lens`, if
+    /// given), where the camera is then.
+    Ray cameraRay(double u, double v, const Vec2* lens, double time) const;
 
     const Integrator& integrator_;
     const PathIntegrator* path_;
     bool pathLens_;
     const Camera& camera_;
     const scene::SettingsDesc& settings_;
+    const scene::MotionDesc& motion_;
     int dofSamples_;
     int bounces_; ///< reflections and refractions a camera ray's path may take in all
     bool transparentBackground_;

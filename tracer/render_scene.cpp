@@ -280,7 +280,7 @@ bool RenderScene::intersectUnhidden(Ray& ray, uint8_t unseen, Hit& hit, double& 
         if (!(hiddenFrom(hit) & unseen)) return true;
         const SurfaceInteraction si = interaction(ray, hit);
         skipped += hit.t;
-        ray = Ray{offsetRayOrigin(si.point, si.pointError, si.normal, ray.dir), ray.dir};
+        ray = Ray{offsetRayOrigin(si.point, si.pointError, si.normal, ray.dir), ray.dir, ray.time};
         departed = departedPrimitive(hit, si, ray.dir);
         hit = Hit{};
     }
@@ -304,6 +304,16 @@ void moveSurface(const Transform& toWorld, SurfaceInteraction& si) {
     si.dpdv = toWorld.vector(si.dpdv);
 }
 
+/// Moves a surface found in the object space of the scene's transform `t` (>= 0) into world
+/// space, where it is at `time`.
+void moveSurface(const RenderScene& scene, int32_t t, double time, SurfaceInteraction& si) {
+    if (t < RenderScene::kFirstMovingTransform) [[likely]]
+        moveSurface(scene.transforms[static_cast<size_t>(t)].toWorld, si);
+    else
+        moveSurface(scene.movingTransforms[static_cast<size_t>(t - RenderScene::kFirstMovingTransform)].at(time).toWorld,
+                    si);
+}
+
 } // namespace
 
 [[gnu::always_inline]] inline SurfaceInteraction RenderScene::primitiveInteraction(const Ray& ray, const Hit& hit,
@@ -323,7 +333,7 @@ void moveSurface(const Transform& toWorld, SurfaceInteraction& si) {
     si.shadingNormal = sp.shadingNormal;
     si.dpdu = sp.dpdu;
     si.dpdv = sp.dpdv;
-    if (p.transform >= 0) moveSurface(transforms[p.transform].toWorld, si);
+    if (p.transform >= 0) moveSurface(*this, p.transform, ray.time, si);
     if (hit.flipNormal) {
         si.normal = -si.normal;
         si.shadingNormal = -si.shadingNormal;
@@ -341,7 +351,7 @@ SurfaceInteraction RenderScene::interaction(const Ray& ray, const Hit& hit) cons
     SurfaceInteraction si =
         prototypeOf(hit.instance).primitiveInteraction(instanceRay(hit.instance, ray), inner, material, m);
     const int32_t transform = instances[static_cast<size_t>(hit.instance)].transform;
-    if (transform >= 0) moveSurface(transforms[static_cast<size_t>(transform)].toWorld, si);
+    if (transform >= 0) moveSurface(*this, transform, ray.time, si);
     return si;
 }
 

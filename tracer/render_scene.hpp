@@ -6,6 +6,7 @@
 #include "tracer/geometry/geometry.hpp"
 #include "scene/scene_desc.hpp"
 #include "tracer/stats.hpp"
+#include "tracer/motion.hpp"
 #include "tracer/transform.hpp"
 
 #include <memory>
@@ -20,11 +21,6 @@ struct Primitive {
     Geometry geometry;
     int32_t transform = -1;
     int32_t material = 0;
-};
-
-struct TransformPair {
-    Transform toWorld;
-    Transform toObject;
 };
 
 /// Merge: a union that keeps only its outer surface. Inverse: the complement of `left`
@@ -165,6 +161,10 @@ public:
     /// naming what a ray met (pick.hpp).
     std::vector<int32_t> primitiveEntities;
     std::vector<TransformPair> transforms;
+    /// The transforms that change while the shutter is open, numbered from
+    /// kFirstMovingTransform where a primitive or an instance names its transform.
+    std::vector<MovingTransform> movingTransforms;
+    static constexpr int32_t kFirstMovingTransform = 1 << 30;
     std::vector<CsgTreeNode> csgNodes;
     /// The meshes the primitives draw, each once however often it is drawn.
     std::vector<std::shared_ptr<const TriangleMesh>> meshes;
@@ -260,7 +260,13 @@ private:
     /// The ray in instance i's prototype's space (its t unchanged).
     Ray instanceRay(int32_t i, const Ray& ray) const {
         const int32_t t = instances[static_cast<size_t>(i)].transform;
-        return t < 0 ? ray : transforms[static_cast<size_t>(t)].toObject.ray(ray);
+        return t < 0 ? ray : toObject(t, ray);
+    }
+    /// The ray in the object space of transform `t` (>= 0), at the ray's time.
+    Ray toObject(int32_t t, const Ray& ray) const {
+        if (t < kFirstMovingTransform) [[likely]]
+            return transforms[static_cast<size_t>(t)].toObject.ray(ray);
+        return movingTransforms[static_cast<size_t>(t - kFirstMovingTransform)].at(ray.time).toObject.ray(ray);
     }
     const RenderScene& prototypeOf(int32_t instance) const {
         return *prototypes[static_cast<size_t>(instances[static_cast<size_t>(instance)].prototype)];
@@ -282,9 +288,7 @@ private:
     /// the node's bounds where that pays.
     bool convexSpan(int32_t node, const CsgRay& ray, RayStats& stats, ConvexSpan& span) const;
     bool convexOperandSpan(int32_t node, const CsgRay& ray, RayStats& stats, ConvexSpan& span) const;
-    Ray objectRay(const Primitive& p, const Ray& ray) const {
-        return p.transform < 0 ? ray : transforms[p.transform].toObject.ray(ray);
-    }
+    Ray objectRay(const Primitive& p, const Ray& ray) const { return p.transform < 0 ? ray : toObject(p.transform, ray); }
     friend class RenderSceneBuilder;
 };
 

@@ -185,7 +185,7 @@ RenderOutcome render(const scene::SceneDesc& desc, const RenderJob& job) {
     if (!prepare(desc, jobThreads, prepared, outcome.error)) return outcome;
     const scene::SettingsDesc settings = withBudget(desc.settings, job.samples);
     PixelSampler sampler(*prepared.integrator, prepared.path.get(), desc.camera.aperture > 0, *prepared.camera, settings,
-                         job.alpha);
+                         desc.motion, job.alpha);
     outcome.buildSeconds = secondsSince(buildStart);
     outcome.primitives = prepared.geometry->storedPrimitives();
     outcome.drawnPrimitives = prepared.geometry->primitives.size() + prepared.geometry->instances.size();

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 namespace crt::tracer {
@@ -68,28 +69,49 @@ public:
     }
 
 private:
+    using ModifierSteps = std::vector<std::vector<scene::Modifier>>;
+
     struct Operand {
         int32_t entity;
+        /// Below a transform node that moves (scene::MotionDesc): what is above it, which
+        /// stays, and the modifiers from it down at every motion step (a MovingTransform).
         Transform transform;
+        std::shared_ptr<const ModifierSteps> motion;
         int32_t material = -1; ///< given by a transform above to the parts that have none
         uint8_t hidden = 0;    ///< what the entities above it hide it from (scene::HiddenFrom)
 
-        /// Where a transform node leads: its child, moved, maybe with a material to give.
-        Operand below(const scene::EntityDesc& node, const scene::TransformNode& t) const {
-            return {t.child, transform.compose(Transform::fromModifiers(t.modifiers)),
-                    node.material >= 0 ? node.material : material, static_cast<uint8_t>(hidden | node.hidden)};
-        }
         /// A part of `node`, this operand's entity.
         Operand part(const scene::EntityDesc& node, int32_t child) const {
-            return {child, transform, material, static_cast<uint8_t>(hidden | node.hidden)};
+            return {child, transform, motion, material, static_cast<uint8_t>(hidden | node.hidden)};
         }
     };
+
+    /// Where the transform node `op` leads: its child, moved, maybe with a material to give.
+    Operand below(const Operand& op, const scene::EntityDesc& node, const scene::TransformNode& t) const {
+        Operand child = op.part(node, t.child);
+        if (node.material >= 0) child.material = node.material;
+        auto moving = desc_.motion.transforms.find(op.entity);
+        if (moving == desc_.motion.transforms.end() && !op.motion) {
+            child.transform = op.transform.compose(Transform::fromModifiers(t.modifiers));
+            return child;
+        }
+        // The node's modifiers at each step, then those of the moving nodes above it.
+        const size_t steps = op.motion ? op.motion->size() : moving->second.size();
+        auto chain = std::make_shared<ModifierSteps>(steps);
+        for (size_t k = 0; k < steps; ++k) {
+            std::vector<scene::Modifier>& modifiers = (*chain)[k];
+            modifiers = moving != desc_.motion.transforms.end() ? moving->second[k] : t.modifiers;
+            if (op.motion) modifiers.insert(modifiers.end(), (*op.motion)[k].begin(), (*op.motion)[k].end());
+        }
+        child.motion = std::move(chain);
+        return child;
+    }
 
     /// Draws an entity: groups and unions are drawn as their members (a union keeps every
     /// surface, so at the top level it is no different from drawing both operands); an entity
     /// drawn often enough is an instance of its prototype.
     bool addDrawn(int32_t root, const Transform& rootTransform) {
-        std::vector<Operand> pending{{root, rootTransform}};
+        std::vector<Operand> pending{{root, rootTransform, nullptr}};
         while (!pending.empty()) {
             Operand op = std::move(pending.back());
             pending.pop_back();
@@ -97,7 +119,7 @@ private:
             if (instanced(op.entity)) {
                 if (!addInstance(op)) return false;
             } else if (auto* t = std::get_if<scene::TransformNode>(&e.shape)) {
-                pending.push_back(op.below(e, *t));
+                pending.push_back(below(op, e, *t));
             } else if (auto* g = std::get_if<scene::GroupNode>(&e.shape)) {
                 for (auto it = g->members.rbegin(); it != g->members.rend(); ++it)
                     pending.push_back(op.part(e, *it));
@@ -145,7 +167,7 @@ private:
         const RenderScene& prototype = *scene_.prototypes[static_cast<size_t>(known->second)];
         const bool bounded = prototype.unbounded.empty() && prototype.planes.empty();
         if (bounded && prototype.bounds.empty()) return true; // nothing to draw
-        const int32_t transform = addTransform(op.transform);
+        const int32_t transform = addTransform(op);
         objects_.push_back(RenderScene::instanceObject(static_cast<int32_t>(scene_.instances.size())));
         scene_.instances.push_back({known->second, transform, op.material >= 0 ? op.material : defaultMaterial_});
         markHidden(scene_.hiddenInstances, scene_.instances.size(), op.hidden);
@@ -159,6 +181,14 @@ private:
         if (bits == 0 && hidden.empty()) return;
         hidden.resize(count - 1, 0);
         hidden.push_back(static_cast<uint8_t>(bits));
+    }
+
+    /// The operand's transform: -1 for none, a moving one from kFirstMovingTransform on.
+    int32_t addTransform(const Operand& op) {
+        if (!op.motion) return addTransform(op.transform);
+        std::vector<MovingTransform>& moving = scene_.movingTransforms;
+        if (moving.empty() || moving.back().chain != op.motion) moving.push_back({op.transform, op.motion});
+        return RenderScene::kFirstMovingTransform + static_cast<int32_t>(moving.size() - 1);
     }
 
     int32_t addTransform(const Transform& toWorld) {
@@ -192,7 +222,7 @@ private:
         std::optional<Geometry> geometry = geometryOf(op);
         if (!geometry) return -1; // nothing to draw, or error_ says why
         scene_.primitives.push_back(
-            {std::move(*geometry), addTransform(op.transform), materialOf(op)});
+            {std::move(*geometry), addTransform(op), materialOf(op)});
         scene_.primitiveEntities.push_back(op.entity);
         markHidden(scene_.hiddenPrimitives, scene_.primitives.size(), op.hidden | desc_.entities[op.entity].hidden);
         return static_cast<int32_t>(scene_.primitives.size() - 1);
@@ -257,7 +287,7 @@ private:
             pending.pop_back();
             const scene::EntityDesc& e = desc_.entities[o.entity];
             if (auto* t = std::get_if<scene::TransformNode>(&e.shape)) {
-                pending.push_back(o.below(e, *t));
+                pending.push_back(below(o, e, *t));
             } else if (auto* g = std::get_if<scene::GroupNode>(&e.shape);
                        g && (op == scene::CsgOp::Union || op == scene::CsgOp::Merge)) {
                 for (int32_t m : g->members) pending.push_back(o.part(e, m));
@@ -275,7 +305,7 @@ private:
     int32_t addCsg(const Operand& operand) {
         const scene::EntityDesc& e = desc_.entities[operand.entity];
         if (auto* t = std::get_if<scene::TransformNode>(&e.shape))
-            return addCsg(operand.below(e, *t));
+            return addCsg(below(operand, e, *t));
         if (auto* inverse = std::get_if<scene::InverseNode>(&e.shape)) {
             CsgTreeNode node;
             node.kind = CsgNodeKind::Inverse;
@@ -305,7 +335,7 @@ private:
             while (true) {
                 const scene::EntityDesc& be = desc_.entities[base.entity];
                 if (auto* t = std::get_if<scene::TransformNode>(&be.shape)) {
-                    base = base.below(be, *t);
+                    base = below(base, be, *t);
                 } else if (auto* d = std::get_if<scene::CsgNode>(&be.shape); d && d->op == scene::CsgOp::Difference) {
                     collectChain(base.part(be, d->right), scene::CsgOp::Union, subtracted);
                     base = base.part(be, d->left);
@@ -385,16 +415,41 @@ private:
 
     Bounds3 worldBounds(const Bounds3& local, int32_t transform) const {
         if (transform < 0 || !local.finite()) return transform < 0 ? local : Bounds3::everything();
-        const Transform& t = scene_.transforms[static_cast<size_t>(transform)].toWorld;
+        if (transform >= RenderScene::kFirstMovingTransform)
+            return sweptBounds(local, scene_.movingTransforms[static_cast<size_t>(transform - RenderScene::kFirstMovingTransform)]);
+        return worldBounds(local, scene_.transforms[static_cast<size_t>(transform)].toWorld);
+    }
+
+    static Vec3 corner(const Bounds3& b, int i) {
+        return {(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z};
+    }
+
+    static Bounds3 worldBounds(const Bounds3& local, const Transform& toWorld) {
         Bounds3 world;
-        for (int corner = 0; corner < 8; ++corner) {
-            Vec3 c((corner & 1) ? local.hi.x : local.lo.x, (corner & 2) ? local.hi.y : local.lo.y,
-                   (corner & 4) ? local.hi.z : local.lo.z);
-            world.include(t.point(c));
-        }
+        for (int i = 0; i < 8; ++i) world.include(toWorld.point(corner(local, i)));
         // Rounding of the transformed corners must not cut off a grazing hit.
         Vec3 pad = errorGamma(4) * glm::max(absolute(world.lo), absolute(world.hi));
         return {world.lo - pad, world.hi + pad};
+    }
+
+    /// Bounds of everything the box is while the shutter is open: its bounds at many times,
+    /// grown by the most a corner moves from one to the next, as a corner's path between two
+    /// of them (an arc, where it turns) strays from their chord by less than that.
+    static Bounds3 sweptBounds(const Bounds3& local, const MovingTransform& moving) {
+        const int samples = 32 * static_cast<int>(moving.chain->size());
+        Bounds3 swept;
+        double stride = 0;
+        std::array<Vec3, 8> previous{};
+        for (int s = 0; s <= samples; ++s) {
+            const Transform toWorld = moving.at(static_cast<double>(s) / samples).toWorld;
+            swept = unionOf(swept, worldBounds(local, toWorld));
+            for (int i = 0; i < 8; ++i) {
+                const Vec3 c = toWorld.point(corner(local, i));
+                if (s > 0) stride = std::max(stride, glm::length(c - previous[static_cast<size_t>(i)]));
+                previous[static_cast<size_t>(i)] = c;
+            }
+        }
+        return {swept.lo - Vec3(stride), swept.hi + Vec3(stride)};
     }
 
     Bounds3 objectBounds(int32_t object) const {
@@ -411,6 +466,7 @@ private:
         const PlaneGeometry* plane = shapeIf<PlaneGeometry>(p.geometry);
         if (!plane) return false;
         if (plane->empty()) return true; // a zero normal: nothing to draw
+        if (p.transform >= RenderScene::kFirstMovingTransform) return false; // tested as it is at the ray's time
         Vec3 normal = plane->normal(), point = plane->position();
         if (p.transform >= 0) {
             const Transform& t = scene_.transforms[p.transform].toWorld;

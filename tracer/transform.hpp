@@ -31,7 +31,7 @@ public:
     double areaScale(const Vec3& n) const {
         return std::abs(glm::determinant(linear_)) * glm::length(normalMatrix_ * n);
     }
-    Ray ray(const Ray& r) const { return {point(r.origin), vector(r.dir)}; }
+    Ray ray(const Ray& r) const { return {point(r.origin), vector(r.dir), r.time}; }
 
     /// Bound of the rounding error of point(p), given p's own error bound (pbrt's
     /// "Transformations" error analysis).
@@ -45,6 +45,12 @@ private:
     Vec3 offset_{0.0};
     glm::dmat3 normalMatrix_{1.0};
     bool identity_ = true;
+};
+
+/// A transform from object to world space with its inverse, as a scene keeps them.
+struct TransformPair {
+    Transform toWorld;
+    Transform toObject;
 };
 
 } // namespace crt::tracer

@@ -70,6 +70,7 @@ uint64_t frameHash(const lang::Compilation& c, const scene::SceneDesc& scene,
                       s.supersampling, static_cast<int>(s.antialias), s.dofSamples,
                       s.shadowSamples, s.glossySamples, scene.camera.aperture, options.alpha,
                       static_cast<int>(s.integrator), s.samples, s.bounces, s.targetError, options.aovs.bits));
+    h.add(fmt::format("shutter {}:{} steps {}", s.shutterOpen, s.shutterClose, s.motionSteps));
     addAssets(h, scene);
     return h.value();
 }

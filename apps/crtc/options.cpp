@@ -283,6 +283,24 @@ void addAnimationOptions(CLI::App& app, Options& o, std::pair<int, int>& range,
         ->type_name("T")
         ->group(group)
         ->each([&o](const std::string& text) { o.eval.time = std::stod(text); });
+    app.add_option("--shutter",
+                   "motion blur: the shutter open from t + A to t + B, instead of the script's "
+                   "shutteropen and shutterclose (0:0 closes it)")
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                std::vector<double> v;
+                if (!parseNumberList(text, 2, v) || !(v[0] <= v[1]))
+                    return fmt::format("needs two numbers A:B, A at most B, not '{}'", text);
+                return "";
+            },
+            ""))
+        ->type_name("A:B")
+        ->group(group)
+        ->each([&o](const std::string& text) {
+            std::vector<double> v;
+            parseNumberList(text, 2, v);
+            o.eval.shutter = std::pair{v[0], v[1]};
+        });
 }
 
 void addEvaluationOptions(CLI::App& app, Options& o) {

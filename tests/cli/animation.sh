@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Animations split into parts: --frame-range renders frames as the whole run does (the same t,
 # clock, file numbers and bits), --first-frame and --clock set the numbering and the clock, and
-# --time with --frames renders one frame of the animation.
+# --time with --frames renders one frame of the animation; motion blur's shutter (--shutter and
+# the script's shutteropen and shutterclose).
 set -u
 crtc=$1
 work=$(mktemp -d)
@@ -52,5 +53,36 @@ expect_status 2 "a GIF needs .gif" "$crtc" --frames 6 --frame-range 0:1 -o "$wor
 # A GIF of part of the animation holds just those frames.
 expect_status 0 "GIF of a range" "$crtc" --frames 6 --frame-range 2:4 -o "$work/part.gif" "$work/anim.crt"
 expect_text "$work/err" "3 frames" "the summary counts the frames rendered"
+
+# Motion blur: a scene that does not move is the same bits with the shutter open; one that
+# moves is blurred, the same bits on any number of threads.
+cat >"$work/still.crt" <<'CRT'
+Settings { width -> 32 height -> 24 supersampling -> 2 }
+Scene { Sphere { center -> vec3(0, 0, 0) radius -> 0.5 } <translate vec3(0.5, 0, 0)> }
+CRT
+cat >"$work/moving.crt" <<'CRT'
+Settings { width -> 32 height -> 24 supersampling -> 2 shutterclose -> 0.5 }
+Scene { Sphere { center -> vec3(0, 0, 0) radius -> 0.5 } <translate vec3(t, 0, 0)> }
+CRT
+expect_status 0 "a still scene" "$crtc" -q -o "$work/closed.png" "$work/still.crt"
+expect_status 0 "a still scene, the shutter open" "$crtc" -q --shutter 0:1 -o "$work/open.png" "$work/still.crt"
+cmp -s "$work/closed.png" "$work/open.png" || fail "a scene that does not move changed with the shutter open"
+expect_status 0 "a moving scene, 1 thread" "$crtc" -q --threads 1 -o "$work/blur1.png" "$work/moving.crt"
+expect_status 0 "a moving scene, 2 threads" "$crtc" -q --threads 2 -o "$work/blur2.png" "$work/moving.crt"
+cmp -s "$work/blur1.png" "$work/blur2.png" || fail "a blurred render differs between 1 and 2 threads"
+expect_status 0 "the shutter closed by --shutter" "$crtc" -q --shutter 0:0 -o "$work/sharp.png" "$work/moving.crt"
+cmp -s "$work/blur1.png" "$work/sharp.png" && fail "the moving sphere is not blurred"
+expect_status 0 "the shutter closed at t = 0" "$crtc" -q --shutter 0:0 -o "$work/sharp0.png" "$work/still.crt"
+cmp -s "$work/closed.png" "$work/sharp0.png" || fail "--shutter 0:0 changed a still scene"
+expect_status 2 "--shutter closing before it opens" "$crtc" --shutter 1:0.5 "$work/moving.crt"
+expect_text "$work/err" "--shutter needs two numbers A:B, A at most B, not '1:0.5'" "--shutter message"
+cat >"$work/growing.crt" <<'CRT'
+Settings { shutterclose -> 1 }
+Scene {
+  Sphere { center -> vec3(0, 0, 0) radius -> 0.5 + t } }
+CRT
+expect_status 1 "a shape that changes across the shutter" "$crtc" --check "$work/growing.crt"
+expect_text "$work/err" "growing.crt:3:3: error: this Sphere changes across the shutter \\(between t = 0 and t = 1\\)" \
+    "the changing shape is named"
 
 finish

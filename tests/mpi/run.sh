@@ -66,6 +66,9 @@ stills() {
     "$crtc" --quiet "$here/still.crt" --width 320 --height 240 -o "$work/back_alone.png"
     CRT_TEST_QUEUED_TILES=1000 same_as_alone "tiles given back" "$work/back_alone.png" \
         "$work/back.png" "$here/still.crt" --width 320 --height 240 -o "$work/back.png"
+    # Motion blur: each sample's time within the shutter is the same wherever it is traced.
+    "$crtc" --quiet "$here/blurred.crt" -o "$work/blurred_alone.png"
+    same_as_alone "blurred" "$work/blurred_alone.png" "$work/blurred.png" "$here/blurred.crt" -o "$work/blurred.png"
     # --region and a Radiance HDR (floats: no rounding to 8 bits to hide a wrong pixel).
     "$crtc" --quiet "$here/still.crt" --region 5:3:77:41 -o "$work/alone.hdr"
     expect_status 0 "region as HDR" mpi 3 --quiet "$here/still.crt" --region 5:3:77:41 -o "$work/shared.hdr"

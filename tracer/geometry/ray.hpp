@@ -36,6 +36,9 @@ constexpr double errorGamma(int n) {
 struct Ray {
     Vec3 origin{0.0};
     Vec3 dir{0, 0, 1};
+    /// When the ray is cast while the shutter is open: 0 as it opens, 1 as it closes (what
+    /// moves is where it is then; motion.hpp).
+    double time = 0;
 
     Vec3 at(double t) const { return origin + t * dir; }
 };

@@ -158,6 +158,7 @@ constexpr std::pair<ObjectType, std::string_view> kRuleDefaults[] = {
     {ObjectType::Fog, "falloff"},              // none: a constant fog
     {ObjectType::Settings, "reflectiondepth"}, // recursiondepth
     {ObjectType::Settings, "refractiondepth"}, // recursiondepth
+    {ObjectType::Settings, "shutterclose"},    // shutteropen: a closed shutter
     {ObjectType::HeightField, "image"},        // a height field has an image or a function
     {ObjectType::HeightField, "function"},
     {ObjectType::Mesh, "file"},                // a mesh has a file, or vertices and faces
@@ -400,6 +401,17 @@ TEST_CASE("defaults documented as rules follow their rule", "[defaults]") {
         CHECK(given.settings.reflectionLimit() == 2);
         CHECK(given.settings.refractionLimit() == 9);
         CHECK(given.settings.bounceLimit() == 9);
+    }
+
+    SECTION("the shutter closes as it opens unless told when it closes") {
+        const ObjectInfo& settings = objectInfo(ObjectType::Settings);
+        CHECK(settings.attributes[findAttribute(settings, "shutterclose")].defaultText == "shutteropen");
+        crt::scene::SceneDesc opened = evaluate("Settings { shutteropen -> 0.3 }");
+        CHECK(opened.settings.shutterClose == 0.3);
+        CHECK_FALSE(opened.settings.shutterIsOpen());
+        crt::scene::SceneDesc given = evaluate("Settings { shutteropen -> 0.3 shutterclose -> 0.5 }");
+        CHECK(given.settings.shutterClose == 0.5);
+        CHECK(given.settings.shutterIsOpen());
     }
 
     SECTION("a material has no texture and no bump unless given") {
