@@ -27,19 +27,24 @@ scene::CameraDesc orthographicCamera(double x = 0) {
     return c;
 }
 
-/// The glowing sphere `shape` (kRadius at the origin) drawn moved by `modifiers`, which the
-/// motion steps replace when given.
+/// A material that only glows, white: a pixel is the share of its samples that meet it.
+int32_t glowing(SceneMaker& m) {
+    ShadingMaterial glow;
+    glow.color = scene::Color{0, 0, 0, 1};
+    glow.diffuse = 0;
+    glow.emission = scene::Color{1, 1, 1, 1};
+    return m.material(glow);
+}
+
+/// A glowing sphere (kRadius at the origin) drawn moved by `modifiers`, which the motion
+/// steps replace when given.
 scene::SceneDesc glowingScene(const std::vector<scene::Modifier>& modifiers,
                               const std::vector<std::vector<scene::Modifier>>& steps = {}, bool csg = false) {
     SceneMaker m;
     m.desc = blankScene(kWidth, kHeight, orthographicCamera());
     m.desc.settings.supersampling = 8;
     m.desc.settings.antialias = scene::Antialias::Stratified;
-    ShadingMaterial glow;
-    glow.color = scene::Color{0, 0, 0, 1};
-    glow.diffuse = 0;
-    glow.emission = scene::Color{1, 1, 1, 1};
-    const int32_t material = m.material(glow);
+    const int32_t material = glowing(m);
     int32_t shape = m.sphere({0, 0, 0}, kRadius, material);
     // The same sphere as a CSG tree: the ball cut by a box that holds all of it.
     if (csg) shape = m.csg(scene::CsgOp::Intersection, shape, m.box({-1, -1, -1}, {1, 1, 1}, material));
@@ -145,11 +150,7 @@ TEST_CASE("a cube turning a whole turn draws a ring", "[motion]") {
     m.desc.camera.width = 3;
     m.desc.settings.supersampling = 8;
     m.desc.settings.antialias = scene::Antialias::Stratified;
-    ShadingMaterial glow;
-    glow.color = scene::Color{0, 0, 0, 1};
-    glow.diffuse = 0;
-    glow.emission = scene::Color{1, 1, 1, 1};
-    const int32_t cube = m.box({0.9, -0.1, -0.1}, {1.1, 0.1, 0.1}, m.material(glow));
+    const int32_t cube = m.box({0.9, -0.1, -0.1}, {1.1, 0.1, 0.1}, glowing(m));
     const int32_t turned = m.transformed(cube, {rotate({0, 0, 0})});
     m.draw(turned);
     m.desc.motion.transforms.emplace(turned, std::vector<std::vector<scene::Modifier>>{{rotate({0, 0, 0})},
