@@ -26,7 +26,13 @@ public:
     /// The phase function's density at cos θ, θ the angle between the direction light
     /// travelled and the direction it is scattered into (it integrates to 1 over the sphere).
     double phase(double cosTheta) const;
+    /// A direction drawn by the phase function from `u` in [0, 1)²: the way light comes from
+    /// that scatters along −d, so its density is phase(wi · d) (a path arriving along d goes
+    /// on along wi).
+    Vec3 samplePhase(const Vec3& d, const Vec2& u) const;
     int samples() const { return samples_; }
+    /// The most density() may be anywhere.
+    double densityBound() const { return density_; }
 
 private:
     Vec3 absorption_, scattering_, emission_;

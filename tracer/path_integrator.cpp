@@ -28,6 +28,14 @@ constexpr int kRouletteAfter = 3;
 /// the camera's own (the point in the pixel and on the lens) come before.
 uint32_t firstDimensionOf(int bounce) { return static_cast<uint32_t>(bounce + 1) << 20; }
 
+/// A surface that sends all light on as it came, unbent and whole: transparency 1 at ior 1,
+/// nothing reflected, diffused or given off. It bounds air, or a medium: paths and shadow
+/// rays cross it as if it were not there, noting only which solid they are then in.
+bool isClearBoundary(const ShadingMaterial& m) {
+    return m.transparency == 1 && m.ior == 1 && m.reflectivity == 0 && m.reflectivityMin <= 0 && m.specular == 0 &&
+           m.glossiness <= 0 && (m.conserveEnergy || m.diffuse == 0) && rgb(m.emission) == Vec3(0.0);
+}
+
 } // namespace
 
 struct PathIntegrator::Vertex {
@@ -35,13 +43,15 @@ struct PathIntegrator::Vertex {
     SurfaceInteraction si;
     Vec3 n;            ///< shading normal, facing the incoming ray (bumped)
     double pathLength; ///< from the camera to this point (lights' falloff)
+    bool inMedium = false; ///< a point of a medium the path scattered at (si.point only)
 };
 
 PathIntegrator::PathIntegrator(const RenderScene& scene, const scene::SettingsDesc& settings,
                                const std::vector<Light>& lights, const Background& background, const Fog* fog,
                                const std::vector<Texture>& textures)
     : scene_(scene), settings_(settings), lights_(lights), background_(background), fog_(fog), textures_(textures),
-      mixer_(scene.materials, scene.blends, textures), emitters_(scene), environment_(background),
+      mixer_(scene.materials, scene.blends, textures), media_(scene.media.begin(), scene.media.end()), emitters_(scene),
+      environment_(background),
       hasAreaLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.hasArea(); })),
       hides_(scene.hidesAnything()),
       seesLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.visible(); })) {}
@@ -85,11 +95,18 @@ int32_t PathIntegrator::drawMaterial(const SurfaceInteraction& si, Vec3& color, 
 Vec3 PathIntegrator::visibility(const Ray& ray, double tMax, Departure departed, TraceContext& context) const {
     ++context.stats.shadowRays;
     Vec3 through(1.0);
+    std::vector<BoundaryCrossing> solids;
     scene_.forEachCrossing(ray, tMax, departed, context.scratch, context.stats, [&](const Hit& hit) {
         if (hides_ && (scene_.hiddenFrom(hit) & scene::kHiddenFromShadows)) return true;
         const int32_t index = scene_.materialOf(hit);
         if (mixer_.isPlain(index)) {
-            through = Vec3(0.0);
+            const ShadingMaterial& m = scene_.materials[static_cast<size_t>(index)];
+            if (!isClearBoundary(m)) {
+                through = Vec3(0.0);
+            } else if (m.medium >= 0 || rgb(m.absorption) != Vec3(0.0)) {
+                const SurfaceInteraction si = scene_.interaction(ray, hit);
+                if (si.solid) solids.push_back({hit.t, index, glm::dot(ray.dir, si.normal) < 0});
+            }
         } else {
             const SurfaceInteraction si = scene_.interaction(ray, hit);
             size_t first = context.shares.size();
@@ -98,22 +115,32 @@ Vec3 PathIntegrator::visibility(const Ray& ray, double tMax, Departure departed,
         }
         return through != Vec3(0.0);
     });
+    if (!solids.empty() && through != Vec3(0.0)) through *= throughSolids(ray, tMax, solids, context);
     return through;
 }
 
-Vec3 PathIntegrator::fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const {
+Vec3 PathIntegrator::originToward(const Vertex& v, const Vec3& dir) const {
+    return v.inMedium ? v.si.point : offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, dir);
+}
+
+Departure PathIntegrator::departedToward(const Vertex& v, const Vec3& dir) const {
+    return v.inMedium ? Departure{} : scene_.departedPrimitive(v.hit, v.si, dir);
+}
+
+template <typename Scatter>
+Vec3 PathIntegrator::fromLights(const Vertex& v, const Scatter& bsdf, TraceContext& context) const {
     Vec3 sum(0.0);
     for (const Light& light : lights_) {
         const LightSample ls = light.sampleUniformly(v.si.point, context.rng.uniform2());
         if (ls.color == Vec3(0.0)) continue;
         const Vec3 f = bsdf.evalCos(ls.toLight);
         if (f == Vec3(0.0)) continue;
-        const Vec3 origin = offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ls.toLight);
+        const Vec3 origin = originToward(v, ls.toLight);
         const Ray shadow = ls.atInfinity ? Ray{origin, ls.toLight, context.time} : Ray{origin, ls.target - origin, context.time};
         const Vec3 visible = light.shadowless()
                                  ? Vec3(1.0)
                                  : visibility(shadow, ls.atInfinity ? kInfinity : 1.0,
-                                              scene_.departedPrimitive(v.hit, v.si, ls.toLight), context);
+                                              departedToward(v, ls.toLight), context);
         if (visible == Vec3(0.0)) continue;
         // An area light is also met by the paths the BSDF sends (areaLightsAlong).
         const double weight =
@@ -141,7 +168,8 @@ Vec3 PathIntegrator::areaLightsAlong(const Ray& ray, double tMax, double scatter
     return sum;
 }
 
-Vec3 PathIntegrator::fromEmitter(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const {
+template <typename Scatter>
+Vec3 PathIntegrator::fromEmitter(const Vertex& v, const Scatter& bsdf, TraceContext& context) const {
     EmitterSample es;
     const double pick = context.rng.uniform();
     const Vec2 u = context.rng.uniform2();
@@ -149,31 +177,32 @@ Vec3 PathIntegrator::fromEmitter(const Vertex& v, const Bsdf& bsdf, TraceContext
     const Vec3 toEmitter = glm::normalize(es.point - v.si.point);
     const Vec3 f = bsdf.evalCos(toEmitter);
     if (f == Vec3(0.0)) return Vec3(0.0);
-    const Vec3 origin = offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, toEmitter);
+    const Vec3 origin = originToward(v, toEmitter);
     // Stops short of the emitter's own surface, which the rounding of the point may put a
     // hair in front of the ray's end.
     constexpr double kShortOfEmitter = 1 - 1e-7;
     const Vec3 visible = visibility(Ray{origin, es.point - origin, context.time}, kShortOfEmitter,
-                                    scene_.departedPrimitive(v.hit, v.si, toEmitter), context);
+                                    departedToward(v, toEmitter), context);
     if (visible == Vec3(0.0)) return Vec3(0.0);
     const double weight = powerHeuristic(es.pdf, bsdf.pdf(toEmitter));
     return visible * f * es.radiance * (weight / es.pdf);
 }
 
-Vec3 PathIntegrator::fromEnvironment(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const {
+template <typename Scatter>
+Vec3 PathIntegrator::fromEnvironment(const Vertex& v, const Scatter& bsdf, TraceContext& context) const {
     if (!environment_.active()) return Vec3(0.0);
     double pdf = 0;
     const Vec3 dir = environment_.sample(context.rng.uniform2(), pdf);
     if (!(pdf > 0)) return Vec3(0.0);
     const Vec3 f = bsdf.evalCos(dir);
     if (f == Vec3(0.0)) return Vec3(0.0);
-    const Vec3 origin = offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, dir);
-    const Vec3 visible = visibility(Ray{origin, dir, context.time}, kInfinity, scene_.departedPrimitive(v.hit, v.si, dir), context);
+    const Vec3 visible = visibility(Ray{originToward(v, dir), dir, context.time}, kInfinity, departedToward(v, dir), context);
     if (visible == Vec3(0.0)) return Vec3(0.0);
     return visible * f * background_.radiance(dir) * (powerHeuristic(pdf, bsdf.pdf(dir)) / pdf);
 }
 
-Vec3 PathIntegrator::directLight(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const {
+template <typename Scatter>
+Vec3 PathIntegrator::directLight(const Vertex& v, const Scatter& bsdf, TraceContext& context) const {
     return fromLights(v, bsdf, context) + fromEmitter(v, bsdf, context) + fromEnvironment(v, bsdf, context);
 }
 
@@ -190,21 +219,36 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
     double pathLength = 0;
     int bounce = 0;
     context.rng.skipTo(firstDimensionOf(bounce));
+    // Russian roulette past the first bounces: a path carrying little light ends with the
+    // chance it lacks, and one that goes on carries that much more.
+    auto survives = [&] {
+        if (bounce <= kRouletteAfter) return true;
+        const double keep = std::min(1.0, std::max({beta.r, beta.g, beta.b}));
+        if (context.rng.uniform() >= keep) return false;
+        beta /= keep;
+        return true;
+    };
     for (int crossings = 0;; ++crossings) {
         Vertex v;
         const bool found = scene_.intersect(ray, kInfinity, v.hit, context.scratch, context.stats, departed);
         double reach = found ? v.hit.t : kInfinity;
+        const Medium* fill = mediumOf(medium);
+        MediumStep step;
+        if (fill) {
+            step = trackMedium(ray, reach, *fill, beta, radiance, context);
+            if (step.scattered) reach = step.t;
+        }
         // The camera, mirrors and glass see the visible lights as the Whitted integrator does
         // (light sampling cannot reach them through a mirror); other bounces meet every area
         // light and weigh it against light sampling.
         const Light* lamp = scatterPdf == 0 && seesLights_ ? firstSeenLight(lights_, ray, reach) : nullptr;
         if (bounce > 0 && hasAreaLights_) radiance += beta * areaLightsAlong(ray, reach, scatterPdf, pathLength);
-        if (medium >= 0) {
+        if (medium >= 0 && !fill) {
             // Beer–Lambert absorption along the path inside the solid.
             const Vec3 a = rgb(scene_.materials[static_cast<size_t>(medium)].absorption);
             for (int i = 0; i < 3; ++i)
                 if (a[i] > 0) beta[i] *= reach < kInfinity ? std::exp(-a[i] * reach) : 0.0;
-        } else if (fog_) {
+        } else if (medium < 0 && fog_) {
             const FogCrossing fog = fog_->along(ray, reach);
             radiance += beta * fog.inscattered;
             beta *= fog.transmittance;
@@ -212,6 +256,25 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
         if (lamp) {
             radiance += beta * lamp->color();
             break;
+        }
+        if (step.scattered) {
+            // A scattering in the medium: light sampling and the phase function's draw, as at a
+            // surface.
+            if (bounce >= settings_.bounces) break;
+            v.inMedium = true;
+            v.si.point = ray.at(step.t);
+            v.pathLength = pathLength += step.t * glm::length(ray.dir);
+            const PhaseScatter phase{*fill, glm::normalize(ray.dir)};
+            radiance += beta * directLight(v, phase, context);
+            const Vec3 wi = fill->samplePhase(phase.d, context.rng.uniform2());
+            scatteredFrom = v.si.point;
+            scatterPdf = phase.pdf(wi);
+            ray = Ray{v.si.point, wi, ray.time};
+            departed = {};
+            ++bounce;
+            context.rng.skipTo(firstDimensionOf(bounce));
+            if (!survives()) break;
+            continue;
         }
         if (!found) {
             if (crossings == 0 && transparentBackground) return glm::dvec4(0.0);
@@ -241,6 +304,15 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
             continue;
         }
         const ShadingMaterial& m = scene_.materials[static_cast<size_t>(material)];
+        if (isClearBoundary(m)) {
+            // Crossed as if it were not there, into or out of its solid: the last scattering
+            // vertex stays the one light sampling was weighed against, as shadow rays cross it.
+            if (crossings > 4 * settings_.bounces + 16) break;
+            if (v.si.solid) medium = entering ? material : -1;
+            ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ray.dir), ray.dir, ray.time};
+            departed = scene_.departedPrimitive(v.hit, v.si, ray.dir);
+            continue;
+        }
         const Vec3 emission = rgb(m.emission);
         if (emission != Vec3(0.0)) {
             const double weight =
@@ -276,13 +348,7 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
         departed = scene_.departedPrimitive(v.hit, v.si, next.wi);
         ++bounce;
         context.rng.skipTo(firstDimensionOf(bounce));
-        if (bounce > kRouletteAfter) {
-            // Russian roulette: a path carrying little light ends with the chance it lacks,
-            // and one that goes on carries that much more.
-            const double keep = std::min(1.0, std::max({beta.r, beta.g, beta.b}));
-            if (context.rng.uniform() >= keep) break;
-            beta /= keep;
-        }
+        if (!survives()) break;
     }
     return {radiance, 1};
 }

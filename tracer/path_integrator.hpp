@@ -36,24 +36,68 @@ public:
     const Emitters& emitters() const { return emitters_; }
 
 private:
-    /// Where a path is: the surface it reached and what it knows of how it got there.
+    /// Where a path is: the surface it reached, or the point of a medium it scattered at,
+    /// and what it knows of how it got there.
     struct Vertex;
+    /// A medium's phase function where a path scatters in it, as light sampling and the
+    /// path's next direction read it (a BSDF's evalCos and pdf).
+    struct PhaseScatter {
+        const Medium& medium;
+        Vec3 d; ///< the unit direction the path arrived along
+        Vec3 evalCos(const Vec3& wi) const { return Vec3(pdf(wi)); }
+        double pdf(const Vec3& wi) const { return medium.phase(glm::dot(wi, d)); }
+    };
+    /// What a path does in a medium before `reach`: it scatters at t, or passes.
+    struct MediumStep {
+        bool scattered = false;
+        double t = 0;
+    };
     /// The plain material the path meets at the hit (one share of a blend, drawn by weight),
     /// or -1 when it passes the surface unbent; `beta` takes the draw's weight.
     int32_t drawMaterial(const SurfaceInteraction& si, Vec3& color, Vec3& beta, TraceContext& context) const;
-    /// The light arriving from the lights and emitting surfaces, sent on by the BSDF towards
-    /// the path's previous vertex.
-    Vec3 directLight(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
-    Vec3 fromLights(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
+    /// The light arriving from the lights and emitting surfaces, sent on by the BSDF (or the
+    /// phase function) towards the path's previous vertex.
+    template <typename Scatter>
+    Vec3 directLight(const Vertex& v, const Scatter& scatter, TraceContext& context) const;
+    template <typename Scatter>
+    Vec3 fromLights(const Vertex& v, const Scatter& scatter, TraceContext& context) const;
     /// The light of the area lights a path's ray meets before `tMax`, weighed against light
     /// sampling's chance of the same direction (`scatterPdf`, 0 when it has none).
     Vec3 areaLightsAlong(const Ray& ray, double tMax, double scatterPdf, double pathLength) const;
-    Vec3 fromEmitter(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
-    Vec3 fromEnvironment(const Vertex& v, const Bsdf& bsdf, TraceContext& context) const;
+    template <typename Scatter>
+    Vec3 fromEmitter(const Vertex& v, const Scatter& scatter, TraceContext& context) const;
+    template <typename Scatter>
+    Vec3 fromEnvironment(const Vertex& v, const Scatter& scatter, TraceContext& context) const;
+    /// Where a ray toward `dir` leaves the vertex, and what it cannot meet again.
+    Vec3 originToward(const Vertex& v, const Vec3& dir) const;
+    Departure departedToward(const Vertex& v, const Vec3& dir) const;
     /// The share of light that passes along the segment (0, tMax) of `ray`: surfaces block it
-    /// but for what a colour's alpha lets through unbent (glass is reached by the path's own
-    /// refraction, so it is not counted twice).
+    /// but for what a colour's alpha lets through unbent and clear boundaries (glass is
+    /// reached by the path's own refraction, so it is not counted twice), and the media and
+    /// absorbing solids within clear boundaries dim it.
     Vec3 visibility(const Ray& ray, double tMax, Departure departed, TraceContext& context) const;
+
+    // Media (path_media.cpp).
+    /// The medium filling the solid of `material` (-1: none), or null.
+    const Medium* mediumOf(int32_t material) const;
+    /// Follows the path through `medium` up to `reach` (delta tracking): adds the medium's
+    /// emission to `radiance`, and weighs `beta` by what the medium lets through to where the
+    /// path scatters, or to `reach`.
+    MediumStep trackMedium(const Ray& ray, double reach, const Medium& medium, Vec3& beta, Vec3& radiance,
+                           TraceContext& context) const;
+    /// The share of light that passes through `medium` along `ray` from t = `from` to `to`.
+    Vec3 mediumTransmittance(const Ray& ray, double from, double to, const Medium& medium,
+                             TraceContext& context) const;
+    /// The boundaries of solids with a medium or an absorption that a shadow ray crossed,
+    /// by where and whether it entered: the share of light they let through, each solid
+    /// from where the ray enters it (or its start) to where it leaves (or its end).
+    struct BoundaryCrossing {
+        double t;
+        int32_t material;
+        bool entering;
+    };
+    Vec3 throughSolids(const Ray& ray, double tMax, std::vector<BoundaryCrossing>& crossings,
+                       TraceContext& context) const;
 
     const RenderScene& scene_;
     const scene::SettingsDesc& settings_;
@@ -62,6 +106,7 @@ private:
     const Fog* fog_; ///< null: no fog
     const std::vector<Texture>& textures_;
     MaterialMixer mixer_;
+    std::vector<Medium> media_; ///< by index of RenderScene::media
     Emitters emitters_;
     EnvironmentLight environment_;
     bool hasAreaLights_;

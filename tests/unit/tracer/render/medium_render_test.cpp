@@ -5,11 +5,14 @@
 // Absorption alone is Beer's law; emission adds E/σ·(1 − e^(−σw)); single scattering of a
 // light straight above, through the medium's own height h − y, adds
 // σs·π·p·L·e^(−σ(h−y))·(1 − e^(−σw))/σ (with the convention that a light of colour L gives a
-// white Lambertian surface L·cos θ, its irradiance is π·L).
+// white Lambertian surface L·cos θ, its irradiance is π·L). The path integrator, its light
+// bouncing once, gives the same; with every bounce, a medium that gives off what it absorbs
+// (E = σa·B) in a furnace of radiance B is not seen at all, however it scatters.
 #include "analytic_util.hpp"
 #include "scene_builder_util.hpp"
 
 #include "tracer/medium.hpp"
+#include "tracer/sampling.hpp"
 
 #include <cmath>
 
@@ -60,6 +63,7 @@ bool outside(int x, int y) {
 /// background.
 template <typename Want>
 void checkBox(const scene::SceneDesc& desc, Want&& want, double tolerance = 1e-6) {
+    const DVec3 behind = rgbOf(desc.background.color);
     const PixelBuffer image = renderOk(desc);
     int checked = 0;
     for (int y = 0; y < kSize; ++y)
@@ -69,13 +73,21 @@ void checkBox(const scene::SceneDesc& desc, Want&& want, double tolerance = 1e-6
                 CHECK(maxDifference(pixelAt(image, x, y), want(rowHeight(y))) < tolerance);
                 ++checked;
             } else if (outside(x, y)) {
-                CHECK(maxDifference(pixelAt(image, x, y), kBehind) < 1e-6);
+                CHECK(maxDifference(pixelAt(image, x, y), behind) < 1e-6);
             }
         }
     REQUIRE(checked > 50);
 }
 
 DVec3 expOf(const DVec3& v) { return {std::exp(v.x), std::exp(v.y), std::exp(v.z)}; }
+
+/// The scene under the path integrator, light bouncing once (single scattering).
+scene::SceneDesc pathTraced(scene::SceneDesc desc, int samples) {
+    desc.settings.integrator = scene::Integrator::Path;
+    desc.settings.samples = samples;
+    desc.settings.bounces = 1;
+    return desc;
+}
 
 } // namespace
 
@@ -96,6 +108,37 @@ TEST_CASE("a glowing medium adds E/a (1 - exp(-a w))", "[render][analytic][mediu
     const DVec3 a = rgbOf(medium.absorption), e = rgbOf(medium.emission);
     const DVec3 loss = expOf(-a * kWidth);
     checkBox(mediumBox(medium), [&](double) { return e / a * (DVec3(1.0) - loss) + kBehind * loss; });
+}
+
+TEST_CASE("the path integrator's paths through absorbing and glowing media are Beer's law exactly",
+          "[render][analytic][medium]") {
+    scene::MediumDesc medium;
+    medium.absorption = {0.3, 0.6, 0.9, 1};
+    medium.emission = {0.4, 0.2, 0.1, 1};
+    const DVec3 a = rgbOf(medium.absorption), e = rgbOf(medium.emission);
+    const DVec3 loss = expOf(-a * kWidth);
+    checkBox(pathTraced(mediumBox(medium), 4), [&](double) { return e / a * (DVec3(1.0) - loss) + kBehind * loss; });
+}
+
+TEST_CASE("the path integrator tracks a medium whose density is a pattern", "[render][analytic][medium]") {
+    // A gradient along y: the density at height y (below 1) is y, the same along each ray;
+    // each path passes or is absorbed, so the pixel is a mean.
+    scene::MediumDesc medium;
+    medium.absorption = {0.8, 0.8, 0.8, 1};
+    scene::TextureDesc gradient = scene::defaultTexture(scene::TextureKind::Gradient);
+    gradient.axis = {0, 1, 0};
+    medium.densityPattern.push_back(gradient);
+    const PixelBuffer image = renderOk(pathTraced(mediumBox(medium), 4096));
+    int checked = 0;
+    for (int y = 0; y < kSize; ++y) {
+        const double h = rowHeight(y);
+        if (h < 0.1 || h > 0.9) continue;
+        const DVec3 want = kBehind * std::exp(-0.8 * h * kWidth);
+        INFO("height " << h);
+        CHECK(maxDifference(pixelAt(image, kSize / 2, y), want) < 0.03);
+        ++checked;
+    }
+    CHECK(checked >= 3);
 }
 
 TEST_CASE("a medium's density pattern scales it point by point", "[render][analytic][medium]") {
@@ -135,6 +178,90 @@ TEST_CASE("single scattering of a light above a homogeneous medium matches its c
                  return scattered + kBehind * loss;
              },
              1e-5);
+}
+
+TEST_CASE("the path integrator's single scattering matches the same closed form", "[render][analytic][medium]") {
+    scene::MediumDesc medium;
+    medium.scattering = {0.5, 0.25, 0.1, 1};
+    medium.absorption = {0.1, 0.1, 0.1, 1};
+    const DVec3 light{1.5, 1.2, 1.0};
+    const DVec3 sigmaS = rgbOf(medium.scattering), sigmaT = sigmaS + rgbOf(medium.absorption);
+    const DVec3 loss = expOf(-sigmaT * kWidth);
+    // Each path scatters at its own point of its own pixel: the mean over the pixel's heights.
+    // Against a black background, as light from the background would scatter too.
+    const double pixel = 4.0 / kSize;
+    scene::SceneDesc desc = mediumBox(medium, {parallelLight({0, 10, 0}, {0, 0, 0}, {light.x, light.y, light.z, 1})});
+    desc.background.color = {0, 0, 0, 1};
+    checkBox(pathTraced(desc, 4096),
+             [&](double h) {
+                 const DVec3 reaching = light * expOf(-sigmaT * (kHeight - h)) * (DVec3(2.0) / (sigmaT * pixel)) *
+                                        DVec3(std::sinh(sigmaT.x * pixel / 2), std::sinh(sigmaT.y * pixel / 2),
+                                              std::sinh(sigmaT.z * pixel / 2));
+                 return sigmaS * (kTestPi / (4 * kTestPi)) * reaching * (DVec3(1.0) - loss) / sigmaT;
+             },
+             0.01);
+}
+
+TEST_CASE("in a furnace, a medium that gives off what it absorbs is not seen, however it scatters",
+          "[render][analytic][medium]") {
+    // The radiance B everywhere solves the transfer equation: along any ray, σa·B is absorbed
+    // and E = σa·B given off, and what scatters in equals what scatters out.
+    const DVec3 furnace{0.7, 0.8, 0.9}, absorption{0.4, 0.5, 0.6};
+    for (bool patterned : {false, true}) {
+        scene::MediumDesc medium;
+        medium.scattering = {0.8, 0.5, 0.3, 1};
+        medium.absorption = {absorption.x, absorption.y, absorption.z, 1};
+        const DVec3 e = absorption * furnace;
+        medium.emission = {e.x, e.y, e.z, 1};
+        medium.phase = scene::PhaseFunction::HenyeyGreenstein;
+        medium.g = 0.5;
+        medium.density = 3;
+        if (patterned) medium.densityPattern.push_back(scene::defaultTexture(scene::TextureKind::Granite));
+        scene::SceneDesc desc = mediumBox(medium);
+        desc.background.color = {furnace.x, furnace.y, furnace.z, 1};
+        desc = pathTraced(desc, 1024);
+        desc.settings.bounces = 1000;
+        const PixelBuffer image = renderOk(desc);
+        DVec3 sum(0.0);
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                INFO("pixel " << x << "," << y << (patterned ? " patterned" : ""));
+                CHECK(maxDifference(pixelAt(image, x, y), furnace) < 0.05);
+                sum += pixelAt(image, x, y);
+            }
+        INFO((patterned ? "patterned" : "homogeneous"));
+        CHECK(maxDifference(sum / double(kSize * kSize), furnace) < 0.005);
+    }
+}
+
+TEST_CASE("the phase functions' draws follow their densities", "[medium]") {
+    // E[cos θ] = g for Henyey–Greenstein; E[cos² θ] = 1/3 for the isotropic one and 2/5 for
+    // Rayleigh's (3/8)(1 + c²).
+    const Vec3 d = glm::normalize(Vec3(0.3, -0.5, 0.8));
+    auto moments = [&](scene::PhaseFunction phase, double g) {
+        scene::MediumDesc desc;
+        desc.phase = phase;
+        desc.g = g;
+        const Medium medium(desc);
+        constexpr int kDraws = 400000;
+        SampleRng rng(7, 0, 0);
+        double sum = 0, squares = 0, longest = 0;
+        for (int i = 0; i < kDraws; ++i) {
+            const Vec3 wi = medium.samplePhase(d, rng.uniform2());
+            longest = std::max(longest, std::abs(glm::length(wi) - 1));
+            const double c = glm::dot(wi, d);
+            sum += c, squares += c * c;
+        }
+        CHECK(longest < 1e-12); // unit directions
+        return std::pair{sum / kDraws, squares / kDraws};
+    };
+    for (double g : {-0.6, 0.0, 0.3, 0.9}) {
+        INFO("g " << g);
+        CHECK(moments(scene::PhaseFunction::HenyeyGreenstein, g).first == Approx(g).margin(0.005));
+    }
+    CHECK(moments(scene::PhaseFunction::Isotropic, 0).second == Approx(1.0 / 3).margin(0.005));
+    CHECK(moments(scene::PhaseFunction::Rayleigh, 0).second == Approx(0.4).margin(0.005));
+    CHECK(moments(scene::PhaseFunction::Rayleigh, 0).first == Approx(0).margin(0.005));
 }
 
 TEST_CASE("the phase functions are densities over the sphere, forward or back as g says", "[medium]") {
