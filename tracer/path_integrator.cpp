@@ -54,7 +54,9 @@ PathIntegrator::PathIntegrator(const RenderScene& scene, const scene::SettingsDe
       environment_(background),
       hasAreaLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.hasArea(); })),
       hides_(scene.hidesAnything()),
-      seesLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.visible(); })) {}
+      seesLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.visible(); })) {
+    for (const ShadingMaterial& m : scene.materials) clearBoundary_.push_back(isClearBoundary(m));
+}
 
 int32_t PathIntegrator::drawMaterial(const SurfaceInteraction& si, Vec3& color, Vec3& beta,
                                      TraceContext& context) const {
@@ -101,7 +103,7 @@ Vec3 PathIntegrator::visibility(const Ray& ray, double tMax, Departure departed,
         const int32_t index = scene_.materialOf(hit);
         if (mixer_.isPlain(index)) {
             const ShadingMaterial& m = scene_.materials[static_cast<size_t>(index)];
-            if (!isClearBoundary(m)) {
+            if (!clearBoundary_[static_cast<size_t>(index)]) {
                 through = Vec3(0.0);
             } else if (m.medium >= 0 || rgb(m.absorption) != Vec3(0.0)) {
                 const SurfaceInteraction si = scene_.interaction(ray, hit);
@@ -206,151 +208,174 @@ Vec3 PathIntegrator::directLight(const Vertex& v, const Scatter& bsdf, TraceCont
     return fromLights(v, bsdf, context) + fromEmitter(v, bsdf, context) + fromEnvironment(v, bsdf, context);
 }
 
+/// A path being traced: its ray, the light it has gathered and the share it carries, and
+/// what it knows of how it got there.
+struct PathIntegrator::Path {
+    Ray ray;
+    Vec3 radiance{0.0}, beta{1.0};
+    Departure departed;
+    int32_t medium = -1; ///< the material of the solid it is in (-1: air)
+    /// The last scattering vertex: where a BSDF- or phase-sampled ray started, and its density
+    /// (0 for a mirror, glass or the camera: no light sampling competes with those).
+    Vec3 scatteredFrom{0.0};
+    double scatterPdf = 0;
+    double pathLength = 0; ///< from the camera to the ray's origin
+    int bounce = 0;
+
+    /// Goes on past the surface at `v` as if it were not there.
+    void crossStraight(const RenderScene& scene, const Vertex& v) {
+        ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ray.dir), ray.dir, ray.time};
+        departed = scene.departedPrimitive(v.hit, v.si, ray.dir);
+    }
+};
+
+[[gnu::always_inline]] inline bool PathIntegrator::nextBounce(Path& path, TraceContext& context) const {
+    ++path.bounce;
+    context.rng.skipTo(firstDimensionOf(path.bounce));
+    if (path.bounce <= kRouletteAfter) return true;
+    // Russian roulette: a path carrying little light ends with the chance it lacks, and one
+    // that goes on carries that much more.
+    const double keep = std::min(1.0, std::max({path.beta.r, path.beta.g, path.beta.b}));
+    if (context.rng.uniform() >= keep) return false;
+    path.beta /= keep;
+    return true;
+}
+
+[[gnu::always_inline]] inline void PathIntegrator::alongSegment(Path& path, double reach, bool inMedium) const {
+    if (path.bounce > 0 && hasAreaLights_)
+        path.radiance += path.beta * areaLightsAlong(path.ray, reach, path.scatterPdf, path.pathLength);
+    if (path.medium >= 0 && !inMedium) {
+        // Beer–Lambert absorption along the path inside the solid.
+        const Vec3 a = rgb(scene_.materials[static_cast<size_t>(path.medium)].absorption);
+        for (int i = 0; i < 3; ++i)
+            if (a[i] > 0) path.beta[i] *= reach < kInfinity ? std::exp(-a[i] * reach) : 0.0;
+    } else if (path.medium < 0 && fog_) {
+        const FogCrossing fog = fog_->along(path.ray, reach);
+        path.radiance += path.beta * fog.inscattered;
+        path.beta *= fog.transmittance;
+    }
+}
+
+bool PathIntegrator::scatterInMedium(Path& path, const Medium& medium, double t, TraceContext& context) const {
+    if (path.bounce >= settings_.bounces) return false;
+    Vertex v;
+    v.inMedium = true;
+    v.si.point = path.ray.at(t);
+    v.pathLength = path.pathLength += t * glm::length(path.ray.dir);
+    const PhaseScatter phase{medium, glm::normalize(path.ray.dir)};
+    path.radiance += path.beta * directLight(v, phase, context);
+    const Vec3 wi = medium.samplePhase(phase.d, context.rng.uniform2());
+    path.scatteredFrom = v.si.point;
+    path.scatterPdf = phase.pdf(wi);
+    path.ray = Ray{v.si.point, wi, path.ray.time};
+    path.departed = {};
+    return nextBounce(path, context);
+}
+
+[[gnu::always_inline]] inline bool PathIntegrator::scatterAtSurface(Path& path, Vertex& v, int32_t material, const Vec3& color,
+                                      FirstSurface* first, TraceContext& context) const {
+    const ShadingMaterial& m = scene_.materials[static_cast<size_t>(material)];
+    const Vec3 emission = rgb(m.emission);
+    if (emission != Vec3(0.0)) {
+        const double weight =
+            path.scatterPdf > 0
+                ? powerHeuristic(path.scatterPdf, emitters_.pdf(v.hit, path.scatteredFrom, v.si.point, v.si.normal))
+                : 1.0;
+        path.radiance += path.beta * emission * weight;
+    }
+    const bool wantsFirst = first && !first->found;
+    if (path.bounce >= settings_.bounces && !wantsFirst) return false;
+
+    const Vec3& d = path.ray.dir;
+    const bool entering = glm::dot(d, v.si.normal) < 0;
+    v.n = glm::dot(v.si.shadingNormal, d) > 0 ? -v.si.shadingNormal : v.si.shadingNormal;
+    if (m.bump >= 0) v.n = bumpedNormal(textures_[static_cast<size_t>(m.bump)], v.si, v.n);
+    const Bsdf bsdf(m, color, d, v.n, entering ? v.si.normal : -v.si.normal, entering, v.si.solid);
+    if (wantsFirst && bsdf.reachable()) *first = {bsdf.albedo(), v.n, true};
+    if (path.bounce >= settings_.bounces) return false;
+    if (bsdf.reachable()) path.radiance += path.beta * directLight(v, bsdf, context);
+
+    BsdfSample next;
+    const double pick = context.rng.uniform();
+    const Vec2 u = context.rng.uniform2();
+    if (!bsdf.sample(pick, u, next)) return false;
+    path.beta *= next.weight;
+    if (path.beta == Vec3(0.0)) return false;
+    path.scatteredFrom = v.si.point;
+    path.scatterPdf = next.pdf;
+    if (next.transmitted) {
+        ++context.stats.refractionRays;
+        if (v.si.solid) path.medium = entering ? material : -1;
+    } else {
+        ++context.stats.reflectionRays;
+    }
+    path.ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, next.wi), next.wi, path.ray.time};
+    path.departed = scene_.departedPrimitive(v.hit, v.si, next.wi);
+    return nextBounce(path, context);
+}
+
 glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBackground, TraceContext& context,
                                        FirstSurface* first) const {
-    Vec3 radiance(0.0), beta(1.0);
-    Ray ray = cameraRay;
-    Departure departed;
-    int32_t medium = -1;
-    // The last scattering vertex: where a BSDF-sampled ray started, and its density (0 for a
-    // mirror, glass or the camera: no light sampling competes with those).
-    Vec3 scatteredFrom(0.0);
-    double scatterPdf = 0;
-    double pathLength = 0;
-    int bounce = 0;
-    context.rng.skipTo(firstDimensionOf(bounce));
-    // Russian roulette past the first bounces: a path carrying little light ends with the
-    // chance it lacks, and one that goes on carries that much more.
-    auto survives = [&] {
-        if (bounce <= kRouletteAfter) return true;
-        const double keep = std::min(1.0, std::max({beta.r, beta.g, beta.b}));
-        if (context.rng.uniform() >= keep) return false;
-        beta /= keep;
-        return true;
-    };
+    Path path;
+    path.ray = cameraRay;
+    context.rng.skipTo(firstDimensionOf(path.bounce));
+    // Crossing surfaces as if they were not there (hidden, see-through, clear boundaries) takes
+    // no bounce; this bounds how many a path may cross.
+    const int mostCrossings = 4 * settings_.bounces + 16;
     for (int crossings = 0;; ++crossings) {
         Vertex v;
-        const bool found = scene_.intersect(ray, kInfinity, v.hit, context.scratch, context.stats, departed);
+        const Ray& ray = path.ray;
+        const bool found = scene_.intersect(ray, kInfinity, v.hit, context.scratch, context.stats, path.departed);
         double reach = found ? v.hit.t : kInfinity;
-        const Medium* fill = mediumOf(medium);
+        const Medium* fill = mediumOf(path.medium);
         MediumStep step;
         if (fill) {
-            step = trackMedium(ray, reach, *fill, beta, radiance, context);
+            step = trackMedium(ray, reach, *fill, path.beta, path.radiance, context);
             if (step.scattered) reach = step.t;
         }
         // The camera, mirrors and glass see the visible lights as the Whitted integrator does
         // (light sampling cannot reach them through a mirror); other bounces meet every area
         // light and weigh it against light sampling.
-        const Light* lamp = scatterPdf == 0 && seesLights_ ? firstSeenLight(lights_, ray, reach) : nullptr;
-        if (bounce > 0 && hasAreaLights_) radiance += beta * areaLightsAlong(ray, reach, scatterPdf, pathLength);
-        if (medium >= 0 && !fill) {
-            // Beer–Lambert absorption along the path inside the solid.
-            const Vec3 a = rgb(scene_.materials[static_cast<size_t>(medium)].absorption);
-            for (int i = 0; i < 3; ++i)
-                if (a[i] > 0) beta[i] *= reach < kInfinity ? std::exp(-a[i] * reach) : 0.0;
-        } else if (medium < 0 && fog_) {
-            const FogCrossing fog = fog_->along(ray, reach);
-            radiance += beta * fog.inscattered;
-            beta *= fog.transmittance;
-        }
+        const Light* lamp = path.scatterPdf == 0 && seesLights_ ? firstSeenLight(lights_, ray, reach) : nullptr;
+        alongSegment(path, reach, fill != nullptr);
         if (lamp) {
-            radiance += beta * lamp->color();
+            path.radiance += path.beta * lamp->color();
             break;
         }
         if (step.scattered) {
-            // A scattering in the medium: light sampling and the phase function's draw, as at a
-            // surface.
-            if (bounce >= settings_.bounces) break;
-            v.inMedium = true;
-            v.si.point = ray.at(step.t);
-            v.pathLength = pathLength += step.t * glm::length(ray.dir);
-            const PhaseScatter phase{*fill, glm::normalize(ray.dir)};
-            radiance += beta * directLight(v, phase, context);
-            const Vec3 wi = fill->samplePhase(phase.d, context.rng.uniform2());
-            scatteredFrom = v.si.point;
-            scatterPdf = phase.pdf(wi);
-            ray = Ray{v.si.point, wi, ray.time};
-            departed = {};
-            ++bounce;
-            context.rng.skipTo(firstDimensionOf(bounce));
-            if (!survives()) break;
+            if (!scatterInMedium(path, *fill, step.t, context)) break;
             continue;
         }
         if (!found) {
             if (crossings == 0 && transparentBackground) return glm::dvec4(0.0);
-            const double weight = scatterPdf > 0 ? powerHeuristic(scatterPdf, environment_.pdf(ray.dir)) : 1.0;
-            radiance += beta * background_.radiance(ray.dir) * weight;
+            const double weight =
+                path.scatterPdf > 0 ? powerHeuristic(path.scatterPdf, environment_.pdf(ray.dir)) : 1.0;
+            path.radiance += path.beta * background_.radiance(ray.dir) * weight;
             break;
         }
         v.si = scene_.interaction(ray, v.hit);
-        v.pathLength = pathLength += v.hit.t;
-        if (hides_ && (scene_.hiddenFrom(v.hit) & (bounce == 0 ? scene::kHiddenFromCamera : scene::kHiddenFromReflections))) {
+        v.pathLength = path.pathLength += v.hit.t;
+        const uint8_t unseen = path.bounce == 0 ? scene::kHiddenFromCamera : scene::kHiddenFromReflections;
+        if (hides_ && (scene_.hiddenFrom(v.hit) & unseen)) {
             // Crossed as if it were not there, as a see-through surface is below.
-            if (crossings > 4 * settings_.bounces + 16) break;
-            ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ray.dir), ray.dir, ray.time};
-            departed = scene_.departedPrimitive(v.hit, v.si, ray.dir);
+            if (crossings > mostCrossings) break;
+            path.crossStraight(scene_, v);
             continue;
         }
-        const bool entering = glm::dot(ray.dir, v.si.normal) < 0;
-        const Vec3 facingNormal = entering ? v.si.normal : -v.si.normal;
         Vec3 color;
-        const int32_t material = drawMaterial(v.si, color, beta, context);
-        if (material < 0) {
-            // Through the surface unbent, as if it were not there: the last scattering
-            // vertex stays the one light sampling was weighed against.
-            if (beta == Vec3(0.0) || crossings > 4 * settings_.bounces + 16) break;
-            ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ray.dir), ray.dir, ray.time};
-            departed = scene_.departedPrimitive(v.hit, v.si, ray.dir);
+        const int32_t material = drawMaterial(v.si, color, path.beta, context);
+        if (material < 0 || clearBoundary_[static_cast<size_t>(material)]) {
+            // Through the surface unbent, as if it were not there (into or out of a clear
+            // boundary's solid): the last scattering vertex stays the one light sampling was
+            // weighed against, as shadow rays cross it too.
+            if (path.beta == Vec3(0.0) || crossings > mostCrossings) break;
+            if (material >= 0 && v.si.solid) path.medium = glm::dot(ray.dir, v.si.normal) < 0 ? material : -1;
+            path.crossStraight(scene_, v);
             continue;
         }
-        const ShadingMaterial& m = scene_.materials[static_cast<size_t>(material)];
-        if (isClearBoundary(m)) {
-            // Crossed as if it were not there, into or out of its solid: the last scattering
-            // vertex stays the one light sampling was weighed against, as shadow rays cross it.
-            if (crossings > 4 * settings_.bounces + 16) break;
-            if (v.si.solid) medium = entering ? material : -1;
-            ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, ray.dir), ray.dir, ray.time};
-            departed = scene_.departedPrimitive(v.hit, v.si, ray.dir);
-            continue;
-        }
-        const Vec3 emission = rgb(m.emission);
-        if (emission != Vec3(0.0)) {
-            const double weight =
-                scatterPdf > 0 ? powerHeuristic(scatterPdf, emitters_.pdf(v.hit, scatteredFrom, v.si.point, v.si.normal))
-                               : 1.0;
-            radiance += beta * emission * weight;
-        }
-        const bool wantsFirst = first && !first->found;
-        if (bounce >= settings_.bounces && !wantsFirst) break;
-
-        v.n = glm::dot(v.si.shadingNormal, ray.dir) > 0 ? -v.si.shadingNormal : v.si.shadingNormal;
-        if (m.bump >= 0) v.n = bumpedNormal(textures_[static_cast<size_t>(m.bump)], v.si, v.n);
-        const Bsdf bsdf(m, color, ray.dir, v.n, facingNormal, entering, v.si.solid);
-        if (wantsFirst && bsdf.reachable()) *first = {bsdf.albedo(), v.n, true};
-        if (bounce >= settings_.bounces) break;
-        if (bsdf.reachable()) radiance += beta * directLight(v, bsdf, context);
-
-        BsdfSample next;
-        const double pick = context.rng.uniform();
-        const Vec2 u = context.rng.uniform2();
-        if (!bsdf.sample(pick, u, next)) break;
-        beta *= next.weight;
-        if (beta == Vec3(0.0)) break;
-        scatteredFrom = v.si.point;
-        scatterPdf = next.pdf;
-        if (next.transmitted) {
-            ++context.stats.refractionRays;
-            if (v.si.solid) medium = entering ? material : -1;
-        } else {
-            ++context.stats.reflectionRays;
-        }
-        ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, next.wi), next.wi, ray.time};
-        departed = scene_.departedPrimitive(v.hit, v.si, next.wi);
-        ++bounce;
-        context.rng.skipTo(firstDimensionOf(bounce));
-        if (!survives()) break;
+        if (!scatterAtSurface(path, v, material, color, first, context)) break;
     }
-    return {radiance, 1};
+    return {path.radiance, 1};
 }
 
 } // namespace crt::tracer

@@ -47,6 +47,19 @@ private:
         Vec3 evalCos(const Vec3& wi) const { return Vec3(pdf(wi)); }
         double pdf(const Vec3& wi) const { return medium.phase(glm::dot(wi, d)); }
     };
+    struct Path;
+    /// Ends a bounce: the next one's numbers, and Russian roulette; false when the path ends.
+    bool nextBounce(Path& path, TraceContext& context) const;
+    /// What the path meets between its ray's origin and `reach` besides surfaces and media:
+    /// area lights, and the absorption of the solid it is in (when it has no medium), or fog.
+    void alongSegment(Path& path, double reach, bool inMedium) const;
+    /// A scattering in `medium` at t along the path's ray: light sampling through the phase
+    /// function, and its draw of the next direction; false when the path ends.
+    [[gnu::noinline]] bool scatterInMedium(Path& path, const Medium& medium, double t, TraceContext& context) const;
+    /// The surface at `v` with `material` of `color`: its emission, light sampling through its
+    /// BSDF, and the BSDF's draw of the next direction; false when the path ends.
+    bool scatterAtSurface(Path& path, Vertex& v, int32_t material, const Vec3& color, FirstSurface* first,
+                          TraceContext& context) const;
     /// What a path does in a medium before `reach`: it scatters at t, or passes.
     struct MediumStep {
         bool scattered = false;
@@ -107,6 +120,8 @@ private:
     const std::vector<Texture>& textures_;
     MaterialMixer mixer_;
     std::vector<Medium> media_; ///< by index of RenderScene::media
+    /// By material: whether its surface is a clear boundary (path_integrator.cpp).
+    std::vector<uint8_t> clearBoundary_;
     Emitters emitters_;
     EnvironmentLight environment_;
     bool hasAreaLights_;
