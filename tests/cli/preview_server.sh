@@ -67,6 +67,10 @@ for name, method, path, query, body in [
     ("no such method", "DELETE", "/api/state", token, None),
     ("a POST without a body", "POST", "/api/frame", token, None),
     ("a body that is not JSON", "POST", "/api/frame", token, b"frame"),
+    ("a side view of no such view", "GET", "/api/viewport.png", token + "&view=below", None),
+    ("a side view too large", "GET", "/api/viewport.png", token + "&view=top&pixels=5000", None),
+    ("a side view of no width", "GET", "/api/viewport.png", token + "&view=top&width=0", None),
+    ("a side view at no number", "GET", "/api/viewport.png", token + "&view=top&across=nan", None),
 ]:
     status, kind, text = ask(method, path, query, body)
     try:
@@ -77,7 +81,7 @@ for name, method, path, query, body in [
     print(f"{'ok' if ok else 'FAIL'} {name}: {status} {kind} {text[:100]!r}")
 PY
 grep -v '^ok ' "$work/api" | sed 's/^/  /' | grep . && fail "API errors that are not {\"error\": \"why\"}"
-[ "$(grep -c '^ok ' "$work/api")" = 5 ] || fail "the API error checks did not all run: $(cat "$work/api")"
+[ "$(grep -c '^ok ' "$work/api")" = 9 ] || fail "the API error checks did not all run: $(cat "$work/api")"
 
 expect_status 2 "a port out of range" timeout 20 "$crtc" --preview --port 65536 "$work/scene.crt"
 finish

@@ -29,10 +29,11 @@ function statusOf(path, query, headers) {
   });
 }
 
-/// Statistics of the image the page shows, read back through a canvas.
-async function imageStats(page) {
-  return page.evaluate(() => {
-    const img = document.getElementById("view");
+/// Statistics of an image the page shows (by default the camera's view), read back through
+/// a canvas.
+async function imageStats(page, selector = "#view") {
+  return page.evaluate((selector) => {
+    const img = document.querySelector(selector);
     const canvas = document.createElement("canvas");
     canvas.width = img.naturalWidth;
     canvas.height = img.naturalHeight;
@@ -53,7 +54,7 @@ async function imageStats(page) {
       variance: sumSquares / n - (sum / n) ** 2, hash,
       centre: [data[centre], data[centre + 1], data[centre + 2]],
     };
-  });
+  }, selector);
 }
 
 /// Waits until the page shows the last pass of an image newer than `after`.
@@ -173,6 +174,55 @@ try {
   const picked = await page.$eval("#pick", (e) => e.textContent);
   assert.match(picked, new RegExp(`^Sphere at .*scene\\.crt:${sphereLine}:\\d+`), picked);
   await screenshot(page, "picked");
+
+  step("the side views show the scene from the top, the front and the side");
+  await page.waitForFunction(() => [...document.querySelectorAll(".port img")].every(
+    (img) => Number(img.dataset.loaded) > 0 && img.complete && img.naturalWidth === 240), { timeout });
+  for (const view of ["top", "front", "side"]) {
+    const seen = await imageStats(page, `.port[data-view=${view}] img`);
+    assert.ok(seen.variance > 10, `the ${view} view looks uniform (variance ${seen.variance})`);
+  }
+  await screenshot(page, "side_views");
+
+  step("dragging the camera in the top view moves it there, and the main view follows");
+  const placedBefore = await getJson("camera");
+  const topView = await (await page.$(".port[data-view=top] canvas")).boundingBox();
+  // Where the page draws the camera, and the scene units a pixel of the top view spans.
+  const drawn = await page.evaluate(() => {
+    const port = ports.find((p) => p.view === "top");
+    return { at: toPixel(port, camera.position), unitsPerPixel: port.width / 240 };
+  });
+  const grab = { x: topView.x + drawn.at[0], y: topView.y + drawn.at[1] };
+  await page.mouse.move(grab.x, grab.y);
+  await page.mouse.down();
+  for (let i = 1; i <= 10; ++i) await page.mouse.move(grab.x + i * 3, grab.y - i * 2);
+  await page.mouse.up();
+  let placed = await getJson("camera");
+  for (let i = 0; i < 50 && Math.abs(placed.position[0] - placedBefore.position[0] - 30 * drawn.unitsPerPixel) > 1e-9; ++i) {
+    await new Promise((resolve) => setTimeout(resolve, 100));
+    placed = await getJson("camera");
+  }
+  // Right in the top view is +x, up is +z; the height and the aim stay.
+  assert.ok(Math.abs(placed.position[0] - (placedBefore.position[0] + 30 * drawn.unitsPerPixel)) < 1e-9, JSON.stringify(placed));
+  assert.ok(Math.abs(placed.position[2] - (placedBefore.position[2] + 20 * drawn.unitsPerPixel)) < 1e-9, JSON.stringify(placed));
+  assert.equal(placed.position[1], placedBefore.position[1]);
+  assert.deepEqual(placed.pointing, placedBefore.pointing);
+  const fromAbove = await waitForFinalImage(page, image.frame);
+  assert.notEqual(fromAbove.hash, image.hash, "the main view did not follow the camera");
+  image = fromAbove;
+  await screenshot(page, "camera_placed");
+
+  step("the theme follows the system's preference, and can be chosen");
+  const background = () => page.evaluate(() => getComputedStyle(document.body).backgroundColor);
+  await page.emulateMediaFeatures([{ name: "prefers-color-scheme", value: "light" }]);
+  assert.equal(await background(), "rgb(244, 245, 247)");
+  await page.emulateMediaFeatures([{ name: "prefers-color-scheme", value: "dark" }]);
+  assert.equal(await background(), "rgb(29, 31, 33)");
+  await page.select("#themeChoice", "light");
+  assert.equal(await background(), "rgb(244, 245, 247)", "the light theme was not applied");
+  await screenshot(page, "light_theme");
+  await page.select("#themeChoice", "system");
+  assert.equal(await background(), "rgb(29, 31, 33)");
 
   step("write camera to script replaces the Settings camera in the file");
   const camera = await getJson("camera");

@@ -11,6 +11,7 @@
 #include <sys/socket.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -60,6 +61,17 @@ double numberIn(const json& body, const char* name, double fallback) {
     if (!value.is_number() || !std::isfinite(value.get<double>()))
         throw std::invalid_argument(std::string(name) + " must be a finite number");
     return value.get<double>();
+}
+
+/// A number of the request's query (`fallback` when absent).
+double queryNumber(const httplib::Request& req, const char* name, double fallback) {
+    if (!req.has_param(name)) return fallback;
+    const std::string text = req.get_param_value(name);
+    double value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+        throw std::invalid_argument(std::string(name) + " must be a finite number");
+    return value;
 }
 
 /// Runs a handler that reads a JSON body; bad input becomes a 400 with its reason.
@@ -173,6 +185,32 @@ void Server::addRoutes() {
         res.set_header("X-Frame-Final", image->final ? "true" : "false");
         if (image->paths > 0) res.set_header("X-Frame-Paths", fmt::format("{:.2f}", image->paths));
         res.set_content(reinterpret_cast<const char*>(image->png.data()), image->png.size(), "image/png");
+    });
+    http_->Get("/api/viewport.png", [this](const httplib::Request& req, httplib::Response& res) {
+        Viewport view;
+        try {
+            const std::optional<ViewportAxis> axis = viewportAxis(req.get_param_value("view"));
+            if (!axis) throw std::invalid_argument("view must be top, front or side");
+            view.axis = *axis;
+            view.across = queryNumber(req, "across", 0);
+            view.up = queryNumber(req, "up", 0);
+            view.width = queryNumber(req, "width", 10);
+            if (!(view.width > 0)) throw std::invalid_argument("width must be above 0");
+            const double pixels = queryNumber(req, "pixels", 240), lines = queryNumber(req, "lines", 180);
+            for (double size : {pixels, lines})
+                if (size != std::floor(size) || size < 1 || size > kMostViewportPixels)
+                    throw std::invalid_argument(fmt::format("pixels and lines must be whole numbers from 1 to {}",
+                                                            kMostViewportPixels));
+            view.pixels = static_cast<int>(pixels);
+            view.lines = static_cast<int>(lines);
+        } catch (const std::invalid_argument& e) {
+            return replyError(res, e.what(), 400);
+        }
+        std::string error;
+        const std::vector<std::uint8_t> png = session_.viewport(view, error);
+        if (png.empty()) return replyError(res, error, 404);
+        res.set_header("Cache-Control", "no-store");
+        res.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
     });
     http_->Get("/api/state", [this](const httplib::Request&, httplib::Response& res) { replyJson(res, session_.state()); });
     http_->Get("/api/events", [this](const httplib::Request&, httplib::Response& res) {

@@ -200,6 +200,28 @@ json Session::pick(double fx, double fy) const {
     return answer;
 }
 
+std::vector<std::uint8_t> Session::viewport(const Viewport& view, std::string& error) const {
+    scene::SceneDesc scene;
+    if (!currentScene(scene)) {
+        error = "the script has not been evaluated yet";
+        return {};
+    }
+    const scene::SceneDesc seen = viewportScene(scene, view);
+    tracer::PixelBuffer pixels(view.pixels, view.lines);
+    tracer::RenderJob job;
+    job.tiles = tracer::imageTiles(view.pixels, view.lines);
+    job.samples = passBudget(RenderPass{1, true});
+    job.threads = 1; // a small image, beside the main view's render
+    job.onTileDone = [&](const tracer::TileResult& tile) { pixels.place(tile); };
+    const tracer::RenderOutcome outcome = tracer::render(seen, job);
+    if (!outcome.ok) {
+        error = outcome.error;
+        return {};
+    }
+    return encodePng(view.pixels, view.lines,
+                     tracer::image_io::quantise8(pixels.pixels, scene.settings.gamma, scene.settings.srgb));
+}
+
 CameraEdit Session::writeCamera() {
     const scene::CameraDesc current = camera();
     std::optional<std::string> text = lang::readFile(options_.script);

@@ -7,6 +7,7 @@
 #include "preview/camera_writer.hpp"
 #include "preview/file_watcher.hpp"
 #include "preview/render_plan.hpp"
+#include "preview/viewport.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -70,6 +71,9 @@ public:
     nlohmann::json state() const;
     /// The entity at (fx, fy), fractions of the image from its top left, as JSON.
     nlohmann::json pick(double fx, double fy) const;
+    /// A side view of the scene (viewport.hpp) as PNG bytes; empty, with `error` set, before a
+    /// good evaluation or when it cannot be rendered.
+    std::vector<std::uint8_t> viewport(const Viewport& view, std::string& error) const;
     /// Writes the current camera into the script's Settings block (or says where to paste).
     CameraEdit writeCamera();
 

@@ -89,6 +89,32 @@ scene::SceneDesc pathTraced(scene::SceneDesc desc, int samples) {
     return desc;
 }
 
+/// An absorbing medium whose density is a gradient along y: the density at height y (below
+/// 1) is y, the same along each ray.
+scene::MediumDesc gradientMedium() {
+    scene::MediumDesc medium;
+    medium.absorption = {0.8, 0.8, 0.8, 1};
+    scene::TextureDesc gradient = scene::defaultTexture(scene::TextureKind::Gradient);
+    gradient.axis = {0, 1, 0};
+    medium.densityPattern.push_back(gradient);
+    return medium;
+}
+
+/// Checks the middle column's rows below height 1 against Beer's law at their height.
+void checkGradientDensity(const scene::SceneDesc& desc, double tolerance) {
+    const PixelBuffer image = renderOk(desc);
+    int checked = 0;
+    for (int y = 0; y < kSize; ++y) {
+        const double h = rowHeight(y);
+        if (h < 0.1 || h > 0.9) continue;
+        const DVec3 want = kBehind * std::exp(-0.8 * h * kWidth);
+        INFO("height " << h);
+        CHECK(maxDifference(pixelAt(image, kSize / 2, y), want) < tolerance);
+        ++checked;
+    }
+    CHECK(checked >= 3);
+}
+
 } // namespace
 
 TEST_CASE("an absorbing medium lets exp(-a w) of what is behind through (Beer)", "[render][analytic][medium]") {
@@ -121,45 +147,12 @@ TEST_CASE("the path integrator's paths through absorbing and glowing media are B
 }
 
 TEST_CASE("the path integrator tracks a medium whose density is a pattern", "[render][analytic][medium]") {
-    // A gradient along y: the density at height y (below 1) is y, the same along each ray;
-    // each path passes or is absorbed, so the pixel is a mean.
-    scene::MediumDesc medium;
-    medium.absorption = {0.8, 0.8, 0.8, 1};
-    scene::TextureDesc gradient = scene::defaultTexture(scene::TextureKind::Gradient);
-    gradient.axis = {0, 1, 0};
-    medium.densityPattern.push_back(gradient);
-    const PixelBuffer image = renderOk(pathTraced(mediumBox(medium), 4096));
-    int checked = 0;
-    for (int y = 0; y < kSize; ++y) {
-        const double h = rowHeight(y);
-        if (h < 0.1 || h > 0.9) continue;
-        const DVec3 want = kBehind * std::exp(-0.8 * h * kWidth);
-        INFO("height " << h);
-        CHECK(maxDifference(pixelAt(image, kSize / 2, y), want) < 0.03);
-        ++checked;
-    }
-    CHECK(checked >= 3);
+    // Each path passes or is absorbed, so the pixel is a mean.
+    checkGradientDensity(pathTraced(mediumBox(gradientMedium()), 4096), 0.03);
 }
 
 TEST_CASE("a medium's density pattern scales it point by point", "[render][analytic][medium]") {
-    // A gradient along y: the density at height y (below 1) is y, the same along each ray.
-    scene::MediumDesc medium;
-    medium.absorption = {0.8, 0.8, 0.8, 1};
-    scene::TextureDesc gradient = scene::defaultTexture(scene::TextureKind::Gradient);
-    gradient.axis = {0, 1, 0};
-    medium.densityPattern.push_back(gradient);
-    const scene::SceneDesc desc = mediumBox(medium);
-    const PixelBuffer image = renderOk(desc);
-    int checked = 0;
-    for (int y = 0; y < kSize; ++y) {
-        const double h = rowHeight(y);
-        if (h < 0.1 || h > 0.9) continue;
-        const DVec3 want = kBehind * std::exp(-0.8 * h * kWidth);
-        INFO("height " << h);
-        CHECK(maxDifference(pixelAt(image, kSize / 2, y), want) < 1e-6);
-        ++checked;
-    }
-    CHECK(checked >= 3);
+    checkGradientDensity(mediumBox(gradientMedium()), 1e-6);
 }
 
 TEST_CASE("single scattering of a light above a homogeneous medium matches its closed form",
