@@ -67,6 +67,18 @@ if command -v idiff >/dev/null; then
         fail "the continued path render's variance differs"
 fi
 
+# Motion blur: the samples' times within the shutter are the same in the continued render;
+# another shutter is another render.
+sed 's/radius -> 0.4 + t \* 0.01 }/radius -> 0.4 } <translate vec3(t * 0.5, 0, 0)>/' "$work/scene.crt" >"$work/moving.crt"
+blur=(--integrator path --samples 256 --width 128 --height 96 --shutter 0:1)
+expect_status 0 "uninterrupted blurred render" "$crtc" -q "${blur[@]}" -o "$work/whole_blur.hdr" "$work/moving.crt"
+LOG_BYTES=30000 interrupt_render INT "$work/.m.hdr.crtc-resume" "" "${blur[@]}" -o "$work/m.hdr" "$work/moving.crt"
+[ "$status" = 130 ] || fail "Ctrl-C of a blurred render: exit status $status, expected 130"
+expect_status 2 "--continue with another shutter" "$crtc" --continue "${blur[@]}" --shutter 0:0.5 -o "$work/m.hdr" "$work/moving.crt"
+expect_status 0 "--continue a blurred render" "$crtc" --continue "${blur[@]}" -o "$work/m.hdr" "$work/moving.crt"
+expect_text "$work/err" "continuing .*m.hdr: [1-9][0-9]* of 48 tiles were rendered before" "--continue reuses blurred tiles"
+cmp -s "$work/m.hdr" "$work/whole_blur.hdr" || fail "the continued blurred render differs from the uninterrupted one"
+
 # Killed outright, as by a crash: the log written up to a second before is enough.
 interrupt_render KILL "$work/.b.png.crtc-resume" "" -o "$work/b.png" "$work/scene.crt"
 expect_status 0 "--continue after SIGKILL" "$crtc" -q --continue -o "$work/b.png" "$work/scene.crt"
