@@ -11,19 +11,36 @@ namespace {
 
 using Json = nlohmann::json;
 
-/// The scene as JSON, without what the steps may change or need not agree on: the time and
-/// settings (the frame's own evaluation gives those), the camera, and the values of the
-/// transform nodes' modifiers (their kinds stay).
+/// The scene as JSON without its entities (compared apart), and without what the steps may
+/// change or need not agree on: the time and settings (the frame's own evaluation gives
+/// those) and the camera.
 Json comparable(const SceneDesc& scene) {
-    Json json = Json::parse(sceneToJson(scene, -1));
-    for (const char* key : {"time", "frame", "frameCount", "settings", "camera"}) json.erase(key);
-    for (Json& entity : json["entities"]) {
-        if (entity["type"] != "Transform") continue;
-        Json kinds = Json::array();
-        for (const Json& modifier : entity["modifiers"]) kinds.push_back(modifier.begin().key());
-        entity["modifiers"] = std::move(kinds);
-    }
-    return json;
+    SceneDesc rest;
+    rest.files = scene.files;
+    rest.lights = scene.lights;
+    rest.background = scene.background;
+    rest.fog = scene.fog;
+    rest.materials = scene.materials;
+    rest.finishes = scene.finishes;
+    rest.textures = scene.textures;
+    rest.blends = scene.blends;
+    rest.media = scene.media;
+    rest.drawn = scene.drawn;
+    return Json::parse(sceneToJson(rest, -1));
+}
+
+/// Whether entity i is the same in both but for the values of a transform node's modifiers.
+bool sameEntity(const SceneDesc& base, const SceneDesc& step, size_t i) {
+    const EntityDesc &a = base.entities[i], &b = step.entities[i];
+    const auto* moved = std::get_if<TransformNode>(&a.shape);
+    const auto* other = std::get_if<TransformNode>(&b.shape);
+    if (!moved || !other) return a == b || entityToJson(base, i) == entityToJson(step, i);
+    if (moved->child != other->child || moved->modifiers.size() != other->modifiers.size() ||
+        a.material != b.material || a.solid != b.solid || a.hidden != b.hidden || !(a.source == b.source))
+        return false;
+    for (size_t k = 0; k < moved->modifiers.size(); ++k)
+        if (moved->modifiers[k].kind != other->modifiers[k].kind) return false;
+    return true;
 }
 
 SourceSpan spanOf(const Json& part) {
@@ -91,12 +108,21 @@ std::optional<MotionConflict> joinMotionSteps(SceneDesc& base, const std::vector
     if (steps.empty()) return std::nullopt;
     const Json expected = comparable(base);
     for (const SceneDesc& step : steps) {
-        const Json actual = comparable(step);
-        if (actual == expected) continue;
-        MotionConflict conflict = firstDifference(expected, actual);
-        conflict.message = fmt::format("{} changes across the shutter (between t = {} and t = {}); only "
-                                       "modifiers (translate, rotate, scale, matrix) and the camera may move",
-                                       conflict.message, base.time, step.time);
+        std::optional<MotionConflict> conflict;
+        for (size_t i = 0; i < base.entities.size() && i < step.entities.size() && !conflict; ++i)
+            if (!sameEntity(base, step, i))
+                conflict = MotionConflict{base.entities[i].source,
+                                          entryName("entities", Json::parse(entityToJson(base, i)))};
+        if (!conflict && base.entities.size() != step.entities.size())
+            conflict = MotionConflict{{}, "the scene's entities"};
+        if (!conflict) {
+            const Json actual = comparable(step);
+            if (actual != expected) conflict = firstDifference(expected, actual);
+        }
+        if (!conflict) continue;
+        conflict->message = fmt::format("{} changes across the shutter (between t = {} and t = {}); only "
+                                        "modifiers (translate, rotate, scale, matrix) and the camera may move",
+                                        conflict->message, base.time, step.time);
         return conflict;
     }
     for (const SceneDesc& step : steps)

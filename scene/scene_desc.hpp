@@ -244,27 +244,51 @@ struct MaterialDesc {
     SourceSpan source;
 };
 
-struct SphereShape { glm::dvec3 center{0.0}; double radius = 0; };
-struct BoxShape { glm::dvec3 cornerA{0.0}; glm::dvec3 cornerB{0.0}; };
-struct PlaneShape { glm::dvec3 normal{0, 1, 0}; glm::dvec3 position{0.0}; };
-struct CylinderShape { glm::dvec3 base{0.0}; glm::dvec3 top{0.0}; double radius = 0; bool open = false; };
+struct SphereShape { glm::dvec3 center{0.0}; double radius = 0; bool operator==(const SphereShape&) const = default; };
+struct BoxShape { glm::dvec3 cornerA{0.0}; glm::dvec3 cornerB{0.0}; bool operator==(const BoxShape&) const = default; };
+struct PlaneShape {
+    glm::dvec3 normal{0, 1, 0}; glm::dvec3 position{0.0};
+    bool operator==(const PlaneShape&) const = default;
+};
+struct CylinderShape {
+    glm::dvec3 base{0.0}; glm::dvec3 top{0.0}; double radius = 0; bool open = false;
+    bool operator==(const CylinderShape&) const = default;
+};
 struct ConeShape {
     glm::dvec3 base{0.0}; double baseRadius = 0; glm::dvec3 top{0.0}; double topRadius = 0; bool open = false;
+
+    bool operator==(const ConeShape&) const = default;
 };
-struct TorusShape { glm::dvec3 center{0.0}; double major = 0; double minor = 0; glm::dvec3 axis{0, 1, 0}; };
-struct DiscShape { glm::dvec3 center{0.0}; glm::dvec3 normal{0, 1, 0}; double radius = 0; double hole = 0; };
-struct QuadShape { glm::dvec3 corner{0.0}; glm::dvec3 edgeA{0.0}; glm::dvec3 edgeB{0.0}; };
-struct TriangleShape { glm::dvec3 a{0.0}; glm::dvec3 b{0.0}; glm::dvec3 c{0.0}; };
+struct TorusShape {
+    glm::dvec3 center{0.0}; double major = 0; double minor = 0; glm::dvec3 axis{0, 1, 0};
+    bool operator==(const TorusShape&) const = default;
+};
+struct DiscShape {
+    glm::dvec3 center{0.0}; glm::dvec3 normal{0, 1, 0}; double radius = 0; double hole = 0;
+    bool operator==(const DiscShape&) const = default;
+};
+struct QuadShape {
+    glm::dvec3 corner{0.0}; glm::dvec3 edgeA{0.0}; glm::dvec3 edgeB{0.0};
+    bool operator==(const QuadShape&) const = default;
+};
+struct TriangleShape {
+    glm::dvec3 a{0.0}; glm::dvec3 b{0.0}; glm::dvec3 c{0.0};
+    bool operator==(const TriangleShape&) const = default;
+};
 /// POV-Ray's polygon: points in one plane, loops closed by repeating their first point
 /// (scene/polygon_loops.hpp), holes by the even-odd rule.
 struct PolygonShape {
     std::vector<glm::dvec3> points;
+
+    bool operator==(const PolygonShape&) const = default;
 };
 /// A triangle whose shading normal is interpolated from one at each corner, kept as the one
 /// triangle of a mesh with vertex normals: so an entity stays as small as the others, and the
 /// renderer draws it as it draws a mesh's triangles. Null: nothing.
 struct SmoothTriangleShape {
     std::shared_ptr<const MeshData> mesh;
+
+    bool operator==(const SmoothTriangleShape&) const = default;
 };
 /// The smooth triangle with corners a, b, c and normals na, nb, nc, each made unit length
 /// (as POV-Ray does: each corner's direction counts alike whatever its length).
@@ -285,6 +309,8 @@ inline SmoothTriangleShape smoothTriangle(const glm::dvec3& a, const glm::dvec3&
 struct SuperellipsoidShape {
     double e = 1;
     double n = 1;
+
+    bool operator==(const SuperellipsoidShape&) const = default;
 };
 /// POV-Ray's prism: an outline in the x-z plane (scene/curve_outline.hpp, holes by the
 /// even-odd rule) swept along y from `from` to `to`; a conic sweep scales it with y, from the
@@ -296,6 +322,8 @@ struct PrismShape {
     SplineKind spline = SplineKind::Linear;
     bool conic = false;
     bool open = false;
+
+    bool operator==(const PrismShape&) const = default;
 };
 /// POV-Ray's surface of revolution: the points are (radius, height); the radius squared is
 /// a cubic of the height between each two points from the second to the last but one, with
@@ -303,6 +331,8 @@ struct PrismShape {
 struct SorShape {
     std::vector<glm::dvec2> points;
     bool open = false;
+
+    bool operator==(const SorShape&) const = default;
 };
 /// POV-Ray's lathe: a curve of points (x, y) (scene/curve_outline.hpp's curveSegments)
 /// turned about the y axis. A solid when the curve comes back to its first point on the
@@ -310,6 +340,8 @@ struct SorShape {
 struct LatheShape {
     std::vector<glm::dvec2> points;
     SplineKind spline = SplineKind::Linear;
+
+    bool operator==(const LatheShape&) const = default;
 };
 /// POV-Ray's sphere_sweep: the solid a sphere fills as its centre moves along the curve of
 /// `points` and its radius along the curve of `radii` (scene/curve_outline.hpp's
@@ -320,6 +352,8 @@ struct SphereSweepShape {
     std::vector<glm::dvec3> points;
     std::vector<double> radii;
     SplineKind spline = SplineKind::Linear;
+
+    bool operator==(const SphereSweepShape&) const = default;
 };
 /// POV-Ray's text: the glyph outlines of scene/text_outline.hpp on the x-y plane, extruded
 /// from z = 0 to `thickness`. Out of line, as an entity's shape must stay small.
@@ -334,6 +368,8 @@ struct TextDesc {
 };
 struct TextShape {
     std::shared_ptr<const TextDesc> desc;
+
+    bool operator==(const TextShape&) const = default;
 };
 /// One of a blob's components: its field is strength · (1 − (d / radius)²)² within `radius`
 /// of its centre (a sphere) or of the segment from `a` to `b` (a cylinder with round ends),
@@ -351,6 +387,8 @@ struct BlobDesc {
 };
 struct BlobShape {
     std::shared_ptr<const BlobDesc> desc;
+
+    bool operator==(const BlobShape&) const = default;
 };
 /// POV-Ray's isosurface: the solid where `function` of (x, y, z) is below `threshold`, within
 /// the box from `boundsMin` to `boundsMax` (whose faces close it, unless `open`). Crossings are
@@ -368,6 +406,8 @@ struct IsosurfaceDesc {
 };
 struct IsosurfaceShape {
     std::shared_ptr<const IsosurfaceDesc> desc;
+
+    bool operator==(const IsosurfaceShape&) const = default;
 };
 /// POV-Ray's height field: heights in [0, 1] over the unit square of the x-z plane, from an
 /// image's grey levels (its first row at z = 1, as POV-Ray has it) or a function of (x, 0, z)
@@ -381,6 +421,8 @@ struct HeightFieldDesc {
 };
 struct HeightFieldShape {
     std::shared_ptr<const HeightFieldDesc> desc;
+
+    bool operator==(const HeightFieldShape&) const = default;
 };
 struct MeshShape {
     std::string file;         ///< as written in the script ("" for a mesh written in it)
@@ -388,6 +430,8 @@ struct MeshShape {
     /// A mesh written in the script (its vertices, faces …, POV-Ray's mesh2): its index in
     /// SceneDesc::writtenMeshes; -1 for a file.
     int32_t written = -1;
+
+    bool operator==(const MeshShape&) const = default;
 };
 
 /// Merge: a union without the surfaces that lie inside it (POV-Ray's merge, for glass).
@@ -396,15 +440,23 @@ struct MeshShape {
 enum class CsgOp : uint8_t { Union, Difference, Intersection, Merge, Clip };
 /// A CSG combination of two entities (each a solid or a group of solids; a Clip's left one
 /// may be a surface).
-struct CsgNode { CsgOp op = CsgOp::Union; int32_t left = -1; int32_t right = -1; };
+struct CsgNode {
+    CsgOp op = CsgOp::Union; int32_t left = -1; int32_t right = -1;
+    bool operator==(const CsgNode&) const = default;
+};
 /// The complement of a solid: everything outside it, bounded by its surface facing inward.
 struct InverseNode {
     int32_t child = -1;
+
+    bool operator==(const InverseNode&) const = default;
 };
 /// An entity moved by modifiers (and maybe given a material: EntityDesc::material).
-struct TransformNode { int32_t child = -1; std::vector<Modifier> modifiers; };
+struct TransformNode {
+    int32_t child = -1; std::vector<Modifier> modifiers;
+    bool operator==(const TransformNode&) const = default;
+};
 /// What a macro emitting several entities returns: drawn as its members; in CSG, their union.
-struct GroupNode { std::vector<int32_t> members; };
+struct GroupNode { std::vector<int32_t> members; bool operator==(const GroupNode&) const = default; };
 
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, CylinderShape, ConeShape, TorusShape,
                            DiscShape, QuadShape, TriangleShape, SmoothTriangleShape, PolygonShape,
@@ -444,6 +496,8 @@ struct EntityDesc {
     bool solid = true;     ///< usable as a CSG operand (and inside/outside is defined)
     SourceSpan source;
     uint8_t hidden = 0; ///< HiddenFrom bits
+
+    bool operator==(const EntityDesc&) const = default;
 };
 
 enum class LightKind : uint8_t { Point, Parallel, Spot, Area, Cylinder, Sphere };

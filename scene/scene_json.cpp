@@ -570,6 +570,10 @@ Json entityJson(const EntityDesc& e, size_t id, const SceneDesc& scene) {
 
 } // namespace
 
+std::string entityToJson(const SceneDesc& scene, size_t id) {
+    return entityJson(scene.entities[id], id, scene).dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
 std::string sceneToJson(const SceneDesc& scene, int indent) {
     Json root;
     root["schema"] = SceneDesc::kSchemaVersion;

@@ -9,5 +9,7 @@
 namespace crt::scene {
 
 std::string sceneToJson(const SceneDesc& scene, int indent = 2);
+/// Entity `id` of the scene as the scene JSON's "entities" holds it, on one line.
+std::string entityToJson(const SceneDesc& scene, size_t id);
 
 } // namespace crt::scene

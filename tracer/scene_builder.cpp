@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <map>
 
 namespace crt::tracer {
@@ -119,7 +118,16 @@ private:
             if (instanced(op.entity)) {
                 if (!addInstance(op)) return false;
             } else if (auto* t = std::get_if<scene::TransformNode>(&e.shape)) {
-                pending.push_back(below(op, e, *t));
+                Operand child = below(op, e, *t);
+                // Many primitives that move together are an instance of their prototype: a
+                // ray is moved into it once, and meets a tree built where they stand still,
+                // rather than each primitive's bounds swept over the shutter.
+                if (child.motion && instancing_ &&
+                    shared_.storage.expansion[static_cast<size_t>(child.entity)] >= scene::kMinInstancePrimitives) {
+                    if (!addInstance(child)) return false;
+                } else {
+                    pending.push_back(std::move(child));
+                }
             } else if (auto* g = std::get_if<scene::GroupNode>(&e.shape)) {
                 for (auto it = g->members.rbegin(); it != g->members.rend(); ++it)
                     pending.push_back(op.part(e, *it));
@@ -416,7 +424,7 @@ private:
     Bounds3 worldBounds(const Bounds3& local, int32_t transform) const {
         if (transform < 0 || !local.finite()) return transform < 0 ? local : Bounds3::everything();
         if (transform >= RenderScene::kFirstMovingTransform)
-            return sweptBounds(local, scene_.movingTransforms[static_cast<size_t>(transform - RenderScene::kFirstMovingTransform)]);
+            return sweptBounds(local, sweep(transform - RenderScene::kFirstMovingTransform));
         return worldBounds(local, scene_.transforms[static_cast<size_t>(transform)].toWorld);
     }
 
@@ -432,22 +440,30 @@ private:
         return {world.lo - pad, world.hi + pad};
     }
 
-    /// Bounds of everything the box is while the shutter is open: its bounds at many times,
-    /// grown by the most a corner moves from one to the next, as a corner's path between two
-    /// of them (an arc, where it turns) strays from their chord by less than that.
-    static Bounds3 sweptBounds(const Bounds3& local, const MovingTransform& moving) {
-        const int samples = 32 * static_cast<int>(moving.chain->size());
+    /// Moving transform `index` at evenly spaced times across the shutter, computed once
+    /// however many primitives it moves.
+    const std::vector<Transform>& sweep(int32_t index) const {
+        if (sweeps_.size() <= static_cast<size_t>(index)) sweeps_.resize(static_cast<size_t>(index) + 1);
+        std::vector<Transform>& samples = sweeps_[static_cast<size_t>(index)];
+        if (samples.empty()) {
+            const MovingTransform& moving = scene_.movingTransforms[static_cast<size_t>(index)];
+            const int count = 8 * static_cast<int>(moving.chain->size());
+            for (int s = 0; s <= count; ++s) samples.push_back(moving.at(static_cast<double>(s) / count).toWorld);
+        }
+        return samples;
+    }
+
+    /// Bounds of everything the box is while the shutter is open: its bounds at the sweep's
+    /// times, grown by the most a corner moves from one to the next, as a corner's path between
+    /// two of them (an arc, where it turns) strays from their chord by less than that.
+    static Bounds3 sweptBounds(const Bounds3& local, const std::vector<Transform>& sweep) {
         Bounds3 swept;
         double stride = 0;
-        std::array<Vec3, 8> previous{};
-        for (int s = 0; s <= samples; ++s) {
-            const Transform toWorld = moving.at(static_cast<double>(s) / samples).toWorld;
-            swept = unionOf(swept, worldBounds(local, toWorld));
-            for (int i = 0; i < 8; ++i) {
-                const Vec3 c = toWorld.point(corner(local, i));
-                if (s > 0) stride = std::max(stride, glm::length(c - previous[static_cast<size_t>(i)]));
-                previous[static_cast<size_t>(i)] = c;
-            }
+        for (size_t s = 0; s < sweep.size(); ++s) {
+            swept = unionOf(swept, worldBounds(local, sweep[s]));
+            if (s == 0) continue;
+            for (int i = 0; i < 8; ++i)
+                stride = std::max(stride, glm::length(sweep[s].point(corner(local, i)) - sweep[s - 1].point(corner(local, i))));
         }
         return {swept.lo - Vec3(stride), swept.hi + Vec3(stride)};
     }
@@ -519,6 +535,7 @@ private:
     int32_t defaultMaterial_ = 0;
     bool instancing_ = true;
     std::vector<Bounds3> instanceBounds_; ///< of each instance, in world space
+    mutable std::vector<std::vector<Transform>> sweeps_; ///< by moving transform (sweep())
     /// What the acceleration structure is to hold: primitives, CSG roots (RenderScene::csgObject)
     /// and instances (RenderScene::instanceObject).
     std::vector<int32_t> objects_;

@@ -38,8 +38,10 @@ int32_t glowing(SceneMaker& m) {
 
 /// A glowing sphere (kRadius at the origin) drawn moved by `modifiers`, which the motion
 /// steps replace when given.
+enum class Built { Alone, InCsg, InCrowd };
+
 scene::SceneDesc glowingScene(const std::vector<scene::Modifier>& modifiers,
-                              const std::vector<std::vector<scene::Modifier>>& steps = {}, bool csg = false) {
+                              const std::vector<std::vector<scene::Modifier>>& steps = {}, Built built = Built::Alone) {
     SceneMaker m;
     m.desc = blankScene(kWidth, kHeight, orthographicCamera());
     m.desc.settings.supersampling = 8;
@@ -47,7 +49,13 @@ scene::SceneDesc glowingScene(const std::vector<scene::Modifier>& modifiers,
     const int32_t material = glowing(m);
     int32_t shape = m.sphere({0, 0, 0}, kRadius, material);
     // The same sphere as a CSG tree: the ball cut by a box that holds all of it.
-    if (csg) shape = m.csg(scene::CsgOp::Intersection, shape, m.box({-1, -1, -1}, {1, 1, 1}, material));
+    if (built == Built::InCsg) shape = m.csg(scene::CsgOp::Intersection, shape, m.box({-1, -1, -1}, {1, 1, 1}, material));
+    // Or among many out of view, which move together as one instance.
+    if (built == Built::InCrowd) {
+        scene::GroupNode crowd{{shape}};
+        for (int i = 0; i < 20; ++i) crowd.members.push_back(m.sphere({i, 100, 0}, 0.1, material));
+        shape = m.entity(crowd);
+    }
     const int32_t moved = m.transformed(shape, modifiers);
     m.draw(moved);
     if (!steps.empty()) m.desc.motion.transforms.emplace(moved, steps);
@@ -107,7 +115,10 @@ TEST_CASE("a sphere moved across the shutter leaves a streak as long as its path
         desc.settings.samples = 64;
         checkStreak(renderOk(desc));
     }
-    SECTION("in a CSG tree") { checkStreak(renderOk(glowingScene({translate({0, 0, 0})}, sliding(), true))); }
+    SECTION("in a CSG tree") { checkStreak(renderOk(glowingScene({translate({0, 0, 0})}, sliding(), Built::InCsg))); }
+    SECTION("among many that move with it") {
+        checkStreak(renderOk(glowingScene({translate({0, 0, 0})}, sliding(), Built::InCrowd)));
+    }
     SECTION("with the camera moving instead") {
         scene::SceneDesc desc = glowingScene({translate({0, 0, 0})});
         desc.motion.cameras = {orthographicCamera(-kFrom), orthographicCamera(-kTo)};
