@@ -6,9 +6,27 @@
 #include "tracer/texture.hpp"
 #include "scene/scene_desc.hpp"
 
+#include <cmath>
 #include <optional>
 
 namespace crt::tracer {
+
+/// The longest stretch of a medium a ray is followed through: what a ray that leaves no solid
+/// (inside an unbounded one) crosses.
+inline constexpr double kLongestMediumStretch = 1e6;
+
+/// What a stretch of `length` lets through, exp(−σ·length), per channel.
+inline Vec3 transmittanceOver(const Vec3& sigma, double length) {
+    return {std::exp(-sigma.x * length), std::exp(-sigma.y * length), std::exp(-sigma.z * length)};
+}
+
+/// ∫₀^length exp(−σ·s) ds per channel (σ may be negative or 0): what a source of unit
+/// strength along the stretch sends to its start.
+inline Vec3 integratedTransmittance(const Vec3& sigma, double length) {
+    Vec3 w;
+    for (int c = 0; c < 3; ++c) w[c] = sigma[c] != 0 ? -std::expm1(-sigma[c] * length) / sigma[c] : length;
+    return w;
+}
 
 class Medium {
 public:

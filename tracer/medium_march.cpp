@@ -9,24 +9,9 @@
 
 namespace crt::tracer {
 
-namespace {
-
-/// The longest stretch of a medium a ray is followed through: what a ray that leaves no
-/// solid (inside an unbounded one) crosses.
-constexpr double kLongestStretch = 1e6;
-
-/// ∫₀^step exp(−σ·u) du, per channel.
-Vec3 stepWeight(const Vec3& sigma, double step) {
-    Vec3 w;
-    for (int c = 0; c < 3; ++c) w[c] = sigma[c] > 0 ? -std::expm1(-sigma[c] * step) / sigma[c] : step;
-    return w;
-}
-
-} // namespace
-
 Vec3 Integrator::throughMedium(const Ray& ray, double distance, const Medium& medium, const Vec3& behind,
                                double pathLength, TraceContext& context) const {
-    const double length = std::min(distance, kLongestStretch);
+    const double length = std::min(distance, kLongestMediumStretch);
     const int steps = medium.samples();
     const double step = length / steps;
     const double jitter = context.rng.uniform();
@@ -40,8 +25,8 @@ Vec3 Integrator::throughMedium(const Ray& ray, double distance, const Medium& me
         if (medium.scattering() != Vec3(0.0))
             source += medium.scattering() * density * lightInMedium(p, ray.dir, medium, pathLength + s, context);
         const Vec3 extinction = medium.extinction() * density;
-        gathered += through * source * stepWeight(extinction, step);
-        for (int c = 0; c < 3; ++c) through[c] *= std::exp(-extinction[c] * step);
+        gathered += through * source * integratedTransmittance(extinction, step);
+        through *= transmittanceOver(extinction, step);
     }
     return gathered + through * behind;
 }

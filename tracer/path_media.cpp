@@ -18,22 +18,7 @@ namespace crt::tracer {
 
 namespace {
 
-/// The longest stretch of a medium a path is followed through: what a ray that leaves no
-/// solid (inside an unbounded one) crosses.
-constexpr double kLongestStretch = 1e6;
-
 double largest(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
-
-/// ∫₀^length exp(−σ·s) ds per channel (σ may be negative or 0).
-Vec3 integratedDecay(const Vec3& sigma, double length) {
-    Vec3 w;
-    for (int c = 0; c < 3; ++c) w[c] = sigma[c] != 0 ? -std::expm1(-sigma[c] * length) / sigma[c] : length;
-    return w;
-}
-
-Vec3 decay(const Vec3& sigma, double length) {
-    return {std::exp(-sigma.x * length), std::exp(-sigma.y * length), std::exp(-sigma.z * length)};
-}
 
 } // namespace
 
@@ -46,7 +31,7 @@ const Medium* PathIntegrator::mediumOf(int32_t material) const {
 PathIntegrator::MediumStep PathIntegrator::trackMedium(const Ray& ray, double reach, const Medium& medium, Vec3& beta,
                                                        Vec3& radiance, TraceContext& context) const {
     const double speed = glm::length(ray.dir);
-    const double end = std::min(reach, kLongestStretch / speed);
+    const double end = std::min(reach, kLongestMediumStretch / speed);
     if (medium.homogeneous()) {
         // Distances in scene units from here on.
         const double length = end * speed, density = medium.density(ray.origin);
@@ -57,8 +42,8 @@ PathIntegrator::MediumStep PathIntegrator::trackMedium(const Ray& ray, double re
         // Whatever it meets, the path's weight is what the medium lets through over the
         // chance of getting that far (exp(−rate·s)); its emission is gathered on the way.
         const Vec3 beyondRate = extinction - Vec3(rate);
-        radiance += beta * medium.emission() * density * integratedDecay(beyondRate, travelled);
-        beta *= decay(beyondRate, travelled);
+        radiance += beta * medium.emission() * density * integratedTransmittance(beyondRate, travelled);
+        beta *= transmittanceOver(beyondRate, travelled);
         if (travelled >= length) return {};
         beta *= scattering / rate;
         return {true, travelled / speed};
@@ -92,9 +77,9 @@ PathIntegrator::MediumStep PathIntegrator::trackMedium(const Ray& ray, double re
 Vec3 PathIntegrator::mediumTransmittance(const Ray& ray, double from, double to, const Medium& medium,
                                          TraceContext& context) const {
     const double speed = glm::length(ray.dir);
-    to = std::min(to, from + kLongestStretch / speed);
+    to = std::min(to, from + kLongestMediumStretch / speed);
     if (medium.homogeneous())
-        return decay(medium.extinction() * medium.density(ray.origin), (to - from) * speed);
+        return transmittanceOver(medium.extinction() * medium.density(ray.origin), (to - from) * speed);
     const double bound = largest(medium.extinction()) * medium.densityBound();
     if (!(bound > 0)) return Vec3(1.0);
     Vec3 through(1.0);
@@ -111,8 +96,14 @@ Vec3 PathIntegrator::throughSolids(const Ray& ray, double tMax, std::vector<Boun
     std::sort(crossings.begin(), crossings.end(), [](const BoundaryCrossing& a, const BoundaryCrossing& b) {
         return a.material != b.material ? a.material < b.material : a.t < b.t;
     });
-    Vec3 through(1.0);
     const double speed = glm::length(ray.dir);
+    // What a solid of `material` lets through from t = from to t = to.
+    auto inside = [&](int32_t material, double from, double to) {
+        if (const Medium* medium = mediumOf(material)) return mediumTransmittance(ray, from, to, *medium, context);
+        if (to == kInfinity) return Vec3(1.0);
+        return transmittanceOver(rgb(scene_.materials[static_cast<size_t>(material)].absorption), (to - from) * speed);
+    };
+    Vec3 through(1.0);
     for (size_t i = 0; i < crossings.size() && through != Vec3(0.0);) {
         // One solid's crossings in order: inside from its start when it first leaves.
         const int32_t material = crossings[i].material;
@@ -121,21 +112,12 @@ Vec3 PathIntegrator::throughSolids(const Ray& ray, double tMax, std::vector<Boun
             const BoundaryCrossing& c = crossings[i];
             if (c.entering) {
                 enteredAt = c.t;
-                continue;
+            } else if (enteredAt >= 0) {
+                through *= inside(material, enteredAt, c.t);
+                enteredAt = -1;
             }
-            if (enteredAt < 0) continue;
-            if (const Medium* medium = mediumOf(material))
-                through *= mediumTransmittance(ray, enteredAt, c.t, *medium, context);
-            else
-                through *= decay(rgb(scene_.materials[static_cast<size_t>(material)].absorption), (c.t - enteredAt) * speed);
-            enteredAt = -1;
         }
-        if (enteredAt >= 0) { // still inside where the ray ends
-            if (const Medium* medium = mediumOf(material))
-                through *= mediumTransmittance(ray, enteredAt, tMax, *medium, context);
-            else if (tMax < kInfinity)
-                through *= decay(rgb(scene_.materials[static_cast<size_t>(material)].absorption), (tMax - enteredAt) * speed);
-        }
+        if (enteredAt >= 0) through *= inside(material, enteredAt, tMax); // still inside where the ray ends
     }
     return through;
 }
