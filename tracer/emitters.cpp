@@ -16,119 +16,185 @@ double oneMinusCosMax(double r, double d) {
     return sin2 / (1 + std::sqrt(std::max(0.0, 1 - sin2)));
 }
 
+/// The scale of a linear map that is a similarity (rotation and uniform scale), or 0.
+double similarityScale(const glm::dmat3& linear) {
+    const glm::dmat3 gram = glm::transpose(linear) * linear;
+    const double scale2 = gram[0][0];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (std::abs(gram[i][j] - (i == j ? scale2 : 0.0)) > 1e-12 * scale2) return 0;
+    return std::sqrt(scale2);
+}
+
+/// The index i with cumulative[i] <= pick < cumulative[i + 1].
+size_t pickIndex(const std::vector<double>& cumulative, double pick) {
+    const auto at = std::upper_bound(cumulative.begin() + 1, cumulative.end(), pick);
+    return std::min(static_cast<size_t>(at - cumulative.begin()) - 1, cumulative.size() - 2);
+}
+
 } // namespace
 
-double Emitters::coneSolidAngle(const Entry& e, const Vec3& from) {
-    const double d = glm::length(e.center - from);
-    return d > e.radius * (1 + 1e-9) ? 2 * kPi * oneMinusCosMax(e.radius, d) : 0;
+double Emitters::coneSolidAngle(const Source& s, const Vec3& from) {
+    const double d = glm::length(s.center - from);
+    return d > s.radius * (1 + 1e-9) ? 2 * kPi * oneMinusCosMax(s.radius, d) : 0;
 }
 
-void Emitters::placeCone(Entry& e, const SphereGeometry& sphere) const {
-    const Primitive& primitive = scene_.primitives[static_cast<size_t>(e.primitive)];
+const Transform* Emitters::primitiveToWorld(const Source& s) const {
+    const RenderScene& owner = ownerOf(s);
+    const int32_t t = owner.primitives[static_cast<size_t>(s.primitive)].transform;
+    return t >= 0 ? &owner.transforms[static_cast<size_t>(t)].toWorld : nullptr;
+}
+
+const TransformPair* Emitters::instanceTransform(const Source& s) const {
+    if (s.instance < 0) return nullptr;
+    const int32_t t = scene_.instances[static_cast<size_t>(s.instance)].transform;
+    return t >= 0 ? &scene_.transforms[static_cast<size_t>(t)] : nullptr;
+}
+
+void Emitters::placeCone(Source& s, const SphereGeometry& sphere) const {
     Vec3 center = sphere.center();
     double radius = sphere.radius();
-    if (primitive.transform >= 0) {
-        // Only a similarity keeps a sphere a sphere: rotation, translation, uniform scale.
-        const Transform& toWorld = scene_.transforms[static_cast<size_t>(primitive.transform)].toWorld;
-        const glm::dmat3 gram = glm::transpose(toWorld.linear()) * toWorld.linear();
-        const double scale2 = gram[0][0];
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-                if (std::abs(gram[i][j] - (i == j ? scale2 : 0.0)) > 1e-12 * scale2) return;
-        center = toWorld.point(center);
-        radius *= std::sqrt(scale2);
+    // Only a similarity keeps a sphere a sphere: rotation, translation, uniform scale.
+    for (const Transform* toWorld : {primitiveToWorld(s), instanceTransform(s) ? &instanceTransform(s)->toWorld : nullptr}) {
+        if (!toWorld) continue;
+        const double scale = similarityScale(toWorld->linear());
+        if (!(scale > 0)) return;
+        center = toWorld->point(center);
+        radius *= scale;
     }
-    e.center = center;
-    e.radius = radius;
+    s.center = center;
+    s.radius = radius;
 }
 
-Emitters::Emitters(const RenderScene& scene) : scene_(scene) {
-    std::vector<bool> inCsg(scene.primitives.size(), false);
-    for (const CsgTreeNode& node : scene.csgNodes)
+void Emitters::addSources(const RenderScene& owner, int32_t instance, std::vector<double>& power) {
+    std::vector<bool> inCsg(owner.primitives.size(), false);
+    for (const CsgTreeNode& node : owner.csgNodes)
         if (node.kind == CsgNodeKind::Leaf && node.primitive >= 0) inCsg[static_cast<size_t>(node.primitive)] = true;
-    std::vector<double> power;
-    for (size_t p = 0; p < scene.primitives.size(); ++p) {
-        const Primitive& primitive = scene.primitives[p];
-        if (inCsg[p] || primitive.material < 0 || primitive.transform >= RenderScene::kFirstMovingTransform) continue;
-        const ShadingMaterial& m = scene.materials[static_cast<size_t>(primitive.material)];
+    const TransformPair* drawing = nullptr;
+    if (instance >= 0) {
+        const int32_t t = scene_.instances[static_cast<size_t>(instance)].transform;
+        if (t >= RenderScene::kFirstMovingTransform) return;
+        if (t >= 0) drawing = &scene_.transforms[static_cast<size_t>(t)];
+    }
+    for (size_t p = 0; p < owner.primitives.size(); ++p) {
+        const Primitive& primitive = owner.primitives[p];
+        if (primitive.transform >= RenderScene::kFirstMovingTransform) continue;
+        const int32_t material = primitive.material >= 0 || instance < 0
+                                     ? primitive.material
+                                     : scene_.instances[static_cast<size_t>(instance)].material;
+        if (material < 0) continue;
+        const ShadingMaterial& m = scene_.materials[static_cast<size_t>(material)];
         const double glow = luminance(rgb(m.emission));
         if (m.blend >= 0 || glow <= 0) continue;
-        // Power is only the chance of being chosen: the transform's scale is taken as uniform.
-        const double scale =
-            primitive.transform >= 0
-                ? std::cbrt(std::abs(glm::determinant(scene.transforms[static_cast<size_t>(primitive.transform)].toWorld.linear())))
-                : 1.0;
-        auto add = [&](uint32_t face, double area) {
-            if (!(area > 0)) return;
-            if (firstEntryOf_.empty()) firstEntryOf_.assign(scene.primitives.size(), -1);
-            if (firstEntryOf_[p] < 0) firstEntryOf_[p] = static_cast<int32_t>(entries_.size());
-            entries_.push_back({static_cast<int32_t>(p), face, area});
-            if (const SphereGeometry* sphere = shapeIf<SphereGeometry>(primitive.geometry)) placeCone(entries_.back(), *sphere);
-            power.push_back(glow * area * scale * scale);
-        };
+        Source s{instance, static_cast<int32_t>(p), -1, inCsg[p]};
         if (const MeshGeometry* mesh = shapeIf<MeshGeometry>(primitive.geometry)) {
+            FaceTable table;
+            table.cumulative.assign(1, 0.0);
             const TriangleMesh& tm = mesh->mesh();
             for (uint32_t face = 0; face < tm.data().triangles.size(); ++face) {
                 Vec3 corners[3];
                 tm.corners(face, corners);
-                add(face, triangleArea(corners));
+                table.cumulative.push_back(s.objectArea += triangleArea(corners));
             }
-            continue;
+            if (!(s.objectArea > 0)) continue;
+            for (double& c : table.cumulative) c /= s.objectArea;
+            s.faces = static_cast<int32_t>(faceTables_.size());
+            faceTables_.push_back(std::move(table));
+        } else {
+            s.objectArea = sampledArea(primitive.geometry);
+            if (!(s.objectArea > 0)) continue;
+            if (const SphereGeometry* sphere = shapeIf<SphereGeometry>(primitive.geometry)) placeCone(s, *sphere);
         }
-        add(kNoPart, sampledArea(primitive.geometry));
+        // Power is only the chance of being chosen: the transforms' scale is taken as uniform.
+        double scale2 = 1;
+        for (const Transform* toWorld : {primitive.transform >= 0 ? &owner.transforms[static_cast<size_t>(primitive.transform)].toWorld : nullptr,
+                                         drawing ? &drawing->toWorld : nullptr})
+            if (toWorld) scale2 *= std::pow(std::abs(glm::determinant(toWorld->linear())), 2.0 / 3.0);
+        sourceOf_.emplace(key(instance, s.primitive), static_cast<int32_t>(sources_.size()));
+        sources_.push_back(s);
+        power.push_back(glow * s.objectArea * scale2);
     }
+}
+
+Emitters::Emitters(const RenderScene& scene) : scene_(scene) {
+    std::vector<double> power;
+    addSources(scene, -1, power);
+    for (size_t i = 0; i < scene.instances.size(); ++i) addSources(scene.prototypeOf(static_cast<int32_t>(i)), static_cast<int32_t>(i), power);
     double total = 0;
     cumulative_.assign(1, 0.0);
     for (double w : power) cumulative_.push_back(total += w);
     for (double& c : cumulative_) c /= total;
 }
 
-double Emitters::areaDensity(const Entry& e, const Vec3& normal) const {
-    const int32_t transform = scene_.primitives[static_cast<size_t>(e.primitive)].transform;
-    const double toObject =
-        transform >= 0 ? scene_.transforms[static_cast<size_t>(transform)].toObject.areaScale(normal) : 1.0;
-    return toObject / e.objectArea;
+double Emitters::areaDensity(const Source& s, const Vec3& normal) const {
+    // The area of a world element over the area of the object element it comes from, through
+    // the instance's transform and then the primitive's.
+    double toObject = 1;
+    Vec3 n = normal;
+    if (const TransformPair* drawing = instanceTransform(s)) {
+        toObject *= drawing->toObject.areaScale(n);
+        n = drawing->toObject.normal(n);
+    }
+    const RenderScene& owner = ownerOf(s);
+    if (const int32_t t = owner.primitives[static_cast<size_t>(s.primitive)].transform; t >= 0)
+        toObject *= owner.transforms[static_cast<size_t>(t)].toObject.areaScale(n);
+    return toObject / s.objectArea;
+}
+
+AreaSample Emitters::pointOn(const Source& s, const Vec2& u) const {
+    const Primitive& primitive = ownerOf(s).primitives[static_cast<size_t>(s.primitive)];
+    AreaSample point;
+    if (s.faces >= 0) {
+        // The face by the share of the area u.x falls in, then u.x stretched over that face.
+        const std::vector<double>& cumulative = faceTables_[static_cast<size_t>(s.faces)].cumulative;
+        const size_t face = pickIndex(cumulative, u.x);
+        const double width = cumulative[face + 1] - cumulative[face];
+        const double along = width > 0 ? std::clamp((u.x - cumulative[face]) / width, 0.0, std::nextafter(1.0, 0.0)) : 0.0;
+        Vec3 corners[3];
+        shapeIf<MeshGeometry>(primitive.geometry)->mesh().corners(static_cast<uint32_t>(face), corners);
+        point = sampleTriangle(corners, {along, u.y});
+    } else {
+        point = sampleArea(primitive.geometry, u);
+    }
+    for (const Transform* toWorld : {primitiveToWorld(s), instanceTransform(s) ? &instanceTransform(s)->toWorld : nullptr})
+        if (toWorld) point = {toWorld->point(point.point), toWorld->normal(point.normal)};
+    return point;
+}
+
+Vec3 Emitters::radianceOf(const Source& s) const {
+    const int32_t own = ownerOf(s).primitives[static_cast<size_t>(s.primitive)].material;
+    const int32_t material = own >= 0 ? own : scene_.instances[static_cast<size_t>(s.instance)].material;
+    return rgb(scene_.materials[static_cast<size_t>(material)].emission);
 }
 
 bool Emitters::sample(const Vec3& from, double pick, const Vec2& u, EmitterSample& out) const {
-    if (entries_.empty()) return false;
-    const auto at = std::upper_bound(cumulative_.begin() + 1, cumulative_.end(), pick);
-    const size_t index = std::min(static_cast<size_t>(at - cumulative_.begin()) - 1, entries_.size() - 1);
-    const Entry& e = entries_[index];
-    const Primitive& primitive = scene_.primitives[static_cast<size_t>(e.primitive)];
-    if (e.radius > 0) {
-        if (const double solidAngle = coneSolidAngle(e, from); solidAngle > 0) {
+    if (sources_.empty()) return false;
+    const size_t index = pickIndex(cumulative_, pick);
+    const Source& s = sources_[index];
+    out.mayBeCarved = s.mayBeCarved;
+    out.primitive = s.primitive;
+    out.instance = s.instance;
+    out.radiance = radianceOf(s);
+    if (s.radius > 0) {
+        if (const double solidAngle = coneSolidAngle(s, from); solidAngle > 0) {
             // A direction uniform in the cone, and where it meets the sphere's near side.
-            const Vec3 toCenter = e.center - from;
+            const Vec3 toCenter = s.center - from;
             const double d = glm::length(toCenter);
-            const double cosTheta = 1 - u.x * oneMinusCosMax(e.radius, d);
+            const double cosTheta = 1 - u.x * oneMinusCosMax(s.radius, d);
             const double sinTheta = std::sqrt(std::max(0.0, 1 - cosTheta * cosTheta)), phi = 2 * kPi * u.y;
             const Vec3 dir = Frame::fromAxis(toCenter / d).fromLocal({sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta});
-            const double t = d * cosTheta - std::sqrt(std::max(0.0, e.radius * e.radius - d * d * sinTheta * sinTheta));
+            const double t = d * cosTheta - std::sqrt(std::max(0.0, s.radius * s.radius - d * d * sinTheta * sinTheta));
             out.point = from + t * dir;
-            out.normal = glm::normalize(out.point - e.center);
-            out.radiance = rgb(scene_.materials[static_cast<size_t>(primitive.material)].emission);
+            out.normal = glm::normalize(out.point - s.center);
             out.pdf = chance(index) / solidAngle;
             return true;
         }
     }
-    AreaSample point;
-    if (const MeshGeometry* mesh = shapeIf<MeshGeometry>(primitive.geometry)) {
-        Vec3 corners[3];
-        mesh->mesh().corners(e.face, corners);
-        point = sampleTriangle(corners, u);
-    } else {
-        point = sampleArea(primitive.geometry, u);
-    }
-    if (primitive.transform >= 0) {
-        const Transform& toWorld = scene_.transforms[static_cast<size_t>(primitive.transform)].toWorld;
-        point = {toWorld.point(point.point), toWorld.normal(point.normal)};
-    }
+    const AreaSample point = pointOn(s, u);
     out.pdf = areaSolidAngleDensity(index, from, point.point, point.normal);
     if (!(out.pdf > 0)) return false;
     out.point = point.point;
     out.normal = point.normal;
-    out.radiance = rgb(scene_.materials[static_cast<size_t>(primitive.material)].emission);
     return true;
 }
 
@@ -137,18 +203,24 @@ double Emitters::areaSolidAngleDensity(size_t index, const Vec3& from, const Vec
     const double distance2 = glm::dot(offset, offset);
     const double cosLight = std::abs(glm::dot(normal, offset)) / std::sqrt(distance2);
     if (!(distance2 > 0) || cosLight <= 0) return 0;
-    return chance(index) * areaDensity(entries_[index], normal) * distance2 / cosLight;
+    return chance(index) * areaDensity(sources_[index], normal) * distance2 / cosLight;
 }
 
 double Emitters::pdf(const Hit& hit, const Vec3& from, const Vec3& point, const Vec3& normal) const {
-    if (firstEntryOf_.empty() || hit.instance >= 0 || hit.primitive < 0) return 0;
-    int32_t first = firstEntryOf_[static_cast<size_t>(hit.primitive)];
-    if (first < 0) return 0;
-    const size_t index = static_cast<size_t>(first) + (entries_[static_cast<size_t>(first)].face == kNoPart ? 0 : hit.crossing.part);
-    if (index >= entries_.size() || entries_[index].primitive != hit.primitive) return 0;
-    if (entries_[index].radius > 0)
-        if (const double solidAngle = coneSolidAngle(entries_[index], from); solidAngle > 0)
-            return chance(index) / solidAngle;
+    if (hit.primitive < 0) return 0;
+    const auto found = sourceOf_.find(key(hit.instance, hit.primitive));
+    if (found == sourceOf_.end()) return 0;
+    const size_t index = static_cast<size_t>(found->second);
+    const Source& s = sources_[index];
+    if (s.radius > 0) {
+        if (const double solidAngle = coneSolidAngle(s, from); solidAngle > 0) {
+            // The cone reaches only the cap of the sphere seen from `from`: a path that meets
+            // the rest (through a gap a CSG tree cut, or through the sphere) went where light
+            // sampling never goes.
+            const bool seen = glm::dot(point - s.center, from - s.center) >= s.radius * s.radius * (1 - 1e-6);
+            return seen ? chance(index) / solidAngle : 0;
+        }
+    }
     return areaSolidAngleDensity(index, from, point, normal);
 }
 

@@ -3,6 +3,7 @@
 
 #include "tracer/render_scene.hpp"
 
+#include <unordered_map>
 #include <vector>
 
 namespace crt::tracer {
@@ -13,21 +14,26 @@ struct EmitterSample {
     Vec3 normal{0, 1, 0}; ///< unit, world space
     Vec3 radiance{0.0};   ///< the emission (two-sided)
     double pdf = 0;       ///< solid angle at the shading point, the choice of emitter included
+    /// Set for a CSG operand's surface, which the tree may have carved away at the point: the
+    /// caller sees whether a ray meets it there (a Hit of `primitive` and `instance`).
+    bool mayBeCarved = false;
+    int32_t primitive = -1, instance = -1;
 };
 
 /// The primitives whose material emits and whose shape can be sampled by area: spheres,
-/// discs, quads, triangles and each face of a mesh, drawn directly and standing still (not
-/// through an instance, a CSG tree, a material blend or a transform that moves while the
-/// shutter is open; those are found by the paths' own bounces).
+/// discs, quads, triangles and meshes, drawn directly, as CSG operands or inside the drawings
+/// of a shared entity (instances), and standing still (not with a material blend, nor with a
+/// transform that moves while the shutter is open; those are found by the paths' own
+/// bounces).
 /// One is chosen by power (emission × area), then a point on it: on a sphere (moved by a
 /// similarity at most) seen from outside, uniformly in the cone of directions it fills;
-/// elsewhere uniformly by area.
+/// elsewhere uniformly by area (a mesh: a face by its area, then a point on it).
 class Emitters {
 public:
     explicit Emitters(const RenderScene& scene);
 
-    bool empty() const { return entries_.empty(); }
-    size_t size() const { return entries_.size(); }
+    bool empty() const { return sources_.empty(); }
+    size_t size() const { return sources_.size(); }
     /// A point on an emitter for the shading point `from`; false when none can be had.
     bool sample(const Vec3& from, double pick, const Vec2& u, EmitterSample& out) const;
     /// The density sample() has of choosing the hit's point from `from` (solid angle); 0 for a
@@ -35,30 +41,51 @@ public:
     double pdf(const Hit& hit, const Vec3& from, const Vec3& point, const Vec3& normal) const;
 
 private:
-    struct Entry {
-        int32_t primitive;
-        uint32_t face;     ///< a mesh's triangle
-        double objectArea; ///< before the primitive's transform
+    /// One emitting primitive, of the scene or of an instance's prototype.
+    struct Source {
+        int32_t instance = -1; ///< -1: the scene's own primitive
+        int32_t primitive = -1;
+        int32_t faces = -1;    ///< a mesh's face table (faceTables_), or -1
+        bool mayBeCarved = false;
+        double objectArea = 0; ///< before any transform
         /// A sphere sampled by its cone of directions: its centre and radius in world space
-        /// (radius 0 for every other entry).
+        /// (radius 0 for every other source).
         Vec3 center{0.0};
         double radius = 0;
     };
-    /// Makes a sphere's entry sampled by its cone, where its transform keeps it a sphere.
-    void placeCone(Entry& e, const SphereGeometry& sphere) const;
-    /// The solid angle a sphere entry fills seen from `from`, or 0 from inside it.
-    static double coneSolidAngle(const Entry& e, const Vec3& from);
-    /// The area density of the entry's surface at a point of world normal `normal`.
-    double areaDensity(const Entry& e, const Vec3& normal) const;
-    /// The density of choosing `point` (normal `normal`) on entry `index` by area, in solid
-    /// angle at `from`, the choice of the entry included; 0 edge-on.
+    /// A mesh's faces by their share of its area, shared by every drawing of the mesh.
+    struct FaceTable {
+        std::vector<double> cumulative; ///< from 0 to 1
+    };
+    void addSources(const RenderScene& owner, int32_t instance, std::vector<double>& power);
+    const RenderScene& ownerOf(const Source& s) const {
+        return s.instance < 0 ? scene_ : scene_.prototypeOf(s.instance);
+    }
+    /// The source's transform before the instance's, and the instance's (either may be null).
+    const Transform* primitiveToWorld(const Source& s) const;
+    const TransformPair* instanceTransform(const Source& s) const;
+    /// Makes a sphere's source sampled by its cone, where its transforms keep it a sphere.
+    void placeCone(Source& s, const SphereGeometry& sphere) const;
+    /// The solid angle a sphere source fills seen from `from`, or 0 from inside it.
+    static double coneSolidAngle(const Source& s, const Vec3& from);
+    /// The area density of the source's surface at a world point of normal `normal`.
+    double areaDensity(const Source& s, const Vec3& normal) const;
+    /// The density of choosing `point` (normal `normal`) on source `index` by area, in solid
+    /// angle at `from`, the choice of the source included; 0 edge-on.
     double areaSolidAngleDensity(size_t index, const Vec3& from, const Vec3& point, const Vec3& normal) const;
-    double chance(size_t entry) const { return cumulative_[entry + 1] - cumulative_[entry]; }
+    /// A point uniform by area on the source, in world space.
+    AreaSample pointOn(const Source& s, const Vec2& u) const;
+    Vec3 radianceOf(const Source& s) const;
+    double chance(size_t source) const { return cumulative_[source + 1] - cumulative_[source]; }
+    static uint64_t key(int32_t instance, int32_t primitive) {
+        return (static_cast<uint64_t>(static_cast<uint32_t>(instance + 1)) << 32) | static_cast<uint32_t>(primitive);
+    }
 
     const RenderScene& scene_;
-    std::vector<Entry> entries_;
-    std::vector<double> cumulative_;       ///< of the chances, from 0 to 1
-    std::vector<int32_t> firstEntryOf_;    ///< by primitive: its first entry, or -1
+    std::vector<Source> sources_;
+    std::vector<double> cumulative_; ///< of the chances, from 0 to 1
+    std::vector<FaceTable> faceTables_;
+    std::unordered_map<uint64_t, int32_t> sourceOf_; ///< key(instance, primitive) -> source
 };
 
 } // namespace crt::tracer

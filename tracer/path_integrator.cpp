@@ -179,6 +179,7 @@ Vec3 PathIntegrator::fromEmitter(const Vertex& v, const Scatter& bsdf, TraceCont
     const Vec3 toEmitter = glm::normalize(es.point - v.si.point);
     const Vec3 f = bsdf.evalCos(toEmitter);
     if (f == Vec3(0.0)) return Vec3(0.0);
+    if (es.mayBeCarved && !emitterSurfaceAt(es, v.si.point, context)) return Vec3(0.0);
     const Vec3 origin = originToward(v, toEmitter);
     // Stops short of the emitter's own surface, which the rounding of the point may put a
     // hair in front of the ray's end.
@@ -188,6 +189,21 @@ Vec3 PathIntegrator::fromEmitter(const Vertex& v, const Scatter& bsdf, TraceCont
     if (visible == Vec3(0.0)) return Vec3(0.0);
     const double weight = powerHeuristic(es.pdf, bsdf.pdf(toEmitter));
     return visible * f * es.radiance * (weight / es.pdf);
+}
+
+bool PathIntegrator::emitterSurfaceAt(const EmitterSample& es, const Vec3& from, TraceContext& context) const {
+    // A short ray across the point along the light's way. A CSG tree's crossings are those of
+    // the whole line, so the ray meets the operand there exactly where the tree kept its
+    // surface. Its reach stays well above the rounding of the point and of the crossing.
+    const Vec3 offset = es.point - from;
+    const double distance = glm::length(offset);
+    const Vec3 dir = offset / distance;
+    const Vec3 magnitude = glm::abs(es.point);
+    const double reach = 1e-6 * distance + 1e-9 * std::max({magnitude.x, magnitude.y, magnitude.z});
+    Hit hit;
+    return scene_.intersect(Ray{es.point - reach * dir, dir, context.time}, 2 * reach, hit, context.scratch,
+                            context.stats) &&
+           hit.primitive == es.primitive && hit.instance == es.instance;
 }
 
 template <typename Scatter>

@@ -89,6 +89,9 @@ private:
     /// reached by the path's own refraction, so it is not counted twice), and the media and
     /// absorbing solids within clear boundaries dim it.
     Vec3 visibility(const Ray& ray, double tMax, Departure departed, TraceContext& context) const;
+    /// Whether the emitter's surface is there at the sampled point, as seen from `from` (a CSG
+    /// tree may have carved it away).
+    bool emitterSurfaceAt(const EmitterSample& es, const Vec3& from, TraceContext& context) const;
 
     // Media (path_media.cpp).
     /// The medium filling the solid of `material` (-1: none), or null.

@@ -210,6 +210,10 @@ public:
     }
     /// The SceneDesc entity the hit primitive was built from.
     int32_t entityOf(const Hit& hit) const;
+    /// The prototype instance i draws.
+    const RenderScene& prototypeOf(int32_t instance) const {
+        return *prototypes[static_cast<size_t>(instances[static_cast<size_t>(instance)].prototype)];
+    }
 
     /// The rays the hit surface is hidden from (scene::HiddenFrom bits; entities' `camera`,
     /// `shadow` and `reflected`). Each list is empty when nothing in it is hidden, else it
@@ -267,9 +271,6 @@ private:
         if (t < kFirstMovingTransform) [[likely]]
             return transforms[static_cast<size_t>(t)].toObject.ray(ray);
         return movingTransforms[static_cast<size_t>(t - kFirstMovingTransform)].at(ray.time).toObject.ray(ray);
-    }
-    const RenderScene& prototypeOf(int32_t instance) const {
-        return *prototypes[static_cast<size_t>(instances[static_cast<size_t>(instance)].prototype)];
     }
     /// The surface at a hit on one of this scene's own primitives, shaded with `material`.
     SurfaceInteraction primitiveInteraction(const Ray& ray, const Hit& hit, int32_t material,
