@@ -97,10 +97,19 @@ stills() {
         idiff -fail 0 -warn 0 "$work/aov_alone.$aov.exr" "$work/aov_shared.$aov.exr" >/dev/null ||
             fail "the $aov AOV over 3 processes differs"
     done
-    # A time limit refines the whole image in one process: refused, once, over several.
-    expect_status 2 "--time-limit" mpi 2 --integrator path --time-limit 5 "$here/still.crt" -o "$work/tl.png"
-    [ "$(grep -c "time-limit is for crtc alone" "$work/err")" = 1 ] || fail "--time-limit under mpirun: $(cat "$work/err")"
-    [ ! -e "$work/tl.png" ] || fail "--time-limit under mpirun wrote an image"
+    # A time limit: each process refines its share of the tiles until rank 0's deadline. One
+    # the render does not reach leaves the image as it is without it; one it reaches still
+    # gives every pixel of every share its paths.
+    "$crtc" --quiet --integrator path --samples 8 "$here/still.crt" -o "$work/tl_alone.hdr"
+    for processes in 2 3; do
+        expect_status 0 "--time-limit not reached, $processes processes" mpi "$processes" --quiet --integrator path \
+            --samples 8 --time-limit 1000 "$here/still.crt" -o "$work/tl.hdr"
+        cmp -s "$work/tl_alone.hdr" "$work/tl.hdr" || fail "--time-limit not reached over $processes processes changes the image"
+    done
+    expect_status 0 "--time-limit reached" mpi 3 --stats --integrator path --samples 1000000 --time-limit 1 \
+        "$here/still.crt" -o "$work/tl.hdr"
+    expect_text "$work/err" "^crtc: stats: paths a pixel: fewest [1-9][0-9]*, mean [0-9.]+, most [1-9][0-9]*;" \
+        "--time-limit over 3 processes: every pixel's paths"
     # --alpha: tiles of four channels.
     "$crtc" --quiet --alpha "$here/still.crt" -o "$work/alpha_alone.png"
     expect_status 0 "--alpha" mpi 3 --quiet --alpha "$here/still.crt" -o "$work/alpha_shared.png"

@@ -78,12 +78,6 @@ int renderFramesOnRankZero(MpiSession& session, const Options& options,
 
 int renderDistributed(const Options& options, const CompileFrame& compileFrame) {
     MpiSession session(nullptr, nullptr);
-    // A time-limited render refines the whole image pass after pass in one process.
-    if (options.timeLimit > 0 && session.size() > 1) {
-        if (session.root())
-            std::cerr << "crtc: --time-limit is for crtc alone: under mpirun, set --samples or --target-error\n";
-        return 2;
-    }
     int status = 0;
     // A single frame is shared by tiles; the frames of an animation are shared out whole.
     if (!session.root()) {

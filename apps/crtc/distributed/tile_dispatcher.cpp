@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <limits>
 #include <thread>
 
 namespace crt::crtc::distributed {
@@ -19,6 +20,13 @@ namespace {
 /// threads (workers keep enough tiles queued not to wait for it).
 constexpr auto kAnswerPoll = std::chrono::microseconds(200);
 constexpr auto kIdlePoll = std::chrono::milliseconds(1);
+
+/// The time a time-limited render has left, for the other ranks (whose clocks are their own).
+int millisecondsLeft(std::chrono::steady_clock::time_point deadline) {
+    const auto left = deadline - std::chrono::steady_clock::now();
+    return static_cast<int>(std::clamp<int64_t>(std::chrono::duration_cast<std::chrono::milliseconds>(left).count(), 0,
+                                                std::numeric_limits<int>::max()));
+}
 
 } // namespace
 
@@ -179,20 +187,38 @@ tracer::RenderOutcome TileDispatcher::render(const scene::SceneDesc& scene,
     session_.broadcast(command);
     std::vector<int> corners = tileCorners(job.tiles);
     session_.broadcast(corners, static_cast<int>(corners.size()));
+    // A time-limited render (the only progressive one under mpirun).
+    const bool timeLimited = job.progressive && job.progressive->deadline;
+    if (timeLimited) {
+        std::vector<int> left{millisecondsLeft(*job.progressive->deadline)};
+        session_.broadcast(left, 1);
+    }
     tracer::RenderOutcome outcome;
     outcome.ok = true;
     if (job.tiles.empty()) return outcome; // every tile came from the resume log
     cancel_ = job.cancel;
-    next_ = delivered_ = localWaiting_ = 0;
     tileCount_ = static_cast<int>(job.tiles.size());
+    delivered_ = localWaiting_ = 0;
+    next_ = timeLimited ? tileCount_ : 0; // no tile is handed out: each rank has its share
     returned_.clear();
     workers_.assign(static_cast<size_t>(session_.size()), Worker{});
     error_.clear();
 
-    // Rank 0's threads take their tiles from the queue the other ranks are served from.
+    // Rank 0's threads take their tiles from the queue the other ranks are served from, or,
+    // under a time limit, refine rank 0's share until the deadline.
     tracer::RenderJob local = job;
-    local.nextTile = [this] { return claimLocal(); };
-    local.onTileDone = [&](const tracer::TileResult& result) { deliver(job, result); };
+    std::vector<int> share;
+    if (timeLimited) {
+        share = timeLimitedShare(tileCount_, 0, session_.size());
+        local.tiles.clear();
+        for (const int t : share) local.tiles.push_back(job.tiles[static_cast<size_t>(t)]);
+        local.onTileDone = [&](const tracer::TileResult& result) {
+            deliver(job, {result.tile, share[static_cast<size_t>(result.index)], result.channels, result.pixels});
+        };
+    } else {
+        local.nextTile = [this] { return claimLocal(); };
+        local.onTileDone = [&](const tracer::TileResult& result) { deliver(job, result); };
+    }
     std::atomic<bool> localFinished{false};
     std::thread renderer([&] {
         try {

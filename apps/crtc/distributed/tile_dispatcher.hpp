@@ -3,9 +3,12 @@
 // simply asks less often; every finished tile delivered to the job's onTileDone. When rank 0's
 // threads find no tile left, they take back half of those a worker holds and has not begun,
 // as often as it takes, and a worker that asks then gets half of those: costly tiles at the
-// end of the order are not left to the rank that queued them.
+// end of the order are not left to the rank that queued them. A time-limited render is shared
+// differently: each rank refines its own share of the tiles (timeLimitedShare), pass after
+// pass, until the deadline rank 0 sends, and then sends them all.
 //
-// The protocol, per frame: rank 0 broadcasts the Render command and the tiles; a worker asks
+// The protocol, per frame: rank 0 broadcasts the Render command and the tiles (and, under a
+// time limit, the milliseconds left, after which a worker asks for nothing); a worker asks
 // (kRequestTag) for as many tiles as it can queue, gets their indices (kTilesTag; none: the
 // job is handed out), sends the tiles it finished since it last sent (kResultTag), answers
 // rank 0's kGiveBackTag with tiles it had not begun (kGivenBackTag; none: it has begun all),

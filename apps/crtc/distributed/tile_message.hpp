@@ -1,5 +1,5 @@
 // Finished tiles as a worker sends them to rank 0: each its index in the job, then its floats;
-// several in one batch.
+// several in one batch. And which tiles each rank traces in a time-limited render.
 #pragma once
 
 #include "tracer/renderer.hpp"
@@ -92,6 +92,16 @@ inline std::vector<tracer::Tile> tilesOfCorners(const std::vector<int>& corners)
     for (size_t i = 0; i + 3 < corners.size(); i += 4)
         tiles.push_back({corners[i], corners[i + 1], corners[i + 2], corners[i + 3]});
     return tiles;
+}
+
+/// The tiles (indices in the job) rank `rank` of `ranks` traces in a time-limited render,
+/// where each rank refines its own tiles pass after pass until the common deadline rather than
+/// asking for tiles: every ranks-th tile, so that each rank's share samples the whole image
+/// and costly regions are spread over all of them.
+inline std::vector<int> timeLimitedShare(int tileCount, int rank, int ranks) {
+    std::vector<int> share;
+    for (int t = rank; t < tileCount; t += ranks) share.push_back(t);
+    return share;
 }
 
 } // namespace crt::crtc::distributed

@@ -51,8 +51,10 @@ class TileWorker {
         if (const char* queued = std::getenv(kTestQueuedTilesVariable)) queuedForTests_ = std::atoi(queued);
     }
 
-    /// Renders the tiles rank 0 hands out of `tiles` of `scene` (none if it was not evaluated).
-    void render(const scene::SceneDesc* scene, const std::vector<tracer::Tile>& tiles);
+    /// Renders the tiles rank 0 hands out of `tiles` of `scene` (none if it was not evaluated),
+    /// or with a `deadline` (a time-limited render) this rank's share of them, until then.
+    void render(const scene::SceneDesc* scene, const std::vector<tracer::Tile>& tiles,
+                std::optional<std::chrono::steady_clock::time_point> deadline);
 
   private:
     int nextTile();
@@ -210,24 +212,40 @@ void TileWorker::awaitRelease() {
     }
 }
 
-void TileWorker::render(const scene::SceneDesc* scene, const std::vector<tracer::Tile>& tiles) {
+void TileWorker::render(const scene::SceneDesc* scene, const std::vector<tracer::Tile>& tiles,
+                        std::optional<std::chrono::steady_clock::time_point> deadline) {
     queue_.clear();
     outbox_.clear();
-    asked_ = noMore_ = renderDone_ = false;
+    asked_ = renderDone_ = false;
+    noMore_ = deadline.has_value(); // a time-limited render asks for nothing
     tilesDone_ = lowMark_ = 0;
     secondsWaited_ = 0;
     start_ = lastSend_ = std::chrono::steady_clock::now();
+    std::vector<int> share;
+    if (deadline) share = timeLimitedShare(static_cast<int>(tiles.size()), session_.rank(), session_.size());
     tracer::RenderOutcome outcome;
     if (!scene) {
         outcome.error = "the frame was not evaluated";
         renderDone_ = true;
+    } else if (deadline && share.empty()) {
+        outcome.ok = true; // more ranks than tiles
+        renderDone_ = true;
     }
+    const bool traces = !renderDone_;
     std::thread renderer([&] {
-        if (!scene) return;
+        if (!traces) return;
         tracer::RenderJob job = renderJob(options_);
-        job.tiles = tiles;
-        job.nextTile = [this] { return nextTile(); };
-        job.onTileDone = [this](const tracer::TileResult& result) { finished(result); };
+        if (deadline) {
+            job.progressive->deadline = deadline;
+            for (const int t : share) job.tiles.push_back(tiles[static_cast<size_t>(t)]);
+            job.onTileDone = [&](const tracer::TileResult& result) {
+                finished({result.tile, share[static_cast<size_t>(result.index)], result.channels, result.pixels});
+            };
+        } else {
+            job.tiles = tiles;
+            job.nextTile = [this] { return nextTile(); };
+            job.onTileDone = [this](const tracer::TileResult& result) { finished(result); };
+        }
         try {
             outcome = tracer::render(*scene, job);
         } catch (const std::exception& e) {
@@ -264,8 +282,14 @@ int serveRankZero(MpiSession& session, const Options& options, const CompileFram
         } else if (command.kind == Command::Render) {
             std::vector<int> corners;
             session.broadcast(corners, 4 * command.tileCount);
+            std::optional<std::chrono::steady_clock::time_point> deadline;
+            if (options.timeLimit > 0) {
+                std::vector<int> left;
+                session.broadcast(left, 1);
+                deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(left.front());
+            }
             if (command.tileCount > 0)
-                worker.render(evaluated ? &*c.scene : nullptr, tilesOfCorners(corners));
+                worker.render(evaluated ? &*c.scene : nullptr, tilesOfCorners(corners), deadline);
         } else if (command.kind == Command::ServeFrames) {
             if (!sameScriptOnEveryRank(session, options)) continue;
             MpiFrameLink link(session);
