@@ -11,6 +11,7 @@ packages=(
     libfmt-dev libglm-dev nlohmann-json3-dev catch2
     libopenimageio-dev openimageio-tools # image input and output; oiiotool in the tests
     libpng-dev # PNG output, written without OpenImageIO
+    libopenexr-dev # OpenEXR output, written without OpenImageIO
     libcli11-dev # crtc's command line
     libfreetype-dev fonts-dejavu-core # Text: glyph outlines, and its default font
     libassimp-dev # Mesh: PLY, STL and glTF files

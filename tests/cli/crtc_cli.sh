@@ -244,12 +244,24 @@ if [ -n "$leftovers" ]; then
     failures=$((failures + 1))
 fi
 
-# PNG, the default output, is written without the image module (OpenImageIO): a render to
-# PNG succeeds with the module missing, and is a valid PNG of the right size. A format that
-# needs the module fails with its name instead.
+# PNG, the default output, and OpenEXR are written without the image module (OpenImageIO): a
+# render to either succeeds with the module missing, and is a valid image of the right size
+# (an EXR with alpha too), whose floats are those the module writes to a Radiance HDR file
+# (to the HDR's 8-bit mantissas). A format that needs the module fails with its name instead.
 CRT_IMAGE_IO_MODULE=$work/no_such_module.so expect_status 0 "a PNG render without the image module" \
     "$crtc" -q --width 40 --height 30 -o "$work/images/no_module.png" "$work/scenes/tiny.crt"
 expect_info "$work/images/no_module.png" "40 x +30, 3 channel, uint8 png" "the PNG written without the module"
+CRT_IMAGE_IO_MODULE=$work/no_such_module.so expect_status 0 "an EXR render without the image module" \
+    "$crtc" -q --alpha --width 40 --height 30 -o "$work/images/no_module.exr" "$work/scenes/tiny.crt"
+expect_info "$work/images/no_module.exr" "40 x +30, 4 channel, float openexr" "the EXR written without the module"
+if command -v oiiotool >/dev/null; then
+    "$crtc" -q --width 40 --height 30 -o "$work/images/module.hdr" "$work/scenes/tiny.crt"
+    "$crtc" -q --width 40 --height 30 -o "$work/images/builtin.exr" "$work/scenes/tiny.crt"
+    idiff -fail 0.01 -warn 0.01 "$work/images/module.hdr" "$work/images/builtin.exr" >/dev/null ||
+        fail "the EXR written without the module holds other pixels than the module's HDR of the same render"
+    oiiotool --stats "$work/images/builtin.exr" | grep -qE "Stats Max: +(0\.[0-9]*[1-9]|[1-9])" ||
+        fail "the EXR of the tiny scene is black: $(oiiotool --stats "$work/images/builtin.exr" | grep Max)"
+fi
 CRT_IMAGE_IO_MODULE=$work/no_such_module.so expect_status 2 "a TIFF render without the image module" \
     "$crtc" -q -o "$work/images/none.tif" "$work/scenes/tiny.crt"
 expect_text "$work/err" "no_such_module" "the missing module is named"

@@ -5,6 +5,7 @@
 #include "tracer/image_io/encoding.hpp"
 #include "tracer/image_io/gif_frame_delays.hpp"
 #include "tracer/image_io/module_loader.hpp"
+#include "tracer/image_io/exr_writer.hpp"
 #include "tracer/image_io/png_writer.hpp"
 #include "tracer/image_io/temporary_file.hpp"
 
@@ -36,19 +37,20 @@ struct OutputFormat {
     const char* oiioName;
     bool eightBit;
     bool needsRgb; ///< the format stores no single-channel images
-    bool builtin;  ///< written by builtinPngWriter, without the module
+    /// Its writer built in (png_writer, exr_writer), without the module; null: the module's.
+    const CrtImageIoModule& (*builtinWriter)();
     AlphaStorage alpha;
 };
 
 constexpr OutputFormat kOutputFormats[] = {
-    {".png", "png", true, false, true, AlphaStorage::Straight},
-    {".jpg", "jpeg", true, false, false, AlphaStorage::None},
-    {".jpeg", "jpeg", true, false, false, AlphaStorage::None},
-    {".tif", "tiff", true, false, false, AlphaStorage::Straight},
-    {".tiff", "tiff", true, false, false, AlphaStorage::Straight},
-    {".exr", "openexr", false, false, false, AlphaStorage::Premultiplied},
-    {".hdr", "hdr", false, true, false, AlphaStorage::None},
-    {".gif", "gif", true, true, false, AlphaStorage::None},
+    {".png", "png", true, false, builtinPngWriter, AlphaStorage::Straight},
+    {".jpg", "jpeg", true, false, nullptr, AlphaStorage::None},
+    {".jpeg", "jpeg", true, false, nullptr, AlphaStorage::None},
+    {".tif", "tiff", true, false, nullptr, AlphaStorage::Straight},
+    {".tiff", "tiff", true, false, nullptr, AlphaStorage::Straight},
+    {".exr", "openexr", false, false, builtinExrWriter, AlphaStorage::Premultiplied},
+    {".hdr", "hdr", false, true, nullptr, AlphaStorage::None},
+    {".gif", "gif", true, true, nullptr, AlphaStorage::None},
 };
 
 std::string lowerExtension(const std::string& path) {
@@ -324,8 +326,8 @@ std::unique_ptr<ImageStream> ImageStream::open(const std::string& path, int widt
         return nullptr;
     }
     if (!checkTarget(path, error)) return nullptr;
-    const CrtImageIoModule* module = format->builtin
-                                         ? &builtinPngWriter()
+    const CrtImageIoModule* module = format->builtinWriter
+                                         ? &format->builtinWriter()
                                          : moduleFor("cannot write " + quotedName(path), error);
     if (!module) return nullptr;
 
