@@ -39,27 +39,15 @@ double Emitters::coneSolidAngle(const Source& s, const Vec3& from) {
     return d > s.radius * (1 + 1e-9) ? 2 * kPi * oneMinusCosMax(s.radius, d) : 0;
 }
 
-const Transform* Emitters::primitiveToWorld(const Source& s) const {
-    const RenderScene& owner = ownerOf(s);
-    const int32_t t = owner.primitives[static_cast<size_t>(s.primitive)].transform;
-    return t >= 0 ? &owner.transforms[static_cast<size_t>(t)].toWorld : nullptr;
-}
-
-const TransformPair* Emitters::instanceTransform(const Source& s) const {
-    if (s.instance < 0) return nullptr;
-    const int32_t t = scene_.instances[static_cast<size_t>(s.instance)].transform;
-    return t >= 0 ? &scene_.transforms[static_cast<size_t>(t)] : nullptr;
-}
-
-void Emitters::placeCone(Source& s, const SphereGeometry& sphere) const {
+void Emitters::placeCone(Source& s, const SphereGeometry& sphere) {
     Vec3 center = sphere.center();
     double radius = sphere.radius();
     // Only a similarity keeps a sphere a sphere: rotation, translation, uniform scale.
-    for (const Transform* toWorld : {primitiveToWorld(s), instanceTransform(s) ? &instanceTransform(s)->toWorld : nullptr}) {
-        if (!toWorld) continue;
-        const double scale = similarityScale(toWorld->linear());
+    for (const TransformPair* transform : {s.shape, s.drawing}) {
+        if (!transform) continue;
+        const double scale = similarityScale(transform->toWorld.linear());
         if (!(scale > 0)) return;
-        center = toWorld->point(center);
+        center = transform->toWorld.point(center);
         radius *= scale;
     }
     s.center = center;
@@ -86,7 +74,14 @@ void Emitters::addSources(const RenderScene& owner, int32_t instance, std::vecto
         const ShadingMaterial& m = scene_.materials[static_cast<size_t>(material)];
         const double glow = luminance(rgb(m.emission));
         if (m.blend >= 0 || glow <= 0) continue;
-        Source s{instance, static_cast<int32_t>(p), -1, inCsg[p]};
+        Source s;
+        s.instance = instance;
+        s.primitive = static_cast<int32_t>(p);
+        s.geometry = &primitive.geometry;
+        s.shape = primitive.transform >= 0 ? &owner.transforms[static_cast<size_t>(primitive.transform)] : nullptr;
+        s.drawing = drawing;
+        s.mayBeCarved = inCsg[p];
+        s.radiance = rgb(m.emission);
         if (const MeshGeometry* mesh = shapeIf<MeshGeometry>(primitive.geometry)) {
             FaceTable table;
             table.cumulative.assign(1, 0.0);
@@ -107,9 +102,8 @@ void Emitters::addSources(const RenderScene& owner, int32_t instance, std::vecto
         }
         // Power is only the chance of being chosen: the transforms' scale is taken as uniform.
         double scale2 = 1;
-        for (const Transform* toWorld : {primitive.transform >= 0 ? &owner.transforms[static_cast<size_t>(primitive.transform)].toWorld : nullptr,
-                                         drawing ? &drawing->toWorld : nullptr})
-            if (toWorld) scale2 *= std::pow(std::abs(glm::determinant(toWorld->linear())), 2.0 / 3.0);
+        for (const TransformPair* transform : {s.shape, s.drawing})
+            if (transform) scale2 *= std::pow(std::abs(glm::determinant(transform->toWorld.linear())), 2.0 / 3.0);
         sourceOf_.emplace(key(instance, s.primitive), static_cast<int32_t>(sources_.size()));
         sources_.push_back(s);
         power.push_back(glow * s.objectArea * scale2);
@@ -126,23 +120,20 @@ Emitters::Emitters(const RenderScene& scene) : scene_(scene) {
     for (double& c : cumulative_) c /= total;
 }
 
-double Emitters::areaDensity(const Source& s, const Vec3& normal) const {
+double Emitters::areaDensity(const Source& s, const Vec3& normal) {
     // The area of a world element over the area of the object element it comes from, through
     // the instance's transform and then the primitive's.
     double toObject = 1;
     Vec3 n = normal;
-    if (const TransformPair* drawing = instanceTransform(s)) {
-        toObject *= drawing->toObject.areaScale(n);
-        n = drawing->toObject.normal(n);
+    if (s.drawing) {
+        toObject *= s.drawing->toObject.areaScale(n);
+        n = s.drawing->toObject.normal(n);
     }
-    const RenderScene& owner = ownerOf(s);
-    if (const int32_t t = owner.primitives[static_cast<size_t>(s.primitive)].transform; t >= 0)
-        toObject *= owner.transforms[static_cast<size_t>(t)].toObject.areaScale(n);
+    if (s.shape) toObject *= s.shape->toObject.areaScale(n);
     return toObject / s.objectArea;
 }
 
 AreaSample Emitters::pointOn(const Source& s, const Vec2& u) const {
-    const Primitive& primitive = ownerOf(s).primitives[static_cast<size_t>(s.primitive)];
     AreaSample point;
     if (s.faces >= 0) {
         // The face by the share of the area u.x falls in, then u.x stretched over that face.
@@ -151,20 +142,14 @@ AreaSample Emitters::pointOn(const Source& s, const Vec2& u) const {
         const double width = cumulative[face + 1] - cumulative[face];
         const double along = width > 0 ? std::clamp((u.x - cumulative[face]) / width, 0.0, std::nextafter(1.0, 0.0)) : 0.0;
         Vec3 corners[3];
-        shapeIf<MeshGeometry>(primitive.geometry)->mesh().corners(static_cast<uint32_t>(face), corners);
+        shapeIf<MeshGeometry>(*s.geometry)->mesh().corners(static_cast<uint32_t>(face), corners);
         point = sampleTriangle(corners, {along, u.y});
     } else {
-        point = sampleArea(primitive.geometry, u);
+        point = sampleArea(*s.geometry, u);
     }
-    for (const Transform* toWorld : {primitiveToWorld(s), instanceTransform(s) ? &instanceTransform(s)->toWorld : nullptr})
-        if (toWorld) point = {toWorld->point(point.point), toWorld->normal(point.normal)};
+    for (const TransformPair* transform : {s.shape, s.drawing})
+        if (transform) point = {transform->toWorld.point(point.point), transform->toWorld.normal(point.normal)};
     return point;
-}
-
-Vec3 Emitters::radianceOf(const Source& s) const {
-    const int32_t own = ownerOf(s).primitives[static_cast<size_t>(s.primitive)].material;
-    const int32_t material = own >= 0 ? own : scene_.instances[static_cast<size_t>(s.instance)].material;
-    return rgb(scene_.materials[static_cast<size_t>(material)].emission);
 }
 
 bool Emitters::sample(const Vec3& from, double pick, const Vec2& u, EmitterSample& out) const {
@@ -174,7 +159,7 @@ bool Emitters::sample(const Vec3& from, double pick, const Vec2& u, EmitterSampl
     out.mayBeCarved = s.mayBeCarved;
     out.primitive = s.primitive;
     out.instance = s.instance;
-    out.radiance = radianceOf(s);
+    out.radiance = s.radiance;
     if (s.radius > 0) {
         if (const double solidAngle = coneSolidAngle(s, from); solidAngle > 0) {
             // A direction uniform in the cone, and where it meets the sphere's near side.

@@ -41,13 +41,18 @@ public:
     double pdf(const Hit& hit, const Vec3& from, const Vec3& point, const Vec3& normal) const;
 
 private:
-    /// One emitting primitive, of the scene or of an instance's prototype.
+    /// One emitting primitive, of the scene or of an instance's prototype, with what sampling
+    /// reads of it looked up once.
     struct Source {
         int32_t instance = -1; ///< -1: the scene's own primitive
         int32_t primitive = -1;
+        const Geometry* geometry = nullptr;
+        const TransformPair* shape = nullptr;   ///< the primitive's transform, or null
+        const TransformPair* drawing = nullptr; ///< the instance's transform, or null
         int32_t faces = -1;    ///< a mesh's face table (faceTables_), or -1
         bool mayBeCarved = false;
         double objectArea = 0; ///< before any transform
+        Vec3 radiance{0.0};
         /// A sphere sampled by its cone of directions: its centre and radius in world space
         /// (radius 0 for every other source).
         Vec3 center{0.0};
@@ -58,24 +63,17 @@ private:
         std::vector<double> cumulative; ///< from 0 to 1
     };
     void addSources(const RenderScene& owner, int32_t instance, std::vector<double>& power);
-    const RenderScene& ownerOf(const Source& s) const {
-        return s.instance < 0 ? scene_ : scene_.prototypeOf(s.instance);
-    }
-    /// The source's transform before the instance's, and the instance's (either may be null).
-    const Transform* primitiveToWorld(const Source& s) const;
-    const TransformPair* instanceTransform(const Source& s) const;
     /// Makes a sphere's source sampled by its cone, where its transforms keep it a sphere.
-    void placeCone(Source& s, const SphereGeometry& sphere) const;
+    static void placeCone(Source& s, const SphereGeometry& sphere);
     /// The solid angle a sphere source fills seen from `from`, or 0 from inside it.
     static double coneSolidAngle(const Source& s, const Vec3& from);
     /// The area density of the source's surface at a world point of normal `normal`.
-    double areaDensity(const Source& s, const Vec3& normal) const;
+    static double areaDensity(const Source& s, const Vec3& normal);
     /// The density of choosing `point` (normal `normal`) on source `index` by area, in solid
     /// angle at `from`, the choice of the source included; 0 edge-on.
     double areaSolidAngleDensity(size_t index, const Vec3& from, const Vec3& point, const Vec3& normal) const;
     /// A point uniform by area on the source, in world space.
     AreaSample pointOn(const Source& s, const Vec2& u) const;
-    Vec3 radianceOf(const Source& s) const;
     double chance(size_t source) const { return cumulative_[source + 1] - cumulative_[source]; }
     static uint64_t key(int32_t instance, int32_t primitive) {
         return (static_cast<uint64_t>(static_cast<uint32_t>(instance + 1)) << 32) | static_cast<uint32_t>(primitive);
