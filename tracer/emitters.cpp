@@ -4,6 +4,7 @@
 #include "tracer/lights.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace crt::tracer {
 
@@ -54,52 +55,73 @@ void Emitters::placeCone(Source& s, const SphereGeometry& sphere) {
     s.radius = radius;
 }
 
-void Emitters::addSources(const RenderScene& owner, int32_t instance, std::vector<double>& power) {
+std::vector<Emitters::Candidate> Emitters::candidatesOf(const RenderScene& owner) const {
     std::vector<bool> inCsg(owner.primitives.size(), false);
     for (const CsgTreeNode& node : owner.csgNodes)
         if (node.kind == CsgNodeKind::Leaf && node.primitive >= 0) inCsg[static_cast<size_t>(node.primitive)] = true;
-    const TransformPair* drawing = nullptr;
-    if (instance >= 0) {
-        const int32_t t = scene_.instances[static_cast<size_t>(instance)].transform;
-        if (t >= RenderScene::kFirstMovingTransform) return;
-        if (t >= 0) drawing = &scene_.transforms[static_cast<size_t>(t)];
-    }
+    std::vector<Candidate> candidates;
     for (size_t p = 0; p < owner.primitives.size(); ++p) {
         const Primitive& primitive = owner.primitives[p];
         if (primitive.transform >= RenderScene::kFirstMovingTransform) continue;
-        const int32_t material = primitive.material >= 0 || instance < 0
-                                     ? primitive.material
-                                     : scene_.instances[static_cast<size_t>(instance)].material;
+        if (primitive.material >= 0) {
+            const ShadingMaterial& m = scene_.materials[static_cast<size_t>(primitive.material)];
+            if (m.blend >= 0 || !(luminance(rgb(m.emission)) > 0)) continue;
+        }
+        candidates.push_back({static_cast<int32_t>(p), inCsg[p]});
+    }
+    return candidates;
+}
+
+int32_t Emitters::faceTableOf(const TriangleMesh& mesh, double& area) {
+    const auto [known, added] = faceTableOfMesh_.emplace(&mesh, static_cast<int32_t>(faceTables_.size()));
+    if (added) {
+        FaceTable table;
+        table.cumulative.assign(1, 0.0);
+        for (uint32_t face = 0; face < mesh.data().triangles.size(); ++face) {
+            Vec3 corners[3];
+            mesh.corners(face, corners);
+            table.cumulative.push_back(table.area += triangleArea(corners));
+        }
+        if (table.area > 0)
+            for (double& c : table.cumulative) c /= table.area;
+        faceTables_.push_back(std::move(table));
+    }
+    area = faceTables_[static_cast<size_t>(known->second)].area;
+    return known->second;
+}
+
+void Emitters::addSources(const RenderScene& owner, int32_t instance, const std::vector<Candidate>& candidates,
+                          std::vector<double>& power) {
+    const TransformPair* drawing = nullptr;
+    int32_t drawingMaterial = -1;
+    if (instance >= 0) {
+        const Instance& drawn = scene_.instances[static_cast<size_t>(instance)];
+        if (drawn.transform >= RenderScene::kFirstMovingTransform) return;
+        if (drawn.transform >= 0) drawing = &scene_.transforms[static_cast<size_t>(drawn.transform)];
+        drawingMaterial = drawn.material;
+    }
+    for (const Candidate& candidate : candidates) {
+        const Primitive& primitive = owner.primitives[static_cast<size_t>(candidate.primitive)];
+        const int32_t material = primitive.material >= 0 ? primitive.material : drawingMaterial;
         if (material < 0) continue;
         const ShadingMaterial& m = scene_.materials[static_cast<size_t>(material)];
         const double glow = luminance(rgb(m.emission));
-        if (m.blend >= 0 || glow <= 0) continue;
+        if (m.blend >= 0 || !(glow > 0)) continue;
         Source s;
         s.instance = instance;
-        s.primitive = static_cast<int32_t>(p);
+        s.primitive = candidate.primitive;
         s.geometry = &primitive.geometry;
         s.shape = primitive.transform >= 0 ? &owner.transforms[static_cast<size_t>(primitive.transform)] : nullptr;
         s.drawing = drawing;
-        s.mayBeCarved = inCsg[p];
+        s.mayBeCarved = candidate.inCsg;
         s.radiance = rgb(m.emission);
         if (const MeshGeometry* mesh = shapeIf<MeshGeometry>(primitive.geometry)) {
-            FaceTable table;
-            table.cumulative.assign(1, 0.0);
-            const TriangleMesh& tm = mesh->mesh();
-            for (uint32_t face = 0; face < tm.data().triangles.size(); ++face) {
-                Vec3 corners[3];
-                tm.corners(face, corners);
-                table.cumulative.push_back(s.objectArea += triangleArea(corners));
-            }
-            if (!(s.objectArea > 0)) continue;
-            for (double& c : table.cumulative) c /= s.objectArea;
-            s.faces = static_cast<int32_t>(faceTables_.size());
-            faceTables_.push_back(std::move(table));
+            s.faces = faceTableOf(mesh->mesh(), s.objectArea);
         } else {
             s.objectArea = sampledArea(primitive.geometry);
-            if (!(s.objectArea > 0)) continue;
             if (const SphereGeometry* sphere = shapeIf<SphereGeometry>(primitive.geometry)) placeCone(s, *sphere);
         }
+        if (!(s.objectArea > 0)) continue;
         // Power is only the chance of being chosen: the transforms' scale is taken as uniform.
         double scale2 = 1;
         for (const TransformPair* transform : {s.shape, s.drawing})
@@ -112,8 +134,14 @@ void Emitters::addSources(const RenderScene& owner, int32_t instance, std::vecto
 
 Emitters::Emitters(const RenderScene& scene) : scene_(scene) {
     std::vector<double> power;
-    addSources(scene, -1, power);
-    for (size_t i = 0; i < scene.instances.size(); ++i) addSources(scene.prototypeOf(static_cast<int32_t>(i)), static_cast<int32_t>(i), power);
+    addSources(scene, -1, candidatesOf(scene), power);
+    // A prototype's candidates are found once, however often it is drawn.
+    std::vector<std::optional<std::vector<Candidate>>> prototypeCandidates(scene.prototypes.size());
+    for (size_t i = 0; i < scene.instances.size(); ++i) {
+        const size_t prototype = static_cast<size_t>(scene.instances[i].prototype);
+        if (!prototypeCandidates[prototype]) prototypeCandidates[prototype] = candidatesOf(*scene.prototypes[prototype]);
+        addSources(*scene.prototypes[prototype], static_cast<int32_t>(i), *prototypeCandidates[prototype], power);
+    }
     double total = 0;
     cumulative_.assign(1, 0.0);
     for (double w : power) cumulative_.push_back(total += w);

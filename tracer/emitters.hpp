@@ -61,8 +61,20 @@ private:
     /// A mesh's faces by their share of its area, shared by every drawing of the mesh.
     struct FaceTable {
         std::vector<double> cumulative; ///< from 0 to 1
+        double area = 0;
     };
-    void addSources(const RenderScene& owner, int32_t instance, std::vector<double>& power);
+    /// A primitive of a scene that may glow: its own material does, or it has none and takes
+    /// the drawing's.
+    struct Candidate {
+        int32_t primitive;
+        bool inCsg;
+    };
+    std::vector<Candidate> candidatesOf(const RenderScene& owner) const;
+    /// The face table of `mesh` (made on its first use), and its area.
+    int32_t faceTableOf(const TriangleMesh& mesh, double& area);
+    /// The sources of the candidates of `owner`, the scene's own or drawn by `instance`.
+    void addSources(const RenderScene& owner, int32_t instance, const std::vector<Candidate>& candidates,
+                    std::vector<double>& power);
     /// Makes a sphere's source sampled by its cone, where its transforms keep it a sphere.
     static void placeCone(Source& s, const SphereGeometry& sphere);
     /// The solid angle a sphere source fills seen from `from`, or 0 from inside it.
@@ -83,6 +95,7 @@ private:
     std::vector<Source> sources_;
     std::vector<double> cumulative_; ///< of the chances, from 0 to 1
     std::vector<FaceTable> faceTables_;
+    std::unordered_map<const TriangleMesh*, int32_t> faceTableOfMesh_;
     std::unordered_map<uint64_t, int32_t> sourceOf_; ///< key(instance, primitive) -> source
 };
 

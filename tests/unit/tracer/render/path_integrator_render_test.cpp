@@ -176,6 +176,47 @@ TEST_CASE("path: a glowing sphere in a CSG tree or in a shared entity's drawings
     }
 }
 
+TEST_CASE("path: a glowing mesh is sampled as a light, drawn directly or in a shared entity's drawings",
+          "[render][path]") {
+    // A square of two triangles, of half-side a, glowing with Le at height h above the floor's
+    // centre: E = π Le · 4F, F the view factor from a point to an a × a rectangle above its
+    // corner, 1/(2π) · 2 · X/√(1+X²) · atan(X/√(1+X²)) with X = a/h. The floor sends back
+    // ρ/π · E. The mesh is drawn once, or inside a group of 16 drawn twice (scaled by 2, the
+    // second under the floor); each drawing's faces come from one face table.
+    constexpr double kAlbedo = 0.8, kEmission = 3, kHeight = 2, kHalf = 0.5;
+    for (const bool instanced : {false, true}) {
+        SceneMaker m;
+        scene::CameraDesc camera = lookAt({0, 1, 0}, {0, 0, 0}, 1);
+        camera.up = {0, 0, 1};
+        m.desc = pathScene(camera, 64, 1);
+        m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(kAlbedo))));
+        const double s = instanced ? 2 : 1, a = kHalf / s, y = kHeight / s;
+        auto square = std::make_shared<scene::MeshData>();
+        square->positions = {{-a, y, -a}, {a, y, -a}, {a, y, a}, {-a, y, a}};
+        square->triangles = {{{0, 1, 2}, {-1, -1, -1}, {-1, -1, -1}}, {{0, 2, 3}, {-1, -1, -1}, {-1, -1, -1}}};
+        m.desc.writtenMeshes.push_back(square);
+        scene::MeshShape shape;
+        shape.written = 0;
+        const int32_t mesh = m.entity(shape, m.material(diffuse(0, kEmission)), false);
+        if (!instanced) {
+            m.draw(mesh);
+        } else {
+            std::vector<int32_t> parts{mesh};
+            for (int k = 0; k < 15; ++k) parts.push_back(m.sphere({k, -5, 0}, 0.1, m.material(diffuse(0))));
+            const int32_t group = m.entity(scene::GroupNode{parts});
+            m.draw(m.transformed(group, {scale({s, s, s})}));
+            m.draw(m.transformed(group, {translate({0, -20, 0})}));
+        }
+        const PixelBuffer image = renderOk(m.desc);
+        const double x = kHalf / kHeight, root = std::sqrt(1 + x * x);
+        const double viewFactor = 4 * (2 * x / root * std::atan(x / root)) / (2 * kPi);
+        const Estimate e = estimate(image, 0);
+        INFO((instanced ? "instanced" : "drawn directly"));
+        checkWithin3Se(e, kAlbedo * kEmission * viewFactor);
+        CHECK(e.standardError * kSize / e.mean < 0.05);
+    }
+}
+
 TEST_CASE("path: light sampling does not light from what a CSG tree carved off an emitter", "[render][path]") {
     // A glowing sphere less a box that takes its lower half: seen from the floor below, only
     // the black cut face, with the glowing dome behind it. Points drawn on the carved half are
