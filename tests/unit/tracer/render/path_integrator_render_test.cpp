@@ -57,6 +57,28 @@ ShadingMaterial diffuse(double albedo, double emission = 0) {
     return m;
 }
 
+/// The floor (a Lambertian plane of `albedo` at y = 0) filling the view from just above its
+/// centre, where the cases below put their lights overhead.
+SceneMaker floorSeenFromAbove(int samples, int bounces, double albedo) {
+    SceneMaker m;
+    scene::CameraDesc camera = lookAt({0, 1, 0}, {0, 0, 0}, 1);
+    camera.up = {0, 0, 1};
+    m.desc = pathScene(camera, samples, bounces);
+    m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(albedo))));
+    return m;
+}
+
+/// Draws `part` as a part of a group of 16 (15 black spheres beside it) drawn twice, so an
+/// instance of one prototype each time: scaled by `s`, and again 20 under the floor, where
+/// its light does not reach. `given`: the drawings' material, for parts without their own.
+void drawInSharedEntity(SceneMaker& m, int32_t part, double s, int32_t given = -1) {
+    std::vector<int32_t> parts{part};
+    for (int k = 0; k < 15; ++k) parts.push_back(m.sphere({k, -5, 0}, 0.1, m.material(diffuse(0))));
+    const int32_t group = m.entity(scene::GroupNode{parts});
+    m.draw(m.transformed(group, {scale({s, s, s})}, given));
+    m.draw(m.transformed(group, {translate({0, -20, 0})}, given));
+}
+
 } // namespace
 
 TEST_CASE("path: inside a closed glowing sphere the light is the geometric series of its albedo",
@@ -113,11 +135,7 @@ TEST_CASE("path: a point under a glowing disc or sphere gets the irradiance of i
     };
     for (const Case& c : {Case{"disc", 0.5, false, 1}, Case{"disc scaled", 0.25, false, 2},
                           Case{"sphere", 0.5, true, 1}, Case{"sphere scaled", 0.25, true, 2}}) {
-        SceneMaker m;
-        scene::CameraDesc camera = lookAt({0, 1, 0}, {0, 0, 0}, 1); // the floor's centre fills the view
-        camera.up = {0, 0, 1};
-        m.desc = pathScene(camera, 256, 1);
-        m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(kAlbedo))));
+        SceneMaker m = floorSeenFromAbove(256, 1, kAlbedo);
         const int32_t glow = m.material(diffuse(0, kEmission));
         const double r = c.radius * c.scale;
         int32_t emitter = c.sphere ? m.sphere({0, kHeight / c.scale, 0}, c.radius, glow)
@@ -143,24 +161,14 @@ TEST_CASE("path: a glowing sphere in a CSG tree or in a shared entity's drawings
     constexpr double kAlbedo = 0.8, kEmission = 3, kHeight = 2, kRadius = 0.5;
     enum class Holder { Difference, Instance, InstanceGivesGlow, InstanceScaled };
     for (Holder holder : {Holder::Difference, Holder::Instance, Holder::InstanceGivesGlow, Holder::InstanceScaled}) {
-        SceneMaker m;
-        scene::CameraDesc camera = lookAt({0, 1, 0}, {0, 0, 0}, 1);
-        camera.up = {0, 0, 1};
-        m.desc = pathScene(camera, 64, 1);
-        m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(kAlbedo))));
+        SceneMaker m = floorSeenFromAbove(64, 1, kAlbedo);
         const int32_t glow = m.material(diffuse(0, kEmission));
         const double s = holder == Holder::InstanceScaled ? 2 : 1;
         const int32_t sphere = m.sphere({0, kHeight / s, 0}, kRadius / s, holder == Holder::InstanceGivesGlow ? -1 : glow);
-        if (holder == Holder::Difference) {
+        if (holder == Holder::Difference)
             m.draw(m.csg(scene::CsgOp::Difference, sphere, m.sphere({0, kHeight, 0}, kRadius / 2, m.material(diffuse(0)))));
-        } else {
-            std::vector<int32_t> parts{sphere};
-            for (int k = 0; k < 15; ++k) parts.push_back(m.sphere({k, -5, 0}, 0.1, m.material(diffuse(0))));
-            const int32_t group = m.entity(scene::GroupNode{parts});
-            const int32_t given = holder == Holder::InstanceGivesGlow ? glow : -1;
-            m.draw(m.transformed(group, {scale({s, s, s})}, given));
-            m.draw(m.transformed(group, {translate({0, -20, 0})}, given));
-        }
+        else
+            drawInSharedEntity(m, sphere, s, holder == Holder::InstanceGivesGlow ? glow : -1);
         std::string error;
         const auto built = buildRenderScene(m.desc, error);
         REQUIRE(built);
@@ -185,11 +193,7 @@ TEST_CASE("path: a glowing mesh is sampled as a light, drawn directly or in a sh
     // second under the floor); each drawing's faces come from one face table.
     constexpr double kAlbedo = 0.8, kEmission = 3, kHeight = 2, kHalf = 0.5;
     for (const bool instanced : {false, true}) {
-        SceneMaker m;
-        scene::CameraDesc camera = lookAt({0, 1, 0}, {0, 0, 0}, 1);
-        camera.up = {0, 0, 1};
-        m.desc = pathScene(camera, 64, 1);
-        m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(kAlbedo))));
+        SceneMaker m = floorSeenFromAbove(64, 1, kAlbedo);
         const double s = instanced ? 2 : 1, a = kHalf / s, y = kHeight / s;
         auto square = std::make_shared<scene::MeshData>();
         square->positions = {{-a, y, -a}, {a, y, -a}, {a, y, a}, {-a, y, a}};
@@ -198,15 +202,10 @@ TEST_CASE("path: a glowing mesh is sampled as a light, drawn directly or in a sh
         scene::MeshShape shape;
         shape.written = 0;
         const int32_t mesh = m.entity(shape, m.material(diffuse(0, kEmission)), false);
-        if (!instanced) {
+        if (instanced)
+            drawInSharedEntity(m, mesh, s);
+        else
             m.draw(mesh);
-        } else {
-            std::vector<int32_t> parts{mesh};
-            for (int k = 0; k < 15; ++k) parts.push_back(m.sphere({k, -5, 0}, 0.1, m.material(diffuse(0))));
-            const int32_t group = m.entity(scene::GroupNode{parts});
-            m.draw(m.transformed(group, {scale({s, s, s})}));
-            m.draw(m.transformed(group, {translate({0, -20, 0})}));
-        }
         const PixelBuffer image = renderOk(m.desc);
         const double x = kHalf / kHeight, root = std::sqrt(1 + x * x);
         const double viewFactor = 4 * (2 * x / root * std::atan(x / root)) / (2 * kPi);
@@ -222,11 +221,7 @@ TEST_CASE("path: light sampling does not light from what a CSG tree carved off a
     // the black cut face, with the glowing dome behind it. Points drawn on the carved half are
     // in plain view of the floor (the box is no surface outside the sphere), so they must be
     // seen not to be there: the floor stays black. With them counted, it would get ρ/π · E.
-    SceneMaker m;
-    scene::CameraDesc camera = lookAt({0, 1, 0}, {0, 0, 0}, 1);
-    camera.up = {0, 0, 1};
-    m.desc = pathScene(camera, 16, 1);
-    m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(0.8))));
+    SceneMaker m = floorSeenFromAbove(16, 1, 0.8);
     const int32_t glowing = m.sphere({0, 2, 0}, 0.5, m.material(diffuse(0, 3)));
     m.draw(m.csg(scene::CsgOp::Difference, glowing, m.box({-1, 1.2, -1}, {1, 2, 1}, m.material(diffuse(0)))));
     const PixelBuffer image = renderOk(m.desc);
