@@ -126,7 +126,13 @@ void Emitters::addSources(const RenderScene& owner, int32_t instance, const std:
         double scale2 = 1;
         for (const TransformPair* transform : {s.shape, s.drawing})
             if (transform) scale2 *= std::pow(std::abs(glm::determinant(transform->toWorld.linear())), 2.0 / 3.0);
-        sourceOf_.emplace(key(instance, s.primitive), static_cast<int32_t>(sources_.size()));
+        const auto index = static_cast<int32_t>(sources_.size());
+        if (instance < 0) {
+            if (sourceOfPrimitive_.empty()) sourceOfPrimitive_.assign(owner.primitives.size(), -1);
+            sourceOfPrimitive_[static_cast<size_t>(s.primitive)] = index;
+        } else {
+            sourceOfInstancePart_.emplace(key(instance, s.primitive), index);
+        }
         sources_.push_back(s);
         power.push_back(glow * s.objectArea * scale2);
     }
@@ -221,9 +227,15 @@ double Emitters::areaSolidAngleDensity(size_t index, const Vec3& from, const Vec
 
 double Emitters::pdf(const Hit& hit, const Vec3& from, const Vec3& point, const Vec3& normal) const {
     if (hit.primitive < 0) return 0;
-    const auto found = sourceOf_.find(key(hit.instance, hit.primitive));
-    if (found == sourceOf_.end()) return 0;
-    const size_t index = static_cast<size_t>(found->second);
+    int32_t source = -1;
+    if (hit.instance < 0) {
+        if (!sourceOfPrimitive_.empty()) source = sourceOfPrimitive_[static_cast<size_t>(hit.primitive)];
+    } else if (const auto found = sourceOfInstancePart_.find(key(hit.instance, hit.primitive));
+               found != sourceOfInstancePart_.end()) {
+        source = found->second;
+    }
+    if (source < 0) return 0;
+    const size_t index = static_cast<size_t>(source);
     const Source& s = sources_[index];
     if (s.radius > 0) {
         if (const double solidAngle = coneSolidAngle(s, from); solidAngle > 0) {

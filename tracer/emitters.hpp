@@ -96,7 +96,11 @@ private:
     std::vector<double> cumulative_; ///< of the chances, from 0 to 1
     std::vector<FaceTable> faceTables_;
     std::unordered_map<const TriangleMesh*, int32_t> faceTableOfMesh_;
-    std::unordered_map<uint64_t, int32_t> sourceOf_; ///< key(instance, primitive) -> source
+    /// The source of each of the scene's own primitives (-1: none; empty when none is one), and
+    /// of a part of a drawing, by key(instance, primitive): a vector would hold an entry for
+    /// every primitive of every drawing.
+    std::vector<int32_t> sourceOfPrimitive_;
+    std::unordered_map<uint64_t, int32_t> sourceOfInstancePart_;
 };
 
 } // namespace crt::tracer
