@@ -3,10 +3,18 @@
 # bits as crtc alone; a rank that fails or is killed ends the job with an error and no image.
 # Under mpirun, a missing MPI module is a clear error (tests/cli/loaded_libraries.sh checks
 # that crtc alone loads no MPI library).
-#   run.sh stills|animation|frames|frame_failure|frame_continue|failure|killed|interrupted|missing_module|transport CRTC
+#   run.sh stills|animation|frames|frame_failure|frame_continue|failure|killed|interrupted|missing_module|transport CRTC [SANITIZED]
 set -u
 case_name=$1
 crtc=$(realpath "$2") # absolute: some checks run crtc from other folders
+# The numbers of processes and threads the comparisons with crtc alone go through. Under the
+# sanitizers (SANITIZED 1) a process takes seconds to start and these tests run one at a time,
+# so there they take the ends of each range; the Release suite takes every count.
+if [ "${3:-0}" = 1 ]; then
+    process_counts="1 3" thread_counts="2"
+else
+    process_counts="1 2 3" thread_counts="1 2"
+fi
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -43,8 +51,8 @@ fi
 same_as_alone() { # description reference output crtc-arguments...
     local what=$1 reference=$2 output=$3
     shift 3
-    for processes in 1 2 3; do
-        for threads in 1 2; do
+    for processes in $process_counts; do
+        for threads in $thread_counts; do
             rm -f "$output"
             expect_status 0 "$what, $processes processes" mpi "$processes" --quiet --threads "$threads" "$@"
             cmp -s "$reference" "$output" ||
@@ -93,19 +101,15 @@ stills() {
     expect_status 0 "--aov" mpi 3 --quiet --integrator path --samples 8 --aov variance,normal "$here/still.crt" \
         -o "$work/aov_shared.hdr"
     for aov in variance normal; do
-        # (EXR files carry the time they were written: their pixels are compared)
-        idiff -fail 0 -warn 0 "$work/aov_alone.$aov.exr" "$work/aov_shared.$aov.exr" >/dev/null ||
-            fail "the $aov AOV over 3 processes differs"
+        cmp -s "$work/aov_alone.$aov.exr" "$work/aov_shared.$aov.exr" || fail "the $aov AOV over 3 processes differs"
     done
     # A time limit: each process refines its share of the tiles until rank 0's deadline. One
     # the render does not reach leaves the image as it is without it; one it reaches still
     # gives every pixel of every share its paths.
     "$crtc" --quiet --integrator path --samples 8 "$here/still.crt" -o "$work/tl_alone.hdr"
-    for processes in 2 3; do
-        expect_status 0 "--time-limit not reached, $processes processes" mpi "$processes" --quiet --integrator path \
-            --samples 8 --time-limit 1000 "$here/still.crt" -o "$work/tl.hdr"
-        cmp -s "$work/tl_alone.hdr" "$work/tl.hdr" || fail "--time-limit not reached over $processes processes changes the image"
-    done
+    expect_status 0 "--time-limit not reached" mpi 2 --quiet --integrator path --samples 8 --time-limit 1000 \
+        "$here/still.crt" -o "$work/tl.hdr"
+    cmp -s "$work/tl_alone.hdr" "$work/tl.hdr" || fail "--time-limit not reached over 2 processes changes the image"
     expect_status 0 "--time-limit reached" mpi 3 --stats --integrator path --samples 1000000 --time-limit 1 \
         "$here/still.crt" -o "$work/tl.hdr"
     expect_text "$work/err" "^crtc: stats: paths a pixel: fewest [1-9][0-9]*, mean [0-9.]+, most [1-9][0-9]*;" \
@@ -120,7 +124,7 @@ animation() {
     mkdir "$work/alone" "$work/shared"
     "$crtc" --quiet --frames 6 "$here/animation.crt" -o "$work/alone/f_%02d.png"
     "$crtc" --quiet --frames 6 "$here/animation.crt" -o "$work/alone.gif"
-    for processes in 1 2 3; do
+    for processes in $process_counts; do
         rm -f "$work"/shared/*
         expect_status 0 "numbered frames, $processes processes" mpi "$processes" --stats --frames 6 \
             "$here/animation.crt" -o "$work/shared/f_%02d.png"
@@ -150,8 +154,8 @@ frames() {
     "$crtc" --quiet --stats --frames 9 "$here/moving.crt" -o "$work/alone/f_%02d.png" \
         >"$work/alone.out" 2>"$work/alone.err"
     "$crtc" --quiet --frames 9 "$here/moving.crt" -o "$work/alone.gif" >/dev/null
-    for processes in 1 2 3; do
-        for threads in 1 2; do
+    for processes in $process_counts; do
+        for threads in $thread_counts; do
             rm -f "$work"/shared/*
             expect_status 0 "9 frames, $processes processes x $threads threads" mpi "$processes" \
                 --quiet --stats --threads "$threads" --frames 9 "$here/moving.crt" -o "$work/shared/f_%02d.png"
