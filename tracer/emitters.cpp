@@ -75,18 +75,17 @@ std::vector<Emitters::Candidate> Emitters::candidatesOf(const RenderScene& owner
 int32_t Emitters::faceTableOf(const TriangleMesh& mesh, double& area) {
     const auto [known, added] = faceTableOfMesh_.emplace(&mesh, static_cast<int32_t>(faceTables_.size()));
     if (added) {
-        FaceTable table;
-        table.cumulative.assign(1, 0.0);
+        std::vector<double> areas;
+        areas.reserve(mesh.data().triangles.size());
         for (uint32_t face = 0; face < mesh.data().triangles.size(); ++face) {
             Vec3 corners[3];
             mesh.corners(face, corners);
-            table.cumulative.push_back(table.area += triangleArea(corners));
+            areas.push_back(triangleArea(corners));
         }
-        if (table.area > 0)
-            for (double& c : table.cumulative) c /= table.area;
-        faceTables_.push_back(std::move(table));
+        faceTables_.emplace_back(std::move(areas));
     }
-    area = faceTables_[static_cast<size_t>(known->second)].area;
+    const Distribution1D& faces = faceTables_[static_cast<size_t>(known->second)];
+    area = faces.mean() * static_cast<double>(faces.size());
     return known->second;
 }
 
@@ -170,11 +169,13 @@ double Emitters::areaDensity(const Source& s, const Vec3& normal) {
 AreaSample Emitters::pointOn(const Source& s, const Vec2& u) const {
     AreaSample point;
     if (s.faces >= 0) {
-        // The face by the share of the area u.x falls in, then u.x stretched over that face.
-        const std::vector<double>& cumulative = faceTables_[static_cast<size_t>(s.faces)].cumulative;
-        const size_t face = pickIndex(cumulative, u.x);
-        const double width = cumulative[face + 1] - cumulative[face];
-        const double along = width > 0 ? std::clamp((u.x - cumulative[face]) / width, 0.0, std::nextafter(1.0, 0.0)) : 0.0;
+        // The face by its share of the area, then where u.x fell within that share, stretched
+        // over [0, 1).
+        const Distribution1D& faces = faceTables_[static_cast<size_t>(s.faces)];
+        size_t face = 0;
+        double pdf = 0;
+        const double x = faces.sample(u.x, face, pdf) * static_cast<double>(faces.size());
+        const double along = std::clamp(x - static_cast<double>(face), 0.0, std::nextafter(1.0, 0.0));
         Vec3 corners[3];
         shapeIf<MeshGeometry>(*s.geometry)->mesh().corners(static_cast<uint32_t>(face), corners);
         point = sampleTriangle(corners, {along, u.y});

@@ -1,6 +1,7 @@
 // The surfaces that glow, as lights the path integrator aims at (next-event estimation).
 #pragma once
 
+#include "tracer/distribution.hpp"
 #include "tracer/render_scene.hpp"
 
 #include <unordered_map>
@@ -49,7 +50,7 @@ private:
         const Geometry* geometry = nullptr;
         const TransformPair* shape = nullptr;   ///< the primitive's transform, or null
         const TransformPair* drawing = nullptr; ///< the instance's transform, or null
-        int32_t faces = -1;    ///< a mesh's face table (faceTables_), or -1
+        int32_t faces = -1;    ///< a mesh's faces by their areas (faceTables_), or -1
         bool mayBeCarved = false;
         double objectArea = 0; ///< before any transform
         Vec3 radiance{0.0};
@@ -57,11 +58,6 @@ private:
         /// (radius 0 for every other source).
         Vec3 center{0.0};
         double radius = 0;
-    };
-    /// A mesh's faces by their share of its area, shared by every drawing of the mesh.
-    struct FaceTable {
-        std::vector<double> cumulative; ///< from 0 to 1
-        double area = 0;
     };
     /// A primitive of a scene that may glow: its own material does, or it has none and takes
     /// the drawing's.
@@ -94,7 +90,8 @@ private:
     const RenderScene& scene_;
     std::vector<Source> sources_;
     std::vector<double> cumulative_; ///< of the chances, from 0 to 1
-    std::vector<FaceTable> faceTables_;
+    /// Each mesh's faces by their areas, shared by every drawing of the mesh.
+    std::vector<Distribution1D> faceTables_;
     std::unordered_map<const TriangleMesh*, int32_t> faceTableOfMesh_;
     /// The source of each of the scene's own primitives (-1: none; empty when none is one), and
     /// of a part of a drawing, by key(instance, primitive): a vector would hold an entry for
