@@ -1,0 +1,164 @@
+#include "tracer/bvh_split.hpp"
+
+#include <algorithm>
+
+namespace crt::tracer::bvh_build {
+
+namespace {
+
+constexpr int kBins = 12;
+constexpr int kMaxLeafItems = 4;
+
+} // namespace
+
+std::optional<Split> SplitFinder::split(size_t begin, size_t end, const RangeBounds& range, int depth) {
+    int axis = 0;
+    if (range.centroids.extent(1) > range.centroids.extent(axis)) axis = 1;
+    if (range.centroids.extent(2) > range.centroids.extent(axis)) axis = 2;
+    const bool spread = range.centroids.extent(axis) > 0;
+    if (end - begin <= 1 || !spread || depth >= kMaxDepth) return std::nullopt;
+    return chooseSplit(begin, end, axis, range);
+}
+
+RangeBounds SplitFinder::boundsOf(size_t begin, size_t end) const {
+    RangeBounds range;
+    for (size_t i = begin; i < end; ++i) range.include(items_[i]);
+    return range;
+}
+
+/// The split the surface area heuristic prefers, or none when a leaf is cheaper (the cost
+/// of a leaf is its items; of a split, half an item plus each side's items weighted by
+/// the share of the node's area its bounds take). Falls back on the median where the
+/// heuristic's split leaves a side empty.
+std::optional<Split> SplitFinder::chooseSplit(size_t begin, size_t end, int axis, const RangeBounds& range) {
+    const size_t count = end - begin;
+    if (range.centroids.extent(axis) <= 0) return std::nullopt;
+    if (count <= static_cast<size_t>(kBins)) return sortedSplit(begin, end, axis, range);
+    std::optional<Split> split = binnedSplit(begin, end, axis, range);
+    if (split && (split->mid == begin || split->mid == end)) return medianSplit(begin, end, axis);
+    return split;
+}
+
+/// Whether a split of this cost (the sum over its sides of items times area) beats a leaf.
+bool SplitFinder::splitPays(double cost, const RangeBounds& range, size_t count) {
+    const double area = range.bounds.surfaceArea();
+    return count > kMaxLeafItems || 0.5 + (area > 0 ? cost / area : 0) < static_cast<double>(count);
+}
+
+/// Halves at the median centroid along `axis`.
+Split SplitFinder::medianSplit(size_t begin, size_t end, int axis) {
+    const size_t mid = begin + (end - begin) / 2;
+    std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
+                     [axis](const BuildItem& a, const BuildItem& b) { return a.centroid()[axis] < b.centroid()[axis]; });
+    return {mid, boundsOf(begin, mid), boundsOf(mid, end)};
+}
+
+/// A few items: sorted along the axis, every split between two of them is weighed (bins
+/// would be mostly empty, and setting them up costs more than the items).
+std::optional<Split> SplitFinder::sortedSplit(size_t begin, size_t end, int axis, const RangeBounds& range) {
+    const size_t count = end - begin;
+    // Their order by centroid, sorted by insertion on keys computed once; the items are
+    // moved only where they are not in that order already.
+    float keys[kBins];
+    uint8_t order[kBins];
+    bool inOrder = true;
+    for (size_t i = 0; i < count; ++i) {
+        const float key = items_[begin + i].centroid()[axis];
+        size_t at = i;
+        for (; at > 0 && keys[at - 1] > key; --at) {
+            keys[at] = keys[at - 1];
+            order[at] = order[at - 1];
+        }
+        keys[at] = key;
+        order[at] = static_cast<uint8_t>(i);
+        inOrder = inOrder && at == i;
+    }
+    BuildItem sorted[kBins];
+    for (size_t i = 0; i < count; ++i) sorted[i] = items_[begin + order[i]];
+    if (!inOrder) std::copy(sorted, sorted + count, items_.begin() + static_cast<ptrdiff_t>(begin));
+    // The area of the items from i on, then the cost of splitting before each i.
+    double aboveArea[kBins];
+    Box4 above;
+    for (size_t i = count - 1; i >= 1; --i) {
+        above.include(sorted[i].loLanes(), sorted[i].hiLanes());
+        aboveArea[i] = above.surfaceArea();
+    }
+    Box4 below;
+    size_t best = 0;
+    double bestCost = kInfinity;
+    for (size_t i = 1; i < count; ++i) {
+        below.include(sorted[i - 1].loLanes(), sorted[i - 1].hiLanes());
+        const double cost = double(i) * below.surfaceArea() + double(count - i) * aboveArea[i];
+        if (cost < bestCost) {
+            bestCost = cost;
+            best = i;
+        }
+    }
+    if (!splitPays(bestCost, range, count)) return std::nullopt;
+    const size_t mid = begin + best;
+    return Split{mid, boundsOf(begin, mid), boundsOf(mid, end)};
+}
+
+/// Many items: binned by centroid along the axis, the splits between bins weighed.
+std::optional<Split> SplitFinder::binnedSplit(size_t begin, size_t end, int axis, const RangeBounds& range) {
+    const size_t count = end - begin;
+    // Neighbouring items mostly fall into the same bin, and growing a bin waits for its
+    // last update: two sets of bins, for the even and the odd items, halve that wait.
+    RangeBounds lanes[2][kBins];
+    int laneCount[2][kBins] = {};
+    const double lo = range.centroids.lo[axis];
+    const double scale = kBins / range.centroids.extent(axis);
+    for (size_t i = begin; i < end; ++i) {
+        BuildItem& item = items_[i];
+        // Both halves read before the bin is written into the second: a read overlapping
+        // a write just made waits for it.
+        const Float4 l = item.loLanes(), h = item.hiLanes();
+        const Float4 centroid = BuildItem::centroidOf(l, h);
+        const int b = std::clamp(static_cast<int>((centroid[axis] - lo) * scale), 0, kBins - 1);
+        const size_t lane = i & 1;
+        ++laneCount[lane][b];
+        lanes[lane][b].bounds.include(l, h);
+        lanes[lane][b].centroids.include(centroid, centroid);
+        item.bin = static_cast<uint32_t>(b);
+    }
+    RangeBounds bins[kBins];
+    int binCount[kBins];
+    for (int b = 0; b < kBins; ++b) {
+        bins[b] = lanes[0][b];
+        bins[b].include(lanes[1][b]);
+        binCount[b] = laneCount[0][b] + laneCount[1][b];
+    }
+    // The cost of each split: the items on each side times the area of their bounds.
+    double costs[kBins - 1] = {};
+    Box4 below;
+    int countBelow = 0;
+    for (int i = 0; i < kBins - 1; ++i) {
+        below.include(bins[i].bounds);
+        countBelow += binCount[i];
+        costs[i] = countBelow * below.surfaceArea();
+    }
+    Box4 above;
+    int countAbove = 0;
+    for (int i = kBins - 1; i >= 1; --i) {
+        above.include(bins[i].bounds);
+        countAbove += binCount[i];
+        costs[i - 1] += countAbove * above.surfaceArea();
+    }
+    int best = -1;
+    double bestCost = kInfinity;
+    for (int i = 0; i < kBins - 1; ++i) {
+        if (costs[i] < bestCost) {
+            bestCost = costs[i];
+            best = i;
+        }
+    }
+    if (!splitPays(bestCost, range, count)) return std::nullopt;
+    Split split{begin, {}, {}};
+    for (int i = 0; i < kBins; ++i) (i <= best ? split.below : split.above).include(bins[i]);
+    auto second = std::partition(items_.begin() + begin, items_.begin() + end,
+                                 [&](const BuildItem& item) { return static_cast<int>(item.bin) <= best; });
+    split.mid = static_cast<size_t>(second - items_.begin());
+    return split;
+}
+
+} // namespace crt::tracer::bvh_build
