@@ -29,6 +29,9 @@ using bvh_build::SplitFinder;
 // millisecond or less, not worth a thread of their own.
 constexpr size_t kParallelItems = 8192;
 
+/// Node reservations of more bytes are left as they are after the build.
+constexpr size_t kSmallReservation = size_t{1} << 20;
+
 /// Frees a vector's memory (assigning {} keeps it: that assigns an empty initializer list).
 template <typename T> void release(std::vector<T>& v) { std::vector<T>().swap(v); }
 
@@ -37,10 +40,11 @@ template <typename T> void release(std::vector<T>& v) { std::vector<T>().swap(v)
 /// which child its parent opens next.
 struct Span {
     size_t begin, end;
-    RangeBounds range;
-    int depth; ///< splits above it
-    std::optional<Split> split;
+    bvh_build::Box4 bounds;
     double area; ///< of its bounds, which decides the child opened next
+    int depth;   ///< splits above it
+    bool inner;  ///< split, into `split`'s two sides
+    Split split;
 };
 
 /// The wide nodes and leaf lists of a tree, or of a subtree built on a thread of its own
@@ -78,10 +82,11 @@ public:
     WideBuilder(std::vector<BuildItem>& items, const std::vector<int32_t>& ids)
         : finder_(items), items_(items), ids_(ids) {}
 
-    Span span(size_t begin, size_t end, const RangeBounds& range, int depth) {
-        return {begin, end, range, depth, finder_.split(begin, end, range, depth), range.bounds.surfaceArea()};
+    Span root() {
+        Span span;
+        fill(span, 0, items_.size(), finder_.boundsOf(0, items_.size()), 0);
+        return span;
     }
-    Span root() { return span(0, items_.size(), finder_.boundsOf(0, items_.size()), 0); }
 
     /// Builds the node over `span` and its subtree at the end of `tree`; the inner children
     /// of nodes fewer than `parallelLevels` levels down get threads of their own. Returns
@@ -99,10 +104,10 @@ public:
         for (size_t slot = 0; slot < childCount; ++slot) {
             const Span& child = children[slot];
             for (int axis = 0; axis < 3; ++axis) {
-                node.faces[axis][slot] = child.range.bounds.lo[axis];
-                node.faces[3 + axis][slot] = child.range.bounds.hi[axis];
+                node.faces[axis][slot] = child.bounds.lo[axis];
+                node.faces[3 + axis][slot] = child.bounds.hi[axis];
             }
-            if (!child.split) {
+            if (!child.inner) {
                 node.child[slot] = leaf(child, tree);
                 continue;
             }
@@ -124,29 +129,39 @@ private:
     /// a lone leaf at the root), then the inner child of largest surface area opened until
     /// there are four.
     size_t gather(const Span& span, Span (&children)[4]) {
-        if (!span.split) {
+        if (!span.inner) {
             children[0] = span;
             return 1;
         }
-        size_t childCount = 0;
-        for (const Span& side : sides(span)) children[childCount++] = side;
+        divide(span, children[0], children[1]);
+        size_t childCount = 2;
         while (childCount < 4) {
             int widest = -1;
             for (size_t i = 0; i < childCount; ++i)
-                if (children[i].split && (widest < 0 || children[i].area > children[widest].area))
+                if (children[i].inner && (widest < 0 || children[i].area > children[widest].area))
                     widest = static_cast<int>(i);
             if (widest < 0) break;
-            auto [first, second] = sides(children[widest]);
-            children[widest] = first;
-            children[childCount++] = second;
+            const Span opened = children[widest]; // its place takes its first side
+            divide(opened, children[widest], children[childCount++]);
         }
         return childCount;
     }
 
     /// The two sides of an inner span's split, each with its own split found.
-    std::array<Span, 2> sides(const Span& parent) {
-        const Split& s = *parent.split;
-        return {span(parent.begin, s.mid, s.below, parent.depth + 1), span(s.mid, parent.end, s.above, parent.depth + 1)};
+    void divide(const Span& parent, Span& first, Span& second) {
+        const Split& split = parent.split;
+        fill(first, parent.begin, split.mid, split.below, parent.depth + 1);
+        fill(second, split.mid, parent.end, split.above, parent.depth + 1);
+    }
+
+    /// Makes `span` the range [begin, end) of bounds `range`, finding its split.
+    void fill(Span& span, size_t begin, size_t end, const RangeBounds& range, int depth) {
+        span.begin = begin;
+        span.end = end;
+        span.bounds = range.bounds;
+        span.area = range.bounds.surfaceArea();
+        span.depth = depth;
+        span.inner = finder_.split(begin, end, range, depth, span.split);
     }
 
     /// Starts building the inner children worth a thread on threads of their own, each into
@@ -156,7 +171,7 @@ private:
         bool first = true;
         for (size_t slot = 0; slot < childCount; ++slot) {
             const Span& child = children[slot];
-            if (!child.split || child.end - child.begin < kParallelItems) continue;
+            if (!child.inner || child.end - child.begin < kParallelItems) continue;
             if (std::exchange(first, false)) continue;
             parts[slot].nodes.reserve(child.end - child.begin - 1);
             try {
@@ -257,7 +272,9 @@ void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::ve
     release(items);
     nodes_ = std::move(tree.nodes);
     items_ = std::move(tree.items);
-    nodes_.shrink_to_fit();
+    // A large reservation's untouched tail takes no memory (such allocations are mapped
+    // apart, page by page), so only a small one is given back, which copies little.
+    if (nodes_.capacity() * sizeof(WideBvhNode) < kSmallReservation) nodes_.shrink_to_fit();
     items_.shrink_to_fit();
 }
 

@@ -193,9 +193,10 @@ public:
     bool empty() const { return nodes_.empty(); }
     size_t nodeCount() const { return nodes_.size(); }
     int depth() const { return depth_; }
-    /// The bytes its nodes and items take (beyond the Bvh itself).
+    /// The bytes its nodes and items take (beyond the Bvh itself); the nodes' spare capacity,
+    /// never written, is not counted.
     uint64_t byteSize() const {
-        return nodes_.capacity() * sizeof(WideBvhNode) + items_.capacity() * sizeof(int32_t) +
+        return nodes_.size() * sizeof(WideBvhNode) + items_.capacity() * sizeof(int32_t) +
                fewItems_.capacity() * sizeof(FewItem);
     }
 

@@ -11,13 +11,13 @@ constexpr int kMaxLeafItems = 4;
 
 } // namespace
 
-std::optional<Split> SplitFinder::split(size_t begin, size_t end, const RangeBounds& range, int depth) {
+bool SplitFinder::split(size_t begin, size_t end, const RangeBounds& range, int depth, Split& split) {
     int axis = 0;
     if (range.centroids.extent(1) > range.centroids.extent(axis)) axis = 1;
     if (range.centroids.extent(2) > range.centroids.extent(axis)) axis = 2;
     const bool spread = range.centroids.extent(axis) > 0;
-    if (end - begin <= 1 || !spread || depth >= kMaxDepth) return std::nullopt;
-    return chooseSplit(begin, end, axis, range);
+    if (end - begin <= 1 || !spread || depth >= kMaxDepth) return false;
+    return chooseSplit(begin, end, axis, range, split);
 }
 
 RangeBounds SplitFinder::boundsOf(size_t begin, size_t end) const {
@@ -30,13 +30,13 @@ RangeBounds SplitFinder::boundsOf(size_t begin, size_t end) const {
 /// of a leaf is its items; of a split, half an item plus each side's items weighted by
 /// the share of the node's area its bounds take). Falls back on the median where the
 /// heuristic's split leaves a side empty.
-std::optional<Split> SplitFinder::chooseSplit(size_t begin, size_t end, int axis, const RangeBounds& range) {
+bool SplitFinder::chooseSplit(size_t begin, size_t end, int axis, const RangeBounds& range, Split& split) {
     const size_t count = end - begin;
-    if (range.centroids.extent(axis) <= 0) return std::nullopt;
-    if (count <= static_cast<size_t>(kBins)) return sortedSplit(begin, end, axis, range);
-    std::optional<Split> split = binnedSplit(begin, end, axis, range);
-    if (split && (split->mid == begin || split->mid == end)) return medianSplit(begin, end, axis);
-    return split;
+    if (range.centroids.extent(axis) <= 0) return false;
+    if (count <= static_cast<size_t>(kBins)) return sortedSplit(begin, end, axis, range, split);
+    if (!binnedSplit(begin, end, axis, range, split)) return false;
+    if (split.mid == begin || split.mid == end) medianSplit(begin, end, axis, split);
+    return true;
 }
 
 /// Whether a split of this cost (the sum over its sides of items times area) beats a leaf.
@@ -46,16 +46,16 @@ bool SplitFinder::splitPays(double cost, const RangeBounds& range, size_t count)
 }
 
 /// Halves at the median centroid along `axis`.
-Split SplitFinder::medianSplit(size_t begin, size_t end, int axis) {
+void SplitFinder::medianSplit(size_t begin, size_t end, int axis, Split& split) {
     const size_t mid = begin + (end - begin) / 2;
     std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
                      [axis](const BuildItem& a, const BuildItem& b) { return a.centroid()[axis] < b.centroid()[axis]; });
-    return {mid, boundsOf(begin, mid), boundsOf(mid, end)};
+    split = {mid, boundsOf(begin, mid), boundsOf(mid, end)};
 }
 
 /// A few items: sorted along the axis, every split between two of them is weighed (bins
 /// would be mostly empty, and setting them up costs more than the items).
-std::optional<Split> SplitFinder::sortedSplit(size_t begin, size_t end, int axis, const RangeBounds& range) {
+bool SplitFinder::sortedSplit(size_t begin, size_t end, int axis, const RangeBounds& range, Split& split) {
     const size_t count = end - begin;
     // Their order by centroid, sorted by insertion on keys computed once; the items are
     // moved only where they are not in that order already.
@@ -94,13 +94,14 @@ std::optional<Split> SplitFinder::sortedSplit(size_t begin, size_t end, int axis
             best = i;
         }
     }
-    if (!splitPays(bestCost, range, count)) return std::nullopt;
+    if (!splitPays(bestCost, range, count)) return false;
     const size_t mid = begin + best;
-    return Split{mid, boundsOf(begin, mid), boundsOf(mid, end)};
+    split = {mid, boundsOf(begin, mid), boundsOf(mid, end)};
+    return true;
 }
 
 /// Many items: binned by centroid along the axis, the splits between bins weighed.
-std::optional<Split> SplitFinder::binnedSplit(size_t begin, size_t end, int axis, const RangeBounds& range) {
+bool SplitFinder::binnedSplit(size_t begin, size_t end, int axis, const RangeBounds& range, Split& split) {
     const size_t count = end - begin;
     // Neighbouring items mostly fall into the same bin, and growing a bin waits for its
     // last update: two sets of bins, for the even and the odd items, halve that wait.
@@ -152,13 +153,14 @@ std::optional<Split> SplitFinder::binnedSplit(size_t begin, size_t end, int axis
             best = i;
         }
     }
-    if (!splitPays(bestCost, range, count)) return std::nullopt;
-    Split split{begin, {}, {}};
+    if (!splitPays(bestCost, range, count)) return false;
+    split.below = {};
+    split.above = {};
     for (int i = 0; i < kBins; ++i) (i <= best ? split.below : split.above).include(bins[i]);
     auto second = std::partition(items_.begin() + begin, items_.begin() + end,
                                  [&](const BuildItem& item) { return static_cast<int>(item.bin) <= best; });
     split.mid = static_cast<size_t>(second - items_.begin());
-    return split;
+    return true;
 }
 
 } // namespace crt::tracer::bvh_build

@@ -8,7 +8,6 @@
 #include <cstddef>
 #include <cstring>
 #include <limits>
-#include <optional>
 #include <vector>
 
 namespace crt::tracer::bvh_build {
@@ -132,19 +131,19 @@ public:
 
     explicit SplitFinder(std::vector<BuildItem>& items) : items_(items) {}
 
-    /// The split of items [begin, end), whose bounds are `range`, `depth` splits below the
-    /// root; none when they are to be one leaf (a single item, items whose centroids
-    /// coincide, the depth limit, or a leaf the heuristic finds cheaper).
-    std::optional<Split> split(size_t begin, size_t end, const RangeBounds& range, int depth);
+    /// Splits items [begin, end), whose bounds are `range`, `depth` splits below the root,
+    /// into `split`; false when they are to be one leaf (a single item, items whose
+    /// centroids coincide, the depth limit, or a leaf the heuristic finds cheaper).
+    bool split(size_t begin, size_t end, const RangeBounds& range, int depth, Split& split);
 
     RangeBounds boundsOf(size_t begin, size_t end) const;
 
 private:
-    std::optional<Split> chooseSplit(size_t begin, size_t end, int axis, const RangeBounds& range);
+    bool chooseSplit(size_t begin, size_t end, int axis, const RangeBounds& range, Split& split);
     static bool splitPays(double cost, const RangeBounds& range, size_t count);
-    Split medianSplit(size_t begin, size_t end, int axis);
-    std::optional<Split> sortedSplit(size_t begin, size_t end, int axis, const RangeBounds& range);
-    std::optional<Split> binnedSplit(size_t begin, size_t end, int axis, const RangeBounds& range);
+    void medianSplit(size_t begin, size_t end, int axis, Split& split);
+    bool sortedSplit(size_t begin, size_t end, int axis, const RangeBounds& range, Split& split);
+    bool binnedSplit(size_t begin, size_t end, int axis, const RangeBounds& range, Split& split);
 
     std::vector<BuildItem>& items_;
 };
