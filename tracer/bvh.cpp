@@ -1,6 +1,7 @@
 // The 4-wide BVH built top-down from binned surface-area-heuristic splits (bvh_split.hpp).
 #include "tracer/bvh.hpp"
 #include "tracer/bvh_split.hpp"
+#include "tracer/worker_threads.hpp"
 
 #include <algorithm>
 #include <array>
@@ -12,7 +13,7 @@
 #include <limits>
 #include <memory>
 #include <numeric>
-#include <optional>
+#include <span>
 #include <stdexcept>
 #include <system_error>
 
@@ -79,7 +80,7 @@ class WideBuilder {
 public:
     /// `items`: the build's items, their `index` the position in the build's input;
     /// `ids`: what each position stands for (empty: the position itself).
-    WideBuilder(std::vector<BuildItem>& items, const std::vector<int32_t>& ids)
+    WideBuilder(std::span<BuildItem> items, const std::vector<int32_t>& ids)
         : finder_(items), items_(items), ids_(ids) {}
 
     Span root() {
@@ -210,9 +211,20 @@ private:
     }
 
     SplitFinder finder_;
-    const std::vector<BuildItem>& items_;
+    std::span<const BuildItem> items_;
     const std::vector<int32_t>& ids_;
 };
+
+/// The items' float boxes, items[i] from boundsOf(i), on up to `threads` threads when there
+/// are many.
+void makeItems(std::span<BuildItem> items, FunctionRef<Bounds3(size_t)> boundsOf, unsigned threads) {
+    const size_t parts = std::clamp<size_t>(items.size() / kParallelItems, 1, threads);
+    runOnThreads(parts, [&](size_t part) {
+        const size_t end = items.size() * (part + 1) / parts;
+        for (size_t i = items.size() * part / parts; i < end; ++i)
+            items[i] = BuildItem(boundsOf(i), static_cast<int32_t>(i));
+    });
+}
 
 } // namespace
 
@@ -247,9 +259,9 @@ void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::ve
                                 return id >= 0 && static_cast<uint32_t>(id) < WideChild::kMaxItems;
                             });
     if (!numberable) throw std::length_error("BVH items must be numbers below 2^30, fewer than 2^29");
-    std::vector<BuildItem> items;
-    items.reserve(count);
-    for (size_t i = 0; i < count; ++i) items.emplace_back(boundsOf(i), static_cast<int32_t>(i));
+    std::unique_ptr<BuildItem[]> itemStore = std::make_unique_for_overwrite<BuildItem[]>(count);
+    const std::span<BuildItem> items(itemStore.get(), count);
+    makeItems(items, boundsOf, threads);
     // Levels of wide nodes whose inner children are built on threads of their own: at least
     // twice as many subtrees as threads, so that an uneven split still leaves every thread
     // busy.
@@ -269,7 +281,7 @@ void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::ve
             fewItems_.push_back({{b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z}, id});
         }
     }
-    release(items);
+    itemStore.reset();
     nodes_ = std::move(tree.nodes);
     items_ = std::move(tree.items);
     // A large reservation's untouched tail takes no memory (such allocations are mapped

@@ -184,7 +184,8 @@ public:
         build(itemBounds.size(), [&](size_t i) { return itemBounds[i]; }, threads, std::move(ids));
     }
     /// The same, asking boundsOf(i) for item i's bounds (once, or twice with few items) rather
-    /// than holding them all: a mesh's triangles need not have their boxes stored twice.
+    /// than holding them all: a mesh's triangles need not have their boxes stored twice. With
+    /// many items and threads, boundsOf is called from several threads at once.
     template <typename BoundsOf>
     void build(size_t count, BoundsOf&& boundsOf, unsigned threads = 1, std::vector<int32_t> ids = {}) {
         buildFrom(count, ItemBounds(boundsOf), threads, std::move(ids));

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstring>
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace crt::tracer::bvh_build {
@@ -129,7 +130,7 @@ public:
     /// The most splits from the root to a leaf: below the traversal stack's 64 entries.
     static constexpr int kMaxDepth = 56;
 
-    explicit SplitFinder(std::vector<BuildItem>& items) : items_(items) {}
+    explicit SplitFinder(std::span<BuildItem> items) : items_(items) {}
 
     /// Splits items [begin, end), whose bounds are `range`, `depth` splits below the root,
     /// into `split`; false when they are to be one leaf (a single item, items whose
@@ -145,7 +146,7 @@ private:
     bool sortedSplit(size_t begin, size_t end, int axis, const RangeBounds& range, Split& split);
     bool binnedSplit(size_t begin, size_t end, int axis, const RangeBounds& range, Split& split);
 
-    std::vector<BuildItem>& items_;
+    std::span<BuildItem> items_;
 };
 
 } // namespace crt::tracer::bvh_build
