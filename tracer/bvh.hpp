@@ -5,7 +5,6 @@
 #include "tracer/geometry/function_ref.hpp"
 #include "tracer/stats.hpp"
 
-#include <bit>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -120,7 +119,12 @@ struct alignas(16) WideBvhNode {
     uint32_t child[4];
 
     /// Slots holding a child (their boxes are not empty).
-    int used() const { return std::popcount(static_cast<unsigned>(laneMask(faces[0] <= faces[3]))); }
+    int used() const {
+        // Counted by hand: std::popcount is a call into libgcc on processors the build does
+        // not assume have POPCNT, and traversal asks for every node it tests.
+        const int mask = laneMask(faces[0] <= faces[3]);
+        return (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + ((mask >> 3) & 1);
+    }
 };
 
 /// A ray prepared for four-box tests in float. The ray origin is rounded to float with a
