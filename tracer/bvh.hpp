@@ -1,4 +1,4 @@
-// A bounding volume hierarchy: binned SAH build, flattened depth-first into an array.
+// A 4-wide bounding volume hierarchy: binned SAH build, laid out depth-first in an array.
 #pragma once
 
 #include "tracer/geometry/bounds.hpp"
@@ -230,8 +230,8 @@ private:
     using ItemBounds = FunctionRef<Bounds3(size_t)>;
     void buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::vector<int32_t> ids);
 
-    /// The deepest the wide tree may be: a branch of the binary build up to 56 deep
-    /// collapses to at most that many wide levels, and each level pushes at most 3.
+    /// The deepest the wide tree may be: a branch of up to 56 splits (SplitFinder::kMaxDepth)
+    /// takes at most that many wide levels, and each level pushes at most 3.
     static constexpr int kMaxWideDepth = 64;
 
     // Kept out of line so that the few-items path does not pay for its stack frame.
