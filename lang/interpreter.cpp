@@ -435,9 +435,10 @@ void Interpreter::draw(const Value& value, const Node* where) {
 
 void Interpreter::checkStoredPrimitives() {
     const uint64_t limit = options_.limits.render.maxPrimitives;
-    const scene::SceneStorage storage = scene::storageOf(scene_);
-    for (size_t i = 0; i < storage.storedAfter.size(); ++i) {
-        if (scene::saturatingAdd(storage.storedAfter[i], meshTriangles_) <= limit) continue;
+    auto storage = std::make_shared<const scene::SceneStorage>(scene::storageOf(scene_));
+    scene_.storage = storage;
+    for (size_t i = 0; i < storage->storedAfter.size(); ++i) {
+        if (scene::saturatingAdd(storage->storedAfter[i], meshTriangles_) <= limit) continue;
         failAtLimit(drawnAt_[i],
                     fmt::format("the scene stores more than {} primitives (copies count each time; "
                                 "an entity of {} or more drawn again is stored once); raise the "

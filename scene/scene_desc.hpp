@@ -691,6 +691,8 @@ struct MotionDesc {
     bool empty() const { return transforms.empty() && cameras.empty(); }
 };
 
+struct SceneStorage; // scene/instancing.hpp
+
 /// The evaluated scene.
 struct SceneDesc {
     static constexpr int kSchemaVersion = 3;
@@ -719,6 +721,10 @@ struct SceneDesc {
     int frame = 0;
     int frameCount = 1;
     RenderLimits limits; ///< not part of the script: from the evaluation's options
+    /// storageOf(*this), kept by the front end, which counts it when it has finished the
+    /// description (its limit on what a scene stores), so that the renderer does not count a
+    /// million entities again. Null in a description made otherwise: the renderer counts then.
+    std::shared_ptr<const SceneStorage> storage;
 
     /// The finish of `material`.
     const FinishDesc& finishOf(const MaterialDesc& material) const {

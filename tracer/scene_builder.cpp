@@ -45,9 +45,12 @@ public:
         if (!readHeightGrids()) return false;
         // Counted before anything is expanded (a shared entity doubled in a loop would
         // otherwise fill memory here), by the rule the front end counts by. Evaluation refuses
-        // such a scene already; this is for descriptions made otherwise.
-        shared_.storage = scene::storageOf(desc_);
-        const uint64_t stored = shared_.storage.stored();
+        // such a scene already, and leaves its count in the description; this is for
+        // descriptions made otherwise.
+        shared_.storage = desc_.storage;
+        if (!shared_.storage)
+            shared_.storage = std::make_shared<const scene::SceneStorage>(scene::storageOf(desc_));
+        const uint64_t stored = shared_.storage->stored();
         if (stored > desc_.limits.maxPrimitives) {
             error_ = fmt::format("the scene stores more than {} primitives; raise the limit "
                                  "with --max-primitives",
@@ -57,10 +60,10 @@ public:
         // Room for them from the start (a mesh drawn is one primitive, an instance none): a
         // vector growing by doubling would copy and fault in its elements about twice.
         shared_.storedPrimitives = stored;
-        const uint64_t copied = shared_.storage.copied;
+        const uint64_t copied = shared_.storage->copied;
         scene_.primitives.reserve(copied);
         scene_.primitiveEntities.reserve(copied);
-        objects_.reserve(copied + shared_.storage.instances);
+        objects_.reserve(copied + shared_.storage->instances);
         for (int32_t root : desc_.drawn)
             if (!addDrawn(root, Transform())) return false;
         finishAcceleration();
@@ -123,7 +126,7 @@ private:
                 // ray is moved into it once, and meets a tree built where they stand still,
                 // rather than each primitive's bounds swept over the shutter.
                 if (child.motion && instancing_ &&
-                    shared_.storage.expansion[static_cast<size_t>(child.entity)] >= scene::kMinInstancePrimitives) {
+                    shared_.storage->expansion[static_cast<size_t>(child.entity)] >= scene::kMinInstancePrimitives) {
                     if (!addInstance(child)) return false;
                 } else {
                     pending.push_back(std::move(child));
@@ -158,7 +161,7 @@ private:
     }
 
     bool instanced(int32_t entity) const {
-        return instancing_ && shared_.storage.instanced[static_cast<size_t>(entity)];
+        return instancing_ && shared_.storage->instanced[static_cast<size_t>(entity)];
     }
 
     /// Draws the entity as an instance of its prototype (built on its first drawing).
@@ -522,7 +525,7 @@ private:
         std::map<const scene::HeightFieldDesc*, std::shared_ptr<const HeightGrid>> heightGrids;
         /// The primitives drawn and the triangles of the meshes built so far.
         uint64_t storedPrimitives = 0;
-        scene::SceneStorage storage; ///< what is instanced
+        std::shared_ptr<const scene::SceneStorage> storage; ///< what is instanced
         std::map<int32_t, int32_t> prototypes; ///< entity -> its prototype
     };
 

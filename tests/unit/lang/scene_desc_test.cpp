@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "interpreter.hpp"
+#include "scene/instancing.hpp"
 
 #include <set>
 #include <string>
@@ -153,4 +154,30 @@ TEST_CASE("a scene warns of no lights only when nothing lights it", "[scene]") {
     CHECK(warnsNoLights("glow = Material { emission -> rgb(1, 1, 1) }\n" + with("", "")));
     // Nothing drawn: the empty scene says so instead.
     CHECK_FALSE(warnsNoLights("x = 1\n"));
+}
+
+TEST_CASE("the description keeps the count of what it stores, made once it is finished", "[scene]") {
+    // A group of 20 spheres drawn three times (stored once, each drawing an instance), then
+    // a sphere of its own: the count the renderer would make of the finished description.
+    Compilation c = compileScript(R"(
+row = Macro () {
+  for i in range(20) { Sphere { center -> vec3(i, 0, 0) radius -> 0.4 } }
+}
+r = row()
+Scene {
+  r
+  r <translate vec3(0, 1, 0)>
+  r <translate vec3(0, 2, 0)>
+  Sphere { center -> vec3(0, 5, 0) radius -> 1 }
+}
+)");
+    const t::SceneDesc& s = *c.scene;
+    REQUIRE(s.storage);
+    const t::SceneStorage counted = t::storageOf(s);
+    CHECK(s.storage->instances == 3);
+    CHECK(s.storage->stored() == 20 + 3 + 1);
+    CHECK(s.storage->storedAfter == counted.storedAfter);
+    CHECK(s.storage->expansion == counted.expansion);
+    CHECK(s.storage->instanced == counted.instanced);
+    CHECK(s.storage->copied == counted.copied);
 }
