@@ -4,18 +4,15 @@
 #include "tracer/worker_threads.hpp"
 
 #include <algorithm>
-#include <array>
-#include <bit>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <future>
 #include <limits>
 #include <memory>
-#include <numeric>
 #include <span>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
 
 namespace crt::tracer {
 
@@ -218,7 +215,7 @@ private:
 /// The items' float boxes, items[i] from boundsOf(i), on up to `threads` threads when there
 /// are many.
 void makeItems(std::span<BuildItem> items, FunctionRef<Bounds3(size_t)> boundsOf, unsigned threads) {
-    const size_t parts = std::clamp<size_t>(items.size() / kParallelItems, 1, threads);
+    const size_t parts = std::clamp<size_t>(items.size() / kParallelItems, 1, std::max(threads, 1u));
     runOnThreads(parts, [&](size_t part) {
         const size_t end = items.size() * (part + 1) / parts;
         for (size_t i = items.size() * part / parts; i < end; ++i)
@@ -284,8 +281,8 @@ void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::ve
     itemStore.reset();
     nodes_ = std::move(tree.nodes);
     items_ = std::move(tree.items);
-    // A large reservation's untouched tail takes no memory (such allocations are mapped
-    // apart, page by page), so only a small one is given back, which copies little.
+    // A large reservation is mapped apart and its pages get memory only when written, so
+    // its untouched tail costs nothing; only a small one is given back (a short copy).
     if (nodes_.capacity() * sizeof(WideBvhNode) < kSmallReservation) nodes_.shrink_to_fit();
     items_.shrink_to_fit();
 }

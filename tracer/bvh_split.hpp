@@ -4,12 +4,13 @@
 
 #include "tracer/bvh.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <span>
-#include <vector>
 
 namespace crt::tracer::bvh_build {
 
@@ -119,7 +120,7 @@ struct RangeBounds {
 
 /// Where a range of items is split, and the bounds of the two sides.
 struct Split {
-    size_t mid; ///< the first item of the second side
+    size_t mid = 0; ///< the first item of the second side
     RangeBounds below, above;
 };
 
