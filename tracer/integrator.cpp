@@ -67,6 +67,7 @@ Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& sett
       refractionLimit_(settings.refractionLimit()), hides_(scene.hidesAnything()),
       seesLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.visible(); })) {
     for (const scene::MediumDesc& medium : scene.media) media_.emplace_back(medium);
+    fillsSolids_ = fillsSolids(scene, mixer_);
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const ShadingMaterial& m = scene.materials[i];
         bool plain = mixer_.isPlain(static_cast<int32_t>(i));
@@ -113,6 +114,11 @@ Vec3 Integrator::trace(const Ray& ray, int depth, double pathLength, int32_t med
     } else {
         color = background_.radiance(ray.dir);
     }
+    return passedOnTheWay(ray, distance, color, pathLength, medium, context);
+}
+
+Vec3 Integrator::passedOnTheWay(const Ray& ray, double distance, Vec3 color, double pathLength, int32_t medium,
+                                TraceContext& context) const {
     if (medium >= 0 && scene_.materials[medium].medium >= 0) {
         color = throughMedium(ray, distance, media_[static_cast<size_t>(scene_.materials[medium].medium)], color,
                               pathLength, context);
@@ -141,11 +147,14 @@ Vec3 Integrator::seenAlong(const Ray& ray, int depth, double pathLength, int32_t
 
 glm::dvec4 Integrator::traceCamera(const Ray& ray, int depth, bool transparentBackground,
                                    TraceContext& context) const {
-    if (!transparentBackground) return {trace(ray, depth, 0, -1, context), 1};
+    const int32_t medium = fillsSolids_ ? solidAround(scene_, mixer_, hides_, ray.origin, ray.time, context.scratch,
+                                                      context.stats, context.solidAround)
+                                        : -1;
+    if (!transparentBackground) return {trace(ray, depth, 0, medium, context), 1};
     double distance;
-    const Vec3 color = seenAlong(ray, depth, 0, -1, context, {}, distance);
+    const Vec3 color = seenAlong(ray, depth, 0, medium, context, {}, distance);
     if (distance == kInfinity) return glm::dvec4(0);
-    return {fog_ ? fog_->along(ray, distance).seen(color) : color, 1};
+    return {passedOnTheWay(ray, distance, color, 0, medium, context), 1};
 }
 
 Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium,

@@ -9,6 +9,7 @@
 #include "tracer/medium.hpp"
 #include "tracer/render_scene.hpp"
 #include "tracer/sampling.hpp"
+#include "tracer/solid_around.hpp"
 #include "tracer/texture.hpp"
 
 #include <string>
@@ -31,6 +32,7 @@ struct alignas(64) TraceContext {
     int refractions = 0;   ///< refractions on the path to the point being shaded
     bool bent = false;     ///< a reflection or refraction is on the path (it is not the camera's line)
     double time = 0;       ///< the camera sample's time within the shutter: every ray of its path's
+    SolidAroundCache solidAround; ///< the solid around the camera, as last found
 };
 
 /// What the scene uses, found once so per-ray code can skip what is absent (--stats says).
@@ -77,6 +79,10 @@ private:
     /// trace() finds before fog and absorption), and how far along the ray it is (kInfinity:
     /// the background).
     /// Out of line: most scenes hide nothing and show no light, and trace() stays small.
+    /// `color`, seen `distance` along the ray through what it passes on the way: the medium
+    /// or absorption of the solid `medium` it is in, or else the fog.
+    Vec3 passedOnTheWay(const Ray& ray, double distance, Vec3 color, double pathLength, int32_t medium,
+                        TraceContext& context) const;
     [[gnu::noinline]] Vec3 seenAlong(const Ray& ray, int depth, double pathLength, int32_t medium,
                                      TraceContext& context, Departure departed, double& distance) const;
     Vec3 shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium, TraceContext& context) const;
@@ -119,6 +125,7 @@ private:
     int reflectionLimit_, refractionLimit_;
     bool hides_; ///< whether some surface is hidden from some rays
     bool seesLights_; ///< whether some light is visible
+    bool fillsSolids_; ///< whether a camera may stand in a filled solid (solid_around.hpp)
 };
 
 } // namespace crt::tracer

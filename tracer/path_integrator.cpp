@@ -56,6 +56,7 @@ PathIntegrator::PathIntegrator(const RenderScene& scene, const scene::SettingsDe
       hides_(scene.hidesAnything()),
       seesLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.visible(); })) {
     for (const ShadingMaterial& m : scene.materials) clearBoundary_.push_back(isClearBoundary(m));
+    fillsSolids_ = fillsSolids(scene, mixer_);
 }
 
 int32_t PathIntegrator::drawMaterial(const SurfaceInteraction& si, Vec3& color, Vec3& beta,
@@ -334,6 +335,9 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
                                        FirstSurface* first) const {
     Path path;
     path.ray = cameraRay;
+    if (fillsSolids_)
+        path.medium = solidAround(scene_, mixer_, hides_, cameraRay.origin, cameraRay.time, context.scratch,
+                                  context.stats, context.solidAround);
     context.rng.skipTo(firstDimensionOf(path.bounce));
     // Crossing surfaces as if they were not there (hidden, see-through, clear boundaries) takes
     // no bounce; this bounds how many a path may cross.

@@ -130,6 +130,7 @@ private:
     bool hasAreaLights_;
     bool hides_; ///< whether some surface is hidden from some rays
     bool seesLights_; ///< whether some light is visible
+    bool fillsSolids_; ///< whether a camera may stand in a filled solid (solid_around.hpp)
 };
 
 } // namespace crt::tracer

@@ -146,6 +146,30 @@ TEST_CASE("the path integrator's paths through absorbing and glowing media are B
     checkBox(pathTraced(mediumBox(medium), 4), [&](double) { return e / a * (DVec3(1.0) - loss) + kBehind * loss; });
 }
 
+TEST_CASE("a camera inside a filled solid sees through what fills it from its first step",
+          "[render][analytic][medium]") {
+    // The orthographic camera stands inside a box of glowing, absorbing medium, whose far face
+    // is kWidth ahead of every ray: each crosses kWidth of it, as through the box above.
+    scene::MediumDesc medium;
+    medium.absorption = {0.3, 0.6, 0.9, 1};
+    medium.emission = {0.4, 0.2, 0.1, 1};
+    scene::SceneDesc desc = mediumBox(medium);
+    desc.camera = lookAt({0, 1, 0}, {0, 1, 1}, 60);
+    desc.camera.projection = scene::Projection::Orthographic;
+    desc.camera.width = 1.5;
+    scene::EntityDesc& box = desc.entities.back();
+    box.shape = scene::BoxShape{{-3, -2, -3}, {3, 4, kWidth}};
+    const DVec3 a = rgbOf(medium.absorption), e = rgbOf(medium.emission);
+    const DVec3 loss = expOf(-a * kWidth);
+    const DVec3 want = e / a * (DVec3(1.0) - loss) + kBehind * loss;
+    for (const bool path : {false, true}) {
+        INFO((path ? "path" : "whitted"));
+        const PixelBuffer image = renderOk(path ? pathTraced(desc, 4) : desc);
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) CHECK(maxDifference(pixelAt(image, x, y), want) < 1e-6);
+    }
+}
+
 TEST_CASE("the path integrator tracks a medium whose density is a pattern", "[render][analytic][medium]") {
     // Each path passes or is absorbed, so the pixel is a mean.
     checkGradientDensity(pathTraced(mediumBox(gradientMedium()), 4096), 0.03);
