@@ -147,8 +147,9 @@ Vec3 Integrator::seenAlong(const Ray& ray, int depth, double pathLength, int32_t
 
 glm::dvec4 Integrator::traceCamera(const Ray& ray, int depth, bool transparentBackground,
                                    TraceContext& context) const {
-    const int32_t medium = fillsSolids_ ? solidAround(scene_, mixer_, hides_, ray.origin, ray.time, context.scratch,
-                                                      context.stats, context.solidAround)
+    // The solid the camera stands in, if it stands in a filled one.
+    const int32_t medium = fillsSolids_ ? solidAround(scene_, mixer_, hides_, ray.origin, ray.time,
+                                                      context.scratch, context.solidAround)
                                         : -1;
     if (!transparentBackground) return {trace(ray, depth, 0, medium, context), 1};
     double distance;

@@ -337,7 +337,7 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
     path.ray = cameraRay;
     if (fillsSolids_)
         path.medium = solidAround(scene_, mixer_, hides_, cameraRay.origin, cameraRay.time, context.scratch,
-                                  context.stats, context.solidAround);
+                                  context.solidAround);
     context.rng.skipTo(firstDimensionOf(path.bounce));
     // Crossing surfaces as if they were not there (hidden, see-through, clear boundaries) takes
     // no bounce; this bounds how many a path may cross.

@@ -19,7 +19,7 @@ bool fillsSolids(const RenderScene& scene, const MaterialMixer& mixer) {
 }
 
 int32_t solidAround(const RenderScene& scene, const MaterialMixer& mixer, bool hides, const Vec3& point,
-                    double time, QueryScratch& scratch, RayStats& stats, SolidAroundCache& cache) {
+                    double time, QueryScratch& scratch, SolidAroundCache& cache) {
     if (point == cache.point && time == cache.time) return cache.material;
     // Along no axis or diagonal, in or along which the faces of boxes and grids lie.
     const Ray probe{point, glm::normalize(Vec3(0.5772, 0.5774, 0.5776)), time};
@@ -29,7 +29,8 @@ int32_t solidAround(const RenderScene& scene, const MaterialMixer& mixer, bool h
         bool leaves;
     };
     std::vector<First> firsts; // each filling material's first crossing after the point
-    scene.forEachCrossing(probe, kInfinity, {}, scratch, stats, [&](const Hit& hit) {
+    RayStats uncounted;
+    scene.forEachCrossing(probe, kInfinity, {}, scratch, uncounted, [&](const Hit& hit) {
         if (hides && (scene.hiddenFrom(hit) & scene::kHiddenFromCamera)) return true;
         const int32_t material = scene.materialOf(hit);
         if (material < 0 || !mixer.isPlain(material) || !fills(scene.materials[static_cast<size_t>(material)]))

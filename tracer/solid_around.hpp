@@ -27,7 +27,9 @@ bool fillsSolids(const RenderScene& scene, const MaterialMixer& mixer);
 /// rays cross them as if they were not there. The crossings of one fixed line through the
 /// point decide, so the answer depends on the point alone: the solid whose first crossing
 /// after the point leaves it is around it (the nearest, where several are: the innermost).
+/// Its search is not counted in the ray statistics, which then stay the same whatever the
+/// number of threads (each asks once).
 int32_t solidAround(const RenderScene& scene, const MaterialMixer& mixer, bool hides, const Vec3& point,
-                    double time, QueryScratch& scratch, RayStats& stats, SolidAroundCache& cache);
+                    double time, QueryScratch& scratch, SolidAroundCache& cache);
 
 } // namespace crt::tracer
