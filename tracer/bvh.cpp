@@ -56,7 +56,7 @@ struct WideTree {
         const auto nodeShift = static_cast<uint32_t>(nodes.size());
         const auto itemShift = static_cast<uint32_t>(items.size());
         for (WideBvhNode node : part.nodes) {
-            const int used = laneMask(reinterpret_cast<Int4>(node.faces[0] <= node.faces[3]));
+            const int used = node.usedSlots();
             for (int slot = 0; slot < 4; ++slot) {
                 uint32_t& child = node.child[slot];
                 if (!(used & (1 << slot)) || WideChild::isOneItem(child)) continue;

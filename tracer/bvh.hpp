@@ -118,11 +118,13 @@ struct alignas(16) WideBvhNode {
     Float4 faces[6]; ///< lo.x, lo.y, lo.z, hi.x, hi.y, hi.z of the four boxes
     uint32_t child[4];
 
-    /// Slots holding a child (their boxes are not empty).
+    /// Bit i set when slot i holds a child (its box is not empty).
+    int usedSlots() const { return laneMask(faces[0] <= faces[3]); }
+    /// How many slots hold a child.
     int used() const {
         // Counted by hand: std::popcount is a call into libgcc on processors the build does
         // not assume have POPCNT, and traversal asks for every node it tests.
-        const int mask = laneMask(faces[0] <= faces[3]);
+        const int mask = usedSlots();
         return (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + ((mask >> 3) & 1);
     }
 };

@@ -32,7 +32,6 @@ RangeBounds SplitFinder::boundsOf(size_t begin, size_t end) const {
 /// heuristic's split leaves a side empty.
 bool SplitFinder::chooseSplit(size_t begin, size_t end, int axis, const RangeBounds& range, Split& split) {
     const size_t count = end - begin;
-    if (range.centroids.extent(axis) <= 0) return false;
     if (count <= static_cast<size_t>(kBins)) return sortedSplit(begin, end, axis, range, split);
     if (!binnedSplit(begin, end, axis, range, split)) return false;
     if (split.mid == begin || split.mid == end) medianSplit(begin, end, axis, split);
