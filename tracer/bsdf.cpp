@@ -133,7 +133,7 @@ bool Bsdf::sample(double pick, const Vec2& u, BsdfSample& out) const {
         out.transmitted = false;
         return true;
     }
-    const double pickTransmit = 1 - pickDiffuse_ - pickHighlight_ - pickReflect_;
+    const double pickTransmit = transmitChance();
     if (transmitWeight_ <= 0 || pickTransmit <= 0) return false;
     Vec3 wi = refracted_;
     if (glossAlpha_ > 0) {
@@ -146,6 +146,15 @@ bool Bsdf::sample(double pick, const Vec2& u, BsdfSample& out) const {
     out.wi = foldTo(wi, ng_, -1);
     out.weight = Vec3(transmitWeight_ / pickTransmit);
     out.transmitted = true;
+    out.sharpRefraction = glossAlpha_ <= 0;
+    out.lobeChance = pickTransmit;
+    return true;
+}
+
+bool Bsdf::sharpRefraction(SharpRefraction& out) const {
+    const double chance = transmitChance();
+    if (transmitWeight_ <= 0 || chance <= 0 || glossAlpha_ > 0) return false;
+    out = {foldTo(refracted_, ng_, -1), transmitWeight_, chance};
     return true;
 }
 

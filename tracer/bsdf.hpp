@@ -15,6 +15,18 @@ struct BsdfSample {
     /// glass lobe chose the direction, which light sampling cannot.
     double pdf = 0;
     bool transmitted = false;
+    /// Set when clear glass refracted the path exactly (no roughness spread it).
+    bool sharpRefraction = false;
+    /// The chance that sample() picked the refraction lobe, when it did.
+    double lobeChance = 1;
+};
+
+/// Clear glass's refraction at a surface point: the one direction it sends light on, the
+/// share it sends there, and the chance Bsdf::sample takes it.
+struct SharpRefraction {
+    Vec3 wi{0.0};
+    double weight = 0;
+    double chance = 0;
 };
 
 /// The lobes at one surface point seen from `wo`: Lambert diffuse, a GGX highlight (the
@@ -38,8 +50,12 @@ public:
     /// A direction by two uniform numbers and a third that picks the lobe; false when the
     /// material sends no light on (black, or a direction below the surface).
     bool sample(double pick, const Vec2& u, BsdfSample& out) const;
+    /// The refraction, when it is clear glass's (no roughness) and sends light on here; false
+    /// otherwise.
+    bool sharpRefraction(SharpRefraction& out) const;
 
 private:
+    double transmitChance() const { return 1 - pickDiffuse_ - pickHighlight_ - pickReflect_; }
     double highlightPdf(const Vec3& wi) const;
     Vec3 highlightCos(const Vec3& wi) const;
 

@@ -58,6 +58,13 @@ public:
         return 1 / (attenuation_.x + distance * (attenuation_.y + distance * attenuation_.z));
     }
     scene::LightKind kind() const { return kind_; }
+    /// Whether it shines from one point, its position (a point or a spot light).
+    bool fromPoint() const { return kind_ == scene::LightKind::Point || kind_ == scene::LightKind::Spot; }
+    const Vec3& position() const { return position_; }
+    /// Its colour in the unit direction `fromLight` (a spot light's cone included).
+    Vec3 colorToward(const Vec3& fromLight) const {
+        return kind_ == scene::LightKind::Spot ? color_ * spotFactor(fromLight) : color_;
+    }
     /// Whether it lights without shadow rays (`shadowless`).
     bool shadowless() const { return shadowless_; }
 

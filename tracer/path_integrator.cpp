@@ -12,13 +12,6 @@ namespace crt::tracer {
 
 namespace {
 
-/// Veach's power heuristic (β = 2): the weight of a sample drawn with density `mine` where
-/// another strategy draws it with density `other`.
-double powerHeuristic(double mine, double other) {
-    const double a = mine * mine, b = other * other;
-    return a + b > 0 ? a / (a + b) : 0;
-}
-
 /// Bounces after which Russian roulette may end a path.
 constexpr int kRouletteAfter = 3;
 
@@ -38,14 +31,6 @@ bool isClearBoundary(const ShadingMaterial& m) {
 
 } // namespace
 
-struct PathIntegrator::Vertex {
-    Hit hit;
-    SurfaceInteraction si;
-    Vec3 n;            ///< shading normal, facing the incoming ray (bumped)
-    double pathLength; ///< from the camera to this point (lights' falloff)
-    bool inMedium = false; ///< a point of a medium the path scattered at (si.point only)
-};
-
 PathIntegrator::PathIntegrator(const RenderScene& scene, const scene::SettingsDesc& settings,
                                const std::vector<Light>& lights, const Background& background, const Fog* fog,
                                const std::vector<Texture>& textures)
@@ -57,6 +42,7 @@ PathIntegrator::PathIntegrator(const RenderScene& scene, const scene::SettingsDe
       seesLights_(std::any_of(lights.begin(), lights.end(), [](const Light& l) { return l.visible(); })) {
     for (const ShadingMaterial& m : scene.materials) clearBoundary_.push_back(isClearBoundary(m));
     fillsSolids_ = fillsSolids(scene, mixer_);
+    prepareCaustics();
 }
 
 int32_t PathIntegrator::drawMaterial(const SurfaceInteraction& si, Vec3& color, Vec3& beta,
@@ -144,7 +130,12 @@ Vec3 PathIntegrator::fromLights(const Vertex& v, const Scatter& bsdf, TraceConte
                                  ? Vec3(1.0)
                                  : visibility(shadow, ls.atInfinity ? kInfinity : 1.0,
                                               departedToward(v, ls.toLight), context);
-        if (visible == Vec3(0.0)) continue;
+        if (visible == Vec3(0.0)) {
+            if constexpr (std::is_same_v<Scatter, Bsdf>) {
+                if (solvesCaustics_ && light.fromPoint()) sum += causticFromLight(v, bsdf, light, context);
+            }
+            continue;
+        }
         // An area light is also met by the paths the BSDF sends (areaLightsAlong).
         const double weight =
             light.hasArea() ? powerHeuristic(light.areaPdf(v.si.point, ls.toLight, ls.distance), bsdf.pdf(ls.toLight))
@@ -179,17 +170,18 @@ Vec3 PathIntegrator::fromEmitter(const Vertex& v, const Scatter& bsdf, TraceCont
     if (!emitters_.sample(v.si.point, pick, u, es)) return Vec3(0.0);
     const Vec3 toEmitter = glm::normalize(es.point - v.si.point);
     const Vec3 f = bsdf.evalCos(toEmitter);
-    if (f == Vec3(0.0)) return Vec3(0.0);
-    if (es.mayBeCarved && !emitterSurfaceAt(es, v.si.point, context)) return Vec3(0.0);
-    const Vec3 origin = originToward(v, toEmitter);
-    // Stops short of the emitter's own surface, which the rounding of the point may put a
-    // hair in front of the ray's end.
-    constexpr double kShortOfEmitter = 1 - 1e-7;
-    const Vec3 visible = visibility(Ray{origin, es.point - origin, context.time}, kShortOfEmitter,
-                                    departedToward(v, toEmitter), context);
-    if (visible == Vec3(0.0)) return Vec3(0.0);
-    const double weight = powerHeuristic(es.pdf, bsdf.pdf(toEmitter));
-    return visible * f * es.radiance * (weight / es.pdf);
+    if (f != Vec3(0.0) && (!es.mayBeCarved || emitterSurfaceAt(es, v.si.point, context))) {
+        const Vec3 origin = originToward(v, toEmitter);
+        const Vec3 visible = visibility(Ray{origin, es.point - origin, context.time}, kShortOfEmitter,
+                                        departedToward(v, toEmitter), context);
+        if (visible != Vec3(0.0))
+            return visible * f * es.radiance * (powerHeuristic(es.pdf, bsdf.pdf(toEmitter)) / es.pdf);
+    }
+    // Clear glass on the straight line hides the point; the light may come through it.
+    if constexpr (std::is_same_v<Scatter, Bsdf>) {
+        if (solvesCaustics_) return causticFromEmitter(v, bsdf, es, context);
+    }
+    return Vec3(0.0);
 }
 
 bool PathIntegrator::emitterSurfaceAt(const EmitterSample& es, const Vec3& from, TraceContext& context) const {
@@ -238,6 +230,7 @@ struct PathIntegrator::Path {
     double scatterPdf = 0;
     double pathLength = 0; ///< from the camera to the ray's origin
     int bounce = 0;
+    CausticStart caustic; ///< the way through clear glass the path is on, if any
 
     /// Goes on past the surface at `v` as if it were not there.
     void crossStraight(const RenderScene& scene, const Vertex& v) {
@@ -289,15 +282,23 @@ bool PathIntegrator::scatterInMedium(Path& path, const Medium& medium, double t,
     return nextBounce(path, context);
 }
 
+Bsdf PathIntegrator::bsdfAt(Vertex& v, const ShadingMaterial& m, const Vec3& color, const Vec3& d) const {
+    const bool entering = glm::dot(d, v.si.normal) < 0;
+    v.n = glm::dot(v.si.shadingNormal, d) > 0 ? -v.si.shadingNormal : v.si.shadingNormal;
+    if (m.bump >= 0) v.n = bumpedNormal(textures_[static_cast<size_t>(m.bump)], v.si, v.n);
+    return Bsdf(m, color, d, v.n, entering ? v.si.normal : -v.si.normal, entering, v.si.solid);
+}
+
 [[gnu::always_inline]] inline bool PathIntegrator::scatterAtSurface(Path& path, Vertex& v, int32_t material, const Vec3& color,
                                       FirstSurface* first, TraceContext& context) const {
     const ShadingMaterial& m = scene_.materials[static_cast<size_t>(material)];
     const Vec3 emission = rgb(m.emission);
     if (emission != Vec3(0.0)) {
-        const double weight =
-            path.scatterPdf > 0
-                ? powerHeuristic(path.scatterPdf, emitters_.pdf(v.hit, path.scatteredFrom, v.si.point, v.si.normal))
-                : 1.0;
+        double weight = 1;
+        if (path.scatterPdf > 0)
+            weight = powerHeuristic(path.scatterPdf, emitters_.pdf(v.hit, path.scatteredFrom, v.si.point, v.si.normal));
+        else if (path.caustic.crossings > 0)
+            weight = causticWeight(path.caustic, v, context);
         path.radiance += path.beta * emission * weight;
     }
     const bool wantsFirst = first && !first->found;
@@ -305,11 +306,11 @@ bool PathIntegrator::scatterInMedium(Path& path, const Medium& medium, double t,
 
     const Vec3& d = path.ray.dir;
     const bool entering = glm::dot(d, v.si.normal) < 0;
-    v.n = glm::dot(v.si.shadingNormal, d) > 0 ? -v.si.shadingNormal : v.si.shadingNormal;
-    if (m.bump >= 0) v.n = bumpedNormal(textures_[static_cast<size_t>(m.bump)], v.si, v.n);
-    const Bsdf bsdf(m, color, d, v.n, entering ? v.si.normal : -v.si.normal, entering, v.si.solid);
+    const Bsdf bsdf = bsdfAt(v, m, color, d);
     if (wantsFirst && bsdf.reachable()) *first = {bsdf.albedo(), v.n, true};
     if (path.bounce >= settings_.bounces) return false;
+    v.bounce = path.bounce;
+    v.inAir = path.medium < 0;
     if (bsdf.reachable()) path.radiance += path.beta * directLight(v, bsdf, context);
 
     BsdfSample next;
@@ -320,6 +321,7 @@ bool PathIntegrator::scatterInMedium(Path& path, const Medium& medium, double t,
     if (path.beta == Vec3(0.0)) return false;
     path.scatteredFrom = v.si.point;
     path.scatterPdf = next.pdf;
+    if (solvesCaustics_) noteCausticBounce(path.caustic, v, next);
     if (next.transmitted) {
         ++context.stats.refractionRays;
         if (v.si.solid) path.medium = entering ? material : -1;
@@ -363,6 +365,7 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
             break;
         }
         if (step.scattered) {
+            path.caustic.crossings = -1;
             if (!scatterInMedium(path, *fill, step.t, context)) break;
             continue;
         }
@@ -380,6 +383,7 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
             // Crossed as if it were not there, as a see-through surface is below.
             if (crossings > mostCrossings) break;
             path.crossStraight(scene_, v);
+            path.caustic.crossings = -1;
             continue;
         }
         Vec3 color;
@@ -391,6 +395,7 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
             if (path.beta == Vec3(0.0) || crossings > mostCrossings) break;
             if (material >= 0 && v.si.solid) path.medium = glm::dot(ray.dir, v.si.normal) < 0 ? material : -1;
             path.crossStraight(scene_, v);
+            path.caustic.crossings = -1;
             continue;
         }
         if (!scatterAtSurface(path, v, material, color, first, context)) break;

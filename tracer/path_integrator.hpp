@@ -9,6 +9,8 @@
 #include "tracer/environment_light.hpp"
 #include "tracer/integrator.hpp"
 
+#include <glm/mat2x2.hpp>
+
 #include <vector>
 
 namespace crt::tracer {
@@ -36,9 +38,31 @@ public:
     const Emitters& emitters() const { return emitters_; }
 
 private:
+    /// Veach's power heuristic (β = 2): the weight of a sample drawn with density `mine` where
+    /// another strategy draws it with density `other`.
+    static double powerHeuristic(double mine, double other) {
+        const double a = mine * mine, b = other * other;
+        return a + b > 0 ? a / (a + b) : 0;
+    }
     /// Where a path is: the surface it reached, or the point of a medium it scattered at,
     /// and what it knows of how it got there.
-    struct Vertex;
+    struct Vertex {
+        Hit hit;
+        SurfaceInteraction si;
+        Vec3 n;                ///< shading normal, facing the incoming ray (bumped)
+        double pathLength = 0; ///< from the camera to this point (lights' falloff)
+        int bounce = 0;        ///< the path's bounces before it
+        bool inMedium = false; ///< a point of a medium the path scattered at (si.point only)
+        bool inAir = false;    ///< the path is in no solid here (air)
+    };
+    /// A path that left a surface point by a lobe light sampling reaches, then crossed only
+    /// clear glass (path_caustics.cpp): where it left, and how.
+    struct CausticStart {
+        Vertex from;
+        Vec3 dir{0.0};
+        double chance = 0; ///< its density of the direction, times the glass lobes' chances
+        int crossings = -1; ///< the glass surfaces crossed since; -1: the path is on no such way
+    };
     /// A medium's phase function where a path scatters in it, as light sampling and the
     /// path's next direction read it (a BSDF's evalCos and pdf).
     struct PhaseScatter {
@@ -60,6 +84,9 @@ private:
     /// BSDF, and the BSDF's draw of the next direction; false when the path ends.
     bool scatterAtSurface(Path& path, Vertex& v, int32_t material, const Vec3& color, FirstSurface* first,
                           TraceContext& context) const;
+    /// The BSDF of material `m` of colour `color` at the surface of `v`, for a ray of
+    /// direction `d`; sets v.n.
+    Bsdf bsdfAt(Vertex& v, const ShadingMaterial& m, const Vec3& color, const Vec3& d) const;
     /// What a path does in a medium before `reach`: it scatters at t, or passes.
     struct MediumStep {
         bool scattered = false;
@@ -89,9 +116,70 @@ private:
     /// reached by the path's own refraction, so it is not counted twice), and the media and
     /// absorbing solids within clear boundaries dim it.
     Vec3 visibility(const Ray& ray, double tMax, Departure departed, TraceContext& context) const;
+    /// The reach of a shadow ray toward a point of an emitter (as a share of the way): short
+    /// of the emitter's own surface, which the rounding of the point may put a hair in front
+    /// of the ray's end.
+    static constexpr double kShortOfEmitter = 1 - 1e-7;
     /// Whether the emitter's surface is there at the sampled point, as seen from `from` (a CSG
     /// tree may have carved it away).
     bool emitterSurfaceAt(const EmitterSample& es, const Vec3& from, TraceContext& context) const;
+
+    // Caustics: light through clear glass (path_caustics.cpp).
+    /// A ray that left a chain of clear-glass surfaces, and what they did to its light.
+    struct ChainRay;
+    /// The directions a solve turns among (path_caustics.cpp).
+    struct DirectionChart;
+    /// A point a chain through glass is to reach: of an emitter, or a point light's position.
+    struct ChainTarget {
+        Vec3 point;
+        Frame frame; ///< its w the normal of the plane the landings are measured on
+        int32_t primitive = -1, instance = -1; ///< the emitter's; -1: a light's position
+    };
+    /// A path from a surface point through clear glass to a target.
+    struct Chain {
+        Vec3 wi{0.0};         ///< the direction it leaves the surface point in
+        Vec3 arrival{0.0};    ///< the unit direction it reaches the target in
+        Vec3 throughput{0.0}; ///< the share of the light the glass lets through
+        double chance = 0;    ///< the chance that the glass lobes' draws follow it
+        double spread = 0;    ///< the target plane's area per solid angle at the surface point
+        double length = 0;    ///< from the surface point to the target, along the path
+        int crossings = 0;
+    };
+    /// Finds the clear-glass materials (constructor).
+    void prepareCaustics();
+    bool isSharpGlass(int32_t material) const {
+        return material >= 0 && mixer_.isPlain(material) && sharpGlass_[static_cast<size_t>(material)];
+    }
+    /// Follows a ray from `from` toward `dir` through `crossings` clear-glass surfaces; false
+    /// when it meets anything else first, or one of them does not let it through.
+    bool followGlass(const Vertex& from, const Vec3& dir, int crossings, ChainRay& out, TraceContext& context) const;
+    /// Where that ray meets the target's plane, from the target (in the frame's u and v).
+    bool landing(const Vertex& from, const Vec3& dir, const ChainTarget& target, int crossings, Vec2& miss,
+                 ChainRay& ray, TraceContext& context) const;
+    /// How the landing follows the direction: its derivatives by the chart's coordinates at
+    /// p, where it is `miss`.
+    bool landingSlope(const Vertex& from, const DirectionChart& chart, const Vec2& p, const ChainTarget& target,
+                      int crossings, const Vec2& miss, glm::dmat2& slope, TraceContext& context) const;
+    /// The path of `crossings` glass surfaces from `from` to the target, solved for from the
+    /// direction `seed`.
+    bool solveFrom(const Vertex& from, const ChainTarget& target, const Vec3& seed, int crossings, Chain& out,
+                   TraceContext& context) const;
+    /// The path from `from` through the clear glass the straight line to the target crosses,
+    /// solved for; false when the line crosses anything else or nothing, or the solve fails.
+    /// A function of the two points alone, so that paths found either way agree on it.
+    bool glassChainTo(const Vertex& from, const ChainTarget& target, Chain& out, TraceContext& context) const;
+    /// Light sampling's estimate of the light of the sampled emitter point reaching `v`
+    /// through the clear glass that hides it from the straight line.
+    Vec3 causticFromEmitter(const Vertex& v, const Bsdf& bsdf, const EmitterSample& es,
+                            TraceContext& context) const;
+    /// The light of a point or spot light reaching `v` through the clear glass that hides it.
+    Vec3 causticFromLight(const Vertex& v, const Bsdf& bsdf, const Light& light, TraceContext& context) const;
+    /// Notes in `start` the path's bounce at `v` toward `next`: a start, one more crossing of
+    /// clear glass, or the end of such a way.
+    void noteCausticBounce(CausticStart& start, const Vertex& v, const BsdfSample& next) const;
+    /// The weight of the emission at `v`, an emitter the path met after `start`, against
+    /// light sampling's chance of the same path through the glass.
+    double causticWeight(const CausticStart& start, const Vertex& v, TraceContext& context) const;
 
     // Media (path_media.cpp).
     /// The medium filling the solid of `material` (-1: none), or null.
@@ -125,12 +213,16 @@ private:
     std::vector<Medium> media_; ///< by index of RenderScene::media
     /// By material: whether its surface is a clear boundary (path_integrator.cpp).
     std::vector<uint8_t> clearBoundary_;
+    /// By material: whether it is clear glass light sampling solves paths through
+    /// (path_caustics.cpp).
+    std::vector<uint8_t> sharpGlass_;
     Emitters emitters_;
     EnvironmentLight environment_;
     bool hasAreaLights_;
     bool hides_; ///< whether some surface is hidden from some rays
     bool seesLights_; ///< whether some light is visible
     bool fillsSolids_; ///< whether a camera may stand in a filled solid (solid_around.hpp)
+    bool solvesCaustics_; ///< whether light sampling solves for paths through glass
 };
 
 } // namespace crt::tracer

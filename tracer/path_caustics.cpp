@@ -1,0 +1,309 @@
+// Caustics under the path integrator: light reaching a surface through clear glass, found by
+// manifold next-event estimation (docs/rendering.md, "Caustics").
+//
+// Light sampling aims a shadow ray straight at a light or a point of an emitter. Where clear
+// glass stands between, the light arrives bent, along a way no straight ray follows: the
+// paths' own bounces find it only by chance (the bright, noisy spot under a glass ball), and
+// a point light's never. So when the straight line crosses only clear glass, light sampling
+// also solves for the path through it. From the straight line, Newton's method turns the
+// direction leaving the surface point until the path it starts, refracted at each glass
+// surface the line crosses, lands on the light's point (Hanika et al. 2015, "Manifold next
+// event estimation", in its shooting form: the unknown is the direction, the residual where
+// the path meets a plane through the target); for a point light, where that fails, from two
+// more seeds (glassChainTo). The light it brings is weighed by how the glass spreads it: the
+// target plane's area per solid angle of directions at the surface point, measured by turning
+// the direction a little.
+//
+// The solve is a function of the two points alone. So a path the bounces found (a lobe light
+// sampling reaches, then only clear glass, then an emitter) asks it whether light sampling
+// reaches the same path: if so, the two are weighed against each other by the power
+// heuristic; if the solve reaches another path or none, the bounce's path counts whole.
+// Together they count every path to an emitter once, however many paths join the two points.
+#include "tracer/path_integrator.hpp"
+
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace crt::tracer {
+
+namespace {
+
+/// The most glass surfaces a solved path crosses.
+constexpr int kMostCrossings = 8;
+/// Newton steps before a solve gives up; it converges in a few where the glass is smooth.
+constexpr int kMostNewtonSteps = 20;
+/// How far (in the tangents of the chart, about radians) a Newton step may turn the
+/// direction: at first, at most, and least before the solve gives up. A step that lands no
+/// nearer shrinks the reach fourfold; one that does doubles it.
+constexpr double kFirstReach = 0.25, kMostReach = 1, kLeastReach = 1e-3;
+/// Where no path joins the points, the solve gives up early: when Newton's step would turn
+/// the direction further than this (the landing barely follows the direction there), or
+/// when two steps in a row each bring the landing less than a tenth nearer.
+constexpr double kFarthestTurn = 4;
+constexpr double kSlowStep = 0.9;
+/// The turn (in the tangents of the chart) by which the slope of the landing is measured:
+/// far above the rounding of the landing, far below the glass's curvature.
+constexpr double kTurn = 1e-6;
+/// How near the target a solved path lands, as a share of the distance between the points.
+constexpr double kLandingTolerance = 1e-7;
+/// Two solved directions closer than this (1 − cos) are the same path.
+constexpr double kSameDirection = 1e-9;
+
+/// The density, by area of the emitter, of a point light sampling chose with `solidAnglePdf`
+/// seen from `from`.
+double areaDensity(double solidAnglePdf, const Vec3& from, const Vec3& point, const Vec3& normal) {
+    const Vec3 offset = from - point;
+    const double distance2 = glm::dot(offset, offset);
+    return distance2 > 0 ? solidAnglePdf * std::abs(glm::dot(normal, offset)) / (distance2 * std::sqrt(distance2))
+                         : 0;
+}
+
+} // namespace
+
+/// The directions around the straight line to the target, by the tangents of their angles
+/// from it along its Frame's u and v (a gnomonic chart: it covers the hemisphere around the
+/// line, and Newton's steps stay straight in it).
+struct PathIntegrator::DirectionChart {
+    Frame frame;
+    Vec3 at(const Vec2& p) const { return glm::normalize(frame.w + p.x * frame.u + p.y * frame.v); }
+    /// The solid angle per unit area of the chart at p.
+    static double solidAngleDensity(const Vec2& p) { return std::pow(1 + glm::dot(p, p), -1.5); }
+};
+
+struct PathIntegrator::ChainRay {
+    Ray ray;
+    Departure departed;
+    Vec3 throughput{1.0};
+    double chance = 1;
+    double length = 0;   ///< of the path up to the ray's origin
+    int32_t medium = -1; ///< the solid the ray is in (-1: air)
+
+    /// Goes `t` along the ray: its length, and Beer–Lambert absorption in the solid it is in,
+    /// as a path has it.
+    void advance(const RenderScene& scene, double t) {
+        length += t;
+        if (medium < 0) return;
+        const Vec3 a = rgb(scene.materials[static_cast<size_t>(medium)].absorption);
+        for (int i = 0; i < 3; ++i)
+            if (a[i] > 0) throughput[i] *= std::exp(-a[i] * t);
+    }
+};
+
+void PathIntegrator::prepareCaustics() {
+    for (size_t i = 0; i < scene_.materials.size(); ++i) {
+        const ShadingMaterial& m = scene_.materials[i];
+        sharpGlass_.push_back(m.transparency > 0 && m.glossiness <= 0 && m.medium < 0 &&
+                              rgb(m.emission) == Vec3(0.0) && !clearBoundary_[i]);
+    }
+    const bool pointLights = std::any_of(lights_.begin(), lights_.end(), [](const Light& l) { return l.fromPoint(); });
+    solvesCaustics_ = (!emitters_.empty() || pointLights) && !fog_ && !hides_ &&
+                      std::any_of(sharpGlass_.begin(), sharpGlass_.end(), [](uint8_t g) { return g != 0; });
+}
+
+void PathIntegrator::noteCausticBounce(CausticStart& start, const Vertex& v, const BsdfSample& next) const {
+    if (next.pdf > 0) {
+        // A lobe light sampling reaches: a way through glass may start here.
+        if (v.inAir)
+            start = {v, next.wi, next.pdf, 0};
+        else
+            start.crossings = -1;
+    } else if (start.crossings >= 0 && next.sharpRefraction && isSharpGlass(v.si.material)) {
+        ++start.crossings;
+        start.chance *= next.lobeChance;
+    } else {
+        start.crossings = -1;
+    }
+}
+
+bool PathIntegrator::followGlass(const Vertex& from, const Vec3& dir, int crossings, ChainRay& out,
+                                 TraceContext& context) const {
+    out = ChainRay{Ray{originToward(from, dir), dir, context.time}, departedToward(from, dir)};
+    for (int i = 0; i < crossings; ++i) {
+        Vertex v;
+        if (!scene_.intersect(out.ray, kInfinity, v.hit, context.scratch, context.stats, out.departed)) return false;
+        v.si = scene_.interaction(out.ray, v.hit);
+        if (!isSharpGlass(v.si.material)) return false;
+        out.advance(scene_, v.hit.t);
+        const ShadingMaterial& m = scene_.materials[static_cast<size_t>(v.si.material)];
+        SharpRefraction refraction;
+        if (!bsdfAt(v, m, Vec3(mixer_.colorAt(m, v.si)), out.ray.dir).sharpRefraction(refraction)) return false;
+        out.throughput *= refraction.weight;
+        out.chance *= refraction.chance;
+        if (v.si.solid) out.medium = glm::dot(out.ray.dir, v.si.normal) < 0 ? v.si.material : -1;
+        out.ray = Ray{offsetRayOrigin(v.si.point, v.si.pointError, v.si.normal, refraction.wi), refraction.wi,
+                      context.time};
+        out.departed = scene_.departedPrimitive(v.hit, v.si, refraction.wi);
+    }
+    return true;
+}
+
+bool PathIntegrator::landing(const Vertex& from, const Vec3& dir, const ChainTarget& target, int crossings,
+                             Vec2& miss, ChainRay& ray, TraceContext& context) const {
+    if (!followGlass(from, dir, crossings, ray, context)) return false;
+    const Vec3& normal = target.frame.w;
+    const double t = glm::dot(target.point - ray.ray.origin, normal) / glm::dot(ray.ray.dir, normal);
+    if (!(t > 0 && t < kInfinity)) return false;
+    const Vec3 offset = ray.ray.at(t) - target.point;
+    miss = {glm::dot(offset, target.frame.u), glm::dot(offset, target.frame.v)};
+    return true;
+}
+
+bool PathIntegrator::landingSlope(const Vertex& from, const DirectionChart& chart, const Vec2& p,
+                                  const ChainTarget& target, int crossings, const Vec2& miss, glm::dmat2& slope,
+                                  TraceContext& context) const {
+    ChainRay ray;
+    Vec2 alongU, alongV;
+    if (!landing(from, chart.at(p + Vec2(kTurn, 0)), target, crossings, alongU, ray, context) ||
+        !landing(from, chart.at(p + Vec2(0, kTurn)), target, crossings, alongV, ray, context))
+        return false;
+    slope = glm::dmat2((alongU - miss) / kTurn, (alongV - miss) / kTurn);
+    return true;
+}
+
+bool PathIntegrator::glassChainTo(const Vertex& from, const ChainTarget& target, Chain& out,
+                                  TraceContext& context) const {
+    // The straight line says how many glass surfaces the path crosses, and is where the
+    // solve starts.
+    const Vec3 dir = glm::normalize(target.point - from.si.point);
+    if (glm::dot(dir, from.n) <= 0) return false;
+    const Vec3 origin = originToward(from, dir);
+    int crossings = 0;
+    bool glassOnly = true;
+    Hit nearest;
+    nearest.t = kInfinity;
+    scene_.forEachCrossing(Ray{origin, target.point - origin, context.time}, kShortOfEmitter,
+                           departedToward(from, dir), context.scratch, context.stats, [&](const Hit& hit) {
+                               glassOnly = isSharpGlass(scene_.materialOf(hit)) && ++crossings <= kMostCrossings;
+                               if (hit.t < nearest.t) nearest = hit;
+                               return glassOnly;
+                           });
+    if (!glassOnly || crossings == 0 || from.bounce + crossings >= settings_.bounces) return false;
+
+    if (solveFrom(from, target, dir, crossings, out, context)) return true;
+    // A light's position has no other way to reach the point: where the glass bends the
+    // path far from the straight line (the rim of a ball's caustic), two more seeds: toward
+    // the middle of the glass the line meets first, and the straight line mirrored about
+    // that. An emitter's paths are also found by the bounces, which cover what the solve
+    // misses.
+    if (target.primitive >= 0 || nearest.instance >= 0) return false;
+    const Primitive& glass = scene_.primitives[static_cast<size_t>(nearest.primitive)];
+    const Bounds3 local = geometryBounds(glass.geometry);
+    if (glass.transform >= RenderScene::kFirstMovingTransform || !local.finite()) return false;
+    Vec3 middle = (local.lo + local.hi) * 0.5;
+    if (glass.transform >= 0) middle = scene_.transforms[static_cast<size_t>(glass.transform)].toWorld.point(middle);
+    const Vec3 toMiddle = glm::normalize(middle - from.si.point);
+    return solveFrom(from, target, toMiddle, crossings, out, context) ||
+           solveFrom(from, target, glm::normalize(2 * glm::dot(dir, toMiddle) * toMiddle - dir), crossings, out,
+                     context);
+}
+
+bool PathIntegrator::solveFrom(const Vertex& from, const ChainTarget& target, const Vec3& seed, int crossings,
+                               Chain& out, TraceContext& context) const {
+    // Newton's method on the landing, its slope measured at the start and after a step
+    // that fails, corrected by Broyden's update after one that does not.
+    if (glm::dot(seed, from.n) <= 0) return false;
+    const double distance = glm::length(target.point - from.si.point);
+    const DirectionChart chart{Frame::fromAxis(seed)};
+    Vec2 p(0.0), miss;
+    ChainRay ray;
+    glm::dmat2 slope;
+    if (!landing(from, seed, target, crossings, miss, ray, context) ||
+        !landingSlope(from, chart, p, target, crossings, miss, slope, context))
+        return false;
+    double reach = kFirstReach;
+    bool measured = true;
+    int slowSteps = 0;
+    for (int step = 0; glm::length(miss) > kLandingTolerance * distance; ++step) {
+        if (step == kMostNewtonSteps || !(std::abs(glm::determinant(slope)) > 0)) return false;
+        Vec2 turn = -(glm::inverse(slope) * miss);
+        const double size = glm::length(turn);
+        if (!(size > 0) || size > kFarthestTurn) return false;
+        if (size > reach) turn *= reach / size;
+        ChainRay next;
+        Vec2 nextMiss;
+        if (landing(from, chart.at(p + turn), target, crossings, nextMiss, next, context) &&
+            glm::length(nextMiss) < glm::length(miss)) {
+            slowSteps = glm::length(nextMiss) > kSlowStep * glm::length(miss) ? slowSteps + 1 : 0;
+            if (slowSteps == 2) return false;
+            slope += glm::outerProduct(nextMiss - miss - slope * turn, turn) / glm::dot(turn, turn);
+            p += turn, miss = nextMiss, ray = next;
+            reach = std::min(kMostReach, 2 * reach);
+            measured = false;
+        } else if (!measured) {
+            if (!landingSlope(from, chart, p, target, crossings, miss, slope, context)) return false;
+            measured = true;
+        } else {
+            reach = std::min(reach, glm::length(turn)) / 4;
+            if (reach < kLeastReach) return false;
+        }
+    }
+    const Vec3 dir = chart.at(p);
+    if (!landingSlope(from, chart, p, target, crossings, miss, slope, context)) return false;
+    // The last stretch must reach the target unblocked: the emitter there, or the light.
+    double lastStretch = glm::dot(target.point - ray.ray.origin, ray.ray.dir);
+    if (target.primitive >= 0) {
+        Hit hit;
+        if (!scene_.intersect(ray.ray, kInfinity, hit, context.scratch, context.stats, ray.departed) ||
+            hit.primitive != target.primitive || hit.instance != target.instance ||
+            glm::length(ray.ray.at(hit.t) - target.point) > 4 * kLandingTolerance * distance)
+            return false;
+        lastStretch = hit.t;
+    } else {
+        const Vec3 visible = visibility(Ray{ray.ray.origin, target.point - ray.ray.origin, context.time}, 1.0,
+                                        ray.departed, context);
+        if (visible == Vec3(0.0)) return false;
+        ray.throughput *= visible;
+    }
+    ray.advance(scene_, lastStretch);
+    const double spread = std::abs(glm::determinant(slope)) / DirectionChart::solidAngleDensity(p);
+    out = {dir, ray.ray.dir, ray.throughput, ray.chance, spread, ray.length, crossings};
+    return true;
+}
+
+Vec3 PathIntegrator::causticFromEmitter(const Vertex& v, const Bsdf& bsdf, const EmitterSample& es,
+                                        TraceContext& context) const {
+    Chain chain;
+    if (!v.inAir || !glassChainTo(v, {es.point, Frame::fromAxis(es.normal), es.primitive, es.instance}, chain, context))
+        return Vec3(0.0);
+    const Vec3 f = bsdf.evalCos(chain.wi);
+    // Light sampling's density of the direction: the point's density by area, times the
+    // area per solid angle.
+    const double pdf = areaDensity(es.pdf, v.si.point, es.point, es.normal) * chain.spread;
+    if (f == Vec3(0.0) || !(pdf > 0)) return Vec3(0.0);
+    const double weight = powerHeuristic(pdf, bsdf.pdf(chain.wi) * chain.chance);
+    return f * chain.throughput * es.radiance * (weight / pdf);
+}
+
+Vec3 PathIntegrator::causticFromLight(const Vertex& v, const Bsdf& bsdf, const Light& light,
+                                      TraceContext& context) const {
+    Chain chain;
+    const Vec3 toLight = glm::normalize(light.position() - v.si.point);
+    if (!v.inAir || !glassChainTo(v, {light.position(), Frame::fromAxis(toLight)}, chain, context))
+        return Vec3(0.0);
+    // The light seen straight at the path's length lights the point as lightStrength says;
+    // through the glass, the light of the solid angle it sends toward the path's end falls
+    // on the area the path's beam has there, as the spread gives it (the étendue
+    // dA·cos θ·dω is the same at both ends). The beam's area across it is the spread's times
+    // the cosine between the path and the target plane's normal.
+    const double across = chain.spread * std::abs(glm::dot(chain.arrival, toLight));
+    if (!(across > 0)) return Vec3(0.0);
+    return bsdf.evalCos(chain.wi) * chain.throughput * light.colorToward(-chain.arrival) *
+           (lightStrength(light, chain.length, v.pathLength) * chain.length * chain.length / across);
+}
+
+double PathIntegrator::causticWeight(const CausticStart& start, const Vertex& v, TraceContext& context) const {
+    const Vec3& from = start.from.si.point;
+    const double pointPdf =
+        areaDensity(emitters_.pdf(v.hit, from, v.si.point, v.si.normal), from, v.si.point, v.si.normal);
+    Chain chain;
+    if (!(pointPdf > 0) ||
+        !glassChainTo(start.from, {v.si.point, Frame::fromAxis(v.si.normal), v.hit.primitive, v.hit.instance}, chain,
+                      context) ||
+        chain.crossings != start.crossings || glm::dot(chain.wi, start.dir) < 1 - kSameDirection)
+        return 1;
+    return powerHeuristic(start.chance, pointPdf * chain.spread);
+}
+
+} // namespace crt::tracer
