@@ -1,8 +1,7 @@
 // Caustics under the path integrator: light reaching a surface through clear glass, solved
 // for by light sampling (tracer/path_caustics.cpp), against closed forms and against the
 // paths' own bounces.
-#include "analytic_util.hpp"
-#include "scene_builder_util.hpp"
+#include "path_scene_util.hpp"
 
 #include <cmath>
 
@@ -12,15 +11,7 @@ using namespace crt::tracer::test;
 
 namespace {
 
-constexpr int kSize = 16;
-
-ShadingMaterial diffuse(double albedo, double emission = 0) {
-    ShadingMaterial m;
-    m.color = scene::Color{albedo, albedo, albedo, 1};
-    m.diffuse = 1;
-    m.emission = scene::Color{emission, emission, emission, 1};
-    return m;
-}
+constexpr int kSize = kPathImageSize;
 
 /// Clear glass letting `transparency` through, without Fresnel's share of reflection;
 /// `glossiness` above 0 frosts it.
@@ -40,19 +31,6 @@ scene::LightDesc pointLight(glm::dvec3 origin, double color) {
     light.origin = origin;
     light.color = scene::Color{color, color, color, 1};
     return light;
-}
-
-/// A Lambertian floor of `albedo` at y = 0, its centre seen from 1 above (a degree across).
-SceneMaker floorSeenFromAbove(int samples, int bounces, double albedo) {
-    SceneMaker m;
-    scene::CameraDesc camera = lookAt({0, 1, 0}, {0, 0, 0}, 1);
-    camera.up = {0, 0, 1};
-    m.desc = blankScene(kSize, kSize, camera);
-    m.desc.settings.integrator = scene::Integrator::Path;
-    m.desc.settings.samples = samples;
-    m.desc.settings.bounces = bounces;
-    m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(albedo))));
-    return m;
 }
 
 /// The mean of the images' red channel and its standard error, and the noise of one
@@ -117,14 +95,9 @@ TEST_CASE("path: the caustic of a glass ball under a glowing disc is the bounces
     // but makes it the bounces' alone: the two images must agree within their noise, and
     // the solved one must have far less of it.
     const auto render = [](double glossiness, int samples) {
-        SceneMaker m;
-        scene::CameraDesc camera = lookAt({0, 0.5, 0}, {0, 0, 0}, 40);
-        camera.up = {0, 0, 1};
-        m.desc = blankScene(kSize, kSize, camera);
-        m.desc.settings.integrator = scene::Integrator::Path;
-        m.desc.settings.samples = samples;
-        m.desc.settings.bounces = 3;
-        m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(0.8))));
+        SceneMaker m = floorSeenFromAbove(samples, 3, 0.8);
+        m.desc.camera = lookAt({0, 0.5, 0}, {0, 0, 0}, 40);
+        m.desc.camera.up = {0, 0, 1};
         ShadingMaterial ball = glass(1, 1.5, glossiness);
         ball.fresnel = true;
         m.draw(m.sphere({0, 1.5, 0}, 0.5, m.material(ball)));

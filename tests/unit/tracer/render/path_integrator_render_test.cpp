@@ -1,8 +1,7 @@
 // The path integrator against scenes whose light has a closed form: each image's mean within
 // three standard errors of it, the error estimated from the spread of its pixels (each an
 // independent estimate).
-#include "analytic_util.hpp"
-#include "scene_builder_util.hpp"
+#include "path_scene_util.hpp"
 
 #include <cmath>
 
@@ -12,7 +11,7 @@ using namespace crt::tracer::test;
 
 namespace {
 
-constexpr int kSize = 16;
+constexpr int kSize = kPathImageSize;
 
 /// The mean of the pixels' channel `channel` over [x0, x1) × [y0, y1), and its standard error.
 struct Estimate {
@@ -39,33 +38,6 @@ Estimate estimate(const PixelBuffer& image, int channel, int x0 = 0, int y0 = 0,
 void checkWithin3Se(const Estimate& e, double expected) {
     INFO("mean " << e.mean << " standard error " << e.standardError << " expected " << expected);
     CHECK(std::abs(e.mean - expected) <= 3 * e.standardError + 1e-4 * expected);
-}
-
-scene::SceneDesc pathScene(const scene::CameraDesc& camera, int samples, int bounces) {
-    scene::SceneDesc desc = blankScene(kSize, kSize, camera);
-    desc.settings.integrator = scene::Integrator::Path;
-    desc.settings.samples = samples;
-    desc.settings.bounces = bounces;
-    return desc;
-}
-
-ShadingMaterial diffuse(double albedo, double emission = 0) {
-    ShadingMaterial m;
-    m.color = scene::Color{albedo, albedo, albedo, 1};
-    m.diffuse = 1;
-    m.emission = scene::Color{emission, emission, emission, 1};
-    return m;
-}
-
-/// The floor (a Lambertian plane of `albedo` at y = 0) filling the view from just above its
-/// centre, where the cases below put their lights overhead.
-SceneMaker floorSeenFromAbove(int samples, int bounces, double albedo) {
-    SceneMaker m;
-    scene::CameraDesc camera = lookAt({0, 1, 0}, {0, 0, 0}, 1);
-    camera.up = {0, 0, 1};
-    m.desc = pathScene(camera, samples, bounces);
-    m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(albedo))));
-    return m;
 }
 
 /// Draws `part` as a part of a group of 16 (15 black spheres beside it) drawn twice, so an
