@@ -9,15 +9,15 @@
 // direction leaving the surface point until the path it starts, refracted at each glass
 // surface the line crosses, lands on the light's point (Hanika et al. 2015, "Manifold next
 // event estimation", in its shooting form: the unknown is the direction, the residual where
-// the path meets a plane through the target); for a point light, where that fails, from two
-// more seeds (glassChainTo). The light it brings is weighed by how the glass spreads it: the
-// target plane's area per solid angle of directions at the surface point, measured by turning
-// the direction a little.
+// the path meets a plane through the target); near the glass, and for a point light where
+// that fails, from more seeds too (glassChainsTo), every path found counting. The light a
+// path brings is weighed by how the glass spreads it: the target plane's area per solid
+// angle of directions at the surface point, measured by turning the direction a little.
 //
-// The solve is a function of the two points alone. So a path the bounces found (a lobe light
-// sampling reaches, then only clear glass, then an emitter) asks it whether light sampling
-// reaches the same path: if so, the two are weighed against each other by the power
-// heuristic; if the solve reaches another path or none, the bounce's path counts whole.
+// The solves are a function of the two points alone. So a path the bounces found (a lobe
+// light sampling reaches, then only clear glass, then an emitter) asks them whether light
+// sampling reaches the same path: if so, the two are weighed against each other by the power
+// heuristic; if the solves reach other paths or none, the bounce's path counts whole.
 // Together they count every path to an emitter once, however many paths join the two points.
 #include "tracer/path_integrator.hpp"
 
@@ -50,6 +50,11 @@ constexpr double kTurn = 1e-6;
 constexpr double kLandingTolerance = 1e-7;
 /// Two solved directions closer than this (1 − cos) are the same path.
 constexpr double kSameDirection = 1e-9;
+
+/// Glass nearer than this many of its radii (the largest half-extent of its bounds) seeds
+/// solves fanned across it: this many on each side of its middle.
+constexpr double kNearGlass = 1.2;
+constexpr int kFanSeeds = 2;
 
 /// The density, by area of the emitter, of a point light sampling chose with `solidAnglePdf`
 /// seen from `from`.
@@ -162,12 +167,27 @@ bool PathIntegrator::landingSlope(const Vertex& from, const DirectionChart& char
     return true;
 }
 
-bool PathIntegrator::glassChainTo(const Vertex& from, const ChainTarget& target, Chain& out,
+bool PathIntegrator::glassExtent(const Hit& hit, Vec3& middle, double& radius) const {
+    if (hit.instance >= 0) return false;
+    const Primitive& glass = scene_.primitives[static_cast<size_t>(hit.primitive)];
+    const Bounds3 local = geometryBounds(glass.geometry);
+    if (glass.transform >= RenderScene::kFirstMovingTransform || !local.finite()) return false;
+    middle = (local.lo + local.hi) * 0.5;
+    const Vec3 half = (local.hi - local.lo) * 0.5;
+    radius = std::max({half.x, half.y, half.z});
+    if (glass.transform >= 0) {
+        const Transform& toWorld = scene_.transforms[static_cast<size_t>(glass.transform)].toWorld;
+        middle = toWorld.point(middle);
+        radius = 0.5 * glm::length(toWorld.point(local.hi) - toWorld.point(local.lo));
+    }
+    return true;
+}
+
+int PathIntegrator::glassChainsTo(const Vertex& from, const ChainTarget& target, Chains& found,
                                   TraceContext& context) const {
-    // The straight line says how many glass surfaces the path crosses, and is where the
-    // solve starts.
+    // The straight line says how many glass surfaces the path crosses, and is the first seed.
     const Vec3 dir = glm::normalize(target.point - from.si.point);
-    if (glm::dot(dir, from.n) <= 0) return false;
+    if (glm::dot(dir, from.n) <= 0) return 0;
     const Vec3 origin = originToward(from, dir);
     int crossings = 0;
     bool glassOnly = true;
@@ -179,24 +199,44 @@ bool PathIntegrator::glassChainTo(const Vertex& from, const ChainTarget& target,
                                if (hit.t < nearest.t) nearest = hit;
                                return glassOnly;
                            });
-    if (!glassOnly || crossings == 0 || from.bounce + crossings >= settings_.bounces) return false;
+    if (!glassOnly || crossings == 0 || from.bounce + crossings >= settings_.bounces) return 0;
 
-    if (solveFrom(from, target, dir, crossings, out, context)) return true;
+    int count = 0;
+    const auto solve = [&](const Vec3& seed) {
+        Chain chain;
+        if (count == static_cast<int>(found.size()) || !solveFrom(from, target, seed, crossings, chain, context))
+            return;
+        for (int i = 0; i < count; ++i)
+            if (glm::dot(found[static_cast<size_t>(i)].wi, chain.wi) >= 1 - kSameDirection) return;
+        found[static_cast<size_t>(count++)] = chain;
+    };
+    solve(dir);
+    Vec3 middle;
+    double radius;
+    if (!glassExtent(nearest, middle, radius)) return count;
+    const Vec3 toMiddle = glm::normalize(middle - from.si.point);
+    const double away = glm::length(middle - from.si.point);
+    // Close by, the glass fills much of the view and joins the points by several paths (a
+    // ball seen from the floor it stands on): seeds fanned across it, in the plane through
+    // the point, its middle and the target.
+    const bool near = away < kNearGlass * radius;
+    if (Vec3 side = target.point - from.si.point - glm::dot(target.point - from.si.point, toMiddle) * toMiddle;
+        near && glm::dot(side, side) > 0) {
+        side = glm::normalize(side);
+        const double cone = std::asin(std::min(1.0, radius / away));
+        for (int k = -kFanSeeds; k <= kFanSeeds; ++k) {
+            const double angle = k * cone / (kFanSeeds + 0.5);
+            solve(std::cos(angle) * toMiddle + std::sin(angle) * side);
+        }
+    }
     // A light's position has no other way to reach the point: where the glass bends the
     // path far from the straight line (the rim of a ball's caustic), two more seeds: toward
-    // the middle of the glass the line meets first, and the straight line mirrored about
-    // that. An emitter's paths are also found by the bounces, which cover what the solve
-    // misses.
-    if (target.primitive >= 0 || nearest.instance >= 0) return false;
-    const Primitive& glass = scene_.primitives[static_cast<size_t>(nearest.primitive)];
-    const Bounds3 local = geometryBounds(glass.geometry);
-    if (glass.transform >= RenderScene::kFirstMovingTransform || !local.finite()) return false;
-    Vec3 middle = (local.lo + local.hi) * 0.5;
-    if (glass.transform >= 0) middle = scene_.transforms[static_cast<size_t>(glass.transform)].toWorld.point(middle);
-    const Vec3 toMiddle = glm::normalize(middle - from.si.point);
-    return solveFrom(from, target, toMiddle, crossings, out, context) ||
-           solveFrom(from, target, glm::normalize(2 * glm::dot(dir, toMiddle) * toMiddle - dir), crossings, out,
-                     context);
+    // the glass's middle, and the straight line mirrored about it. An emitter's paths are
+    // also found by the bounces, which cover what the solves miss.
+    if (target.primitive >= 0 || count > 0) return count;
+    if (!near) solve(toMiddle);
+    if (count == 0) solve(glm::normalize(2 * glm::dot(dir, toMiddle) * toMiddle - dir));
+    return count;
 }
 
 bool PathIntegrator::solveFrom(const Vertex& from, const ChainTarget& target, const Vec3& seed, int crossings,
@@ -264,46 +304,61 @@ bool PathIntegrator::solveFrom(const Vertex& from, const ChainTarget& target, co
 
 Vec3 PathIntegrator::causticFromEmitter(const Vertex& v, const Bsdf& bsdf, const EmitterSample& es,
                                         TraceContext& context) const {
-    Chain chain;
-    if (!v.inAir || !glassChainTo(v, {es.point, Frame::fromAxis(es.normal), es.primitive, es.instance}, chain, context))
-        return Vec3(0.0);
-    const Vec3 f = bsdf.evalCos(chain.wi);
-    // Light sampling's density of the direction: the point's density by area, times the
-    // area per solid angle.
-    const double pdf = areaDensity(es.pdf, v.si.point, es.point, es.normal) * chain.spread;
-    if (f == Vec3(0.0) || !(pdf > 0)) return Vec3(0.0);
-    const double weight = powerHeuristic(pdf, bsdf.pdf(chain.wi) * chain.chance);
-    return f * chain.throughput * es.radiance * (weight / pdf);
+    if (!v.inAir) return Vec3(0.0);
+    Chains chains;
+    const int count =
+        glassChainsTo(v, {es.point, Frame::fromAxis(es.normal), es.primitive, es.instance}, chains, context);
+    // Light sampling's density of a direction: the point's density by area, times the
+    // chain's area per solid angle.
+    const double pointPdf = areaDensity(es.pdf, v.si.point, es.point, es.normal);
+    Vec3 sum(0.0);
+    for (int i = 0; i < count; ++i) {
+        const Chain& chain = chains[static_cast<size_t>(i)];
+        const Vec3 f = bsdf.evalCos(chain.wi);
+        const double pdf = pointPdf * chain.spread;
+        if (f == Vec3(0.0) || !(pdf > 0)) continue;
+        const double weight = powerHeuristic(pdf, bsdf.pdf(chain.wi) * chain.chance);
+        sum += f * chain.throughput * es.radiance * (weight / pdf);
+    }
+    return sum;
 }
 
 Vec3 PathIntegrator::causticFromLight(const Vertex& v, const Bsdf& bsdf, const Light& light,
                                       TraceContext& context) const {
-    Chain chain;
+    if (!v.inAir) return Vec3(0.0);
+    Chains chains;
     const Vec3 toLight = glm::normalize(light.position() - v.si.point);
-    if (!v.inAir || !glassChainTo(v, {light.position(), Frame::fromAxis(toLight)}, chain, context))
-        return Vec3(0.0);
-    // The light seen straight at the path's length lights the point as lightStrength says;
-    // through the glass, the light of the solid angle it sends toward the path's end falls
-    // on the area the path's beam has there, as the spread gives it (the étendue
-    // dA·cos θ·dω is the same at both ends). The beam's area across it is the spread's times
-    // the cosine between the path and the target plane's normal.
-    const double across = chain.spread * std::abs(glm::dot(chain.arrival, toLight));
-    if (!(across > 0)) return Vec3(0.0);
-    return bsdf.evalCos(chain.wi) * chain.throughput * light.colorToward(-chain.arrival) *
-           (lightStrength(light, chain.length, v.pathLength) * chain.length * chain.length / across);
+    const int count = glassChainsTo(v, {light.position(), Frame::fromAxis(toLight)}, chains, context);
+    Vec3 sum(0.0);
+    for (int i = 0; i < count; ++i) {
+        const Chain& chain = chains[static_cast<size_t>(i)];
+        // The light seen straight at the path's length lights the point as lightStrength
+        // says; through the glass, the light of the solid angle it sends toward the path's
+        // end falls on the area the path's beam has there, as the spread gives it (the
+        // étendue dA·cos θ·dω is the same at both ends). The beam's area across it is the
+        // spread's times the cosine between the path and the target plane's normal.
+        const double across = chain.spread * std::abs(glm::dot(chain.arrival, toLight));
+        if (!(across > 0)) continue;
+        sum += bsdf.evalCos(chain.wi) * chain.throughput * light.colorToward(-chain.arrival) *
+               (lightStrength(light, chain.length, v.pathLength) * chain.length * chain.length / across);
+    }
+    return sum;
 }
 
 double PathIntegrator::causticWeight(const CausticStart& start, const Vertex& v, TraceContext& context) const {
     const Vec3& from = start.from.si.point;
     const double pointPdf =
         areaDensity(emitters_.pdf(v.hit, from, v.si.point, v.si.normal), from, v.si.point, v.si.normal);
-    Chain chain;
-    if (!(pointPdf > 0) ||
-        !glassChainTo(start.from, {v.si.point, Frame::fromAxis(v.si.normal), v.hit.primitive, v.hit.instance}, chain,
-                      context) ||
-        chain.crossings != start.crossings || glm::dot(chain.wi, start.dir) < 1 - kSameDirection)
-        return 1;
-    return powerHeuristic(start.chance, pointPdf * chain.spread);
+    if (!(pointPdf > 0)) return 1;
+    Chains chains;
+    const int count = glassChainsTo(
+        start.from, {v.si.point, Frame::fromAxis(v.si.normal), v.hit.primitive, v.hit.instance}, chains, context);
+    for (int i = 0; i < count; ++i) {
+        const Chain& chain = chains[static_cast<size_t>(i)];
+        if (chain.crossings == start.crossings && glm::dot(chain.wi, start.dir) >= 1 - kSameDirection)
+            return powerHeuristic(start.chance, pointPdf * chain.spread);
+    }
+    return 1;
 }
 
 } // namespace crt::tracer

@@ -11,6 +11,7 @@
 
 #include <glm/mat2x2.hpp>
 
+#include <array>
 #include <vector>
 
 namespace crt::tracer {
@@ -164,10 +165,15 @@ private:
     /// direction `seed`.
     bool solveFrom(const Vertex& from, const ChainTarget& target, const Vec3& seed, int crossings, Chain& out,
                    TraceContext& context) const;
-    /// The path from `from` through the clear glass the straight line to the target crosses,
-    /// solved for; false when the line crosses anything else or nothing, or the solve fails.
-    /// A function of the two points alone, so that paths found either way agree on it.
-    bool glassChainTo(const Vertex& from, const ChainTarget& target, Chain& out, TraceContext& context) const;
+    /// Where the glass of `hit` stands: the middle of its bounds and its largest half-extent,
+    /// in world space; false for an instance's part, or a moving or unbounded primitive.
+    bool glassExtent(const Hit& hit, Vec3& middle, double& radius) const;
+    /// The paths from `from` through the clear glass the straight line to the target
+    /// crosses, solved for from their seeds, each once: how many (none when the line crosses
+    /// anything else or nothing). A function of the two points alone, so that paths found
+    /// either way agree on it.
+    using Chains = std::array<Chain, 8>;
+    int glassChainsTo(const Vertex& from, const ChainTarget& target, Chains& found, TraceContext& context) const;
     /// Light sampling's estimate of the light of the sampled emitter point reaching `v`
     /// through the clear glass that hides it from the straight line.
     Vec3 causticFromEmitter(const Vertex& v, const Bsdf& bsdf, const EmitterSample& es,
