@@ -75,14 +75,14 @@ private:
     /// the camera's line, or from reflections and refractions when context.bent): `ray`
     /// becomes the ray the hit is on, begun past the crossed surfaces `skipped` along it.
     bool nearestSeen(Ray& ray, Hit& hit, Departure departed, double& skipped, TraceContext& context) const;
-    /// The colour of what `ray` sees, hidden surfaces crossed and visible lights met (what
-    /// trace() finds before fog and absorption), and how far along the ray it is (kInfinity:
-    /// the background).
-    /// Out of line: most scenes hide nothing and show no light, and trace() stays small.
     /// `color`, seen `distance` along the ray through what it passes on the way: the medium
     /// or absorption of the solid `medium` it is in, or else the fog.
     Vec3 passedOnTheWay(const Ray& ray, double distance, Vec3 color, double pathLength, int32_t medium,
                         TraceContext& context) const;
+    /// The colour of what `ray` sees, hidden surfaces crossed and visible lights met (what
+    /// trace() finds before fog and absorption), and how far along the ray it is (kInfinity:
+    /// the background).
+    /// Out of line: most scenes hide nothing and show no light, and trace() stays small.
     [[gnu::noinline]] Vec3 seenAlong(const Ray& ray, int depth, double pathLength, int32_t medium,
                                      TraceContext& context, Departure departed, double& distance) const;
     Vec3 shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium, TraceContext& context) const;

@@ -92,7 +92,7 @@ Vec3 PathIntegrator::visibility(const Ray& ray, double tMax, Departure departed,
             const ShadingMaterial& m = scene_.materials[static_cast<size_t>(index)];
             if (!clearBoundary_[static_cast<size_t>(index)]) {
                 through = Vec3(0.0);
-            } else if (m.medium >= 0 || rgb(m.absorption) != Vec3(0.0)) {
+            } else if (fillsSolid(m)) {
                 const SurfaceInteraction si = scene_.interaction(ray, hit);
                 if (si.solid) solids.push_back({hit.t, index, glm::dot(ray.dir, si.normal) < 0});
             }
@@ -383,7 +383,6 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
             // Crossed as if it were not there, as a see-through surface is below.
             if (crossings > mostCrossings) break;
             path.crossStraight(scene_, v);
-            path.caustic.crossings = -1;
             continue;
         }
         Vec3 color;

@@ -1,20 +1,12 @@
 #include "tracer/solid_around.hpp"
 
-#include "tracer/lights.hpp"
-
 #include <vector>
 
 namespace crt::tracer {
 
-namespace {
-
-bool fills(const ShadingMaterial& m) { return m.medium >= 0 || rgb(m.absorption) != Vec3(0.0); }
-
-} // namespace
-
 bool fillsSolids(const RenderScene& scene, const MaterialMixer& mixer) {
     for (size_t i = 0; i < scene.materials.size(); ++i)
-        if (mixer.isPlain(static_cast<int32_t>(i)) && fills(scene.materials[i])) return true;
+        if (mixer.isPlain(static_cast<int32_t>(i)) && fillsSolid(scene.materials[i])) return true;
     return false;
 }
 
@@ -33,7 +25,7 @@ int32_t solidAround(const RenderScene& scene, const MaterialMixer& mixer, bool h
     scene.forEachCrossing(probe, kInfinity, {}, scratch, uncounted, [&](const Hit& hit) {
         if (hides && (scene.hiddenFrom(hit) & scene::kHiddenFromCamera)) return true;
         const int32_t material = scene.materialOf(hit);
-        if (material < 0 || !mixer.isPlain(material) || !fills(scene.materials[static_cast<size_t>(material)]))
+        if (material < 0 || !mixer.isPlain(material) || !fillsSolid(scene.materials[static_cast<size_t>(material)]))
             return true;
         const SurfaceInteraction si = scene.interaction(probe, hit);
         if (!si.solid) return true;

@@ -2,6 +2,7 @@
 // through what fills it from its first step, as a ray that had entered the solid would.
 #pragma once
 
+#include "tracer/lights.hpp"
 #include "tracer/material_mix.hpp"
 #include "tracer/render_scene.hpp"
 
@@ -17,6 +18,9 @@ struct SolidAroundCache {
     double time = kUnasked;
     int32_t material = -1;
 };
+
+/// Whether material `m` fills the solids it bounds: a medium, or absorption.
+inline bool fillsSolid(const ShadingMaterial& m) { return m.medium >= 0 || rgb(m.absorption) != Vec3(0.0); }
 
 /// Whether some material fills the solids it bounds (a medium, or absorption), which is
 /// what rays inside a solid are tracked for. Blends are not counted.
