@@ -3,18 +3,19 @@
 # its resume log into the same bits as an uninterrupted render; a changed scene is refused.
 set -u
 crtc=$1
-# Under the sanitizers (a second argument of 1) the path-traced renders take fewer paths: they
-# are what takes long there, and the Release suite renders them at full count.
-paths=256
-[ "${2:-0}" = 1 ] && paths=64
+# Under the sanitizers (a second argument of 1) the renders are smaller and the path-traced ones
+# take fewer paths: they are what takes long there, and the Release suite renders them in full.
+paths=256 width=480 height=360
+[ "${2:-0}" = 1 ] && paths=64 width=240 height=180
+tiles=$(((width + 15) / 16 * ((height + 15) / 16))) # crtc's tiles are 16 pixels square
 work=$(mktemp -d)
 trap 'kill $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
 failures=0
 source "$(dirname "$0")/expect.sh"
 
-cat >"$work/scene.crt" <<'CRT'
+cat >"$work/scene.crt" <<CRT
 Settings {
-    width -> 480 height -> 360 supersampling -> 4
+    width -> $width height -> $height supersampling -> 4
     camera -> Camera { position -> vec3(0, 1, -5) pointing -> vec3(0, 0, 0) }
     lights -> [AreaLight { corner -> vec3(2, 3, -3) edgeA -> vec3(1, 0, 0) edgeB -> vec3(0, 1, 0.5)
                            color -> rgb(1, 1, 1) }]
@@ -54,7 +55,7 @@ expect_text "$work/err" "interrupted; no image written; crtc --continue" "Ctrl-C
 [ -e "$work/a.png" ] && fail "Ctrl-C left an image"
 [ -s "$work/.a.png.crtc-resume" ] || fail "Ctrl-C left no resume log"
 expect_status 0 "--continue after Ctrl-C" "$crtc" --continue -o "$work/a.png" "$work/scene.crt"
-expect_text "$work/err" "continuing .*a.png: [0-9]+ of 690 tiles were rendered before" "--continue says what it reuses"
+expect_text "$work/err" "continuing .*a.png: [0-9]+ of $tiles tiles were rendered before" "--continue says what it reuses"
 cmp -s "$work/a.png" "$work/whole.png" || fail "the continued render differs from the uninterrupted one"
 [ -e "$work/.a.png.crtc-resume" ] && fail "the log is left after the render finished"
 
@@ -94,17 +95,17 @@ sed -i 's/radius -> 0.4/radius -> 0.41/' "$work/scene.crt"
 expect_status 2 "--continue of a changed scene" "$crtc" --continue -o "$work/c.png" "$work/scene.crt"
 expect_text "$work/err" "cannot continue: frame 0 is not the frame the interrupted render began" "changed scene message"
 sed -i 's/radius -> 0.41/radius -> 0.4/' "$work/scene.crt"
-expect_status 2 "--continue with another size" "$crtc" --continue --width 240 -o "$work/c.png" "$work/scene.crt"
+expect_status 2 "--continue with another size" "$crtc" --continue --width $((width / 2)) -o "$work/c.png" "$work/scene.crt"
 expect_status 2 "nothing to continue" "$crtc" --continue -o "$work/none.png" "$work/scene.crt"
 expect_text "$work/err" "nothing to continue" "nothing to continue message"
 
 # Numbered frames: Ctrl-C during frame 1 names frame 0 as written; --continue renders the rest.
 mkdir "$work/whole_frames" "$work/frames"
-expect_status 0 "uninterrupted frames" "$crtc" -q --frames 3 --width 240 --height 180 -o "$work/whole_frames/f%d.png" "$work/scene.crt"
-interrupt_render INT "" "$work/frames/f0.png" --frames 3 --width 240 --height 180 -o "$work/frames/f%d.png" "$work/scene.crt"
+expect_status 0 "uninterrupted frames" "$crtc" -q --frames 3 --width $((width / 2)) --height $((height / 2)) -o "$work/whole_frames/f%d.png" "$work/scene.crt"
+interrupt_render INT "" "$work/frames/f0.png" --frames 3 --width $((width / 2)) --height $((height / 2)) -o "$work/frames/f%d.png" "$work/scene.crt"
 sleep 0.1
 expect_text "$work/err" "interrupted; frames 0 to 0 written" "Ctrl-C names the frames written"
-expect_status 0 "--continue frames" "$crtc" --continue --frames 3 --width 240 --height 180 -o "$work/frames/f%d.png" "$work/scene.crt"
+expect_status 0 "--continue frames" "$crtc" --continue --frames 3 --width $((width / 2)) --height $((height / 2)) -o "$work/frames/f%d.png" "$work/scene.crt"
 for f in f0 f1 f2; do
     cmp -s "$work/frames/$f.png" "$work/whole_frames/$f.png" || fail "continued frame $f differs"
 done
@@ -133,7 +134,7 @@ LOG_AFTER=0.3 interrupt_render INT "$work/.e.png.crtc-resume" "" --supersampling
 [ "$status" = 130 ] || fail "Ctrl-C after the log started: exit status $status, expected 130"
 expect_text "$work/err" "interrupted; no image written; crtc --continue" "the note offers --continue once the log started"
 expect_status 0 "--continue of a log started late" "$crtc" --continue --supersampling 6 -o "$work/e.png" "$work/scene.crt"
-expect_text "$work/err" "continuing .*e.png: [0-9]+ of 690 tiles were rendered before" "--continue reuses the tiles logged"
+expect_text "$work/err" "continuing .*e.png: [0-9]+ of $tiles tiles were rendered before" "--continue reuses the tiles logged"
 cmp -s "$work/e.png" "$work/whole6.png" || fail "the render continued from a late log differs"
 
 # A render that ends well before the delay (small, so also under the sanitizers) creates no
