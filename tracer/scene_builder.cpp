@@ -6,11 +6,13 @@
 #include "scene/mesh_file.hpp"
 #include "scene/primitive_count.hpp"
 #include "tracer/height_grid_reading.hpp"
+#include "tracer/worker_threads.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <map>
+#include <span>
 
 namespace crt::tracer {
 
@@ -20,6 +22,10 @@ namespace crt::tracer {
 constexpr size_t kMostCsgNodes = RenderScene::kFirstInstanceObject - RenderScene::kFirstCsgObject;
 static_assert(scene::RenderLimits::kMostPrimitives < RenderScene::kFirstCsgObject);
 static_assert(RenderScene::kFirstInstanceObject + scene::RenderLimits::kMostPrimitives < WideChild::kMaxItems);
+
+// Runs of fewer plain roots (RenderSceneBuilder::plainRoot) are drawn on one thread: a
+// thread of their own would cost more than they take.
+constexpr size_t kParallelRoots = 8192;
 
 class RenderSceneBuilder {
 public:
@@ -64,8 +70,7 @@ public:
         scene_.primitives.reserve(copied);
         scene_.primitiveEntities.reserve(copied);
         objects_.reserve(copied + shared_.storage->instances);
-        for (int32_t root : desc_.drawn)
-            if (!addDrawn(root, Transform())) return false;
+        if (!addRoots()) return false;
         finishAcceleration();
         return true;
     }
@@ -107,6 +112,64 @@ private:
         }
         child.motion = std::move(chain);
         return child;
+    }
+
+    /// Draws every root of the description, runs of plain roots on the build's threads.
+    bool addRoots() {
+        const std::vector<int32_t>& roots = desc_.drawn;
+        for (size_t begin = 0; begin < roots.size();) {
+            size_t end = begin;
+            while (end < roots.size() && plainRoot(roots[end])) ++end;
+            if (end - begin >= kParallelRoots) {
+                addPlainRoots(std::span(roots).subspan(begin, end - begin));
+            } else {
+                for (size_t i = begin; i < end; ++i)
+                    if (!addDrawn(roots[i], Transform())) return false;
+            }
+            if (end < roots.size() && !addDrawn(roots[end], Transform())) return false;
+            begin = end + 1;
+        }
+        return true;
+    }
+
+    /// Whether the entity, drawn as a root, is one primitive made from its own parameters
+    /// alone: one of the simple shapes scenes draw by the thousand, not instanced and hidden
+    /// from nothing.
+    bool plainRoot(int32_t entity) const {
+        const scene::EntityDesc& e = desc_.entities[static_cast<size_t>(entity)];
+        if (e.hidden != 0 || instanced(entity)) return false;
+        return std::visit(
+            [](const auto& shape) {
+                using S = std::decay_t<decltype(shape)>;
+                return std::is_same_v<S, scene::SphereShape> || std::is_same_v<S, scene::BoxShape> ||
+                       std::is_same_v<S, scene::CylinderShape> || std::is_same_v<S, scene::ConeShape> ||
+                       std::is_same_v<S, scene::TorusShape> || std::is_same_v<S, scene::DiscShape> ||
+                       std::is_same_v<S, scene::QuadShape> || std::is_same_v<S, scene::TriangleShape> ||
+                       std::is_same_v<S, scene::SuperellipsoidShape>;
+            },
+            e.shape);
+    }
+
+    /// Draws plain roots (plainRoot), one primitive each, made on up to threads_ threads into
+    /// the places drawing them one by one gives them.
+    void addPlainRoots(std::span<const int32_t> roots) {
+        auto primitiveOf = [&](int32_t root) {
+            const scene::EntityDesc& e = desc_.entities[static_cast<size_t>(root)];
+            return Primitive{*makeGeometry(e.shape, desc_.limits), -1, e.material >= 0 ? e.material : defaultMaterial_};
+        };
+        // Room made with a sphere, which a Geometry holds inline: no allocation to undo.
+        const Primitive placeholder{SphereGeometry(scene::SphereShape{}), -1, 0};
+        const size_t first = scene_.primitives.size();
+        scene_.primitives.resize(first + roots.size(), placeholder);
+        scene_.primitiveEntities.insert(scene_.primitiveEntities.end(), roots.begin(), roots.end());
+        const size_t parts = std::clamp<size_t>(roots.size() / kParallelRoots, 1, std::max(threads_, 1u));
+        runOnThreads(parts, [&](size_t part) {
+            const size_t end = roots.size() * (part + 1) / parts;
+            for (size_t i = roots.size() * part / parts; i < end; ++i)
+                scene_.primitives[first + i] = primitiveOf(roots[i]);
+        });
+        markHidden(scene_.hiddenPrimitives, scene_.primitives.size(), 0);
+        for (size_t i = 0; i < roots.size(); ++i) objects_.push_back(static_cast<int32_t>(first + i));
     }
 
     /// Draws an entity: groups and unions are drawn as their members (a union keeps every
