@@ -145,7 +145,8 @@ Vec3 PathIntegrator::fromLights(const Vertex& v, const Scatter& bsdf, TraceConte
     return sum;
 }
 
-Vec3 PathIntegrator::areaLightsAlong(const Ray& ray, double tMax, double scatterPdf, double pathLength) const {
+Vec3 PathIntegrator::areaLightsAlong(const Ray& ray, double tMax, double scatterPdf, double pathLength,
+                                     double sinceScatter) const {
     Vec3 sum(0.0);
     for (const Light& light : lights_) {
         // A shadowless light is met through whatever stands before it, as light sampling sees it.
@@ -153,8 +154,10 @@ Vec3 PathIntegrator::areaLightsAlong(const Ray& ray, double tMax, double scatter
         if (t == kInfinity) continue;
         // The radiance that gives light sampling's estimate: the light spread over the
         // parallelogram, each point lighting as a point light does (so it grows with the
-        // distance, as a point light without falloff keeps its strength there).
-        const double pdf = light.areaPdf(ray.origin, ray.dir, t);
+        // distance, as a point light without falloff keeps its strength there). The distance
+        // is the path's from the point it lights: through a mirror or a pane, the light keeps
+        // its strength as a point light does through them (Caustics).
+        const double pdf = light.areaPdf(ray.origin, ray.dir, sinceScatter + t);
         if (pdf == kInfinity) continue;
         const double weight = scatterPdf > 0 ? powerHeuristic(scatterPdf, pdf) : 1.0;
         sum += light.color() * (lightStrength(light, t, pathLength) * pdf * weight);
@@ -229,6 +232,9 @@ struct PathIntegrator::Path {
     Vec3 scatteredFrom{0.0};
     double scatterPdf = 0;
     double pathLength = 0; ///< from the camera to the ray's origin
+    /// pathLength at the last vertex where a lobe light sampling reaches scattered the path
+    /// (-1: none yet; mirrors and glass do not count).
+    double pathLengthAtScatter = -1;
     int bounce = 0;
     CausticStart caustic; ///< the way through clear glass the path is on, if any
 
@@ -253,7 +259,9 @@ struct PathIntegrator::Path {
 
 [[gnu::always_inline]] inline void PathIntegrator::alongSegment(Path& path, double reach, bool inMedium) const {
     if (path.bounce > 0 && hasAreaLights_)
-        path.radiance += path.beta * areaLightsAlong(path.ray, reach, path.scatterPdf, path.pathLength);
+        path.radiance +=
+            path.beta * areaLightsAlong(path.ray, reach, path.scatterPdf, path.pathLength,
+                                        path.pathLengthAtScatter >= 0 ? path.pathLength - path.pathLengthAtScatter : 0);
     if (path.medium >= 0 && !inMedium) {
         // Beer–Lambert absorption along the path inside the solid.
         const Vec3 a = rgb(scene_.materials[static_cast<size_t>(path.medium)].absorption);
@@ -277,6 +285,7 @@ bool PathIntegrator::scatterInMedium(Path& path, const Medium& medium, double t,
     const Vec3 wi = medium.samplePhase(phase.d, context.rng.uniform2());
     path.scatteredFrom = v.si.point;
     path.scatterPdf = phase.pdf(wi);
+    path.pathLengthAtScatter = v.pathLength;
     path.ray = Ray{v.si.point, wi, path.ray.time};
     path.departed = {};
     return nextBounce(path, context);
@@ -321,6 +330,7 @@ Bsdf PathIntegrator::bsdfAt(Vertex& v, const ShadingMaterial& m, const Vec3& col
     if (path.beta == Vec3(0.0)) return false;
     path.scatteredFrom = v.si.point;
     path.scatterPdf = next.pdf;
+    if (next.pdf > 0) path.pathLengthAtScatter = v.pathLength;
     if (solvesCaustics_) noteCausticBounce(path.caustic, v, next);
     if (next.transmitted) {
         ++context.stats.refractionRays;

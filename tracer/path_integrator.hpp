@@ -104,7 +104,10 @@ private:
     Vec3 fromLights(const Vertex& v, const Scatter& scatter, TraceContext& context) const;
     /// The light of the area lights a path's ray meets before `tMax`, weighed against light
     /// sampling's chance of the same direction (`scatterPdf`, 0 when it has none).
-    Vec3 areaLightsAlong(const Ray& ray, double tMax, double scatterPdf, double pathLength) const;
+    /// `sinceScatter`: the path's length from its last scattering vertex to the ray's origin
+    /// (through mirrors and glass), 0 when the ray starts there or the path has none.
+    Vec3 areaLightsAlong(const Ray& ray, double tMax, double scatterPdf, double pathLength,
+                         double sinceScatter) const;
     template <typename Scatter>
     Vec3 fromEmitter(const Vertex& v, const Scatter& scatter, TraceContext& context) const;
     template <typename Scatter>

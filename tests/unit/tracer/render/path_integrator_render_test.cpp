@@ -347,3 +347,31 @@ TEST_CASE("path: a mirror shows an area light the camera does not see", "[render
     m.desc.camera = lookAt({0, 0.5, 0}, {0, 3, 0.01}, 10);
     for (float v : renderOk(m.desc).pixels) CHECK(v == 0);
 }
+
+TEST_CASE("path: an area light lights a floor through a clear pane by the share the pane lets through",
+          "[render][path]") {
+    // Light sampling's shadow rays stop at the glass, so the floor gets only the paths that
+    // cross the pane and meet the light. Each point of the light lights as a point light
+    // does, which keeps its strength through glass that bends nothing: the floor gets the
+    // pane's transparency times its light without the pane. (Reckoned from the pane, the
+    // distance to the light would be half the path's, and the light a quarter of that.)
+    constexpr double kTransparency = 0.6;
+    SceneMaker m;
+    scene::CameraDesc camera = lookAt({0, 0.5, 0}, {0, 0, 0}, 1);
+    camera.up = {0, 0, 1};
+    m.desc = pathScene(camera, 256, 3);
+    m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(0.5))));
+    m.desc.lights.push_back(areaLight(6, 2, 1));
+    m.desc.settings.integrator = scene::Integrator::Whitted;
+    m.desc.settings.shadowSamples = 4096;
+    const double bare = pixelAt(renderOk(m.desc), kSize / 2, kSize / 2).x;
+    m.desc.settings.integrator = scene::Integrator::Path;
+    ShadingMaterial pane;
+    pane.color = scene::Color{1, 1, 1, 1};
+    pane.diffuse = 0;
+    pane.transparency = kTransparency;
+    pane.ior = 1.5;
+    m.draw(m.entity(scene::DiscShape{{0, 1, 0}, {0, 1, 0}, 20}, m.material(pane), false));
+    INFO("without the pane " << bare);
+    checkWithin3Se(estimate(renderOk(m.desc), 0), kTransparency * bare);
+}
