@@ -152,8 +152,8 @@ double Light::crossing(const Ray& ray, double tMax) const {
 }
 
 double Light::areaPdf(const Vec3& point, const Vec3& toLight, double distance) const {
-    // area · |cos θ|; the inscribed ellipse has π/4 of the parallelogram's area.
-    const double projected = std::abs(glm::dot(areaFrame(point).normal, toLight)) * (circular_ ? kPi / 4 : 1.0);
+    // area · |cos θ|
+    const double projected = std::abs(glm::dot(areaFrame(point).normal, toLight)) * sampledShare();
     return projected > 0 ? distance * distance / projected : kInfinity;
 }
 

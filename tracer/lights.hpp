@@ -47,6 +47,15 @@ public:
     /// The solid-angle density of sampleUniformly's points of an area light seen from
     /// `point`, at `distance` along the unit direction `toLight`: d² / (area · |cos θ|).
     double areaPdf(const Vec3& point, const Vec3& toLight, double distance) const;
+    /// Whether it is an area light whose plane is the same whatever point it lights (no
+    /// `orient`), of some area: one a path through glass can be solved onto.
+    bool fixedPlane() const {
+        return kind_ == scene::LightKind::Area && !orient_ && areaNormal_ != Vec3(0.0);
+    }
+    /// The unit normal of a fixed plane's light.
+    Vec3 planeNormal() const { return glm::normalize(areaNormal_); }
+    /// The density by area of the points sampleUniformly draws on a fixed plane's light.
+    double pointDensity() const { return 1 / (glm::length(areaNormal_) * sampledShare()); }
 
     Vec3 color() const { return color_; }
     double ambient() const { return ambient_; }
@@ -69,6 +78,9 @@ public:
     bool shadowless() const { return shadowless_; }
 
 private:
+    /// The share of the parallelogram its points are drawn from: the inscribed ellipse's π/4
+    /// when `circular`.
+    double sampledShare() const { return circular_ ? kPi / 4 : 1.0; }
     /// An area light's parallelogram as seen from `point` (turned to face it when `orient`).
     struct AreaFrame {
         Vec3 corner, edgeA, edgeB;

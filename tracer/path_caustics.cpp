@@ -1,24 +1,26 @@
 // Caustics under the path integrator: light reaching a surface through clear glass, found by
 // manifold next-event estimation (docs/rendering.md, "Caustics").
 //
-// Light sampling aims a shadow ray straight at a light or a point of an emitter. Where clear
-// glass stands between, the light arrives bent, along a way no straight ray follows: the
-// paths' own bounces find it only by chance (the bright, noisy spot under a glass ball), and
-// a point light's never. So when the straight line crosses only clear glass, light sampling
-// also solves for the path through it. From the straight line, Newton's method turns the
-// direction leaving the surface point until the path it starts, refracted at each glass
-// surface the line crosses, lands on the light's point (Hanika et al. 2015, "Manifold next
-// event estimation", in its shooting form: the unknown is the direction, the residual where
-// the path meets a plane through the target); near the glass, and for a point light where
-// that fails, from more seeds too (glassChainsTo), every path found counting. The light a
-// path brings is weighed by how the glass spreads it: the target plane's area per solid
-// angle of directions at the surface point, measured by turning the direction a little.
+// Light sampling aims a shadow ray straight at a light, or a point of an area light or an
+// emitter. Where clear glass stands between, the light arrives bent, along a way no straight
+// ray follows: the paths' own bounces find it only by chance (the bright, noisy spot under a
+// glass ball), and a point light's never. So when the straight line crosses only clear
+// glass, light sampling also solves for the path through it. From the straight line,
+// Newton's method turns the direction leaving the surface point until the path it starts,
+// refracted at each glass surface the line crosses, lands on the light's point (Hanika et al.
+// 2015, "Manifold next event estimation", in its shooting form: the unknown is the
+// direction, the residual where the path meets a plane through the target); near curved
+// glass, and for a point light where that fails, from more seeds too (glassChainsTo), every
+// path found counting. The light a path brings is weighed by how the glass spreads it: the
+// target plane's area per solid angle of directions at the surface point, measured by
+// turning the direction a little.
 //
 // The solves are a function of the two points alone. So a path the bounces found (a lobe
-// light sampling reaches, then only clear glass, then an emitter) asks them whether light
-// sampling reaches the same path: if so, the two are weighed against each other by the power
-// heuristic; if the solves reach other paths or none, the bounce's path counts whole.
-// Together they count every path to an emitter once, however many paths join the two points.
+// light sampling reaches, then only clear glass, then an emitter or an area light) asks them
+// whether light sampling reaches the same path: if so, the two are weighed against each other
+// by the power heuristic; if the solves reach other paths or none, the bounce's path counts
+// whole. Together they count every path to an emitter or area light once, however many paths
+// join the two points.
 #include "tracer/path_integrator.hpp"
 
 #include <glm/matrix.hpp>
@@ -102,8 +104,9 @@ void PathIntegrator::prepareCaustics() {
         sharpGlass_.push_back(m.transparency > 0 && m.glossiness <= 0 && m.medium < 0 &&
                               rgb(m.emission) == Vec3(0.0) && !clearBoundary_[i]);
     }
-    const bool pointLights = std::any_of(lights_.begin(), lights_.end(), [](const Light& l) { return l.fromPoint(); });
-    solvesCaustics_ = (!emitters_.empty() || pointLights) && !fog_ && !hides_ &&
+    const bool lightsToSolveFor = std::any_of(lights_.begin(), lights_.end(),
+                                              [](const Light& l) { return l.fromPoint() || l.fixedPlane(); });
+    solvesCaustics_ = (!emitters_.empty() || lightsToSolveFor) && !fog_ && !hides_ &&
                       std::any_of(sharpGlass_.begin(), sharpGlass_.end(), [](uint8_t g) { return g != 0; });
 }
 
@@ -216,10 +219,13 @@ int PathIntegrator::glassChainsTo(const Vertex& from, const ChainTarget& target,
     if (!glassExtent(nearest, middle, radius)) return count;
     const Vec3 toMiddle = glm::normalize(middle - from.si.point);
     const double away = glm::length(middle - from.si.point);
-    // Close by, the glass fills much of the view and joins the points by several paths (a
+    // Close by, curved glass fills much of the view and joins the points by several paths (a
     // ball seen from the floor it stands on): seeds fanned across it, in the plane through
-    // the point, its middle and the target.
-    const bool near = away < kNearGlass * radius;
+    // the point, its middle and the target. Flat faces (a box, a pane) bend every direction
+    // alike, and the straight line's seed finds their path.
+    const Geometry& shape = scene_.primitives[static_cast<size_t>(nearest.primitive)].geometry;
+    const bool curved = !holds<BoxGeometry>(shape) && !isFlat(shape);
+    const bool near = curved && away < kNearGlass * radius;
     if (Vec3 side = target.point - from.si.point - glm::dot(target.point - from.si.point, toMiddle) * toMiddle;
         near && glm::dot(side, side) > 0) {
         side = glm::normalize(side);
@@ -233,7 +239,7 @@ int PathIntegrator::glassChainsTo(const Vertex& from, const ChainTarget& target,
     // path far from the straight line (the rim of a ball's caustic), two more seeds: toward
     // the glass's middle, and the straight line mirrored about it. An emitter's paths are
     // also found by the bounces, which cover what the solves miss.
-    if (target.primitive >= 0 || count > 0) return count;
+    if (target.bouncesReach || count > 0) return count;
     if (!near) solve(toMiddle);
     if (count == 0) solve(glm::normalize(2 * glm::dot(dir, toMiddle) * toMiddle - dir));
     return count;
@@ -328,7 +334,7 @@ Vec3 PathIntegrator::causticFromLight(const Vertex& v, const Bsdf& bsdf, const L
     if (!v.inAir) return Vec3(0.0);
     Chains chains;
     const Vec3 toLight = glm::normalize(light.position() - v.si.point);
-    const int count = glassChainsTo(v, {light.position(), Frame::fromAxis(toLight)}, chains, context);
+    const int count = glassChainsTo(v, {light.position(), Frame::fromAxis(toLight), -1, -1, false}, chains, context);
     Vec3 sum(0.0);
     for (int i = 0; i < count; ++i) {
         const Chain& chain = chains[static_cast<size_t>(i)];
@@ -345,18 +351,52 @@ Vec3 PathIntegrator::causticFromLight(const Vertex& v, const Bsdf& bsdf, const L
     return sum;
 }
 
+Vec3 PathIntegrator::causticFromAreaLight(const Vertex& v, const Bsdf& bsdf, const Light& light,
+                                          const LightSample& ls, TraceContext& context) const {
+    if (!v.inAir) return Vec3(0.0);
+    const Vec3 normal = light.planeNormal();
+    Chains chains;
+    const int count = glassChainsTo(v, {ls.target, Frame::fromAxis(normal)}, chains, context);
+    Vec3 sum(0.0);
+    for (int i = 0; i < count; ++i) {
+        const Chain& chain = chains[static_cast<size_t>(i)];
+        // The sampled point lights as a point light does through the glass (causticFromLight,
+        // the target plane here the light's own), weighed against the bounces that meet the
+        // light by the same path: light sampling's density of its direction is the point's by
+        // area times the light's area per solid angle along the path.
+        const Vec3 f = bsdf.evalCos(chain.wi);
+        const double pdf = light.pointDensity() * chain.spread;
+        const double across = chain.spread * std::abs(glm::dot(chain.arrival, normal));
+        if (f == Vec3(0.0) || !(pdf > 0) || !(across > 0)) continue;
+        const double weight = powerHeuristic(pdf, bsdf.pdf(chain.wi) * chain.chance);
+        sum += f * chain.throughput * ls.color *
+               (lightStrength(light, chain.length, v.pathLength) * chain.length * chain.length / across * weight);
+    }
+    return sum;
+}
+
 double PathIntegrator::causticWeight(const CausticStart& start, const Vertex& v, TraceContext& context) const {
     const Vec3& from = start.from.si.point;
-    const double pointPdf =
+    const double pointDensity =
         areaDensity(emitters_.pdf(v.hit, from, v.si.point, v.si.normal), from, v.si.point, v.si.normal);
-    if (!(pointPdf > 0)) return 1;
+    return chainWeight(start, {v.si.point, Frame::fromAxis(v.si.normal), v.hit.primitive, v.hit.instance},
+                       pointDensity, context);
+}
+
+double PathIntegrator::causticWeight(const CausticStart& start, const Light& light, const Vec3& point,
+                                     TraceContext& context) const {
+    return chainWeight(start, {point, Frame::fromAxis(light.planeNormal())}, light.pointDensity(), context);
+}
+
+double PathIntegrator::chainWeight(const CausticStart& start, const ChainTarget& target, double pointDensity,
+                                   TraceContext& context) const {
+    if (!(pointDensity > 0)) return 1;
     Chains chains;
-    const int count = glassChainsTo(
-        start.from, {v.si.point, Frame::fromAxis(v.si.normal), v.hit.primitive, v.hit.instance}, chains, context);
+    const int count = glassChainsTo(start.from, target, chains, context);
     for (int i = 0; i < count; ++i) {
         const Chain& chain = chains[static_cast<size_t>(i)];
         if (chain.crossings == start.crossings && glm::dot(chain.wi, start.dir) >= 1 - kSameDirection)
-            return powerHeuristic(start.chance, pointPdf * chain.spread);
+            return powerHeuristic(start.chance, pointDensity * chain.spread);
     }
     return 1;
 }

@@ -133,6 +133,7 @@ Vec3 PathIntegrator::fromLights(const Vertex& v, const Scatter& bsdf, TraceConte
         if (visible == Vec3(0.0)) {
             if constexpr (std::is_same_v<Scatter, Bsdf>) {
                 if (solvesCaustics_ && light.fromPoint()) sum += causticFromLight(v, bsdf, light, context);
+                if (solvesCaustics_ && light.fixedPlane()) sum += causticFromAreaLight(v, bsdf, light, ls, context);
             }
             continue;
         }
@@ -141,26 +142,6 @@ Vec3 PathIntegrator::fromLights(const Vertex& v, const Scatter& bsdf, TraceConte
             light.hasArea() ? powerHeuristic(light.areaPdf(v.si.point, ls.toLight, ls.distance), bsdf.pdf(ls.toLight))
                             : 1.0;
         sum += visible * f * ls.color * (lightStrength(light, ls.distance, v.pathLength) * weight);
-    }
-    return sum;
-}
-
-Vec3 PathIntegrator::areaLightsAlong(const Ray& ray, double tMax, double scatterPdf, double pathLength,
-                                     double sinceScatter) const {
-    Vec3 sum(0.0);
-    for (const Light& light : lights_) {
-        // A shadowless light is met through whatever stands before it, as light sampling sees it.
-        const double t = light.crossing(ray, light.shadowless() ? kInfinity : tMax);
-        if (t == kInfinity) continue;
-        // The radiance that gives light sampling's estimate: the light spread over the
-        // parallelogram, each point lighting as a point light does (so it grows with the
-        // distance, as a point light without falloff keeps its strength there). The distance
-        // is the path's from the point it lights: through a mirror or a pane, the light keeps
-        // its strength as a point light does through them (Caustics).
-        const double pdf = light.areaPdf(ray.origin, ray.dir, sinceScatter + t);
-        if (pdf == kInfinity) continue;
-        const double weight = scatterPdf > 0 ? powerHeuristic(scatterPdf, pdf) : 1.0;
-        sum += light.color() * (lightStrength(light, t, pathLength) * pdf * weight);
     }
     return sum;
 }
@@ -245,6 +226,34 @@ struct PathIntegrator::Path {
     }
 };
 
+Vec3 PathIntegrator::areaLightsAlong(const Path& path, double tMax, TraceContext& context) const {
+    const Ray& ray = path.ray;
+    // The path's length from the point the light is reckoned to light: its last scattering
+    // vertex, through mirrors and glass (the ray's origin for the camera's own path).
+    const double before = path.pathLengthAtScatter >= 0 ? path.pathLength - path.pathLengthAtScatter : 0;
+    Vec3 sum(0.0);
+    for (const Light& light : lights_) {
+        // A shadowless light is met through whatever stands before it, as light sampling sees it.
+        const double t = light.crossing(ray, light.shadowless() ? kInfinity : tMax);
+        if (t == kInfinity) continue;
+        // The radiance that gives light sampling's estimate: the light spread over the
+        // parallelogram, each point lighting as a point light does (so it grows with the
+        // distance, as a point light without falloff keeps its strength there). Through a
+        // mirror or a pane, the light keeps its strength as a point light does through them
+        // (Caustics).
+        const double distance = before + t;
+        const double pdf = light.areaPdf(ray.origin, ray.dir, distance);
+        if (pdf == kInfinity) continue;
+        double weight = 1;
+        if (path.scatterPdf > 0)
+            weight = powerHeuristic(path.scatterPdf, pdf);
+        else if (path.caustic.crossings > 0 && light.fixedPlane())
+            weight = causticWeight(path.caustic, light, ray.at(t), context);
+        sum += light.color() * (lightStrength(light, distance, path.pathLength - before) * pdf * weight);
+    }
+    return sum;
+}
+
 [[gnu::always_inline]] inline bool PathIntegrator::nextBounce(Path& path, TraceContext& context) const {
     ++path.bounce;
     context.rng.skipTo(firstDimensionOf(path.bounce));
@@ -257,11 +266,9 @@ struct PathIntegrator::Path {
     return true;
 }
 
-[[gnu::always_inline]] inline void PathIntegrator::alongSegment(Path& path, double reach, bool inMedium) const {
-    if (path.bounce > 0 && hasAreaLights_)
-        path.radiance +=
-            path.beta * areaLightsAlong(path.ray, reach, path.scatterPdf, path.pathLength,
-                                        path.pathLengthAtScatter >= 0 ? path.pathLength - path.pathLengthAtScatter : 0);
+[[gnu::always_inline]] inline void PathIntegrator::alongSegment(Path& path, double reach, bool inMedium,
+                                                                TraceContext& context) const {
+    if (path.bounce > 0 && hasAreaLights_) path.radiance += path.beta * areaLightsAlong(path, reach, context);
     if (path.medium >= 0 && !inMedium) {
         // Beer–Lambert absorption along the path inside the solid.
         const Vec3 a = rgb(scene_.materials[static_cast<size_t>(path.medium)].absorption);
@@ -369,7 +376,7 @@ glm::dvec4 PathIntegrator::traceCamera(const Ray& cameraRay, bool transparentBac
         // (light sampling cannot reach them through a mirror); other bounces meet every area
         // light and weigh it against light sampling.
         const Light* lamp = path.scatterPdf == 0 && seesLights_ ? firstSeenLight(lights_, ray, reach) : nullptr;
-        alongSegment(path, reach, fill != nullptr);
+        alongSegment(path, reach, fill != nullptr, context);
         if (lamp) {
             path.radiance += path.beta * lamp->color();
             break;

@@ -77,7 +77,7 @@ private:
     bool nextBounce(Path& path, TraceContext& context) const;
     /// What the path meets between its ray's origin and `reach` besides surfaces and media:
     /// area lights, and the absorption of the solid it is in (when it has no medium), or fog.
-    void alongSegment(Path& path, double reach, bool inMedium) const;
+    void alongSegment(Path& path, double reach, bool inMedium, TraceContext& context) const;
     /// A scattering in `medium` at t along the path's ray: light sampling through the phase
     /// function, and its draw of the next direction; false when the path ends.
     [[gnu::noinline]] bool scatterInMedium(Path& path, const Medium& medium, double t, TraceContext& context) const;
@@ -102,12 +102,9 @@ private:
     Vec3 directLight(const Vertex& v, const Scatter& scatter, TraceContext& context) const;
     template <typename Scatter>
     Vec3 fromLights(const Vertex& v, const Scatter& scatter, TraceContext& context) const;
-    /// The light of the area lights a path's ray meets before `tMax`, weighed against light
-    /// sampling's chance of the same direction (`scatterPdf`, 0 when it has none).
-    /// `sinceScatter`: the path's length from its last scattering vertex to the ray's origin
-    /// (through mirrors and glass), 0 when the ray starts there or the path has none.
-    Vec3 areaLightsAlong(const Ray& ray, double tMax, double scatterPdf, double pathLength,
-                         double sinceScatter) const;
+    /// The light of the area lights the path's ray meets before `tMax`, weighed against light
+    /// sampling's chance of the same path (straight, or solved for through glass).
+    Vec3 areaLightsAlong(const Path& path, double tMax, TraceContext& context) const;
     template <typename Scatter>
     Vec3 fromEmitter(const Vertex& v, const Scatter& scatter, TraceContext& context) const;
     template <typename Scatter>
@@ -133,11 +130,13 @@ private:
     struct ChainRay;
     /// The directions a solve turns among (path_caustics.cpp).
     struct DirectionChart;
-    /// A point a chain through glass is to reach: of an emitter, or a point light's position.
+    /// A point a chain through glass is to reach: of an emitter, of an area light, or a point
+    /// light's position.
     struct ChainTarget {
         Vec3 point;
         Frame frame; ///< its w the normal of the plane the landings are measured on
-        int32_t primitive = -1, instance = -1; ///< the emitter's; -1: a light's position
+        int32_t primitive = -1, instance = -1; ///< the emitter's; -1: a light's
+        bool bouncesReach = true; ///< whether the paths' bounces meet it too (not a point)
     };
     /// A path from a surface point through clear glass to a target.
     struct Chain {
@@ -183,12 +182,23 @@ private:
                             TraceContext& context) const;
     /// The light of a point or spot light reaching `v` through the clear glass that hides it.
     Vec3 causticFromLight(const Vertex& v, const Bsdf& bsdf, const Light& light, TraceContext& context) const;
+    /// Light sampling's estimate of the light of the sampled point of an area light (of a
+    /// fixed plane) reaching `v` through the clear glass that hides it.
+    Vec3 causticFromAreaLight(const Vertex& v, const Bsdf& bsdf, const Light& light, const LightSample& ls,
+                              TraceContext& context) const;
     /// Notes in `start` the path's bounce at `v` toward `next`: a start, one more crossing of
     /// clear glass, or the end of such a way.
     void noteCausticBounce(CausticStart& start, const Vertex& v, const BsdfSample& next) const;
     /// The weight of the emission at `v`, an emitter the path met after `start`, against
     /// light sampling's chance of the same path through the glass.
     double causticWeight(const CausticStart& start, const Vertex& v, TraceContext& context) const;
+    /// The same for an area light (of a fixed plane) the path met at `point`.
+    double causticWeight(const CausticStart& start, const Light& light, const Vec3& point,
+                         TraceContext& context) const;
+    /// The weight of a path that left `start` and met `target`, a point light sampling draws
+    /// with density `pointDensity` by area, against light sampling's chance of it.
+    double chainWeight(const CausticStart& start, const ChainTarget& target, double pointDensity,
+                       TraceContext& context) const;
 
     // Media (path_media.cpp).
     /// The medium filling the solid of `material` (-1: none), or null.

@@ -115,6 +115,39 @@ TEST_CASE("path: the caustic of a glass ball under a glowing disc is the bounces
     CHECK(solved.pixelNoise < bounced.pixelNoise / 4);
 }
 
+TEST_CASE("path: the caustic of a glass ball under an area light is the bounces' own, with less noise",
+          "[render][path][caustics]") {
+    // As under the glowing disc, with an AreaLight: light sampling solves for the paths from
+    // the floor through the ball to the point it drew on the light, each point lighting as a
+    // point light does through glass; the bounces that meet the light through the ball carry
+    // the radiance that gives the same light, and the two are weighed against each other.
+    const auto render = [](double glossiness, int samples) {
+        SceneMaker m = floorSeenFromAbove(samples, 3, 0.8);
+        m.desc.camera = lookAt({0, 0.5, 0}, {0, 0, 0}, 40);
+        m.desc.camera.up = {0, 0, 1};
+        ShadingMaterial ball = glass(1, 1.5, glossiness);
+        ball.fresnel = true;
+        m.draw(m.sphere({0, 1.5, 0}, 0.5, m.material(ball)));
+        scene::LightDesc light;
+        light.kind = scene::LightKind::Area;
+        light.origin = {-0.25, 4, -0.25};
+        light.edgeA = {0.5, 0, 0};
+        light.edgeB = {0, 0, 0.5};
+        light.color = scene::Color{1, 1, 1, 1};
+        m.desc.lights.push_back(light);
+        const PixelBuffer first = renderOk(m.desc);
+        m.desc.settings.seed = 2;
+        return estimate(first, renderOk(m.desc));
+    };
+    const Estimate solved = render(0, 64), bounced = render(1e-9, 1024);
+    INFO("solved " << solved.mean << " ± " << solved.standardError << " (pixels ± " << solved.pixelNoise
+                   << "), bounces alone " << bounced.mean << " ± " << bounced.standardError << " (pixels ± "
+                   << bounced.pixelNoise << ")");
+    CHECK(std::abs(solved.mean - bounced.mean) <=
+          3 * std::hypot(solved.standardError, bounced.standardError) + 1e-4 * bounced.mean);
+    CHECK(solved.pixelNoise < bounced.pixelNoise / 4);
+}
+
 TEST_CASE("path: caustics give the same bits on any number of threads", "[render][path][caustics]") {
     SceneMaker m = floorSeenFromAbove(8, 4, 0.7);
     m.desc.camera = lookAt({0, 2, -3}, {0, 0.4, 0}, 50);
