@@ -87,26 +87,25 @@ TEST_CASE("path: a point light lights the floor through a glass slab as from its
     CHECK(std::abs(pixelAt(image, kSize / 2, kSize / 2).x - expected) < 1e-4 * expected);
 }
 
-TEST_CASE("path: the caustic of a glass ball under a glowing disc is the bounces' own, with less noise",
-          "[render][path][caustics]") {
-    // The floor under a glass ball, lit by a small glowing disc above it: light sampling
-    // solves for the paths through the ball, and the bounces' paths that light sampling also
-    // reaches are weighed against it. Frosting the glass by 10⁻⁹ leaves the light as it is
-    // but makes it the bounces' alone: the two images must agree within their noise, and
-    // the solved one must have far less of it.
-    const auto render = [](double glossiness, int samples) {
-        SceneMaker m = floorSeenFromAbove(samples, 3, 0.8);
-        m.desc.camera = lookAt({0, 0.5, 0}, {0, 0, 0}, 40);
-        m.desc.camera.up = {0, 0, 1};
-        ShadingMaterial ball = glass(1, 1.5, glossiness);
-        ball.fresnel = true;
-        m.draw(m.sphere({0, 1.5, 0}, 0.5, m.material(ball)));
-        m.draw(m.entity(scene::DiscShape{{0, 4, 0}, {0, -1, 0}, 0.3}, m.material(diffuse(0, 20)), false));
-        const PixelBuffer first = renderOk(m.desc);
-        m.desc.settings.seed = 2;
-        return estimate(first, renderOk(m.desc));
-    };
-    const Estimate solved = render(0, 64), bounced = render(1e-9, 256);
+/// The floor under a glass ball frosted by `glossiness` (0: clear), lit by what `light`
+/// adds above it, seen from straight above: the estimate of two renders of `samples` paths.
+template <typename AddLight>
+Estimate floorUnderBall(double glossiness, int samples, AddLight&& light) {
+    SceneMaker m = floorSeenFromAbove(samples, 3, 0.8);
+    m.desc.camera = lookAt({0, 0.5, 0}, {0, 0, 0}, 40);
+    m.desc.camera.up = {0, 0, 1};
+    ShadingMaterial ball = glass(1, 1.5, glossiness);
+    ball.fresnel = true;
+    m.draw(m.sphere({0, 1.5, 0}, 0.5, m.material(ball)));
+    light(m);
+    const PixelBuffer first = renderOk(m.desc);
+    m.desc.settings.seed = 2;
+    return estimate(first, renderOk(m.desc));
+}
+
+/// The solved image's light is the bounces' own within their noise, and it has far less
+/// noise.
+void checkSameLightLessNoise(const Estimate& solved, const Estimate& bounced) {
     INFO("solved " << solved.mean << " ± " << solved.standardError << " (pixels ± " << solved.pixelNoise
                    << "), bounces alone " << bounced.mean << " ± " << bounced.standardError << " (pixels ± "
                    << bounced.pixelNoise << ")");
@@ -115,37 +114,27 @@ TEST_CASE("path: the caustic of a glass ball under a glowing disc is the bounces
     CHECK(solved.pixelNoise < bounced.pixelNoise / 4);
 }
 
+TEST_CASE("path: the caustic of a glass ball under a glowing disc is the bounces' own, with less noise",
+          "[render][path][caustics]") {
+    // The floor under a glass ball, lit by a small glowing disc above it: light sampling
+    // solves for the paths through the ball, and the bounces' paths that light sampling also
+    // reaches are weighed against it. Frosting the glass by 10⁻⁹ leaves the light as it is
+    // but makes it the bounces' alone: the two images must agree within their noise, and
+    // the solved one must have far less of it.
+    const auto disc = [](SceneMaker& m) {
+        m.draw(m.entity(scene::DiscShape{{0, 4, 0}, {0, -1, 0}, 0.3}, m.material(diffuse(0, 20)), false));
+    };
+    checkSameLightLessNoise(floorUnderBall(0, 64, disc), floorUnderBall(1e-9, 256, disc));
+}
+
 TEST_CASE("path: the caustic of a glass ball under an area light is the bounces' own, with less noise",
           "[render][path][caustics]") {
     // As under the glowing disc, with an AreaLight: light sampling solves for the paths from
     // the floor through the ball to the point it drew on the light, each point lighting as a
     // point light does through glass; the bounces that meet the light through the ball carry
     // the radiance that gives the same light, and the two are weighed against each other.
-    const auto render = [](double glossiness, int samples) {
-        SceneMaker m = floorSeenFromAbove(samples, 3, 0.8);
-        m.desc.camera = lookAt({0, 0.5, 0}, {0, 0, 0}, 40);
-        m.desc.camera.up = {0, 0, 1};
-        ShadingMaterial ball = glass(1, 1.5, glossiness);
-        ball.fresnel = true;
-        m.draw(m.sphere({0, 1.5, 0}, 0.5, m.material(ball)));
-        scene::LightDesc light;
-        light.kind = scene::LightKind::Area;
-        light.origin = {-0.25, 4, -0.25};
-        light.edgeA = {0.5, 0, 0};
-        light.edgeB = {0, 0, 0.5};
-        light.color = scene::Color{1, 1, 1, 1};
-        m.desc.lights.push_back(light);
-        const PixelBuffer first = renderOk(m.desc);
-        m.desc.settings.seed = 2;
-        return estimate(first, renderOk(m.desc));
-    };
-    const Estimate solved = render(0, 64), bounced = render(1e-9, 1024);
-    INFO("solved " << solved.mean << " ± " << solved.standardError << " (pixels ± " << solved.pixelNoise
-                   << "), bounces alone " << bounced.mean << " ± " << bounced.standardError << " (pixels ± "
-                   << bounced.pixelNoise << ")");
-    CHECK(std::abs(solved.mean - bounced.mean) <=
-          3 * std::hypot(solved.standardError, bounced.standardError) + 1e-4 * bounced.mean);
-    CHECK(solved.pixelNoise < bounced.pixelNoise / 4);
+    const auto lamp = [](SceneMaker& m) { m.desc.lights.push_back(areaLight(0.5, 4, 1)); };
+    checkSameLightLessNoise(floorUnderBall(0, 64, lamp), floorUnderBall(1e-9, 1024, lamp));
 }
 
 TEST_CASE("path: caustics give the same bits on any number of threads", "[render][path][caustics]") {

@@ -295,21 +295,6 @@ TEST_CASE("path: with a target error, a pixel takes the paths it needs", "[rende
     }
 }
 
-namespace {
-
-/// A square area light of side `side` centred `height` above the origin, facing down.
-scene::LightDesc areaLight(double side, double height, double color) {
-    scene::LightDesc light;
-    light.kind = scene::LightKind::Area;
-    light.origin = {-side / 2, height, -side / 2};
-    light.edgeA = {side, 0, 0};
-    light.edgeB = {0, 0, side};
-    light.color = scene::Color{color, color, color, 1};
-    return light;
-}
-
-} // namespace
-
 TEST_CASE("path: an area light lights a Lambertian surface as the Whitted integrator's samples do",
           "[render][path]") {
     // Light sampling and the bounces that meet the light share the estimate by MIS: counted
@@ -356,11 +341,9 @@ TEST_CASE("path: an area light lights a floor through a clear pane by the share 
     // pane's transparency times its light without the pane. (Reckoned from the pane, the
     // distance to the light would be half the path's, and the light a quarter of that.)
     constexpr double kTransparency = 0.6;
-    SceneMaker m;
-    scene::CameraDesc camera = lookAt({0, 0.5, 0}, {0, 0, 0}, 1);
-    camera.up = {0, 0, 1};
-    m.desc = pathScene(camera, 256, 3);
-    m.draw(m.plane({0, 1, 0}, {0, 0, 0}, m.material(diffuse(0.5))));
+    SceneMaker m = floorSeenFromAbove(256, 3, 0.5);
+    m.desc.camera = lookAt({0, 0.5, 0}, {0, 0, 0}, 1); // below the pane
+    m.desc.camera.up = {0, 0, 1};
     m.desc.lights.push_back(areaLight(6, 2, 1));
     m.desc.settings.integrator = scene::Integrator::Whitted;
     m.desc.settings.shadowSamples = 4096;

@@ -38,4 +38,15 @@ inline SceneMaker floorSeenFromAbove(int samples, int bounces, double albedo) {
     return m;
 }
 
+/// A square area light of side `side` centred `height` above the origin, facing down.
+inline scene::LightDesc areaLight(double side, double height, double color) {
+    scene::LightDesc light;
+    light.kind = scene::LightKind::Area;
+    light.origin = {-side / 2, height, -side / 2};
+    light.edgeA = {side, 0, 0};
+    light.edgeB = {0, 0, side};
+    light.color = scene::Color{color, color, color, 1};
+    return light;
+}
+
 } // namespace crt::tracer::test
