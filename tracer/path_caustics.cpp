@@ -105,7 +105,7 @@ void PathIntegrator::prepareCaustics() {
                               rgb(m.emission) == Vec3(0.0) && !clearBoundary_[i]);
     }
     const bool lightsToSolveFor = std::any_of(lights_.begin(), lights_.end(),
-                                              [](const Light& l) { return l.fromPoint() || l.fixedPlane(); });
+                                              [](const Light& l) { return l.fromPoint() || solvedThroughGlass(l); });
     solvesCaustics_ = (!emitters_.empty() || lightsToSolveFor) && !fog_ && !hides_ &&
                       std::any_of(sharpGlass_.begin(), sharpGlass_.end(), [](uint8_t g) { return g != 0; });
 }

@@ -133,7 +133,7 @@ Vec3 PathIntegrator::fromLights(const Vertex& v, const Scatter& bsdf, TraceConte
         if (visible == Vec3(0.0)) {
             if constexpr (std::is_same_v<Scatter, Bsdf>) {
                 if (solvesCaustics_ && light.fromPoint()) sum += causticFromLight(v, bsdf, light, context);
-                if (solvesCaustics_ && light.fixedPlane()) sum += causticFromAreaLight(v, bsdf, light, ls, context);
+                if (solvesCaustics_ && solvedThroughGlass(light)) sum += causticFromAreaLight(v, bsdf, light, ls, context);
             }
             continue;
         }
@@ -247,7 +247,7 @@ Vec3 PathIntegrator::areaLightsAlong(const Path& path, double tMax, TraceContext
         double weight = 1;
         if (path.scatterPdf > 0)
             weight = powerHeuristic(path.scatterPdf, pdf);
-        else if (path.caustic.crossings > 0 && light.fixedPlane())
+        else if (path.caustic.crossings > 0 && solvedThroughGlass(light))
             weight = causticWeight(path.caustic, light, ray.at(t), context);
         sum += light.color() * (lightStrength(light, distance, path.pathLength - before) * pdf * weight);
     }

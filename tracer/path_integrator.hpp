@@ -182,6 +182,10 @@ private:
                             TraceContext& context) const;
     /// The light of a point or spot light reaching `v` through the clear glass that hides it.
     Vec3 causticFromLight(const Vertex& v, const Bsdf& bsdf, const Light& light, TraceContext& context) const;
+    /// Whether light from `light` through glass is solved for: an area light of a fixed plane,
+    /// unseen (glass and mirrors show a visible light as its colour, traceCamera's lamp,
+    /// which no solve is weighed against).
+    static bool solvedThroughGlass(const Light& light) { return light.fixedPlane() && !light.visible(); }
     /// Light sampling's estimate of the light of the sampled point of an area light (of a
     /// fixed plane) reaching `v` through the clear glass that hides it.
     Vec3 causticFromAreaLight(const Vertex& v, const Bsdf& bsdf, const Light& light, const LightSample& ls,
