@@ -338,17 +338,23 @@ Vec3 PathIntegrator::causticFromLight(const Vertex& v, const Bsdf& bsdf, const L
     Vec3 sum(0.0);
     for (int i = 0; i < count; ++i) {
         const Chain& chain = chains[static_cast<size_t>(i)];
-        // The light seen straight at the path's length lights the point as lightStrength
-        // says; through the glass, the light of the solid angle it sends toward the path's
-        // end falls on the area the path's beam has there, as the spread gives it (the
-        // étendue dA·cos θ·dω is the same at both ends). The beam's area across it is the
-        // spread's times the cosine between the path and the target plane's normal.
-        const double across = chain.spread * std::abs(glm::dot(chain.arrival, toLight));
-        if (!(across > 0)) continue;
-        sum += bsdf.evalCos(chain.wi) * chain.throughput * light.colorToward(-chain.arrival) *
-               (lightStrength(light, chain.length, v.pathLength) * chain.length * chain.length / across);
+        const double strength = strengthThrough(light, chain, toLight, v.pathLength);
+        if (!(strength > 0)) continue;
+        sum += bsdf.evalCos(chain.wi) * chain.throughput * light.colorToward(-chain.arrival) * strength;
     }
     return sum;
+}
+
+double PathIntegrator::strengthThrough(const Light& light, const Chain& chain, const Vec3& planeNormal,
+                                       double pathLength) {
+    // The light seen straight at the path's length lights the point as lightStrength says;
+    // through the glass, the light of the solid angle it sends toward the path's end falls on
+    // the area the path's beam has there, as the spread gives it (the étendue dA·cos θ·dω is
+    // the same at both ends). The beam's area across it is the spread's times the cosine
+    // between the path and the target plane's normal.
+    const double across = chain.spread * std::abs(glm::dot(chain.arrival, planeNormal));
+    if (!(across > 0)) return 0;
+    return lightStrength(light, chain.length, pathLength) * chain.length * chain.length / across;
 }
 
 Vec3 PathIntegrator::causticFromAreaLight(const Vertex& v, const Bsdf& bsdf, const Light& light,
@@ -360,17 +366,16 @@ Vec3 PathIntegrator::causticFromAreaLight(const Vertex& v, const Bsdf& bsdf, con
     Vec3 sum(0.0);
     for (int i = 0; i < count; ++i) {
         const Chain& chain = chains[static_cast<size_t>(i)];
-        // The sampled point lights as a point light does through the glass (causticFromLight,
-        // the target plane here the light's own), weighed against the bounces that meet the
-        // light by the same path: light sampling's density of its direction is the point's by
-        // area times the light's area per solid angle along the path.
+        // The sampled point lights as a point light does through the glass (the target plane
+        // here the light's own), weighed against the bounces that meet the light by the same
+        // path: light sampling's density of its direction is the point's by area times the
+        // light's area per solid angle along the path.
         const Vec3 f = bsdf.evalCos(chain.wi);
         const double pdf = light.pointDensity() * chain.spread;
-        const double across = chain.spread * std::abs(glm::dot(chain.arrival, normal));
-        if (f == Vec3(0.0) || !(pdf > 0) || !(across > 0)) continue;
+        const double strength = strengthThrough(light, chain, normal, v.pathLength);
+        if (f == Vec3(0.0) || !(pdf > 0) || !(strength > 0)) continue;
         const double weight = powerHeuristic(pdf, bsdf.pdf(chain.wi) * chain.chance);
-        sum += f * chain.throughput * ls.color *
-               (lightStrength(light, chain.length, v.pathLength) * chain.length * chain.length / across * weight);
+        sum += f * chain.throughput * ls.color * (strength * weight);
     }
     return sum;
 }

@@ -182,6 +182,10 @@ private:
                             TraceContext& context) const;
     /// The light of a point or spot light reaching `v` through the clear glass that hides it.
     Vec3 causticFromLight(const Vertex& v, const Bsdf& bsdf, const Light& light, TraceContext& context) const;
+    /// What lightStrength gives a point light at the end of `chain` (its target on the plane
+    /// of normal `planeNormal`) for the point the chain leaves, `pathLength` from the camera:
+    /// its strength there, times how the glass spreads or gathers its beam; 0 edge-on.
+    static double strengthThrough(const Light& light, const Chain& chain, const Vec3& planeNormal, double pathLength);
     /// Whether light from `light` through glass is solved for: an area light of a fixed plane,
     /// unseen (glass and mirrors show a visible light as its colour, traceCamera's lamp,
     /// which no solve is weighed against).

@@ -154,8 +154,8 @@ private:
     /// the places drawing them one by one gives them.
     void addPlainRoots(std::span<const int32_t> roots) {
         auto primitiveOf = [&](int32_t root) {
-            const scene::EntityDesc& e = desc_.entities[static_cast<size_t>(root)];
-            return Primitive{*makeGeometry(e.shape, desc_.limits), -1, e.material >= 0 ? e.material : defaultMaterial_};
+            const scene::Shape& shape = desc_.entities[static_cast<size_t>(root)].shape;
+            return Primitive{*makeGeometry(shape, desc_.limits), -1, materialOf(root, -1)};
         };
         // Room made with a sphere, which a Geometry holds inline: no allocation to undo.
         const Primitive placeholder{SphereGeometry(scene::SphereShape{}), -1, 0};
@@ -218,9 +218,11 @@ private:
         return true;
     }
 
-    int32_t materialOf(const Operand& op) const {
-        const int32_t own = desc_.entities[op.entity].material;
-        return own >= 0 ? own : op.material >= 0 ? op.material : defaultMaterial_;
+    int32_t materialOf(const Operand& op) const { return materialOf(op.entity, op.material); }
+    /// An entity's material: its own, or the one given from above (-1: none), or the default.
+    int32_t materialOf(int32_t entity, int32_t given) const {
+        const int32_t own = desc_.entities[static_cast<size_t>(entity)].material;
+        return own >= 0 ? own : given >= 0 ? given : defaultMaterial_;
     }
 
     bool instanced(int32_t entity) const {
