@@ -77,8 +77,8 @@ class WideBuilder {
 public:
     /// `items`: the build's items, their `index` the position in the build's input;
     /// `ids`: what each position stands for (empty: the position itself).
-    WideBuilder(std::span<BuildItem> items, const std::vector<int32_t>& ids)
-        : finder_(items), items_(items), ids_(ids) {}
+    WideBuilder(std::span<BuildItem> items, const std::vector<int32_t>& ids, bool groupedLeaves)
+        : finder_(items, groupedLeaves), items_(items), ids_(ids) {}
 
     Span root() {
         Span span;
@@ -245,7 +245,8 @@ WideRay::WideRay(const Ray& ray) {
     }
 }
 
-void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::vector<int32_t> ids) {
+void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::vector<int32_t> ids,
+                    bool groupedLeaves) {
     nodes_.clear();
     items_.clear();
     fewItems_.clear();
@@ -264,7 +265,7 @@ void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::ve
     // busy.
     int parallelLevels = 0;
     for (unsigned subtrees = 1; threads > 1 && subtrees < 2 * threads; subtrees *= 4) ++parallelLevels;
-    WideBuilder builder(items, ids);
+    WideBuilder builder(items, ids, groupedLeaves);
     WideTree tree;
     tree.nodes.reserve(std::max<size_t>(count - 1, 1)); // the most a tree over `count` items takes
     depth_ = builder.build(builder.root(), tree, parallelLevels);
@@ -285,6 +286,60 @@ void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::ve
     // its untouched tail costs nothing; only a small one is given back (a short copy).
     if (nodes_.capacity() * sizeof(WideBvhNode) < kSmallReservation) nodes_.shrink_to_fit();
     items_.shrink_to_fit();
+}
+
+std::span<const int32_t> Bvh::leafItems(uint32_t child, int32_t& lone) const {
+    const uint32_t index = WideChild::index(child);
+    if (!WideChild::isOneItem(child))
+        return {&items_[index + 1], static_cast<size_t>(items_[index])};
+    lone = static_cast<int32_t>(index);
+    return {&lone, 1};
+}
+
+size_t Bvh::leafGroupCount() const {
+    size_t groups = 0;
+    for (const WideBvhNode& node : nodes_) {
+        const int used = node.usedSlots();
+        for (int slot = 0; slot < 4; ++slot) {
+            if (!(used & (1 << slot)) || !WideChild::isLeaf(node.child[slot])) continue;
+            int32_t lone;
+            groups += (leafItems(node.child[slot], lone).size() + 3) / 4;
+        }
+    }
+    return groups;
+}
+
+void Bvh::groupLeaves(MakeGroup makeGroup) {
+    // A leaf's groups, four items each but the last: one is the leaf's item, more its list.
+    std::vector<int32_t> groupedItems;
+    auto grouped = [&](std::span<const int32_t> items) {
+        const size_t groups = (items.size() + 3) / 4;
+        auto group = [&](size_t g) { return makeGroup(items.subspan(4 * g, std::min<size_t>(4, items.size() - 4 * g))); };
+        if (groups == 1) return WideChild::item(static_cast<uint32_t>(group(0)));
+        const auto start = static_cast<uint32_t>(groupedItems.size());
+        groupedItems.push_back(static_cast<int32_t>(groups));
+        for (size_t g = 0; g < groups; ++g) groupedItems.push_back(group(g));
+        return WideChild::items(start);
+    };
+    for (WideBvhNode& node : nodes_) {
+        const int used = node.usedSlots();
+        for (int slot = 0; slot < 4; ++slot) {
+            uint32_t& child = node.child[slot];
+            if (!(used & (1 << slot)) || !WideChild::isLeaf(child)) continue;
+            int32_t lone;
+            child = grouped(leafItems(child, lone));
+        }
+    }
+    groupedItems.shrink_to_fit();
+    items_ = std::move(groupedItems);
+    if (!fewItems_.empty()) {
+        // At most four items: the root's one leaf grouped them all. Its box is theirs joined.
+        Bounds3 joint;
+        for (const FewItem& few : fewItems_)
+            joint.include(Bounds3{{few.faces[0], few.faces[1], few.faces[2]}, {few.faces[3], few.faces[4], few.faces[5]}});
+        const auto group = static_cast<int32_t>(WideChild::index(nodes_[0].child[0]));
+        fewItems_ = {{{joint.lo.x, joint.lo.y, joint.lo.z, joint.hi.x, joint.hi.y, joint.hi.z}, group}};
+    }
 }
 
 } // namespace crt::tracer

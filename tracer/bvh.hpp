@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -197,6 +198,22 @@ public:
         buildFrom(count, ItemBounds(boundsOf), threads, std::move(ids));
     }
 
+    /// Builds as build() does, but a range of up to four items is always one leaf, for items
+    /// tested four at a time. Returns how many groups of up to four the leaves' items make
+    /// (a leaf of more, which the depth limit or coinciding centroids can leave, makes
+    /// several); groupLeaves then replaces them by the groups.
+    template <typename BoundsOf>
+    size_t buildGrouped(size_t count, BoundsOf&& boundsOf, unsigned threads, std::vector<int32_t> ids = {}) {
+        buildFrom(count, ItemBounds(boundsOf), threads, std::move(ids), true);
+        return leafGroupCount();
+    }
+    /// What stands for up to four items: given the items, the item replacing them (below
+    /// WideChild::kMaxItems).
+    using MakeGroup = FunctionRef<int32_t(std::span<const int32_t>)>;
+    /// Replaces each leaf's items, four by four in order, by the groups makeGroup makes of
+    /// them, called in the leaves' depth-first order: traversal then visits groups.
+    void groupLeaves(MakeGroup makeGroup);
+
     bool empty() const { return nodes_.empty(); }
     size_t nodeCount() const { return nodes_.size(); }
     int depth() const { return depth_; }
@@ -230,7 +247,12 @@ public:
 
 private:
     using ItemBounds = FunctionRef<Bounds3(size_t)>;
-    void buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::vector<int32_t> ids);
+    void buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::vector<int32_t> ids,
+                   bool groupedLeaves = false);
+    /// How many groups of up to four the leaves' items make.
+    size_t leafGroupCount() const;
+    /// The items of the leaf that `child` leads to, a copy of a lone item going in `lone`.
+    std::span<const int32_t> leafItems(uint32_t child, int32_t& lone) const;
 
     /// The deepest the wide tree may be: a branch of up to 56 splits (SplitFinder::kMaxDepth)
     /// takes at most that many wide levels, and each level pushes at most 3.

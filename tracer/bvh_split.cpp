@@ -7,7 +7,6 @@ namespace crt::tracer::bvh_build {
 namespace {
 
 constexpr int kBins = 12;
-constexpr int kMaxLeafItems = 4;
 
 } // namespace
 
@@ -16,7 +15,8 @@ bool SplitFinder::split(size_t begin, size_t end, const RangeBounds& range, int 
     if (range.centroids.extent(1) > range.centroids.extent(axis)) axis = 1;
     if (range.centroids.extent(2) > range.centroids.extent(axis)) axis = 2;
     const bool spread = range.centroids.extent(axis) > 0;
-    if (end - begin <= 1 || !spread || depth >= kMaxDepth) return false;
+    const size_t count = end - begin;
+    if (count <= 1 || !spread || depth >= kMaxDepth || (groupedLeaves_ && count <= kMaxLeafItems)) return false;
     return chooseSplit(begin, end, axis, range, split);
 }
 

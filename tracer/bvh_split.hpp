@@ -130,12 +130,18 @@ class SplitFinder {
 public:
     /// The most splits from the root to a leaf: below the traversal stack's 64 entries.
     static constexpr int kMaxDepth = 56;
+    /// The most items a leaf holds (beyond the depth limit).
+    static constexpr size_t kMaxLeafItems = 4;
 
-    explicit SplitFinder(std::span<BuildItem> items) : items_(items) {}
+    /// `groupedLeaves`: the items are tested four at a time, so a range of up to four is
+    /// always one leaf (it costs about one test, like a node).
+    explicit SplitFinder(std::span<BuildItem> items, bool groupedLeaves = false)
+        : items_(items), groupedLeaves_(groupedLeaves) {}
 
     /// Splits items [begin, end), whose bounds are `range`, `depth` splits below the root,
     /// into `split`; false when they are to be one leaf (a single item, items whose
-    /// centroids coincide, the depth limit, or a leaf the heuristic finds cheaper).
+    /// centroids coincide, the depth limit, a leaf the heuristic finds cheaper, or up to four
+    /// grouped items).
     bool split(size_t begin, size_t end, const RangeBounds& range, int depth, Split& split);
 
     RangeBounds boundsOf(size_t begin, size_t end) const;
@@ -148,6 +154,7 @@ private:
     bool binnedSplit(size_t begin, size_t end, int axis, const RangeBounds& range, Split& split);
 
     std::span<BuildItem> items_;
+    bool groupedLeaves_;
 };
 
 } // namespace crt::tracer::bvh_build

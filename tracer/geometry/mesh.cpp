@@ -21,14 +21,19 @@ template <typename Crossed>
 void forEachCrossedTriangle(const TriangleMesh& mesh, const Ray& ray, const double& tMax, uint32_t skipped,
                             Crossed&& crossed) {
     RayStats unused;
-    mesh.bvh().traverse(LazyBoxRay(ray), tMax, unused, [&](int32_t item) {
-        const auto triangle = static_cast<uint32_t>(item);
-        if (triangle == skipped) return true;
-        Vec3 p[3];
-        mesh.corners(triangle, p);
-        double t;
-        Vec3 weights;
-        if (crossTriangle(p, ray, t, weights)) crossed(t, triangle, p);
+    const QuadRay quadRay(ray, mesh.frame());
+    mesh.bvh().traverse(LazyBoxRay(ray), tMax, unused, [&](int32_t group) {
+        const TriangleQuad& quad = mesh.quad(group);
+        // The exact test for the triangles the line may cross, in the quad's order.
+        for (int lanes = quad.mayCross(quadRay); lanes != 0; lanes &= lanes - 1) {
+            const auto triangle = static_cast<uint32_t>(quad.triangle[__builtin_ctz(static_cast<unsigned>(lanes))]);
+            if (triangle == skipped) continue;
+            Vec3 p[3];
+            mesh.corners(triangle, p);
+            double t;
+            Vec3 weights;
+            if (crossTriangle(p, ray, t, weights)) crossed(t, triangle, p);
+        }
         return true;
     });
 }
@@ -73,12 +78,20 @@ TriangleMesh::TriangleMesh(std::shared_ptr<const MeshData> data, unsigned thread
         }
         if (drawn && leftOut) ids.push_back(static_cast<int32_t>(i));
     }
-    if (!leftOut) {
-        bvh_.build(n, boundsOf, threads);
-        return;
-    }
+    // The frame's radius covers the rounding of its centre.
+    frame_.centre = bounds_.centroid();
+    const Vec3 reach = glm::max(bounds_.hi - frame_.centre, frame_.centre - bounds_.lo);
+    frame_.radius = (1 + 0x1p-40) * std::max({reach.x, reach.y, reach.z, 0.0});
+    auto makeQuad = [&](std::span<const int32_t> triangles) {
+        quads_.push_back(makeTriangleQuad(frame_, triangles, [&](int32_t triangle, int k) {
+            return data_->positions[static_cast<size_t>(data_->triangles[static_cast<size_t>(triangle)].v[k])];
+        }));
+        return static_cast<int32_t>(quads_.size() - 1);
+    };
     auto keptBounds = [&](size_t item) { return boundsOf(static_cast<size_t>(ids[item])); };
-    bvh_.build(ids.size(), keptBounds, threads, ids);
+    quads_.reserve(leftOut ? bvh_.buildGrouped(ids.size(), keptBounds, threads, ids)
+                           : bvh_.buildGrouped(n, boundsOf, threads));
+    bvh_.groupLeaves(makeQuad);
 }
 
 void MeshGeometry::crossLine(const Ray& ray, CrossingList& out) const {

@@ -7,6 +7,7 @@
 #include "scene/obj_mesh.hpp"
 #include "tracer/bvh.hpp"
 #include "tracer/geometry/shape.hpp"
+#include "tracer/geometry/triangle_quad.hpp"
 
 #include <memory>
 
@@ -14,14 +15,19 @@ namespace crt::tracer {
 
 using scene::MeshData;
 
-/// A mesh's triangles under a BVH of their own. Triangles with a corner out of range or not
-/// finite, and those of no area, are left out of the BVH: no line crosses them.
+/// A mesh's triangles under a BVH of their own, whose leaves are quads of up to four
+/// triangles in float (triangle_quad.hpp). Triangles with a corner out of range or not finite,
+/// and those of no area, are left out of the BVH: no line crosses them.
 class TriangleMesh {
   public:
     explicit TriangleMesh(std::shared_ptr<const MeshData> data, unsigned threads = 1);
 
     const MeshData& data() const { return *data_; }
+    /// Its items are quads.
     const Bvh& bvh() const { return bvh_; }
+    const TriangleQuad& quad(int32_t i) const { return quads_[static_cast<size_t>(i)]; }
+    /// The frame the quads' corners are in.
+    const QuadFrame& frame() const { return frame_; }
     /// Of the triangles in the BVH; empty when there are none.
     const Bounds3& bounds() const { return bounds_; }
     /// The corners of triangle i (one the BVH holds).
@@ -30,12 +36,16 @@ class TriangleMesh {
         for (int k = 0; k < 3; ++k) p[k] = data_->positions[static_cast<size_t>(tri.v[k])];
     }
     /// The bytes the mesh and its BVH hold.
-    uint64_t byteSize() const { return sizeof(TriangleMesh) + data_->byteSize() + bvh_.byteSize(); }
+    uint64_t byteSize() const {
+        return sizeof(TriangleMesh) + data_->byteSize() + bvh_.byteSize() + quads_.capacity() * sizeof(TriangleQuad);
+    }
 
   private:
     std::shared_ptr<const MeshData> data_;
     Bvh bvh_;
     Bounds3 bounds_;
+    QuadFrame frame_;
+    std::vector<TriangleQuad> quads_;
 };
 
 /// A mesh drawn as one primitive; each crossing's part is the index of the triangle crossed.
