@@ -93,11 +93,13 @@ TEST_CASE("a triangle quad rules out no triangle that the exact test finds cross
 }
 
 TEST_CASE("a triangle quad rules out the triangles a line misses by a twentieth of their size", "[mesh]") {
-    // A mesh's triangles of 0.01 in a mesh of 8 units, seen from 10 units: a terrain's case.
+    // A mesh's triangles of 0.01 in a mesh of 8 units, seen from 10 units (a terrain's case)
+    // and from 10,000.
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> unit(0, 1);
     int misses = 0, kept = 0;
     for (int round = 0; round < 200; ++round) {
+        const double distance = round % 2 == 0 ? 10 : 1e4;
         Quad q(rng, Vec3(4 * unit(rng), 0, 4 * unit(rng)), 0.01);
         q.frame.radius = 4; // the whole mesh's
         q.frame.centre = Vec3(2, 0, 2);
@@ -105,7 +107,7 @@ TEST_CASE("a triangle quad rules out the triangles a line misses by a twentieth 
             // Beyond an edge: a weight of -0.05 to -0.5.
             const double b = -0.05 - 0.45 * unit(rng), c = unit(rng);
             const Vec3 target = q.point(i, b, c);
-            const Vec3 from = target + 10.0 * glm::normalize(Vec3(unit(rng) - 0.5, 1, unit(rng) - 0.5));
+            const Vec3 from = target + distance * glm::normalize(Vec3(unit(rng) - 0.5, 1, unit(rng) - 0.5));
             const Ray ray{from, target - from};
             if (crosses(q.triangles[i], ray)) continue;
             ++misses;
