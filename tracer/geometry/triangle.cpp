@@ -81,7 +81,7 @@ Vec3 TriangleGeometry::barycentrics(const Ray& ray, const Crossing& crossing) co
     return {1 - b1 - b2, b1, b2};
 }
 
-SurfacePoint TriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool) const {
+SurfacePoint TriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv) const {
     const Vec3& n = normal_;
     Vec3 p = ray.at(crossing.t);
     Vec3 rel = p - p_[0];
@@ -89,13 +89,16 @@ SurfacePoint TriangleGeometry::surfaceAt(const Ray& ray, const Crossing& crossin
     double distanceError = errorGamma(6) * glm::dot(absolute(n), absolute(p) + absolute(p_[0])) +
                            glm::dot(tilt_, absolute(rel)) + errorGamma(3) * std::abs(distance);
     RefinedPoint r = refineOntoSurface(p, distance, distanceError, n);
-    Vec3 b = barycentrics(ray, crossing);
     SurfacePoint sp;
     sp.point = r.point;
     sp.pointError = r.error;
     sp.normal = n;
     sp.shadingNormal = n;
-    sp.uv = {clamp01(b.y), clamp01(b.z)};
+    if (wantUv) {
+        // The weights come from the crossing's test again: worth it only for a surface read.
+        const Vec3 b = barycentrics(ray, crossing);
+        sp.uv = {clamp01(b.y), clamp01(b.z)};
+    }
     // p = a + u·(b − a) + v·(c − a).
     sp.dpdu = p_[1] - p_[0];
     sp.dpdv = p_[2] - p_[0];

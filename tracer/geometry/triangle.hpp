@@ -25,7 +25,8 @@ class TriangleGeometry {
     /// None or one crossing. Watertight (Woop et al.): a line through a shared edge or vertex
     /// of a mesh hits at least one of the triangles around it; none for a parallel line.
     void crossLine(const Ray& ray, CrossingList& out) const;
-    /// The refined point, its error bound, the normal and UV at one of crossLine's crossings.
+    /// The refined point, its error bound, the normal and (with wantUv) the UV at one of
+    /// crossLine's crossings.
     SurfacePoint surfaceAt(const Ray& ray, const Crossing& crossing, bool wantUv = true) const;
     /// A surface without an inside: not usable in CSG.
     bool solid() const { return false; }
