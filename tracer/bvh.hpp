@@ -291,6 +291,16 @@ private:
                     current = {node.child[slot], entry[slot]};
                     continue;
                 }
+                const int second = met & (met - 1);
+                if (met != 0 && (second & (second - 1)) == 0) { // two children: the nearer first
+                    const int a = __builtin_ctz(static_cast<unsigned>(met));
+                    const int b = __builtin_ctz(static_cast<unsigned>(second));
+                    const Pending pa{node.child[a], entry[a]}, pb{node.child[b], entry[b]};
+                    const bool bFirst = pb.entry < pa.entry;
+                    stack[top++] = bFirst ? pa : pb;
+                    current = bFirst ? pb : pa;
+                    continue;
+                }
                 if (met != 0) {
                     // Order the children met by entry distance (at most four: insertion sort).
                     Pending order[4];
