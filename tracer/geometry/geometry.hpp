@@ -113,6 +113,10 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::Ren
 /// ray leaves from, which a mesh need not test (kNoPart: none).
 bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
                  uint32_t skippedPart = kNoPart);
+/// crossingsIn's crossings in any order, for queries that need none: a mesh's as its BVH
+/// meets them, so that a visitor stopping early spares the search of the rest.
+bool crossingsInAnyOrder(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
+                         uint32_t skippedPart = kNoPart);
 /// The first crossing with tMin < t < tMax, for nearest-hit queries: crossingsIn's first, or
 /// a nearest-first search where the primitive has one (a mesh). `skippedPart` as above.
 bool firstCrossingIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out,

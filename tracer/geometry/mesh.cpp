@@ -16,13 +16,14 @@ template <class T> bool allValid(const int32_t (&idx)[3], const std::vector<T>& 
 }
 
 /// Calls crossed(t, triangle, corners) for each triangle but `skipped` that the line crosses
-/// within the BVH's search of (0, tMax); tMax may shrink meanwhile (a nearest-hit search).
+/// within the BVH's search of (0, tMax), in the order the search meets them, until crossed
+/// returns false (then false); tMax may shrink meanwhile (a nearest-hit search).
 template <typename Crossed>
-void forEachCrossedTriangle(const TriangleMesh& mesh, const Ray& ray, const double& tMax, uint32_t skipped,
+bool forEachCrossedTriangle(const TriangleMesh& mesh, const Ray& ray, const double& tMax, uint32_t skipped,
                             Crossed&& crossed) {
     RayStats unused;
     const QuadRay quadRay(ray, mesh.frame());
-    mesh.bvh().traverse(LazyBoxRay(ray), tMax, unused, [&](int32_t group) {
+    return mesh.bvh().traverse(LazyBoxRay(ray), tMax, unused, [&](int32_t group) {
         const TriangleQuad& quad = mesh.quad(group);
         // The exact test for the triangles the line may cross, in the quad's order.
         for (int lanes = quad.mayCross(quadRay); lanes != 0; lanes &= lanes - 1) {
@@ -32,7 +33,7 @@ void forEachCrossedTriangle(const TriangleMesh& mesh, const Ray& ray, const doub
             mesh.corners(triangle, p);
             double t;
             Vec3 weights;
-            if (crossTriangle(p, ray, t, weights)) crossed(t, triangle, p);
+            if (crossTriangle(p, ray, t, weights) && !crossed(t, triangle, p)) return false;
         }
         return true;
     });
@@ -115,6 +116,7 @@ void MeshGeometry::crossLine(const Ray& ray, CrossingList& out) const {
             if ((facing < 0) != inward) part |= kEnters;
         }
         out.add(start + t, part);
+        return true;
     });
     Crossing* first = &out[0];
     // At one t, entries before exits: a line grazing the silhouette along an edge enters and
@@ -139,11 +141,19 @@ bool MeshGeometry::crossingsIn(const Ray& ray, double tMin, double tMax, Crossin
     CrossingList list;
     forEachCrossedTriangle(*mesh_, ray, tMax, skippedPart, [&](double t, uint32_t triangle, const Vec3 (&)[3]) {
         if (t > tMin && t < tMax) list.add(t, triangle);
+        return true;
     });
     list.sortByT();
     for (int i = 0; i < list.count; ++i)
         if (!visit(list[i])) return false;
     return true;
+}
+
+bool MeshGeometry::crossingsInAnyOrder(const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
+                                       uint32_t skippedPart) const {
+    return forEachCrossedTriangle(*mesh_, ray, tMax, skippedPart, [&](double t, uint32_t triangle, const Vec3 (&)[3]) {
+        return !(t > tMin && t < tMax) || visit(Crossing{t, triangle});
+    });
 }
 
 bool MeshGeometry::firstCrossingIn(const Ray& ray, double tMin, double tMax, Crossing& out,
@@ -156,6 +166,7 @@ bool MeshGeometry::firstCrossingIn(const Ray& ray, double tMin, double tMax, Cro
             out = {t, triangle};
             found = true;
         }
+        return true;
     });
     return found;
 }

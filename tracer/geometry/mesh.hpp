@@ -68,6 +68,10 @@ class MeshGeometry {
     /// The crossings with tMin < t < tMax in order, each triangle's but `skippedPart`'s (the
     /// face a ray leaves from; kNoPart for none), until visit returns false.
     bool crossingsIn(const Ray& ray, double tMin, double tMax, CrossingVisitor visit, uint32_t skippedPart) const;
+    /// The same crossings in the order the BVH's search meets them: a visitor that stops at the
+    /// first opaque face (a shadow ray's) spares the search of the rest.
+    bool crossingsInAnyOrder(const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
+                             uint32_t skippedPart) const;
     /// The nearest crossing with tMin < t < tMax, not testing triangle `skippedPart`.
     bool firstCrossingIn(const Ray& ray, double tMin, double tMax, Crossing& out,
                          uint32_t skippedPart) const;

@@ -1,6 +1,7 @@
 // The OBJ reader (every face form, relative indices, errors) and mesh triangles.
 #include "geometry_test_support.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -233,4 +234,39 @@ TEST_CASE("mesh: triangles out of range, not finite or of no area are crossed by
     one.crossLine(Ray{{0.25, 0.25, 1}, {0, 0, -1}}, list);
     REQUIRE(list.count == 1);
     CHECK(list[0].part == 3);
+}
+
+TEST_CASE("mesh: crossings in any order are crossingsIn's, and stop at the first the visitor refuses") {
+    // 40 unit squares stacked along z, two triangles each; a ray along z crosses one of each.
+    auto data = std::make_shared<MeshData>();
+    for (int layer = 0; layer < 40; ++layer) {
+        const auto first = static_cast<int32_t>(data->positions.size());
+        const double z = layer;
+        data->positions.insert(data->positions.end(), {{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}});
+        data->triangles.push_back({{first, first + 1, first + 2}, {-1, -1, -1}, {-1, -1, -1}});
+        data->triangles.push_back({{first, first + 2, first + 3}, {-1, -1, -1}, {-1, -1, -1}});
+    }
+    const MeshGeometry g(std::make_shared<const TriangleMesh>(data));
+    const Ray ray{{0.7, 0.2, -1}, {0, 0, 1}};
+    std::vector<std::pair<double, uint32_t>> inOrder, anyOrder;
+    auto into = [](std::vector<std::pair<double, uint32_t>>& out) {
+        return [&out](const Crossing& c) {
+            out.emplace_back(c.t, c.part);
+            return true;
+        };
+    };
+    auto ordered = into(inOrder), unordered = into(anyOrder);
+    const uint32_t skipped = 2 * 5; // the first triangle of layer 5, which the ray crosses
+    CHECK(g.crossingsIn(ray, 3.5, 30.5, ordered, skipped));
+    CHECK(g.crossingsInAnyOrder(ray, 3.5, 30.5, unordered, skipped));
+    CHECK(inOrder.size() == 26); // layers 3 to 29, but 5
+    std::sort(anyOrder.begin(), anyOrder.end());
+    CHECK(anyOrder == inOrder);
+    int visits = 0;
+    auto refuse = [&](const Crossing&) {
+        ++visits;
+        return false;
+    };
+    CHECK_FALSE(g.crossingsInAnyOrder(ray, 0, kInfinity, refuse, kNoPart));
+    CHECK(visits == 1);
 }
