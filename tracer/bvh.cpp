@@ -212,6 +212,19 @@ private:
     const std::vector<int32_t>& ids_;
 };
 
+/// Calls visit(child) for each used slot of `nodes` that leads to a leaf (`child` a reference
+/// into the node, which visit may rewrite when the nodes are not const).
+template <typename Nodes, typename Visit> void forEachLeafChild(Nodes& nodes, Visit&& visit) {
+    for (auto& node : nodes) {
+        const int used = node.usedSlots();
+        for (int slot = 0; slot < 4; ++slot)
+            if ((used & (1 << slot)) && WideChild::isLeaf(node.child[slot])) visit(node.child[slot]);
+    }
+}
+
+/// The groups of up to four that `items` items make.
+constexpr size_t groupsOf(size_t items) { return (items + 3) / 4; }
+
 /// The items' float boxes, items[i] from boundsOf(i), on up to `threads` threads when there
 /// are many.
 void makeItems(std::span<BuildItem> items, FunctionRef<Bounds3(size_t)> boundsOf, unsigned threads) {
@@ -298,14 +311,10 @@ std::span<const int32_t> Bvh::leafItems(uint32_t child, int32_t& lone) const {
 
 size_t Bvh::leafGroupCount() const {
     size_t groups = 0;
-    for (const WideBvhNode& node : nodes_) {
-        const int used = node.usedSlots();
-        for (int slot = 0; slot < 4; ++slot) {
-            if (!(used & (1 << slot)) || !WideChild::isLeaf(node.child[slot])) continue;
-            int32_t lone;
-            groups += (leafItems(node.child[slot], lone).size() + 3) / 4;
-        }
-    }
+    forEachLeafChild(nodes_, [&](uint32_t child) {
+        int32_t lone;
+        groups += groupsOf(leafItems(child, lone).size());
+    });
     return groups;
 }
 
@@ -313,7 +322,7 @@ void Bvh::groupLeaves(MakeGroup makeGroup) {
     // A leaf's groups, four items each but the last: one is the leaf's item, more its list.
     std::vector<int32_t> groupedItems;
     auto grouped = [&](std::span<const int32_t> items) {
-        const size_t groups = (items.size() + 3) / 4;
+        const size_t groups = groupsOf(items.size());
         auto group = [&](size_t g) { return makeGroup(items.subspan(4 * g, std::min<size_t>(4, items.size() - 4 * g))); };
         if (groups == 1) return WideChild::item(static_cast<uint32_t>(group(0)));
         const auto start = static_cast<uint32_t>(groupedItems.size());
@@ -321,15 +330,10 @@ void Bvh::groupLeaves(MakeGroup makeGroup) {
         for (size_t g = 0; g < groups; ++g) groupedItems.push_back(group(g));
         return WideChild::items(start);
     };
-    for (WideBvhNode& node : nodes_) {
-        const int used = node.usedSlots();
-        for (int slot = 0; slot < 4; ++slot) {
-            uint32_t& child = node.child[slot];
-            if (!(used & (1 << slot)) || !WideChild::isLeaf(child)) continue;
-            int32_t lone;
-            child = grouped(leafItems(child, lone));
-        }
-    }
+    forEachLeafChild(nodes_, [&](uint32_t& child) {
+        int32_t lone;
+        child = grouped(leafItems(child, lone));
+    });
     groupedItems.shrink_to_fit();
     items_ = std::move(groupedItems);
     if (!fewItems_.empty()) {

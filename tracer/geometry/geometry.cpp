@@ -157,13 +157,6 @@ bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double t
         geometry);
 }
 
-bool crossingsInAnyOrder(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
-                         uint32_t skippedPart) {
-    if (auto* mesh = shapeIf<MeshGeometry>(geometry))
-        return mesh->crossingsInAnyOrder(ray, tMin, tMax, visit, skippedPart);
-    return crossingsIn(geometry, ray, tMin, tMax, visit, skippedPart);
-}
-
 bool firstCrossingIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out,
                      uint32_t skippedPart) {
     if (auto* mesh = shapeIf<MeshGeometry>(geometry))

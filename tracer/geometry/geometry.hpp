@@ -107,16 +107,14 @@ bool hasCheapCrossings(const Geometry& geometry);
 /// `limits`: the work a primitive may do for one line (an isosurface's evaluations).
 std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::RenderLimits& limits = {});
 
-/// Visits the crossings with tMin < t < tMax in order until the visitor returns false (then
-/// false): crossLine's, or a search of the window alone where the primitive has one (an
-/// isosurface, whose search along the line is long; a mesh's BVH). `skippedPart`: a face the
-/// ray leaves from, which a mesh need not test (kNoPart: none).
+/// Visits the crossings with tMin < t < tMax until the visitor returns false (then false):
+/// crossLine's in order, or a search of the window alone where the primitive has one: an
+/// isosurface's (whose search along the line is long), in order; a mesh's, in the order its
+/// BVH meets them, so that a visitor stopping at the first opaque face (a shadow ray's)
+/// spares the search of the rest. `skippedPart`: a face the ray leaves from, which a mesh
+/// need not test (kNoPart: none).
 bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
                  uint32_t skippedPart = kNoPart);
-/// crossingsIn's crossings in any order, for queries that need none: a mesh's as its BVH
-/// meets them, so that a visitor stopping early spares the search of the rest.
-bool crossingsInAnyOrder(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
-                         uint32_t skippedPart = kNoPart);
 /// The first crossing with tMin < t < tMax, for nearest-hit queries: crossingsIn's first, or
 /// a nearest-first search where the primitive has one (a mesh). `skippedPart` as above.
 bool firstCrossingIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, Crossing& out,

@@ -138,19 +138,6 @@ void MeshGeometry::crossLine(const Ray& ray, CrossingList& out) const {
 
 bool MeshGeometry::crossingsIn(const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
                                uint32_t skippedPart) const {
-    CrossingList list;
-    forEachCrossedTriangle(*mesh_, ray, tMax, skippedPart, [&](double t, uint32_t triangle, const Vec3 (&)[3]) {
-        if (t > tMin && t < tMax) list.add(t, triangle);
-        return true;
-    });
-    list.sortByT();
-    for (int i = 0; i < list.count; ++i)
-        if (!visit(list[i])) return false;
-    return true;
-}
-
-bool MeshGeometry::crossingsInAnyOrder(const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
-                                       uint32_t skippedPart) const {
     return forEachCrossedTriangle(*mesh_, ray, tMax, skippedPart, [&](double t, uint32_t triangle, const Vec3 (&)[3]) {
         return !(t > tMin && t < tMax) || visit(Crossing{t, triangle});
     });
