@@ -166,10 +166,11 @@ void FrameDispatcher::takeTile(int rank, const std::vector<char>& message) {
 }
 
 void FrameDispatcher::report(int frame, const Frame& f) const {
-    if (!f.facts.ok)
-        std::cerr << fmt::format("crtc: {} cannot evaluate frame {}:\n", session_.describe(f.rank),
-                                 frame);
-    std::cerr << f.messages;
+    // One write, so that what mpirun prints about the other ranks cannot split it.
+    const std::string heading =
+        f.facts.ok ? ""
+                   : fmt::format("crtc: {} cannot evaluate frame {}:\n", session_.describe(f.rank), frame);
+    std::cerr << heading + f.messages;
 }
 
 FedFrame FrameDispatcher::next(int frame) {

@@ -19,9 +19,10 @@ namespace {
 const CrtMpiModule& mpiModuleOrExit() {
     std::string error;
     if (const CrtMpiModule* module = loadMpiModule(error)) return *module;
+    // One write: mpirun's own messages about the failed ranks must not land inside the line.
     if (launchedRank() == 0)
-        std::cerr << "crtc: cannot share the render over the processes of mpirun: " << error
-                  << "\n";
+        std::cerr << fmt::format("crtc: cannot share the render over the processes of mpirun: {}\n",
+                                 error);
     std::exit(2);
 }
 
