@@ -18,9 +18,11 @@ missing member, and {"$regex": "..."} a string.
 Strings "$URI" and "$DIR" are replaced by the session document's URI and folder; a text
 {"$repeat": "TEXT", "times": N} is expanded, and {"$join": [TEXT, ...]} joins its texts.
 """
+import atexit
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -116,6 +118,7 @@ def main():
     with open(session_path, encoding="utf-8") as f:
         session = json.load(f)
     workdir = tempfile.mkdtemp(prefix="crt-lsp-session-")
+    atexit.register(shutil.rmtree, workdir, ignore_errors=True)  # also after a failed step
     document = os.path.join(workdir, "scene.crt")
     for name, text in session.get("files", {}).items():
         with open(os.path.join(workdir, name), "w", encoding="utf-8") as f:
