@@ -110,9 +110,8 @@ std::optional<Geometry> makeGeometry(const scene::Shape& shape, const scene::Ren
 /// Visits the crossings with tMin < t < tMax until the visitor returns false (then false):
 /// crossLine's in order, or a search of the window alone where the primitive has one: an
 /// isosurface's (whose search along the line is long), in order; a mesh's, in the order its
-/// BVH meets them, so that a visitor stopping at the first opaque face (a shadow ray's)
-/// spares the search of the rest. `skippedPart`: a face the ray leaves from, which a mesh
-/// need not test (kNoPart: none).
+/// BVH meets them, so that a visitor that stops early spares the search of the rest.
+/// `skippedPart`: a face the ray leaves from, which a mesh need not test (kNoPart: none).
 bool crossingsIn(const Geometry& geometry, const Ray& ray, double tMin, double tMax, CrossingVisitor visit,
                  uint32_t skippedPart = kNoPart);
 /// The first crossing with tMin < t < tMax, for nearest-hit queries: crossingsIn's first, or

@@ -67,8 +67,7 @@ class MeshGeometry {
     void crossLine(const Ray& ray, CrossingList& out) const;
     /// The crossings with tMin < t < tMax, each triangle's but `skippedPart`'s (the face a ray
     /// leaves from; kNoPart for none), in the order the BVH's search meets them, until visit
-    /// returns false: a visitor that stops at the first opaque face (a shadow ray's) spares
-    /// the search of the rest.
+    /// returns false: a visitor that stops early spares the search of the rest.
     bool crossingsIn(const Ray& ray, double tMin, double tMax, CrossingVisitor visit, uint32_t skippedPart) const;
     /// The nearest crossing with tMin < t < tMax, not testing triangle `skippedPart`.
     bool firstCrossingIn(const Ray& ray, double tMin, double tMax, Crossing& out,
