@@ -3,7 +3,10 @@
 #
 #   blender -b --factory-startup --python bench/gi/cycles.py -- \
 #       --scene NAME --size WxH --samples N --bounces B --threads T --out FILE.exr [--dir DIR]
+#       [--adaptive THRESHOLD]
 #
+# --adaptive turns on Cycles' adaptive sampling with that noise threshold (its default is
+# 0.01), --samples then being the most a pixel takes; without it every pixel takes --samples.
 # --bounces is crtc's count (surfaces a path may bounce off); Cycles counts the bounces
 # after the first surface, so it is given B - 1. --dir is where sky.exr is.
 import math
@@ -25,7 +28,7 @@ SKY_ROTATE_Z = -math.pi / 2
 def options(argv):
     argv = argv[argv.index("--") + 1:] if "--" in argv else []
     o = {"scene": "cornell", "size": "128x128", "samples": "16", "bounces": "8", "threads": "2",
-         "out": "out.exr", "dir": ".", "seed": "0"}
+         "out": "out.exr", "dir": ".", "seed": "0", "adaptive": "0"}
     i = 0
     while i < len(argv):
         name = argv[i].lstrip("-")
@@ -187,7 +190,10 @@ def build(o):
     c = sc.cycles
     c.device = "CPU"
     c.samples = int(o["samples"])
-    c.use_adaptive_sampling = False
+    c.use_adaptive_sampling = float(o["adaptive"]) > 0
+    if c.use_adaptive_sampling:
+        c.adaptive_threshold = float(o["adaptive"])
+        c.adaptive_min_samples = 0  # Cycles' own choice from the threshold
     c.use_denoising = False
     c.seed = int(o["seed"])
     c.use_animated_seed = False

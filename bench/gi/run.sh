@@ -3,7 +3,8 @@
 # Cycles and POV-Ray 3.7's radiosity, on three scenes made alike in the three renderers
 # (bench/gi/scenes.py): the Cornell box, the box with a glass sphere, and objects lit by a
 # panorama. crtc and Cycles render more and more paths a pixel, POV-Ray radiosity presets
-# from quick to best; each image is compared with crtc's converged reference, and the
+# from quick to best, and crtc and Cycles again with adaptive sampling (each pixel stopping
+# once its own noise is below a threshold); each image is compared with crtc's converged reference, and the
 # script prints wall time against relative MSE as Markdown tables, the time each renderer
 # takes to reach a relative MSE of 1e-2 and 1e-3, and, with --svg, a log-log plot.
 # See bench/README.md, "Global illumination".
@@ -25,6 +26,10 @@
 #   BOUNCES            crtc's bounces (default 8; Cycles is given one less, see cycles.py)
 #   CRTC_SAMPLES       crtc's points, paths a pixel (default "4 16 64 256 1024")
 #   CYCLES_SAMPLES     Cycles' points, samples a pixel (default "4 16 64 256 1024")
+#   CRTC_TARGETS       crtc's adaptive points, --target-error (default "0.5 0.3 0.2 0.1 0.05
+#                      0.03"), each pixel taking at most the last of CRTC_SAMPLES paths
+#   CYCLES_THRESHOLDS  Cycles' adaptive points, its noise threshold (default "0.1 0.05 0.02
+#                      0.01 0.005"), each pixel taking at most the last of CYCLES_SAMPLES
 #   POV_PRESETS        POV-Ray's points, radiosity presets 1 (quick) to 5 (best) (default
 #                      "1 2 3 4 5")
 #   PLOT_TIME          the plot's time axis: wall (default) or cpu (processor time, the
@@ -54,6 +59,8 @@ reference=${REFERENCE_SAMPLES:-4096}
 bounces=${BOUNCES:-8}
 crtc_samples=${CRTC_SAMPLES:-4 16 64 256 1024}
 cycles_samples=${CYCLES_SAMPLES:-4 16 64 256 1024}
+crtc_targets=${CRTC_TARGETS-0.5 0.3 0.2 0.1 0.05 0.03}
+cycles_thresholds=${CYCLES_THRESHOLDS-0.1 0.05 0.02 0.01 0.005}
 pov_presets=${POV_PRESETS:-1 2 3 4 5}
 plot_time=${PLOT_TIME:-wall}
 
@@ -64,6 +71,10 @@ positive "$bounces" || { echo "$0: BOUNCES must be a positive integer, got '$bou
 [[ $reference =~ ^[1-9][0-9]*$ && $reference -ge 2 ]] ||
     { echo "$0: REFERENCE_SAMPLES must be an integer of at least 2, got '$reference'" >&2; exit 2; }
 for n in $crtc_samples $cycles_samples; do positive "$n" || { echo "$0: bad sample count '$n'" >&2; exit 2; }; done
+for e in $crtc_targets $cycles_thresholds; do
+    [[ $e =~ ^(0\.[0-9]*[1-9][0-9]*|[1-9][0-9]*(\.[0-9]+)?)$ ]] || { echo "$0: bad threshold '$e'" >&2; exit 2; }
+done
+crtc_most=${crtc_samples##* } cycles_most=${cycles_samples##* }
 for p in $pov_presets; do [[ $p =~ ^[1-5]$ ]] || { echo "$0: POV_PRESETS are 1 to 5, got '$p'" >&2; exit 2; }; done
 [[ $size =~ ^[1-9][0-9]*x[1-9][0-9]*$ ]] || { echo "$0: bad size '$size' (want WxH)" >&2; exit 2; }
 [[ $plot_time == wall || $plot_time == cpu ]] || { echo "$0: PLOT_TIME is wall or cpu, got '$plot_time'" >&2; exit 2; }
@@ -122,22 +133,24 @@ timed() {
     cpu=$(awk -v a="$c0" -v b="$c1" 'BEGIN { printf "%.3f", (b - a) / 1000 }')
 }
 
-# crtc_image SCENE SAMPLES SEED NAME -> $out/NAME.exr
+# crtc_image SCENE SAMPLES SEED NAME [crtc options] -> $out/NAME.exr
 crtc_image() {
     local w=$1 n=$2 seed=$3 name=$4
+    shift 4
     sed "s/integrator -> \"path\"/seed -> $seed integrator -> \"path\"/; s/bounces -> [0-9]*/bounces -> $bounces/" \
         "$out/$w.crt" >"$out/$name.crt"
-    timed "$crtc" "$out/$name.crt" -o "$out/$name.exr" --samples "$n" --threads "$threads" -q \
+    timed "$crtc" "$out/$name.crt" -o "$out/$name.exr" --samples "$n" --threads "$threads" -q "$@" \
         2>"$logs/$name.err" || { echo "crtc failed on $name.crt; log: $logs/$name.err$keep_hint" >&2; return 1; }
 }
 
-# cycles_image SCENE SAMPLES SEED NAME -> $out/NAME.exr
+# cycles_image SCENE SAMPLES SEED NAME [cycles.py options] -> $out/NAME.exr
 cycles_image() {
     local w=$1 n=$2 seed=$3 name=$4
+    shift 4
     rm -f "$out/$name.exr"
     timed "$blender" -b --factory-startup --python-exit-code 1 --python "$here/cycles.py" -- \
         --scene "$w" --size "$size" --samples "$n" --bounces "$bounces" --threads "$threads" \
-        --seed "$seed" --out "$out/$name.exr" --dir "$out" >"$logs/$name.out" 2>&1 &&
+        --seed "$seed" --out "$out/$name.exr" --dir "$out" "$@" >"$logs/$name.out" 2>&1 &&
         [[ -s $out/$name.exr ]] || { echo "Blender failed on $w; log: $logs/$name.out$keep_hint" >&2; return 1; }
 }
 
@@ -221,6 +234,16 @@ for w in "${scene_list[@]}"; do
         echo "$w: Cycles, $n samples a pixel ..." >&2
         point cycles "$n" "$w" "$w.cycles_$n" cycles_image "$w" "$n" 0 "$w.cycles_$n" || failed=1
     done
+    for e in $crtc_targets; do
+        echo "$w: crtc, target error $e, at most $crtc_most paths a pixel ..." >&2
+        point crtc_adaptive "$e" "$w" "$w.crtc_adaptive_$e" \
+            crtc_image "$w" "$crtc_most" 0 "$w.crtc_adaptive_$e" --target-error "$e" || failed=1
+    done
+    for e in $cycles_thresholds; do
+        echo "$w: Cycles, noise threshold $e, at most $cycles_most samples a pixel ..." >&2
+        point cycles_adaptive "$e" "$w" "$w.cycles_adaptive_$e" \
+            cycles_image "$w" "$cycles_most" 0 "$w.cycles_adaptive_$e" --adaptive "$e" || failed=1
+    done
     for p in $pov_presets; do
         echo "$w: POV-Ray, radiosity preset $p ..." >&2
         point pov "$p" "$w" "$w.pov_$p" pov_image "$w" "$p" "$w.pov_$p" || failed=1
@@ -229,11 +252,18 @@ done
 
 # ---------------------------------------------------------------------------
 
-tool_name() { case $1 in crtc) echo crtc ;; cycles) echo Cycles ;; pov) echo POV-Ray ;; esac; }
+tool_name() {
+    case $1 in
+        crtc) echo crtc ;; cycles) echo Cycles ;; pov) echo POV-Ray ;;
+        crtc_adaptive) echo "crtc, adaptive" ;; cycles_adaptive) echo "Cycles, adaptive" ;;
+    esac
+}
 setting_of() {
     case $1 in
         crtc) echo "$2 paths a pixel" ;;
         cycles) echo "$2 samples a pixel" ;;
+        crtc_adaptive) echo "target error $2, at most $crtc_most paths" ;;
+        cycles_adaptive) echo "noise threshold $2, at most $cycles_most samples" ;;
         pov) local r
             r=$(pov_preset "$2")
             echo "preset $2: \`${r%|*}\`, \`${r#*|}\`" ;;
@@ -290,7 +320,7 @@ echo "| scene | renderer | relative MSE 1e-2 | relative MSE 1e-3 |"
 echo "| --- | --- | ---: | ---: |"
 for w in "${scene_list[@]}"; do
     [[ -s $out/$w.points ]] || continue
-    for tool in crtc cycles pov; do
+    for tool in crtc crtc_adaptive cycles cycles_adaptive pov; do
         grep -q "^$tool|" "$out/$w.points" || continue
         cells=()
         for target in 1e-2 1e-3; do
@@ -313,7 +343,8 @@ if [[ -n $svg ]]; then
     done | awk -F'|' -v title="Global illumination: time against error, $size, $threads threads" \
         -v column="$([[ $plot_time == cpu ]] && echo 5 || echo 4)" \
         -v axis="$([[ $plot_time == cpu ]] && echo "processor time (s)" || echo "wall time (s)")" \
-        -v crtc_n="${crtc_samples// /, }" -v cycles_n="${cycles_samples// /, }" -v presets="${pov_presets// /, }" '
+        -v crtc_n="${crtc_samples// /, }" -v cycles_n="${cycles_samples// /, }" -v presets="${pov_presets// /, }" \
+        -v crtc_e="${crtc_targets// /, }" -v cycles_e="${cycles_thresholds// /, }" '
         function lx(v) { return log(v) / log(10) }
         function floor(v) { return v == int(v) || v > 0 ? int(v) : int(v) - 1 }
         function ceil(v) { return v == int(v) || v < 0 ? int(v) : int(v) + 1 }
@@ -338,11 +369,13 @@ if [[ -n $svg ]]; then
             x0 = floor(lx(minx)); x1 = ceil(lx(maxx)); y0 = floor(lx(miny)); y1 = ceil(lx(maxy))
             if (x1 == x0) x1++
             if (y1 == y0) y1++
-            width = scenes * (pw + gap) + 40; height = top + ph + 106
+            width = scenes * (pw + gap) + 40; height = top + ph + 142
             printf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" font-family=\"sans-serif\" font-size=\"12\">\n", width, height
             printf "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n"
             printf "<text x=\"20\" y=\"22\" font-size=\"15\">%s</text>\n", title
-            split("crtc cycles pov", tools, " "); split("#c0392b #e08a00 #2c6fbb", colours, " ")
+            # The adaptive series in the colour of their renderer, dashed, their points hollow.
+            split("crtc cycles pov crtc_adaptive cycles_adaptive", tools, " ")
+            split("#c0392b #e08a00 #2c6fbb #c0392b #e08a00", colours, " ")
             for (s = 1; s <= scenes; s++) {
                 w = names[s]; left = 70 + (s - 1) * (pw + gap)
                 printf "<text x=\"%d\" y=\"%d\" font-weight=\"bold\">%s</text>\n", left, top - 8, w
@@ -367,12 +400,13 @@ if [[ -n $svg ]]; then
                     printf "<line x1=\"%d\" y1=\"%.1f\" x2=\"%d\" y2=\"%.1f\" stroke=\"#777\" stroke-dasharray=\"5 4\"/>\n", left, py(noise[w]), left + pw, py(noise[w])
                     printf "<text x=\"%d\" y=\"%.1f\" fill=\"#555\" font-size=\"10\">reference noise</text>\n", left + 4, py(noise[w]) + 12
                 }
-                for (t = 1; t <= 3; t++) {
+                for (t = 1; t <= 5; t++) {
+                    dashed = t > 3
                     path = ""; m = 0
                     for (i = 1; i <= count[w]; i++) {
                         if (tool[w, i] != tools[t]) continue
                         xs[++m] = px(wall[w, i]); ys[m] = py(err[w, i])
-                        printf "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\"/>\n", xs[m], ys[m], colours[t]
+                        printf "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\" stroke=\"%s\"/>\n", xs[m], ys[m], dashed ? "white" : colours[t], colours[t]
                     }
                     for (a = 2; a <= m; a++)
                         for (b = a; b > 1 && xs[b - 1] > xs[b]; b--) {
@@ -380,10 +414,12 @@ if [[ -n $svg ]]; then
                             ty = ys[b]; ys[b] = ys[b - 1]; ys[b - 1] = ty
                         }
                     for (a = 1; a <= m; a++) path = path sprintf("%s%.1f,%.1f", a == 1 ? "" : " ", xs[a], ys[a])
-                    if (path != "") printf "<polyline points=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"1.5\"/>\n", path, colours[t]
+                    if (path != "") printf "<polyline points=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"1.5\"%s/>\n", path, colours[t], dashed ? " stroke-dasharray=\"6 3\"" : ""
                 }
             }
-            printf "<text x=\"20\" y=\"%d\" fill=\"%s\">crtc, path tracing: %s paths a pixel</text>\n", height - 48, colours[1], crtc_n
+            printf "<text x=\"20\" y=\"%d\" fill=\"%s\">crtc, path tracing: %s paths a pixel</text>\n", height - 84, colours[1], crtc_n
+            printf "<text x=\"20\" y=\"%d\" fill=\"%s\">crtc, adaptive (dashed): target errors %s</text>\n", height - 66, colours[1], crtc_e
+            printf "<text x=\"20\" y=\"%d\" fill=\"%s\">Blender Cycles, adaptive (dashed): noise thresholds %s</text>\n", height - 48, colours[2], cycles_e
             printf "<text x=\"20\" y=\"%d\" fill=\"%s\">Blender Cycles: %s samples a pixel (whole process: start-up and scene build included)</text>\n", height - 30, colours[2], cycles_n
             printf "<text x=\"20\" y=\"%d\" fill=\"%s\">POV-Ray 3.7 radiosity: presets %s, quick to best</text>\n", height - 12, colours[3], presets
             print "</svg>"
