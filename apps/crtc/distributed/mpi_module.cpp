@@ -39,9 +39,9 @@ void waitAsleep(MPI_Request& request, std::chrono::microseconds first) {
 /// OpenMPI's runtime talks to mpirun over a TCP connection that keeps Nagle's algorithm on.
 /// In MPI_Finalize each process sends its part of a fence while its last message is not yet
 /// acknowledged, and mpirun acknowledges it only when its delayed acknowledgement fires, 40 ms
-/// on Linux: every job lost that much at its end. Once MPI_Init is over, the process's TCP
-/// connections are MPI's (crtc opens none under mpirun), and OpenMPI sets TCP_NODELAY on its
-/// own MPI connections already.
+/// on Linux: every job lost that much at its end. Right after MPI_Init the process's TCP
+/// connections are all MPI's (crtc has opened none by then), and OpenMPI sets TCP_NODELAY on
+/// those that carry MPI messages already.
 void sendTcpAtOnce() {
     DIR* fds = opendir("/proc/self/fd");
     if (!fds) return;
