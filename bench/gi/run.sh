@@ -96,14 +96,17 @@ fi
 if [[ -n $replot ]]; then
     [[ -d $replot ]] || { echo "$0: --replot: no folder '$replot'" >&2; exit 2; }
     out=$replot
-    # the size, thread count and reference the results were made with
-    [[ -f $out/run.txt ]] && read -r size threads reference bounces <"$out/run.txt"
+    # the size, thread count, reference and adaptive caps the results were made with
+    if [[ -f $out/run.txt ]]; then
+        read -r size threads reference bounces kept_crtc_most kept_cycles_most <"$out/run.txt"
+        crtc_most=${kept_crtc_most:-$crtc_most} cycles_most=${kept_cycles_most:-$cycles_most}
+    fi
     for w in "${scene_list[@]}"; do
         [[ -s $out/$w.points && -s $out/$w.reference ]] || { echo "$0: --replot: no results for $w in $out" >&2; exit 2; }
     done
 else
     bench_output_folder gi
-    echo "$size $threads $reference $bounces" >"$out/run.txt"
+    echo "$size $threads $reference $bounces $crtc_most $cycles_most" >"$out/run.txt"
     # The scenes at this size, and the panorama as a float OpenEXR file.
     python3 "$here/scenes.py" "$out" --size "$size" >"$logs/scenes.log" 2>&1 ||
         { echo "$0: bench/gi/scenes.py failed; log: $logs/scenes.log$keep_hint" >&2; exit 1; }
