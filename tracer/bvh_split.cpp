@@ -102,12 +102,16 @@ bool SplitFinder::sortedSplit(size_t begin, size_t end, int axis, const RangeBou
 /// Many items: binned by centroid along the axis, the splits between bins weighed.
 bool SplitFinder::binnedSplit(size_t begin, size_t end, int axis, const RangeBounds& range, Split& split) {
     const size_t count = end - begin;
-    // Neighbouring items mostly fall into the same bin, and growing a bin waits for its
-    // last update: two sets of bins, for the even and the odd items, halve that wait.
-    RangeBounds lanes[2][kBins];
-    int laneCount[2][kBins] = {};
+    RangeBounds bins[kBins];
+    int binCount[kBins] = {};
     const double lo = range.centroids.lo[axis];
     const double scale = kBins / range.centroids.extent(axis);
+    // Neighbouring items mostly fall into the same bin, and a bin grown in memory item by item
+    // waits for its last update each time: a run of items in one bin grows bounds held apart,
+    // and the bin takes them once the run ends. Joined in the items' order, the bins come out
+    // as if grown item by item.
+    int run = -1, runCount = 0;
+    RangeBounds runBounds;
     for (size_t i = begin; i < end; ++i) {
         BuildItem& item = items_[i];
         // Both halves read before the bin is written into the second: a read overlapping
@@ -115,19 +119,22 @@ bool SplitFinder::binnedSplit(size_t begin, size_t end, int axis, const RangeBou
         const Float4 l = item.loLanes(), h = item.hiLanes();
         const Float4 centroid = BuildItem::centroidOf(l, h);
         const int b = std::clamp(static_cast<int>((centroid[axis] - lo) * scale), 0, kBins - 1);
-        const size_t lane = i & 1;
-        ++laneCount[lane][b];
-        lanes[lane][b].bounds.include(l, h);
-        lanes[lane][b].centroids.include(centroid, centroid);
         item.bin = static_cast<uint32_t>(b);
+        if (b != run) {
+            if (run >= 0) {
+                bins[run].include(runBounds);
+                binCount[run] += runCount;
+            }
+            run = b;
+            runCount = 0;
+            runBounds = {};
+        }
+        ++runCount;
+        runBounds.bounds.include(l, h);
+        runBounds.centroids.include(centroid, centroid);
     }
-    RangeBounds bins[kBins];
-    int binCount[kBins];
-    for (int b = 0; b < kBins; ++b) {
-        bins[b] = lanes[0][b];
-        bins[b].include(lanes[1][b]);
-        binCount[b] = laneCount[0][b] + laneCount[1][b];
-    }
+    bins[run].include(runBounds);
+    binCount[run] += runCount;
     // The cost of each split: the items on each side times the area of their bounds.
     double costs[kBins - 1] = {};
     Box4 below;
