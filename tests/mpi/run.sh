@@ -49,12 +49,16 @@ leak_checked() { # command...
     local leaks_checked=1
     "$@"
 }
-mpi() { # processes crtc-arguments...
+mpirun_job() { # processes program arguments...
     local processes=$1 asan_options=$unchecked_asan_options
     shift
     [ "${leaks_checked:-0}" = 1 ] && asan_options=${ASAN_OPTIONS:-}
-    ASAN_OPTIONS=$asan_options \
-        timeout 120 mpirun --allow-run-as-root --oversubscribe -np "$processes" "$crtc" "$@"
+    ASAN_OPTIONS=$asan_options timeout 120 mpirun --allow-run-as-root --oversubscribe -np "$processes" "$@"
+}
+mpi() { # processes crtc-arguments...
+    local processes=$1
+    shift
+    mpirun_job "$processes" "$crtc" "$@"
 }
 # crtc built without MPI says so under mpirun: nothing to test then.
 if ! mpi 2 --quiet "$here/still.crt" --width 8 --height 8 -o "$work/probe.png" 2>"$work/probe.err"; then
@@ -304,13 +308,11 @@ printf 'Settings { width -> 8 height -> 8 }\nScene { Sphere { center -> vec3(0, 
 exec "$crtc" scene.crt "\$@"
 SH
     chmod +x "$work/differ.sh"
-    ASAN_OPTIONS=$unchecked_asan_options expect_status 1 "different scenes" \
-        timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 "$work/differ.sh" -o "$work/differ.png"
+    expect_status 1 "different scenes" mpirun_job 2 "$work/differ.sh" -o "$work/differ.png"
     expect_text "$work/err" "evaluated different scenes" "different scenes are reported"
     [ ! -e "$work/differ.png" ] || fail "an image was written from different scenes"
     # An animation: the scripts are compared before any frame is handed out.
-    ASAN_OPTIONS=$unchecked_asan_options expect_status 1 "different scripts, an animation" \
-        timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 "$work/differ.sh" --frames 3 \
+    expect_status 1 "different scripts, an animation" mpirun_job 2 "$work/differ.sh" --frames 3 \
         -o "$work/differ_%d.png"
     expect_text "$work/err" "evaluated different scenes for the script" "different scripts are reported"
     [ "$(grep -c "evaluated different scenes" "$work/err")" = 1 ] || fail "different scripts reported more than once"
