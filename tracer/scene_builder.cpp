@@ -48,7 +48,6 @@ public:
         scene_.materials.emplace_back(); // the default material
         scene_.blends = desc_.blends;
         scene_.media = desc_.media;
-        if (!readHeightGrids()) return false;
         // Counted before anything is expanded (a shared entity doubled in a loop would
         // otherwise fill memory here), by the rule the front end counts by. Evaluation refuses
         // such a scene already, and leaves its count in the description; this is for
@@ -278,20 +277,19 @@ private:
         return static_cast<int32_t>(scene_.transforms.size() - 1);
     }
 
-    /// The heights of every HeightField, once each however often it is drawn.
-    bool readHeightGrids() {
-        for (const scene::EntityDesc& e : desc_.entities) {
-            auto* field = std::get_if<scene::HeightFieldShape>(&e.shape);
-            if (!field || shared_.heightGrids.contains(field->desc.get())) continue;
-            std::shared_ptr<const HeightGrid> grid = readHeightGrid(*field->desc, desc_.limits, error_);
-            if (!grid) {
-                const std::string where = scene::spanLocation(desc_, e.source);
-                if (!where.empty()) error_ = where + ": error: " + error_;
-                return false;
-            }
-            shared_.heightGrids.emplace(field->desc.get(), std::move(grid));
+    /// The heights of the field, read once however often it is drawn; null (with error_ set)
+    /// when they cannot be read.
+    std::shared_ptr<const HeightGrid> heightGrid(const scene::HeightFieldShape& field, const Operand& op) {
+        auto known = shared_.heightGrids.find(field.desc.get());
+        if (known != shared_.heightGrids.end()) return known->second;
+        std::shared_ptr<const HeightGrid> grid = readHeightGrid(*field.desc, desc_.limits, error_);
+        if (!grid) {
+            const std::string where = scene::spanLocation(desc_, desc_.entities[op.entity].source);
+            if (!where.empty()) error_ = where + ": error: " + error_;
+            return nullptr;
         }
-        return true;
+        shared_.heightGrids.emplace(field.desc.get(), grid);
+        return grid;
     }
 
     int32_t addPrimitive(const Operand& op) {
@@ -306,8 +304,11 @@ private:
 
     std::optional<Geometry> geometryOf(const Operand& op) {
         const scene::Shape& shape = desc_.entities[op.entity].shape;
-        if (auto* field = std::get_if<scene::HeightFieldShape>(&shape))
-            return HeightFieldGeometry(shared_.heightGrids.at(field->desc.get()), field->desc->smooth);
+        if (auto* field = std::get_if<scene::HeightFieldShape>(&shape)) {
+            std::shared_ptr<const HeightGrid> heights = heightGrid(*field, op);
+            if (!heights) return std::nullopt;
+            return HeightFieldGeometry(std::move(heights), field->desc->smooth);
+        }
         if (auto* mesh = std::get_if<scene::MeshShape>(&shape)) {
             std::shared_ptr<const TriangleMesh> triangles = triangleMesh(*mesh, op);
             if (!triangles) return std::nullopt;
