@@ -21,9 +21,8 @@ template <class T> bool allValid(const int32_t (&idx)[3], const std::vector<T>& 
 template <typename Crossed>
 bool forEachCrossedTriangle(const TriangleMesh& mesh, const Ray& ray, const double& tMax, uint32_t skipped,
                             Crossed&& crossed) {
-    RayStats unused;
     const QuadRay quadRay(ray, mesh.frame());
-    return mesh.bvh().traverse(LazyBoxRay(ray), tMax, unused, [&](int32_t group) {
+    return mesh.bvh().traverseUncounted(LazyBoxRay(ray), tMax, [&](int32_t group) {
         const TriangleQuad& quad = mesh.quad(group);
         // The exact test for the triangles the line may cross, in the quad's order.
         for (int lanes = quad.mayCross(quadRay); lanes != 0; lanes &= lanes - 1) {
