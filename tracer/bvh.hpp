@@ -232,7 +232,7 @@ public:
     bool traverse(const LazyBoxRay& ray, const double& tMax, RayStats& stats, Visit&& visit) const {
         return search<true>(ray, tMax, stats.nodesVisited, visit);
     }
-    /// The same without counting the box slots tested, which costs a few percent of a search.
+    /// The same without counting the box slots tested: for a search whose count nobody reads.
     template <typename Visit>
     bool traverseUncounted(const LazyBoxRay& ray, const double& tMax, Visit&& visit) const {
         uint64_t uncounted = 0;
