@@ -112,6 +112,10 @@ bool SplitFinder::binnedSplit(size_t begin, size_t end, int axis, const RangeBou
     // as if grown item by item.
     int run = -1, runCount = 0;
     RangeBounds runBounds;
+    auto endRun = [&] {
+        bins[run].include(runBounds);
+        binCount[run] += runCount;
+    };
     for (size_t i = begin; i < end; ++i) {
         BuildItem& item = items_[i];
         // Both halves read before the bin is written into the second: a read overlapping
@@ -121,10 +125,7 @@ bool SplitFinder::binnedSplit(size_t begin, size_t end, int axis, const RangeBou
         const int b = std::clamp(static_cast<int>((centroid[axis] - lo) * scale), 0, kBins - 1);
         item.bin = static_cast<uint32_t>(b);
         if (b != run) {
-            if (run >= 0) {
-                bins[run].include(runBounds);
-                binCount[run] += runCount;
-            }
+            if (run >= 0) endRun();
             run = b;
             runCount = 0;
             runBounds = {};
@@ -133,8 +134,7 @@ bool SplitFinder::binnedSplit(size_t begin, size_t end, int axis, const RangeBou
         runBounds.bounds.include(l, h);
         runBounds.centroids.include(centroid, centroid);
     }
-    bins[run].include(runBounds);
-    binCount[run] += runCount;
+    endRun();
     // The cost of each split: the items on each side times the area of their bounds.
     double costs[kBins - 1] = {};
     Box4 below;
