@@ -1,4 +1,4 @@
-// The 4-wide BVH built top-down from binned surface-area-heuristic splits (bvh_split.hpp).
+// Wide BVHs built top-down from binned surface-area-heuristic splits (bvh_split.hpp).
 #include "tracer/bvh.hpp"
 #include "tracer/bvh_split.hpp"
 #include "tracer/worker_threads.hpp"
@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <future>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <span>
@@ -47,17 +48,18 @@ struct Span {
 
 /// The wide nodes and leaf lists of a tree, or of a subtree built on a thread of its own
 /// (its indices then count from its own first node and item until it is appended).
+template <int Width>
 struct WideTree {
-    std::vector<WideBvhNode> nodes;
+    std::vector<WideNode<Width>> nodes;
     std::vector<int32_t> items; ///< the leaves of more than one item: count, items
 
     /// Puts `part` after what is here, moving its indices along with it.
     void append(const WideTree& part) {
         const auto nodeShift = static_cast<uint32_t>(nodes.size());
         const auto itemShift = static_cast<uint32_t>(items.size());
-        for (WideBvhNode node : part.nodes) {
+        for (WideNode<Width> node : part.nodes) {
             const int used = node.usedSlots();
-            for (int slot = 0; slot < 4; ++slot) {
+            for (int slot = 0; slot < Width; ++slot) {
                 uint32_t& child = node.child[slot];
                 if (!(used & (1 << slot)) || WideChild::isOneItem(child)) continue;
                 child += WideChild::isLeaf(child) ? itemShift : nodeShift;
@@ -68,11 +70,12 @@ struct WideTree {
     }
 };
 
-/// Builds the 4-wide tree top-down: a node over a range takes the two sides of its split,
-/// then keeps opening the inner child of largest surface area until it has four (as
-/// Embree's builders do). Nodes are laid out depth-first, children in slot order. Near the
+/// Builds a wide tree top-down: a node over a range takes the two sides of its split, then
+/// keeps opening the inner child of largest surface area until it has Width (as Embree's
+/// builders do). Nodes are laid out depth-first, children in slot order. Near the
 /// root, inner children are built on threads of their own, each into a WideTree appended
 /// in slot order, so the tree and its layout are the ones a single thread makes.
+template <int Width>
 class WideBuilder {
 public:
     /// `items`: the build's items, their `index` the position in the build's input;
@@ -89,21 +92,21 @@ public:
     /// Builds the node over `span` and its subtree at the end of `tree`; the inner children
     /// of nodes fewer than `parallelLevels` levels down get threads of their own. Returns
     /// the subtree's depth in wide levels.
-    int build(const Span& span, WideTree& tree, int parallelLevels) {
+    int build(const Span& span, WideTree<Width>& tree, int parallelLevels) {
         const size_t index = tree.nodes.size();
         tree.nodes.emplace_back();
-        Span children[4];
+        Span children[Width];
         const size_t childCount = gather(span, children);
-        std::future<int> apart[4];
-        WideTree parts[4];
+        std::future<int> apart[Width];
+        WideTree<Width> parts[Width];
         if (parallelLevels > 0) startApart(children, childCount, parts, apart, parallelLevels - 1);
-        WideBvhNode node = emptyNode();
+        WideNode<Width> node = emptyNode();
         int depth = 1;
         for (size_t slot = 0; slot < childCount; ++slot) {
             const Span& child = children[slot];
             for (int axis = 0; axis < 3; ++axis) {
-                node.faces[axis][slot] = child.bounds.lo[axis];
-                node.faces[3 + axis][slot] = child.bounds.hi[axis];
+                node.setFace(axis, static_cast<int>(slot), child.bounds.lo[axis]);
+                node.setFace(3 + axis, static_cast<int>(slot), child.bounds.hi[axis]);
             }
             if (!child.inner) {
                 node.child[slot] = leaf(child, tree);
@@ -125,15 +128,15 @@ public:
 private:
     /// The children of the node over `span`: the two sides of its split (or the span itself,
     /// a lone leaf at the root), then the inner child of largest surface area opened until
-    /// there are four.
-    size_t gather(const Span& span, Span (&children)[4]) {
+    /// there are Width.
+    size_t gather(const Span& span, Span (&children)[Width]) {
         if (!span.inner) {
             children[0] = span;
             return 1;
         }
         divide(span, children[0], children[1]);
         size_t childCount = 2;
-        while (childCount < 4) {
+        while (childCount < Width) {
             int widest = -1;
             for (size_t i = 0; i < childCount; ++i)
                 if (children[i].inner && (widest < 0 || children[i].area > children[widest].area))
@@ -164,8 +167,8 @@ private:
 
     /// Starts building the inner children worth a thread on threads of their own, each into
     /// its part; the first inner child stays for this thread.
-    void startApart(const Span (&children)[4], size_t childCount, WideTree (&parts)[4],
-                    std::future<int> (&apart)[4], int levelsBelow) {
+    void startApart(const Span (&children)[Width], size_t childCount, WideTree<Width> (&parts)[Width],
+                    std::future<int> (&apart)[Width], int levelsBelow) {
         bool first = true;
         for (size_t slot = 0; slot < childCount; ++slot) {
             const Span& child = children[slot];
@@ -182,19 +185,21 @@ private:
         }
     }
 
-    static WideBvhNode emptyNode() {
-        WideBvhNode node;
+    static WideNode<Width> emptyNode() {
+        WideNode<Width> node;
         const float inf = std::numeric_limits<float>::infinity();
-        for (int axis = 0; axis < 3; ++axis) {
-            node.faces[axis] = Float4{inf, inf, inf, inf};
-            node.faces[3 + axis] = Float4{-inf, -inf, -inf, -inf};
+        for (auto& group : node.faces) {
+            for (int axis = 0; axis < 3; ++axis) {
+                group[axis] = Float4{inf, inf, inf, inf};
+                group[3 + axis] = Float4{-inf, -inf, -inf, -inf};
+            }
         }
         for (uint32_t& child : node.child) child = WideChild::node(0);
         return node;
     }
 
     /// A leaf's `child` in the wide tree: its item, or where its items start in `tree.items`.
-    uint32_t leaf(const Span& span, WideTree& tree) const {
+    uint32_t leaf(const Span& span, WideTree<Width>& tree) const {
         auto id = [&](size_t at) {
             const int32_t position = items_[at].index;
             return ids_.empty() ? position : ids_[static_cast<size_t>(position)];
@@ -217,7 +222,7 @@ private:
 template <typename Nodes, typename Visit> void forEachLeafChild(Nodes& nodes, Visit&& visit) {
     for (auto& node : nodes) {
         const int used = node.usedSlots();
-        for (int slot = 0; slot < 4; ++slot)
+        for (int slot = 0; slot < static_cast<int>(std::size(node.child)); ++slot)
             if ((used & (1 << slot)) && WideChild::isLeaf(node.child[slot])) visit(node.child[slot]);
     }
 }
@@ -258,8 +263,9 @@ WideRay::WideRay(const Ray& ray) {
     }
 }
 
-void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::vector<int32_t> ids,
-                    bool groupedLeaves) {
+template <int Width>
+void WideBvh<Width>::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::vector<int32_t> ids,
+                               bool groupedLeaves) {
     nodes_.clear();
     items_.clear();
     fewItems_.clear();
@@ -277,9 +283,9 @@ void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::ve
     // twice as many subtrees as threads, so that an uneven split still leaves every thread
     // busy.
     int parallelLevels = 0;
-    for (unsigned subtrees = 1; threads > 1 && subtrees < 2 * threads; subtrees *= 4) ++parallelLevels;
-    WideBuilder builder(items, ids, groupedLeaves);
-    WideTree tree;
+    for (unsigned subtrees = 1; threads > 1 && subtrees < 2 * threads; subtrees *= Width) ++parallelLevels;
+    WideBuilder<Width> builder(items, ids, groupedLeaves);
+    WideTree<Width> tree;
     tree.nodes.reserve(std::max<size_t>(count - 1, 1)); // the most a tree over `count` items takes
     depth_ = builder.build(builder.root(), tree, parallelLevels);
     if (count <= kFewItems) {
@@ -297,11 +303,12 @@ void Bvh::buildFrom(size_t count, ItemBounds boundsOf, unsigned threads, std::ve
     items_ = std::move(tree.items);
     // A large reservation is mapped apart and its pages get memory only when written, so
     // its untouched tail costs nothing; only a small one is given back (a short copy).
-    if (nodes_.capacity() * sizeof(WideBvhNode) < kSmallReservation) nodes_.shrink_to_fit();
+    if (nodes_.capacity() * sizeof(Node) < kSmallReservation) nodes_.shrink_to_fit();
     items_.shrink_to_fit();
 }
 
-std::span<const int32_t> Bvh::leafItems(uint32_t child, int32_t& lone) const {
+template <int Width>
+std::span<const int32_t> WideBvh<Width>::leafItems(uint32_t child, int32_t& lone) const {
     const uint32_t index = WideChild::index(child);
     if (!WideChild::isOneItem(child))
         return {&items_[index + 1], static_cast<size_t>(items_[index])};
@@ -309,7 +316,8 @@ std::span<const int32_t> Bvh::leafItems(uint32_t child, int32_t& lone) const {
     return {&lone, 1};
 }
 
-size_t Bvh::leafGroupCount() const {
+template <int Width>
+size_t WideBvh<Width>::leafGroupCount() const {
     size_t groups = 0;
     forEachLeafChild(nodes_, [&](uint32_t child) {
         int32_t lone;
@@ -318,7 +326,8 @@ size_t Bvh::leafGroupCount() const {
     return groups;
 }
 
-void Bvh::groupLeaves(MakeGroup makeGroup) {
+template <int Width>
+void WideBvh<Width>::groupLeaves(MakeGroup makeGroup) {
     // A leaf's groups, four items each but the last: one is the leaf's item, more its list.
     std::vector<int32_t> groupedItems;
     auto grouped = [&](std::span<const int32_t> items) {
@@ -345,5 +354,8 @@ void Bvh::groupLeaves(MakeGroup makeGroup) {
         fewItems_ = {{{joint.lo.x, joint.lo.y, joint.lo.z, joint.hi.x, joint.hi.y, joint.hi.z}, group}};
     }
 }
+
+template class WideBvh<4>;
+template class WideBvh<8>;
 
 } // namespace crt::tracer

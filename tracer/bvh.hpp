@@ -1,4 +1,5 @@
-// A 4-wide bounding volume hierarchy: binned SAH build, laid out depth-first in an array.
+// Wide bounding volume hierarchies (4 or 8 children a node): binned SAH build, laid out
+// depth-first in an array.
 #pragma once
 
 #include "tracer/geometry/bounds.hpp"
@@ -111,23 +112,38 @@ private:
     static constexpr uint32_t kOneItem = 1u << 30;
 };
 
-/// A node of the 4-wide BVH: the boxes of up to four children side by side, axis by axis,
-/// so that one ray is tested against all four at once, and where each leads (WideChild).
-/// Boxes are the double-precision bounds rounded outwards to float; an unused slot has an
-/// empty box (lo > hi) that no ray hits.
-struct alignas(16) WideBvhNode {
-    Float4 faces[6]; ///< lo.x, lo.y, lo.z, hi.x, hi.y, hi.z of the four boxes
-    uint32_t child[4];
+/// A node of a wide BVH: the boxes of up to Width children (4 or 8) side by side, axis by
+/// axis in groups of four, so that one ray is tested against four boxes at once, and where
+/// each leads (WideChild). Boxes are the double-precision bounds rounded outwards to float;
+/// an unused slot has an empty box (lo > hi) that no ray hits.
+template <int Width>
+struct alignas(16) WideNode {
+    static_assert(Width == 4 || Width == 8);
+    /// Groups of four slots.
+    static constexpr int kGroups = Width / 4;
+
+    Float4 faces[kGroups][6]; ///< per group: lo.x, lo.y, lo.z, hi.x, hi.y, hi.z of its four boxes
+    uint32_t child[Width];
 
     /// Bit i set when slot i holds a child (its box is not empty).
-    int usedSlots() const { return laneMask(faces[0] <= faces[3]); }
+    int usedSlots() const {
+        int mask = 0;
+        for (int group = 0; group < kGroups; ++group)
+            mask |= laneMask(faces[group][0] <= faces[group][3]) << (4 * group);
+        return mask;
+    }
     /// How many slots hold a child.
     int used() const {
         // Looked up: std::popcount is a call into libgcc on processors the build does not
         // assume have POPCNT, and a counted traversal asks for every node it tests.
         static constexpr int8_t kBitsSet[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
-        return kBitsSet[usedSlots()];
+        int count = 0;
+        for (int group = 0; group < kGroups; ++group)
+            count += kBitsSet[laneMask(faces[group][0] <= faces[group][3])];
+        return count;
     }
+    /// Face f (0-5, as in `faces`) of slot `slot`'s box.
+    void setFace(int f, int slot, float value) { faces[slot / 4][f][slot % 4] = value; }
 };
 
 /// A ray prepared for four-box tests in float. The ray origin is rounded to float with a
@@ -138,21 +154,31 @@ struct alignas(16) WideBvhNode {
 struct WideRay {
     Float4 nearOrigin[3], farOrigin[3], invDir[3];
     Float4 widenedInvDir[3]; ///< invDir · kWiden, rounded: for exit distances
-    /// Byte offsets into WideBvhNode::faces of the face met first (`hi` when the ray runs
-    /// towards -axis) and last; offsets rather than indices save the scaling per node.
+    /// Byte offsets into a group of WideNode::faces of the face met first (`hi` when the ray
+    /// runs towards -axis) and last; offsets rather than indices save the scaling per node.
     size_t nearFace[3];
     size_t farFace[3];
 
     explicit WideRay(const Ray& ray);
 
-    /// Entry distances of the four boxes; returns the mask of boxes the segment (0, tMax)
-    /// meets (bit i for slot i), given limit = widenedLimit(tMax) in every lane.
-    int hits(const WideBvhNode& node, Float4 limit, Float4& entry) const {
+    /// Entry distances of a node's boxes, four to each group; returns the mask of boxes the
+    /// segment (0, tMax) meets (bit i for slot i), given limit = widenedLimit(tMax) in every
+    /// lane.
+    template <int Width>
+    int hits(const WideNode<Width>& node, Float4 limit, Float4 (&entry)[Width / 4]) const {
+        int mask = 0;
+        for (int group = 0; group < Width / 4; ++group)
+            mask |= hits(node.faces[group], limit, entry[group]) << (4 * group);
+        return mask;
+    }
+
+    /// The same for one group of four boxes.
+    int hits(const Float4 (&faces)[6], Float4 limit, Float4& entry) const {
         Float4 enter = {0, 0, 0, 0};
         Float4 exit = limit;
         for (int axis = 0; axis < 3; ++axis) {
-            Float4 tNear = (face(node, nearFace[axis]) - nearOrigin[axis]) * invDir[axis];
-            Float4 tFar = (face(node, farFace[axis]) - farOrigin[axis]) * widenedInvDir[axis];
+            Float4 tNear = (face(faces, nearFace[axis]) - nearOrigin[axis]) * invDir[axis];
+            Float4 tFar = (face(faces, farFace[axis]) - farOrigin[axis]) * widenedInvDir[axis];
             // A NaN (0 · ∞: the ray lies in a face plane) fails the comparison and leaves the
             // running value alone, which keeps the test conservative.
             enter = tNear > enter ? tNear : enter;
@@ -177,13 +203,17 @@ struct WideRay {
     static constexpr float kWiden = 1 + 2 * 3 * std::numeric_limits<float>::epsilon();
 
 private:
-    static const Float4& face(const WideBvhNode& node, size_t offset) {
-        return *reinterpret_cast<const Float4*>(reinterpret_cast<const char*>(node.faces) + offset);
+    static const Float4& face(const Float4 (&faces)[6], size_t offset) {
+        return *reinterpret_cast<const Float4*>(reinterpret_cast<const char*>(faces) + offset);
     }
 };
 
-class Bvh {
+/// A BVH of nodes of Width children (4 or 8): binned SAH build, laid out depth-first.
+template <int Width>
+class WideBvh {
 public:
+    using Node = WideNode<Width>;
+
     /// Builds over n items with the given (finite) bounds, on up to `threads` threads; the
     /// tree is the same whatever their number. Item i is ids[i], or i when there are no ids;
     /// items are below WideChild::kMaxItems (std::length_error otherwise).
@@ -220,7 +250,7 @@ public:
     /// The bytes its nodes and items take (beyond the Bvh itself); the nodes' spare capacity,
     /// never written, is not counted.
     uint64_t byteSize() const {
-        return nodes_.size() * sizeof(WideBvhNode) + items_.capacity() * sizeof(int32_t) +
+        return nodes_.size() * sizeof(Node) + items_.capacity() * sizeof(int32_t) +
                fewItems_.capacity() * sizeof(FewItem);
     }
 
@@ -252,7 +282,7 @@ private:
     std::span<const int32_t> leafItems(uint32_t child, int32_t& lone) const;
 
     /// The deepest the wide tree may be: a branch of up to 56 splits (SplitFinder::kMaxDepth)
-    /// takes at most that many wide levels, and each level pushes at most 3.
+    /// takes at most that many wide levels, and each level pushes at most Width - 1.
     static constexpr int kMaxWideDepth = 64;
 
     template <bool kCounted, typename Visit>
@@ -281,7 +311,7 @@ private:
             uint32_t child;
             float entry;
         };
-        Pending stack[3 * kMaxWideDepth + 4];
+        Pending stack[(Width - 1) * kMaxWideDepth + Width];
         int top = 0;
         Pending current{WideChild::node(0), 0};
         Float4 limit = WideRay::widenedLimit4(tMax); // tMax changes only in visit()
@@ -293,32 +323,33 @@ private:
                 }
                 limit = WideRay::widenedLimit4(tMax);
             } else {
-                const WideBvhNode& node = nodes_[current.child];
+                const Node& node = nodes_[current.child];
                 if constexpr (kCounted) tested += static_cast<uint64_t>(node.used());
-                Float4 entry;
-                int met = wideRay.hits(node, limit, entry);
+                Float4 entries[Width / 4];
+                int met = wideRay.hits(node, limit, entries);
+                auto entry = [&](int slot) { return entries[slot / 4][slot % 4]; };
                 if (met != 0 && (met & (met - 1)) == 0) { // one child: no ordering
                     const int slot = __builtin_ctz(static_cast<unsigned>(met));
-                    current = {node.child[slot], entry[slot]};
+                    current = {node.child[slot], entry(slot)};
                     continue;
                 }
                 const int second = met & (met - 1);
                 if (met != 0 && (second & (second - 1)) == 0) { // two children: the nearer first
                     const int a = __builtin_ctz(static_cast<unsigned>(met));
                     const int b = __builtin_ctz(static_cast<unsigned>(second));
-                    const Pending pa{node.child[a], entry[a]}, pb{node.child[b], entry[b]};
+                    const Pending pa{node.child[a], entry(a)}, pb{node.child[b], entry(b)};
                     const bool bFirst = pb.entry < pa.entry;
                     stack[top++] = bFirst ? pa : pb;
                     current = bFirst ? pb : pa;
                     continue;
                 }
                 if (met != 0) {
-                    // Order the children met by entry distance (at most four: insertion sort).
-                    Pending order[4];
+                    // Order the children met by entry distance (a few: insertion sort).
+                    Pending order[Width];
                     int n = 0;
-                    for (int slot = 0; slot < 4; ++slot) {
-                        if (!(met & (1 << slot))) continue;
-                        Pending p{node.child[slot], entry[slot]};
+                    for (int rest = met; rest != 0; rest &= rest - 1) {
+                        const int slot = __builtin_ctz(static_cast<unsigned>(rest));
+                        Pending p{node.child[slot], entry(slot)};
                         int at = n++;
                         while (at > 0 && order[at - 1].entry > p.entry) {
                             order[at] = order[at - 1];
@@ -353,7 +384,7 @@ private:
         return true;
     }
 
-    std::vector<WideBvhNode> nodes_;
+    std::vector<Node> nodes_;
     std::vector<int32_t> items_; ///< the leaves of more than one item: count, items
     struct FewItem {
         double faces[6]; ///< as BoxRay indexes them
@@ -362,5 +393,8 @@ private:
     std::vector<FewItem> fewItems_; ///< with at most kFewItems items, them and their boxes
     int depth_ = 0;
 };
+
+/// The BVH of a scene's objects: four-wide, which keeps a node at 112 bytes.
+using Bvh = WideBvh<4>;
 
 } // namespace crt::tracer

@@ -13,8 +13,9 @@ using namespace crt::tracer;
 namespace {
 
 /// A grouped BVH over `boxes` and its groups' items, numbered in the order they were made.
+template <typename Tree>
 struct GroupedBvh {
-    Bvh bvh;
+    Tree bvh;
     std::vector<std::vector<int32_t>> groups;
 
     GroupedBvh(const std::vector<Bounds3>& boxes, unsigned threads) {
@@ -41,7 +42,8 @@ struct GroupedBvh {
 };
 
 /// Each item in exactly one group, of one to four items.
-void checkPartition(const GroupedBvh& grouped, size_t itemCount) {
+template <typename Grouped>
+void checkPartition(const Grouped& grouped, size_t itemCount) {
     std::map<int32_t, int> seen;
     for (const std::vector<int32_t>& group : grouped.groups) {
         CHECK(!group.empty());
@@ -53,7 +55,8 @@ void checkPartition(const GroupedBvh& grouped, size_t itemCount) {
 }
 
 /// Every item whose box the ray meets (tested in double) is among the visited groups' items.
-void checkRaysFindBoxes(const GroupedBvh& grouped, const std::vector<Bounds3>& boxes, SampleRng& rng, int rays) {
+template <typename Grouped>
+void checkRaysFindBoxes(const Grouped& grouped, const std::vector<Bounds3>& boxes, SampleRng& rng, int rays) {
     int met = 0;
     for (int r = 0; r < rays; ++r) {
         const Vec3 from(rng.uniform() * 120 - 10, rng.uniform() * 120 - 10, -20);
@@ -71,7 +74,8 @@ void checkRaysFindBoxes(const GroupedBvh& grouped, const std::vector<Bounds3>& b
 
 } // namespace
 
-TEST_CASE("a grouped BVH puts every item in one group of up to four, and rays find them", "[bvh]") {
+TEMPLATE_TEST_CASE("a grouped BVH puts every item in one group of up to four, and rays find them", "[bvh]",
+                   WideBvh<4>, WideBvh<8>) {
     SampleRng rng(3, 0, 0);
     std::vector<Bounds3> boxes;
     for (int i = 0; i < 20000; ++i) {
@@ -83,7 +87,7 @@ TEST_CASE("a grouped BVH puts every item in one group of up to four, and rays fi
     // twelve, as three groups.
     for (int i = 0; i < 12; ++i) boxes.push_back({Vec3(50 - 0.1 * i), Vec3(50 + 0.1 * i)});
     for (unsigned threads : {1u, 3u}) {
-        const GroupedBvh grouped(boxes, threads);
+        const GroupedBvh<TestType> grouped(boxes, threads);
         checkPartition(grouped, boxes.size());
         // A range of up to four is always one leaf: groups hold more than 2.5 items on average.
         CHECK(grouped.groups.size() * 5 < boxes.size() * 2);
@@ -93,9 +97,10 @@ TEST_CASE("a grouped BVH puts every item in one group of up to four, and rays fi
     }
 }
 
-TEST_CASE("a grouped BVH of a few items is one group under their joint box", "[bvh]") {
+TEMPLATE_TEST_CASE("a grouped BVH of a few items is one group under their joint box", "[bvh]", WideBvh<4>,
+                   WideBvh<8>) {
     const std::vector<Bounds3> boxes = {{{0, 0, 0}, {1, 1, 1}}, {{5, 0, 0}, {6, 1, 1}}, {{0, 5, 0}, {1, 6, 1}}};
-    const GroupedBvh grouped(boxes, 1);
+    const GroupedBvh<TestType> grouped(boxes, 1);
     REQUIRE(grouped.groups.size() == 1);
     checkPartition(grouped, boxes.size());
     CHECK(grouped.visited(Ray{{5.5, 0.5, -1}, {0, 0, 1}}).size() == 3);

@@ -28,7 +28,8 @@ std::vector<Bounds3> scatteredBoxes(size_t count) {
 }
 
 /// The items each ray's traversal visits, in order, over the whole segment.
-std::vector<std::vector<int32_t>> visits(const Bvh& bvh, const std::vector<Ray>& rays) {
+template <typename Tree>
+std::vector<std::vector<int32_t>> visits(const Tree& bvh, const std::vector<Ray>& rays) {
     std::vector<std::vector<int32_t>> result;
     RayStats stats;
     for (const Ray& ray : rays) {
@@ -44,7 +45,8 @@ std::vector<std::vector<int32_t>> visits(const Bvh& bvh, const std::vector<Ray>&
 
 } // namespace
 
-TEST_CASE("the BVH is the same tree whatever the number of threads that build it", "[bvh]") {
+TEMPLATE_TEST_CASE("the BVH is the same tree whatever the number of threads that build it", "[bvh]", WideBvh<4>,
+                   WideBvh<8>) {
     const std::vector<Bounds3> boxes = scatteredBoxes(60000);
     std::vector<Ray> rays;
     SampleRng rng(11, 0, 0);
@@ -54,7 +56,7 @@ TEST_CASE("the BVH is the same tree whatever the number of threads that build it
         rays.push_back({origin, glm::normalize(target - origin)});
     }
 
-    Bvh single;
+    TestType single;
     single.build(boxes, 1);
     const auto expected = visits(single, rays);
     size_t visited = 0;
@@ -63,7 +65,7 @@ TEST_CASE("the BVH is the same tree whatever the number of threads that build it
 
     for (unsigned threads : {2u, 3u, 8u}) {
         INFO("threads: " << threads);
-        Bvh parallel;
+        TestType parallel;
         parallel.build(boxes, threads);
         CHECK(parallel.nodeCount() == single.nodeCount());
         CHECK(parallel.depth() == single.depth());
