@@ -74,3 +74,36 @@ TEST_CASE("mesh closure: open meshes name an edge") {
     CHECK_FALSE(out.closed);
     CHECK(out.problem == "has no triangles");
 }
+
+TEST_CASE("mesh closure: a large torus is closed, and the edge named where it opens is the first") {
+    // A torus of n × n quads, two triangles each, its vertices numbered in a shuffled order
+    // (row-major numbers times a prime, modulo their count) so that neighbouring vertices are
+    // far apart in number: its half edges spread over every part of the sort.
+    constexpr int32_t n = 300;
+    auto vertex = [](int32_t i, int32_t j) { return ((i % n) * n + j % n) * 7919 % (n * n); };
+    const double turn = 2 * std::acos(-1.0) / n;
+    std::vector<glm::dvec3> positions(size_t(n) * n);
+    for (int32_t i = 0; i < n; ++i)
+        for (int32_t j = 0; j < n; ++j) {
+            const double u = turn * i, v = turn * j;
+            positions[size_t(vertex(i, j))] = {(3 + std::cos(v)) * std::cos(u), (3 + std::cos(v)) * std::sin(u), std::sin(v)};
+        }
+    std::vector<std::array<int32_t, 3>> faces;
+    for (int32_t i = 0; i < n; ++i)
+        for (int32_t j = 0; j < n; ++j) {
+            faces.push_back({vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1)});
+            faces.push_back({vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+        }
+    CHECK(meshClosure(meshOf(positions, faces)).closed);
+    // Without one triangle, its three edges have one triangle each; the one named is the
+    // first by its smaller vertex number, then its larger.
+    const std::array<int32_t, 3> removed = faces[12345];
+    faces.erase(faces.begin() + 12345);
+    const MeshClosure out = meshClosure(meshOf(positions, faces));
+    CHECK_FALSE(out.closed);
+    CHECK(out.problem == "has one triangle");
+    auto edge = [](int32_t a, int32_t b) { return std::pair<int32_t, int32_t>{std::min(a, b), std::max(a, b)}; };
+    std::pair<int32_t, int32_t> first = edge(removed[0], removed[1]);
+    for (int k = 1; k < 3; ++k) first = std::min(first, edge(removed[size_t(k)], removed[size_t(k + 1) % 3]));
+    CHECK(edge(out.edgeFrom, out.edgeTo) == first);
+}
