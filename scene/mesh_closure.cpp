@@ -56,21 +56,25 @@ void sortHalfEdges(std::vector<uint64_t>& values) {
 } // namespace
 
 std::vector<int32_t> firstVertexAtPosition(const std::vector<glm::dvec3>& positions) {
+    // Vertices in number order into a hash table of the first at each position (open
+    // addressing, at most half full): equal positions (==, so -0 is 0 and NaN is nothing)
+    // meet at the first vertex found there.
     const size_t n = positions.size();
-    std::vector<int32_t> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    auto less = [&](int32_t a, int32_t b) {
-        const glm::dvec3 &p = positions[a], &q = positions[b];
-        if (p.x != q.x) return p.x < q.x;
-        if (p.y != q.y) return p.y < q.y;
-        if (p.z != q.z) return p.z < q.z;
-        return a < b;
+    const size_t slots = std::bit_ceil(std::max<size_t>(2 * n, 16));
+    std::vector<int32_t> table(slots, -1);
+    auto hash = [](const glm::dvec3& p) {
+        uint64_t h = 0;
+        for (int axis = 0; axis < 3; ++axis) // + 0.0 makes -0 the +0 it equals
+            h = (h ^ std::bit_cast<uint64_t>(p[axis] + 0.0)) * 0x9e3779b97f4a7c15u;
+        return static_cast<size_t>(h ^ (h >> 29));
     };
-    std::sort(order.begin(), order.end(), less);
     std::vector<int32_t> first(n);
     for (size_t i = 0; i < n; ++i) {
-        const bool same = i > 0 && positions[order[i]] == positions[order[i - 1]];
-        first[order[i]] = same ? first[order[i - 1]] : order[i];
+        const glm::dvec3& p = positions[i];
+        size_t slot = hash(p) & (slots - 1);
+        while (table[slot] >= 0 && positions[static_cast<size_t>(table[slot])] != p) slot = (slot + 1) & (slots - 1);
+        if (table[slot] < 0) table[slot] = static_cast<int32_t>(i);
+        first[i] = table[slot];
     }
     return first;
 }

@@ -107,3 +107,11 @@ TEST_CASE("mesh closure: a large torus is closed, and the edge named where it op
     for (int k = 1; k < 3; ++k) first = std::min(first, edge(removed[size_t(k)], removed[size_t(k + 1) % 3]));
     CHECK(edge(out.edgeFrom, out.edgeTo) == first);
 }
+
+TEST_CASE("mesh closure: the first vertex at each position, by ==") {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<glm::dvec3> positions = {{0, 0, 0},   {1, 2, 3},   {-0.0, 0, -0.0}, {1, 2, 3},
+                                               {nan, 0, 0}, {nan, 0, 0}, {1, 2, 3.000001}, {0, 0, 0}};
+    // -0 is 0; a NaN equals nothing, not even another NaN.
+    CHECK(crt::scene::firstVertexAtPosition(positions) == std::vector<int32_t>{0, 1, 0, 1, 4, 5, 6, 0});
+}
