@@ -97,9 +97,11 @@ public:
         tree.nodes.emplace_back();
         Span children[Width];
         const size_t childCount = gather(span, children);
-        std::future<int> apart[Width];
-        WideTree<Width> parts[Width];
-        if (parallelLevels > 0) startApart(children, childCount, parts, apart, parallelLevels - 1);
+        std::unique_ptr<Apart> apart;
+        if (parallelLevels > 0) {
+            apart = std::make_unique<Apart>();
+            startApart(children, childCount, *apart, parallelLevels - 1);
+        }
         WideNode<Width> node = emptyNode();
         int depth = 1;
         for (size_t slot = 0; slot < childCount; ++slot) {
@@ -113,10 +115,10 @@ public:
                 continue;
             }
             node.child[slot] = WideChild::node(static_cast<uint32_t>(tree.nodes.size()));
-            if (apart[slot].valid()) {
-                depth = std::max(depth, 1 + apart[slot].get());
-                tree.append(parts[slot]);
-                release(parts[slot].nodes);
+            if (apart && apart->built[slot].valid()) {
+                depth = std::max(depth, 1 + apart->built[slot].get());
+                tree.append(apart->parts[slot]);
+                release(apart->parts[slot].nodes);
             } else {
                 depth = std::max(depth, 1 + build(child, tree, std::max(parallelLevels - 1, 0)));
             }
@@ -126,6 +128,14 @@ public:
     }
 
 private:
+    /// Inner children built on threads of their own: each one's subtree and its depth. The
+    /// futures come last, so that they go first and wait for their threads (should this
+    /// thread leave by an exception) before the subtrees those threads write go.
+    struct Apart {
+        WideTree<Width> parts[Width];
+        std::future<int> built[Width];
+    };
+
     /// The children of the node over `span`: the two sides of its split (or the span itself,
     /// a lone leaf at the root), then the inner child of largest surface area opened until
     /// there are Width.
@@ -167,16 +177,15 @@ private:
 
     /// Starts building the inner children worth a thread on threads of their own, each into
     /// its part; the first inner child stays for this thread.
-    void startApart(const Span (&children)[Width], size_t childCount, WideTree<Width> (&parts)[Width],
-                    std::future<int> (&apart)[Width], int levelsBelow) {
+    void startApart(const Span (&children)[Width], size_t childCount, Apart& apart, int levelsBelow) {
         bool first = true;
         for (size_t slot = 0; slot < childCount; ++slot) {
             const Span& child = children[slot];
             if (!child.inner || child.end - child.begin < kParallelItems) continue;
             if (std::exchange(first, false)) continue;
-            parts[slot].nodes.reserve(child.end - child.begin - 1);
+            apart.parts[slot].nodes.reserve(child.end - child.begin - 1);
             try {
-                apart[slot] = std::async(std::launch::async, [this, &child, &part = parts[slot], levelsBelow] {
+                apart.built[slot] = std::async(std::launch::async, [this, &child, &part = apart.parts[slot], levelsBelow] {
                     return build(child, part, levelsBelow);
                 });
             } catch (const std::system_error&) {
