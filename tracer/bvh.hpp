@@ -137,9 +137,9 @@ struct alignas(16) WideNode {
         // Looked up: std::popcount is a call into libgcc on processors the build does not
         // assume have POPCNT, and a counted traversal asks for every node it tests.
         static constexpr int8_t kBitsSet[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+        const int mask = usedSlots();
         int count = 0;
-        for (int group = 0; group < kGroups; ++group)
-            count += kBitsSet[laneMask(faces[group][0] <= faces[group][3])];
+        for (int group = 0; group < kGroups; ++group) count += kBitsSet[(mask >> (4 * group)) & 15];
         return count;
     }
     /// Face f (0-5, as in `faces`) of slot `slot`'s box.

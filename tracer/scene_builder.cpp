@@ -277,6 +277,13 @@ private:
         return static_cast<int32_t>(scene_.transforms.size() - 1);
     }
 
+    /// Sets error_ to `message` as an error at the operand's entity, where its place in the
+    /// source is known.
+    void failAt(const Operand& op, std::string message) {
+        const std::string where = scene::spanLocation(desc_, desc_.entities[op.entity].source);
+        error_ = where.empty() ? std::move(message) : where + ": error: " + message;
+    }
+
     /// The heights of the field, read once however often it is drawn; null (with error_ set)
     /// when they cannot be read.
     std::shared_ptr<const HeightGrid> heightGrid(const scene::HeightFieldShape& field, const Operand& op) {
@@ -284,8 +291,7 @@ private:
         if (known != shared_.heightGrids.end()) return known->second;
         std::shared_ptr<const HeightGrid> grid = readHeightGrid(*field.desc, desc_.limits, error_);
         if (!grid) {
-            const std::string where = scene::spanLocation(desc_, desc_.entities[op.entity].source);
-            if (!where.empty()) error_ = where + ": error: " + error_;
+            failAt(op, error_);
             return nullptr;
         }
         shared_.heightGrids.emplace(field.desc.get(), grid);
@@ -331,11 +337,10 @@ private:
         const uint64_t limit = desc_.limits.maxPrimitives;
         shared_.storedPrimitives = scene::saturatingAdd(shared_.storedPrimitives, triangles);
         if (shared_.storedPrimitives > limit) {
-            const std::string where = scene::spanLocation(desc_, desc_.entities[op.entity].source);
-            error_ = fmt::format("{}{}the scene stores more than {} primitives with the {} "
-                                 "triangles of {}; raise the limit with --max-primitives",
-                                 where, where.empty() ? "" : ": error: ", limit, triangles,
-                                 mesh.written >= 0 ? "a Mesh" : scene::fileToOpen(mesh.resolvedFile, mesh.file));
+            failAt(op, fmt::format("the scene stores more than {} primitives with the {} triangles of {}; "
+                                   "raise the limit with --max-primitives",
+                                   limit, triangles,
+                                   mesh.written >= 0 ? "a Mesh" : scene::fileToOpen(mesh.resolvedFile, mesh.file)));
             return nullptr;
         }
         auto made = std::make_shared<const TriangleMesh>(data, threads_);
