@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <bit>
+#include <memory>
 #include <numeric>
+#include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -13,44 +16,65 @@ namespace crt::scene {
 
 namespace {
 
-/// One side of an edge, in one number ordered as (smaller corner, larger corner, corner it
-/// runs from) are: the smaller vertex number in bits 32-62, the larger in bits 1-31, and bit 0
-/// set when the triangle runs the edge from the larger. Vertex numbers are below 2^31.
-uint64_t halfEdge(int32_t from, int32_t to) {
-    const auto [lo, hi] = std::minmax(from, to);
-    return uint64_t(uint32_t(lo)) << 32 | uint64_t(uint32_t(hi)) << 1 | uint64_t(from == hi);
-}
-uint64_t edgeOf(uint64_t halfEdge) { return halfEdge >> 1; }
-int32_t fromOf(uint64_t halfEdge) {
-    const auto lo = int32_t(halfEdge >> 32), hi = int32_t((halfEdge >> 1) & 0x7fffffff);
-    return (halfEdge & 1) ? hi : lo;
-}
-int32_t toOf(uint64_t halfEdge) { return fromOf(halfEdge ^ 1); }
-
-/// Sorts in place: each value goes to the bucket of its 16 highest significant bits (one pass
-/// of swaps, as American flag sort makes), then each bucket is sorted on its own. A large
-/// mesh has millions of half edges; bucketed first, each comparison sort has a few dozen, and
-/// no copy of them all is needed, as a radix sort would.
-void sortHalfEdges(std::vector<uint64_t>& values) {
-    uint64_t bits = 0;
-    for (uint64_t v : values) bits |= v;
-    const int shift = std::max(static_cast<int>(std::bit_width(bits)) - 16, 0);
-    auto bucket = [shift](uint64_t v) { return static_cast<size_t>(v >> shift); };
-    std::vector<size_t> end(size_t{1} << 16);
-    for (uint64_t v : values) ++end[bucket(v)];
-    std::inclusive_scan(end.begin(), end.end(), end.begin());
-    std::vector<size_t> next(end.size());
-    std::copy(end.begin(), end.end() - 1, next.begin() + 1);
-    const std::vector<size_t> begin = next;
-    for (size_t b = 0; b < end.size(); ++b) {
-        while (next[b] < end[b]) {
-            uint64_t v = values[next[b]];
-            for (size_t home = bucket(v); home != b; home = bucket(v)) std::swap(v, values[next[home]++]);
-            values[next[b]++] = v;
-        }
-        const auto first = values.begin() + static_cast<std::ptrdiff_t>(begin[b]);
-        std::sort(first, values.begin() + static_cast<std::ptrdiff_t>(end[b]));
+/// Calls visit(v) for each triangle whose corners, welded by position (`welded`), are three
+/// vertices v[0], v[1], v[2]: the others have no area.
+template <typename Visit>
+void forEachWeldedTriangle(const MeshData& mesh, const std::vector<int32_t>& welded, Visit&& visit) {
+    for (const MeshData::Triangle& t : mesh.triangles) {
+        const int32_t v[3] = {welded[t.v[0]], welded[t.v[1]], welded[t.v[2]]};
+        if (v[0] != v[1] && v[1] != v[2] && v[2] != v[0]) visit(v);
     }
+}
+
+/// The half edges of those triangles gathered at their smaller corner, vertex by vertex: a
+/// compressed sparse row list. Each is one number ordered as (larger corner, corner it runs
+/// from) are: the larger vertex number times two, plus 1 when the triangle runs the edge from
+/// the larger (vertex numbers are below 2^31). A large mesh has millions of half edges;
+/// gathered so, they are sorted a few at a time, and walked in vertex order they come in the
+/// order of (smaller corner, larger corner, corner it runs from).
+class HalfEdgesByCorner {
+public:
+    HalfEdgesByCorner(const MeshData& mesh, const std::vector<int32_t>& welded)
+        : first_(mesh.positions.size() + 1, 0) {
+        auto forEachEdge = [&](auto&& visit) {
+            forEachWeldedTriangle(mesh, welded, [&](const int32_t (&v)[3]) {
+                for (int k = 0; k < 3; ++k) visit(v[k], v[(k + 1) % 3]);
+            });
+        };
+        forEachEdge([&](int32_t from, int32_t to) { ++first_[static_cast<size_t>(std::min(from, to))]; });
+        // Counted up to each vertex, then each list filled from its end, which leaves its start.
+        std::inclusive_scan(first_.begin(), first_.end(), first_.begin());
+        sides_ = std::make_unique_for_overwrite<uint32_t[]>(first_.back());
+        forEachEdge([&](int32_t from, int32_t to) {
+            const auto [smaller, larger] = std::minmax(from, to);
+            sides_[--first_[static_cast<size_t>(smaller)]] = uint32_t(larger) << 1 | uint32_t(from == larger);
+        });
+    }
+
+    bool empty() const { return first_.back() == 0; }
+    size_t vertices() const { return first_.size() - 1; }
+    /// The half edges whose smaller corner is `v`, sorted.
+    std::span<const uint32_t> sortedAt(size_t v) {
+        uint32_t *begin = sides_.get() + first_[v], *end = sides_.get() + first_[v + 1];
+        std::sort(begin, end);
+        return {begin, end};
+    }
+
+    static int32_t larger(uint32_t side) { return static_cast<int32_t>(side >> 1); }
+    static bool runsFromLarger(uint32_t side) { return (side & 1) != 0; }
+
+private:
+    std::vector<size_t> first_; ///< vertex v's half edges are [first_[v], first_[v + 1])
+    std::unique_ptr<uint32_t[]> sides_;
+};
+
+/// What is wrong with an edge that `count` sides run, the first two of them `a` and `b`; empty
+/// when nothing is.
+std::string edgeProblem(size_t count, uint32_t a, uint32_t b) {
+    if (count == 1) return "has one triangle";
+    if (count > 2) return "has " + std::to_string(count) + " triangles";
+    if (a == b) return "runs the same way in both of its triangles";
+    return {};
 }
 
 } // namespace
@@ -82,41 +106,32 @@ std::vector<int32_t> firstVertexAtPosition(const std::vector<glm::dvec3>& positi
 MeshClosure meshClosure(const MeshData& mesh) {
     MeshClosure result;
     const std::vector<int32_t> welded = firstVertexAtPosition(mesh.positions);
-    std::vector<uint64_t> edges;
-    edges.reserve(3 * mesh.triangles.size());
-    double volume = 0;
-    for (const MeshData::Triangle& t : mesh.triangles) {
-        const int32_t v[3] = {welded[t.v[0]], welded[t.v[1]], welded[t.v[2]]};
-        if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;
-        for (int k = 0; k < 3; ++k) edges.push_back(halfEdge(v[k], v[(k + 1) % 3]));
-        const glm::dvec3 &a = mesh.positions[v[0]], &b = mesh.positions[v[1]],
-                         &c = mesh.positions[v[2]];
-        volume += glm::dot(a, glm::cross(b, c));
-    }
+    HalfEdgesByCorner edges(mesh, welded);
     if (edges.empty()) {
         result.problem = "has no triangles";
         return result;
     }
-    sortHalfEdges(edges);
-    for (size_t i = 0; i < edges.size();) {
-        size_t j = i + 1;
-        while (j < edges.size() && edgeOf(edges[j]) == edgeOf(edges[i])) ++j;
-        const size_t count = j - i;
-        std::string problem;
-        if (count == 1)
-            problem = "has one triangle";
-        else if (count > 2)
-            problem = "has " + std::to_string(count) + " triangles";
-        else if (edges[i] == edges[i + 1])
-            problem = "runs the same way in both of its triangles";
-        if (!problem.empty()) {
-            result.edgeFrom = fromOf(edges[i]);
-            result.edgeTo = toOf(edges[i]);
-            result.problem = std::move(problem);
-            return result;
+    for (size_t v = 0; v < edges.vertices(); ++v) {
+        const std::span<const uint32_t> sides = edges.sortedAt(v);
+        for (size_t i = 0; i < sides.size();) {
+            size_t j = i + 1;
+            while (j < sides.size() && HalfEdgesByCorner::larger(sides[j]) == HalfEdgesByCorner::larger(sides[i])) ++j;
+            std::string problem = edgeProblem(j - i, sides[i], j - i > 1 ? sides[i + 1] : sides[i]);
+            if (!problem.empty()) {
+                const auto smaller = static_cast<int32_t>(v), larger = HalfEdgesByCorner::larger(sides[i]);
+                const bool fromLarger = HalfEdgesByCorner::runsFromLarger(sides[i]);
+                result.edgeFrom = fromLarger ? larger : smaller;
+                result.edgeTo = fromLarger ? smaller : larger;
+                result.problem = std::move(problem);
+                return result;
+            }
+            i = j;
         }
-        i = j;
     }
+    double volume = 0;
+    forEachWeldedTriangle(mesh, welded, [&](const int32_t (&v)[3]) {
+        volume += glm::dot(mesh.positions[v[0]], glm::cross(mesh.positions[v[1]], mesh.positions[v[2]]));
+    });
     result.closed = true;
     result.inward = volume < 0;
     return result;

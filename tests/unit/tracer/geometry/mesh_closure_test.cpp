@@ -18,6 +18,15 @@ MeshData meshOf(std::vector<glm::dvec3> positions, std::vector<std::array<int32_
     return m;
 }
 
+/// An edge by its smaller vertex number, then its larger.
+std::pair<int32_t, int32_t> edge(int32_t a, int32_t b) { return {std::min(a, b), std::max(a, b)}; }
+
+/// The first of a triangle's edges: the one an open mesh names where only that triangle is
+/// missing.
+std::pair<int32_t, int32_t> firstEdgeOf(const std::array<int32_t, 3>& t) {
+    return std::min({edge(t[0], t[1]), edge(t[1], t[2]), edge(t[2], t[0])});
+}
+
 const std::vector<glm::dvec3> kCorners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 const std::vector<std::array<int32_t, 3>> kOutward = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
 
@@ -102,10 +111,37 @@ TEST_CASE("mesh closure: a large torus is closed, and the edge named where it op
     const MeshClosure out = meshClosure(meshOf(positions, faces));
     CHECK_FALSE(out.closed);
     CHECK(out.problem == "has one triangle");
-    auto edge = [](int32_t a, int32_t b) { return std::pair<int32_t, int32_t>{std::min(a, b), std::max(a, b)}; };
-    std::pair<int32_t, int32_t> first = edge(removed[0], removed[1]);
-    for (int k = 1; k < 3; ++k) first = std::min(first, edge(removed[size_t(k)], removed[size_t(k + 1) % 3]));
-    CHECK(edge(out.edgeFrom, out.edgeTo) == first);
+    CHECK(edge(out.edgeFrom, out.edgeTo) == firstEdgeOf(removed));
+}
+
+TEST_CASE("mesh closure: a vertex with thousands of edges") {
+    // A double cone: two apexes and a ring of m vertices, each apex joined to all of them.
+    constexpr int32_t m = 3000;
+    std::vector<glm::dvec3> positions = {{0, 0, 1}, {0, 0, -1}};
+    for (int32_t i = 0; i < m; ++i) {
+        const double a = 2 * std::acos(-1.0) * i / m;
+        positions.push_back({std::cos(a), std::sin(a), 0});
+    }
+    std::vector<std::array<int32_t, 3>> faces;
+    for (int32_t i = 0; i < m; ++i) {
+        const int32_t r = 2 + i, next = 2 + (i + 1) % m;
+        faces.push_back({0, r, next});
+        faces.push_back({1, next, r});
+    }
+    MeshClosure out = meshClosure(meshOf(positions, faces));
+    CHECK(out.closed);
+    CHECK_FALSE(out.inward);
+    // Open where one triangle at the upper apex is missing; turned, one at the lower.
+    const std::array<int32_t, 3> removed = faces[2 * 1234];
+    faces.erase(faces.begin() + 2 * 1234);
+    out = meshClosure(meshOf(positions, faces));
+    CHECK(out.problem == "has one triangle");
+    CHECK(edge(out.edgeFrom, out.edgeTo) == firstEdgeOf(removed));
+    faces.insert(faces.begin() + 2 * 1234, removed);
+    std::swap(faces[2 * 77 + 1][1], faces[2 * 77 + 1][2]);
+    out = meshClosure(meshOf(positions, faces));
+    CHECK(out.problem == "runs the same way in both of its triangles");
+    CHECK(edge(out.edgeFrom, out.edgeTo) == firstEdgeOf(faces[2 * 77 + 1]));
 }
 
 TEST_CASE("mesh closure: the first vertex at each position, by ==") {
