@@ -20,6 +20,11 @@ template <typename T> void putAll(std::string& out, const std::vector<T>& values
         out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
 }
 
+/// What putAll writes for `values`.
+template <typename T> size_t bytesOf(const std::vector<T>& values) {
+    return sizeof(uint64_t) + values.size() * sizeof(T);
+}
+
 /// Reads values in order from the bytes, failing once they run out.
 struct Reader {
     std::string_view bytes;
@@ -57,6 +62,10 @@ std::string meshToBytes(const std::optional<MeshData>& mesh, const MeshFileError
         out += error.message;
         return out;
     }
+    // Room for it all at once: a string grown by doubling would copy hundreds of megabytes
+    // for a large mesh.
+    out.reserve(out.size() + bytesOf(mesh->positions) + bytesOf(mesh->normals) + bytesOf(mesh->uvs) +
+                bytesOf(mesh->triangles) + 2 * sizeof(uint8_t));
     putAll(out, mesh->positions);
     putAll(out, mesh->normals);
     putAll(out, mesh->uvs);
