@@ -62,6 +62,9 @@ PixelSampler::Color PixelSampler::whittedPixel(int x, int y, TraceContext& conte
     }
     int n = std::max(settings_.supersampling, 1);
     bool jittered = settings_.antialias == scene::Antialias::Stratified;
+    // One sample at the centre, the usual case: without the loop's sum and division (the
+    // zero added keeps the loop's result to the bit: -0 becomes 0).
+    if (n == 1 && !jittered) return Color(0.0) + sample(x + 0.5, y + 0.5, pixelIndex, 0, context);
     Color sum(0.0);
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
