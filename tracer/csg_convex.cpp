@@ -55,7 +55,7 @@ bool RenderScene::convexSpan(int32_t nodeIndex, const CsgRay& q, RayStats& stats
         const Primitive& p = primitives[node.primitive];
         CrossingList list;
         ++stats.intersectionTests;
-        crossLine(p.geometry, objectRay(p, q.ray), list);
+        inObjectSpace(p, q.ray, [&](const Ray& r) { crossLine(p.geometry, r, list); });
         if (list.startsInside || (list.count != 0 && list.count != 2)) return false;
         span.empty = list.count == 0;
         if (!span.empty) {

@@ -36,7 +36,7 @@ bool RenderScene::csgCrossings(int32_t nodeIndex, const CsgRay& q, QueryScratch&
         const Primitive& p = primitives[node.primitive];
         CrossingList list;
         ++stats.intersectionTests;
-        crossLine(p.geometry, objectRay(p, q.ray), list);
+        inObjectSpace(p, q.ray, [&](const Ray& r) { crossLine(p.geometry, r, list); });
         bool inside = list.startsInside;
         for (int i = 0; i < list.count; ++i) {
             inside = !inside;
@@ -139,8 +139,10 @@ bool RenderScene::nearestInObject(int32_t object, const LazyBoxRay& ray, double 
         const Primitive& p = primitives[object];
         ++stats.intersectionTests;
         Crossing c{};
-        if (!firstCrossingIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, c, departed.skippedPart(object)))
-            return false;
+        const bool crosses = inObjectSpace(p, ray.ray(), [&](const Ray& r) {
+            return firstCrossingIn(p.geometry, r, 0.0, tMax, c, departed.skippedPart(object));
+        });
+        if (!crosses) return false;
         hit = {c.t, object, c, false};
         return true;
     }
@@ -320,7 +322,7 @@ void moveSurface(const RenderScene& scene, int32_t t, double time, SurfaceIntera
                                                                                    int32_t material,
                                                                                    const ShadingMaterial& m) const {
     const Primitive& p = primitives[hit.primitive];
-    SurfacePoint sp = surfaceAt(p.geometry, objectRay(p, ray), hit.crossing, m.readsSurface());
+    const SurfacePoint sp = inObjectSpace(p, ray, [&](const Ray& r) { return surfaceAt(p.geometry, r, hit.crossing, m.readsSurface()); });
     SurfaceInteraction si;
     si.objectPoint = sp.point;
     si.uv = sp.uv;

@@ -289,7 +289,12 @@ private:
     /// the node's bounds where that pays.
     bool convexSpan(int32_t node, const CsgRay& ray, RayStats& stats, ConvexSpan& span) const;
     bool convexOperandSpan(int32_t node, const CsgRay& ray, RayStats& stats, ConvexSpan& span) const;
-    Ray objectRay(const Primitive& p, const Ray& ray) const { return p.transform < 0 ? ray : toObject(p.transform, ray); }
+    /// query(r) for the ray in the primitive's object space: the ray itself where the primitive
+    /// has no transform, not a copy (a copy just written is slow to read back whole).
+    template <typename Query> decltype(auto) inObjectSpace(const Primitive& p, const Ray& ray, Query&& query) const {
+        if (p.transform < 0) return query(ray);
+        return query(toObject(p.transform, ray));
+    }
     friend class RenderSceneBuilder;
 };
 

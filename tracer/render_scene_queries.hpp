@@ -17,7 +17,9 @@ bool RenderScene::crossingsInObject(int32_t object, const LazyBoxRay& ray, doubl
         const Primitive& p = primitives[object];
         ++stats.intersectionTests;
         auto hit = [&](const Crossing& c) { return visit(Hit{c.t, object, c, false}); };
-        return crossingsIn(p.geometry, objectRay(p, ray.ray()), 0.0, tMax, hit, departed.skippedPart(object));
+        return inObjectSpace(p, ray.ray(), [&](const Ray& r) {
+            return crossingsIn(p.geometry, r, 0.0, tMax, hit, departed.skippedPart(object));
+        });
     }
     if (isInstanceObject(object)) [[unlikely]]
         return crossingsInInstance(instanceOfObject(object), ray.ray(), tMax, scratch, stats, HitVisitor(visit),
