@@ -44,6 +44,9 @@ Vec3 glossyMean(const Vec3& axis, const Vec3& side, double glossiness, int sampl
 } // namespace
 
 struct Integrator::ShadingPoint {
+    /// The surface made in place where it is met (a copy just written is slow to read back).
+    ShadingPoint(const RenderScene& scene, const Ray& ray, const Hit& h) : hit(h), si(scene.interaction(ray, h)) {}
+
     Hit hit;
     SurfaceInteraction si;
     bool entering; ///< the ray meets the outside of the surface
@@ -160,9 +163,7 @@ glm::dvec4 Integrator::traceCamera(const Ray& ray, int depth, bool transparentBa
 
 Vec3 Integrator::shade(const Ray& ray, const Hit& hit, int depth, double pathLength, int32_t medium,
                        TraceContext& context) const {
-    ShadingPoint sp;
-    sp.hit = hit;
-    sp.si = scene_.interaction(ray, hit);
+    ShadingPoint sp(scene_, ray, hit);
     sp.d = ray.dir;
     sp.v = -ray.dir;
     sp.pathLength = pathLength + hit.t;
