@@ -119,14 +119,13 @@ Vec3 Light::areaPoint(const AreaFrame& frame, double a, double b) const {
 }
 
 LightSample Light::toward(const Vec3& point, const Vec3& target, Vec3 color) const {
-    LightSample s;
-    Vec3 offset = target - point;
-    s.distance = glm::length(offset);
-    s.toLight = s.distance > 0 ? offset / s.distance : Vec3(0, 1, 0);
-    s.target = target;
-    if (kind_ == scene::LightKind::Spot) color *= spotFactor(-s.toLight);
-    s.color = color;
-    return s;
+    const Vec3 offset = target - point;
+    const double distance = glm::length(offset);
+    const Vec3 toLight = distance > 0 ? offset / distance : Vec3(0, 1, 0);
+    if (kind_ == scene::LightKind::Spot) color *= spotFactor(-toLight);
+    // Made whole in place: filled with its defaults first, it would be cleared and then
+    // written again.
+    return {toLight, target, distance, color, false};
 }
 
 LightSample Light::sampleUniformly(const Vec3& point, const Vec2& u) const {
