@@ -323,18 +323,19 @@ void moveSurface(const RenderScene& scene, int32_t t, double time, SurfaceIntera
                                                                                    const ShadingMaterial& m) const {
     const Primitive& p = primitives[hit.primitive];
     const SurfacePoint sp = inObjectSpace(p, ray, [&](const Ray& r) { return surfaceAt(p.geometry, r, hit.crossing, m.readsSurface()); });
-    SurfaceInteraction si;
-    si.objectPoint = sp.point;
-    si.uv = sp.uv;
-    if (m.readsSurface()) si.mappingAxis = mappingAxis(p.geometry);
-    si.material = material;
-    si.solid = isSolid(p.geometry);
-    si.point = sp.point;
-    si.pointError = sp.pointError;
-    si.normal = sp.normal;
-    si.shadingNormal = sp.shadingNormal;
-    si.dpdu = sp.dpdu;
-    si.dpdv = sp.dpdv;
+    // Made whole in place: filled with its defaults first, it would be cleared and then
+    // written again, for every hit.
+    SurfaceInteraction si{.point = sp.point,
+                          .pointError = sp.pointError,
+                          .normal = sp.normal,
+                          .shadingNormal = sp.shadingNormal,
+                          .objectPoint = sp.point,
+                          .uv = sp.uv,
+                          .mappingAxis = m.readsSurface() ? mappingAxis(p.geometry) : MappingAxis{},
+                          .dpdu = sp.dpdu,
+                          .dpdv = sp.dpdv,
+                          .material = material,
+                          .solid = isSolid(p.geometry)};
     if (p.transform >= 0) moveSurface(*this, p.transform, ray.time, si);
     if (hit.flipNormal) {
         si.normal = -si.normal;
