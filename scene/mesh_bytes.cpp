@@ -64,8 +64,8 @@ std::string meshToBytes(const std::optional<MeshData>& mesh, const MeshFileError
     }
     // Room for it all at once: a string grown by doubling would copy hundreds of megabytes
     // for a large mesh.
-    out.reserve(out.size() + bytesOf(mesh->positions) + bytesOf(mesh->normals) + bytesOf(mesh->uvs) +
-                bytesOf(mesh->triangles) + 2 * sizeof(uint8_t));
+    out.reserve(out.size() + bytesOf(mesh->positions) + bytesOf(mesh->normals) +
+                bytesOf(mesh->uvs) + bytesOf(mesh->triangles) + 2 * sizeof(uint8_t));
     putAll(out, mesh->positions);
     putAll(out, mesh->normals);
     putAll(out, mesh->uvs);

@@ -19,7 +19,8 @@ namespace {
 /// Calls visit(v) for each triangle whose corners, welded by position (`welded`), are three
 /// vertices v[0], v[1], v[2]: the others have no area.
 template <typename Visit>
-void forEachWeldedTriangle(const MeshData& mesh, const std::vector<int32_t>& welded, Visit&& visit) {
+void forEachWeldedTriangle(const MeshData& mesh, const std::vector<int32_t>& welded,
+                           Visit&& visit) {
     for (const MeshData::Triangle& t : mesh.triangles) {
         const int32_t v[3] = {welded[t.v[0]], welded[t.v[1]], welded[t.v[2]]};
         if (v[0] != v[1] && v[1] != v[2] && v[2] != v[0]) visit(v);
@@ -33,21 +34,23 @@ void forEachWeldedTriangle(const MeshData& mesh, const std::vector<int32_t>& wel
 /// gathered so, they are sorted a few at a time, and walked in vertex order they come in the
 /// order of (smaller corner, larger corner, corner it runs from).
 class HalfEdgesByCorner {
-public:
+  public:
     HalfEdgesByCorner(const MeshData& mesh, const std::vector<int32_t>& welded)
         : first_(mesh.positions.size() + 1, 0) {
         auto forEachEdge = [&](auto&& visit) {
-            forEachWeldedTriangle(mesh, welded, [&](const int32_t (&v)[3]) {
+            forEachWeldedTriangle(mesh, welded, [&](const int32_t(&v)[3]) {
                 for (int k = 0; k < 3; ++k) visit(v[k], v[(k + 1) % 3]);
             });
         };
-        forEachEdge([&](int32_t from, int32_t to) { ++first_[static_cast<size_t>(std::min(from, to))]; });
+        forEachEdge(
+            [&](int32_t from, int32_t to) { ++first_[static_cast<size_t>(std::min(from, to))]; });
         // Counted up to each vertex, then each list filled from its end, which leaves its start.
         std::inclusive_scan(first_.begin(), first_.end(), first_.begin());
         sides_ = std::make_unique_for_overwrite<uint32_t[]>(first_.back());
         forEachEdge([&](int32_t from, int32_t to) {
             const auto [smaller, larger] = std::minmax(from, to);
-            sides_[--first_[static_cast<size_t>(smaller)]] = uint32_t(larger) << 1 | uint32_t(from == larger);
+            sides_[--first_[static_cast<size_t>(smaller)]] =
+                uint32_t(larger) << 1 | uint32_t(from == larger);
         });
     }
 
@@ -63,7 +66,7 @@ public:
     static int32_t larger(uint32_t side) { return static_cast<int32_t>(side >> 1); }
     static bool runsFromLarger(uint32_t side) { return (side & 1) != 0; }
 
-private:
+  private:
     std::vector<size_t> first_; ///< vertex v's half edges are [first_[v], first_[v + 1])
     std::unique_ptr<uint32_t[]> sides_;
 };
@@ -115,10 +118,13 @@ MeshClosure meshClosure(const MeshData& mesh) {
         const std::span<const uint32_t> sides = edges.sortedAt(v);
         for (size_t i = 0; i < sides.size();) {
             size_t j = i + 1;
-            while (j < sides.size() && HalfEdgesByCorner::larger(sides[j]) == HalfEdgesByCorner::larger(sides[i])) ++j;
+            while (j < sides.size() &&
+                   HalfEdgesByCorner::larger(sides[j]) == HalfEdgesByCorner::larger(sides[i]))
+                ++j;
             std::string problem = edgeProblem(j - i, sides[i], j - i > 1 ? sides[i + 1] : sides[i]);
             if (!problem.empty()) {
-                const auto smaller = static_cast<int32_t>(v), larger = HalfEdgesByCorner::larger(sides[i]);
+                const auto smaller = static_cast<int32_t>(v),
+                           larger = HalfEdgesByCorner::larger(sides[i]);
                 const bool fromLarger = HalfEdgesByCorner::runsFromLarger(sides[i]);
                 result.edgeFrom = fromLarger ? larger : smaller;
                 result.edgeTo = fromLarger ? smaller : larger;
@@ -129,8 +135,9 @@ MeshClosure meshClosure(const MeshData& mesh) {
         }
     }
     double volume = 0;
-    forEachWeldedTriangle(mesh, welded, [&](const int32_t (&v)[3]) {
-        volume += glm::dot(mesh.positions[v[0]], glm::cross(mesh.positions[v[1]], mesh.positions[v[2]]));
+    forEachWeldedTriangle(mesh, welded, [&](const int32_t(&v)[3]) {
+        volume +=
+            glm::dot(mesh.positions[v[0]], glm::cross(mesh.positions[v[1]], mesh.positions[v[2]]));
     });
     result.closed = true;
     result.inward = volume < 0;

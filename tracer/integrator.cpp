@@ -45,7 +45,8 @@ Vec3 glossyMean(const Vec3& axis, const Vec3& side, double glossiness, int sampl
 
 struct Integrator::ShadingPoint {
     /// The surface made in place where it is met (a copy just written is slow to read back).
-    ShadingPoint(const RenderScene& scene, const Ray& ray, const Hit& h) : hit(h), si(scene.interaction(ray, h)) {}
+    ShadingPoint(const RenderScene& scene, const Ray& ray, const Hit& h)
+        : hit(h), si(scene.interaction(ray, h)) {}
 
     Hit hit;
     SurfaceInteraction si;

@@ -322,7 +322,9 @@ void moveSurface(const RenderScene& scene, int32_t t, double time, SurfaceIntera
                                                                                    int32_t material,
                                                                                    const ShadingMaterial& m) const {
     const Primitive& p = primitives[hit.primitive];
-    const SurfacePoint sp = inObjectSpace(p, ray, [&](const Ray& r) { return surfaceAt(p.geometry, r, hit.crossing, m.readsSurface()); });
+    const SurfacePoint sp = inObjectSpace(p, ray, [&](const Ray& r) {
+        return surfaceAt(p.geometry, r, hit.crossing, m.readsSurface());
+    });
     // Made whole in place: filled with its defaults first, it would be cleared and then
     // written again, for every hit.
     SurfaceInteraction si{.point = sp.point,

@@ -291,7 +291,8 @@ private:
     bool convexOperandSpan(int32_t node, const CsgRay& ray, RayStats& stats, ConvexSpan& span) const;
     /// query(r) for the ray in the primitive's object space: the ray itself where the primitive
     /// has no transform, not a copy (a copy just written is slow to read back whole).
-    template <typename Query> decltype(auto) inObjectSpace(const Primitive& p, const Ray& ray, Query&& query) const {
+    template <typename Query>
+    decltype(auto) inObjectSpace(const Primitive& p, const Ray& ray, Query&& query) const {
         if (p.transform < 0) return query(ray);
         return query(toObject(p.transform, ray));
     }

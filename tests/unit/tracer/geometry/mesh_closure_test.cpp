@@ -19,7 +19,9 @@ MeshData meshOf(std::vector<glm::dvec3> positions, std::vector<std::array<int32_
 }
 
 /// An edge by its smaller vertex number, then its larger.
-std::pair<int32_t, int32_t> edge(int32_t a, int32_t b) { return {std::min(a, b), std::max(a, b)}; }
+std::pair<int32_t, int32_t> edge(int32_t a, int32_t b) {
+    return {std::min(a, b), std::max(a, b)};
+}
 
 /// The first of a triangle's edges: the one an open mesh names where only that triangle is
 /// missing.
