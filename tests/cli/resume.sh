@@ -5,8 +5,10 @@ set -u
 crtc=$1
 # Under the sanitizers (a second argument of 1) the renders are smaller and the path-traced ones
 # take fewer paths: they are what takes long there, and the Release suite renders them in full.
-paths=256 width=480 height=360
-[ "${2:-0}" = 1 ] && paths=64 width=240 height=180
+# A render that is interrupted must last well over a second, since what it logs reaches the
+# file within a second: the interruption waits for that.
+paths=768 width=640 height=480
+[ "${2:-0}" = 1 ] && paths=128 width=240 height=180
 tiles=$(((width + 15) / 16 * ((height + 15) / 16))) # crtc's tiles are 16 pixels square
 work=$(mktemp -d)
 trap 'kill $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
