@@ -59,7 +59,6 @@ struct Integrator::ShadingPoint {
     Vec3 v;            ///< unit direction back along the incoming ray
     Vec3 d;            ///< the incoming direction
     double pathLength; ///< from the camera to this point
-    double diffuse;    ///< the material's, less what reflection takes with conserveenergy
 };
 
 Integrator::Integrator(const RenderScene& scene, const scene::SettingsDesc& settings,
@@ -198,9 +197,11 @@ Vec3 Integrator::shadeMaterial(ShadingPoint& sp, int32_t material, const Vec3& c
 
     const SurfaceSplit split = splitAt(m, sp.d, sp.n, sp.entering, sp.si.solid);
     double kr = split.kr, kt = split.kt;
-    sp.diffuse = m.conserveEnergy ? m.diffuse * std::max(0.0, 1 - split.reflectivity - m.transparency) : m.diffuse;
-    Vec3 c = rgb(m.emission) + ambient_ * sp.color * sp.diffuse;
-    c += directLight(sp, context);
+    // The material's diffuse, less what reflection takes with conserveenergy.
+    const double diffuse =
+        m.conserveEnergy ? m.diffuse * std::max(0.0, 1 - split.reflectivity - m.transparency) : m.diffuse;
+    Vec3 c = rgb(m.emission) + ambient_ * sp.color * diffuse;
+    c += directLight(sp, diffuse, context);
     if (depth <= 0) return c;
 
     const Vec3& refracted = split.refracted;
@@ -220,13 +221,13 @@ Vec3 Integrator::shadeMaterial(ShadingPoint& sp, int32_t material, const Vec3& c
     return c;
 }
 
-Vec3 Integrator::directLight(const ShadingPoint& sp, TraceContext& context) const {
+Vec3 Integrator::directLight(const ShadingPoint& sp, double diffuse, TraceContext& context) const {
     const ShadingMaterial& m = *sp.material;
     Vec3 c(0.0);
-    Vec3 diffuseColor = sp.color * sp.diffuse;
+    Vec3 diffuseColor = sp.color * diffuse;
     for (const Light& light : lights_) {
         c += light.ambient() * light.color() * diffuseColor;
-        if (sp.diffuse <= 0 && m.specular <= 0) continue;
+        if (diffuse <= 0 && m.specular <= 0) continue;
         int samples = light.sampleCount();
         for (int s = 0; s < samples; ++s) {
             Vec2 jitter = samples > 1 ? context.rng.uniform2() : Vec2(0.5);

@@ -94,7 +94,8 @@ private:
                      TraceContext& context) const;
     /// What of a shadow ray's light passes the crossing `hit` of a surface that is not plain.
     Vec3 seenThrough(const Ray& ray, const Hit& hit, TraceContext& context) const;
-    Vec3 directLight(const ShadingPoint& sp, TraceContext& context) const;
+    /// The lights' share at the point, its material's diffuse weight being `diffuse`.
+    Vec3 directLight(const ShadingPoint& sp, double diffuse, TraceContext& context) const;
     /// The fraction of light that reaches the point through the shadow ray (0: blocked).
     Vec3 transmittance(const Ray& ray, double tMax, Departure departed, TraceContext& context) const;
     /// What is seen along `ray` through `distance` of `medium` with `behind` at its end.
