@@ -71,12 +71,12 @@ class HalfEdgesByCorner {
     std::unique_ptr<uint32_t[]> sides_;
 };
 
-/// What is wrong with an edge that `count` sides run, the first two of them `a` and `b`; empty
-/// when nothing is.
-std::string edgeProblem(size_t count, uint32_t a, uint32_t b) {
-    if (count == 1) return "has one triangle";
-    if (count > 2) return "has " + std::to_string(count) + " triangles";
-    if (a == b) return "runs the same way in both of its triangles";
+/// What is wrong with an edge whose sides (from HalfEdgesByCorner) are `sides`; empty when
+/// nothing is.
+std::string edgeProblem(std::span<const uint32_t> sides) {
+    if (sides.size() == 1) return "has one triangle";
+    if (sides.size() > 2) return "has " + std::to_string(sides.size()) + " triangles";
+    if (sides[0] == sides[1]) return "runs the same way in both of its triangles";
     return {};
 }
 
@@ -121,7 +121,7 @@ MeshClosure meshClosure(const MeshData& mesh) {
             while (j < sides.size() &&
                    HalfEdgesByCorner::larger(sides[j]) == HalfEdgesByCorner::larger(sides[i]))
                 ++j;
-            std::string problem = edgeProblem(j - i, sides[i], j - i > 1 ? sides[i + 1] : sides[i]);
+            std::string problem = edgeProblem(sides.subspan(i, j - i));
             if (!problem.empty()) {
                 const auto smaller = static_cast<int32_t>(v),
                            larger = HalfEdgesByCorner::larger(sides[i]);
